@@ -1,0 +1,56 @@
+#include "cli/cli_application.h"
+
+#include <QTextStream>
+#include <exception>
+
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "model/job_control.h"
+#include "project/project.h"
+
+namespace mx::app {
+
+namespace {
+const char* kUsage =
+    "usage: millexpert-cli <command> PROJECT [options]\n"
+    "commands:\n"
+    "  check     validate a project file\n"
+    "  lobes     stability lobes of one tool (--tool ID [--method zoa|sdm] ...)\n"
+    "  simulate  time-domain simulation of one cutting point (--tool ID --speed --depth --feed ...)\n"
+    "Run 'millexpert-cli <command> --help' for the options of a command.\n";
+
+void printError(const QString& message) { QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl; }
+}  // namespace
+
+int runCli(const QStringList& arguments) {
+  if (arguments.size() < 2 || arguments.at(1) == "--help" || arguments.at(1) == "-h") {
+    QTextStream(arguments.size() < 2 ? stderr : stdout) << kUsage;
+    return arguments.size() < 2 ? kExitBadInput : kExitOk;
+  }
+  if (arguments.at(1) == "--version") {
+    QTextStream(stdout) << "millexpert-cli " << MX_APP_VERSION << Qt::endl;
+    return kExitOk;
+  }
+  const QString command = arguments.at(1);
+  QStringList rest = arguments;
+  rest.removeAt(1);  // keep argv[0] for QCommandLineParser
+  try {
+    const CliCommand* handler = findCommand(command);
+    if (handler == nullptr) throw CliError(QString("unknown command '%1'\n%2").arg(command, kUsage), kExitBadInput);
+    return handler->run(rest);
+  } catch (const CliError& e) {
+    printError(QString::fromStdString(e.what()));
+    return e.code;
+  } catch (const ProjectError& e) {
+    printError(QString::fromStdString(e.what()));
+    return e.exitCode();
+  } catch (const InvalidInput& e) {
+    printError(QString::fromStdString(e.what()));
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    printError(QString("computation failed: %1").arg(e.what()));
+    return kExitComputationFailed;
+  }
+}
+
+}  // namespace mx::app

@@ -1,0 +1,18 @@
+#include "cli/cli_commands.h"
+
+#include <array>
+
+namespace mx::app {
+
+const CliCommand* findCommand(const QString& name) {
+  static const std::array<CliCommand, 3> commands{{
+      {"check", "validate a project file", &runCheckCommand},
+      {"lobes", "stability lobes of one tool", &runLobesCommand},
+      {"simulate", "time-domain simulation of one cutting point", &runSimulateCommand},
+  }};
+  for (const CliCommand& c : commands)
+    if (name == QLatin1String(c.name)) return &c;
+  return nullptr;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,20 @@
+#pragma once
+// The registry of CLI subcommands. Each command parses its own flags and prints one JSON object.
+#include <QString>
+#include <QStringList>
+
+namespace mx::app {
+
+struct CliCommand {
+  const char* name;
+  const char* summary;
+  int (*run)(const QStringList& arguments);  // arguments[0] is the program name
+};
+
+const CliCommand* findCommand(const QString& name);
+
+int runCheckCommand(const QStringList& arguments);
+int runLobesCommand(const QStringList& arguments);
+int runSimulateCommand(const QStringList& arguments);
+
+}  // namespace mx::app

@@ -1,0 +1,56 @@
+#include "cli/cli_support.h"
+
+#include <QJsonDocument>
+#include <QTextStream>
+#include <cmath>
+
+#include "cli/cli_application.h"
+
+namespace mx::app {
+
+std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name, double min, double max) {
+  if (!parser.isSet(name)) return std::nullopt;
+  const QString text = parser.value(name);
+  bool ok = false;
+  const double value = text.toDouble(&ok);
+  if (!ok || !std::isfinite(value))
+    throw CliError(QString("--%1 = '%2': not a finite number").arg(name, text), kExitBadInput);
+  if (value < min || value > max)
+    throw CliError(QString("--%1 = %2: must be in [%3, %4]").arg(name, text).arg(min).arg(max), kExitBadInput);
+  return value;
+}
+
+std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name, int min, int max) {
+  if (!parser.isSet(name)) return std::nullopt;
+  const QString text = parser.value(name);
+  bool ok = false;
+  const int value = text.toInt(&ok);
+  if (!ok) throw CliError(QString("--%1 = '%2': not an integer").arg(name, text), kExitBadInput);
+  if (value < min || value > max)
+    throw CliError(QString("--%1 = %2: must be an integer in [%3, %4]").arg(name, text).arg(min).arg(max),
+                   kExitBadInput);
+  return value;
+}
+
+QString requiredOption(const QCommandLineParser& parser, const QString& name) {
+  if (!parser.isSet(name)) throw CliError(QString("--%1 is required").arg(name), kExitBadInput);
+  return parser.value(name);
+}
+
+QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments) {
+  parser.addPositionalArgument("project", "The .mxproj project file.");
+  if (!parser.parse(arguments)) throw CliError(parser.errorText(), kExitBadInput);
+  const QStringList positional = parser.positionalArguments();
+  if (positional.size() != 1)
+    throw CliError(QString("expected exactly one PROJECT argument, got %1").arg(positional.size()), kExitBadInput);
+  return positional.front();
+}
+
+void printJson(const QJsonObject& object) {
+  QTextStream out(stdout);
+  out << QJsonDocument(object).toJson(QJsonDocument::Compact) << Qt::endl;
+}
+
+QJsonValue jsonNumberOrNull(double value) { return std::isfinite(value) ? QJsonValue(value) : QJsonValue(); }
+
+}  // namespace mx::app

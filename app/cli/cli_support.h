@@ -1,0 +1,35 @@
+#pragma once
+// Shared pieces of the CLI subcommands: option parsing with range-checked numbers, JSON output
+// and the error type that carries the exit code.
+#include <QCommandLineParser>
+#include <QJsonObject>
+#include <QString>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+namespace mx::app {
+
+class CliError : public std::runtime_error {
+ public:
+  CliError(const QString& message, int exitCode) : std::runtime_error(message.toStdString()), code(exitCode) {}
+  int code;
+};
+
+// Reads --name as a finite number in [min, max]; nullopt when absent. Throws CliError(2) naming
+// the flag, the value and the range otherwise.
+std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name,
+                                   double min = -std::numeric_limits<double>::max(),
+                                   double max = std::numeric_limits<double>::max());
+std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name, int min, int max);
+QString requiredOption(const QCommandLineParser& parser, const QString& name);
+
+// Parses the subcommand's arguments; throws CliError(2) on unknown flags or a missing PROJECT.
+QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments);
+
+void printJson(const QJsonObject& object);
+
+// JSON number, or null for a non-finite value (never NaN in output).
+QJsonValue jsonNumberOrNull(double value);
+
+}  // namespace mx::app

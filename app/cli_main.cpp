@@ -1,0 +1,13 @@
+// millexpert-cli: every engine capability with JSON on stdout. Exit codes: 0 ok, 1 failed, 2 bad input.
+#include <QCoreApplication>
+#include <clocale>
+
+#include "cli/cli_application.h"
+
+int main(int argc, char** argv) {
+  QCoreApplication app(argc, argv);
+  QCoreApplication::setApplicationName("millexpert-cli");
+  QCoreApplication::setApplicationVersion(MX_VERSION);
+  std::setlocale(LC_NUMERIC, "C");
+  return mx::app::runCli(QCoreApplication::arguments());
+}

@@ -1,0 +1,102 @@
+#pragma once
+// The project document (.mxproj, JSON). Field names are a fixed interface (issue 2, section 2).
+// Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
+#include <QJsonObject>
+#include <QString>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "model/milling_setup.h"
+
+namespace mx::app {
+
+// A bad project or a request the project cannot serve. exitCode() is the CLI code (2 = bad input).
+class ProjectError : public std::runtime_error {
+ public:
+  explicit ProjectError(const QString& message) : std::runtime_error(message.toStdString()) {}
+  int exitCode() const { return 2; }
+};
+
+struct ModeSpec {
+  double freq_Hz = 0.0;
+  double damping_pct = 0.0;
+  double stiffness_N_per_um = 0.0;
+};
+
+struct ToolSpec {
+  QString id;
+  int teeth = 0;
+  double diameter_mm = 0.0;
+  double helix_deg = 0.0;
+  std::optional<double> Kt_N_mm2;        // overrides material.Kt_N_mm2
+  std::optional<double> Kr;              // overrides material.Kr
+  std::optional<double> radial_depth_mm; // overrides the operation's radial engagement
+  std::vector<ModeSpec> modes_x;
+  std::vector<ModeSpec> modes_y;
+};
+
+struct MachineSpec {
+  double spindle_power_W = 0.0;
+  std::optional<double> max_spindle_rpm;  // no limit when absent
+  std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
+};
+
+struct MaterialSpec {
+  QString name;
+  double Kt_N_mm2 = 0.0;
+  double Kr = 0.0;
+};
+
+struct OperationSpec {
+  MillingDirection milling = MillingDirection::Up;
+  std::optional<double> radial_immersion;  // a/D in (0, 1]
+  std::optional<double> radial_depth_mm;   // exactly one of the two is given
+  double max_feed_per_tooth_mm = 0.0;
+};
+
+struct ExpertGridSpec {
+  double speed_from_rpm = 1000.0;
+  double speed_to_rpm = 12000.0;
+  double speed_step_rpm = 100.0;
+  int depth_divisions = 10;
+  double feed_step_mm = 0.01;
+};
+
+struct ExpertSpec {
+  double delta_per_s = 0.0;
+  double alpha = 1.0;
+  std::vector<double> c{0.2, 0.725, 0.075};
+  std::vector<double> cr{0.8, 0.1, 0.1};
+  std::vector<double> ct{0.5, 0.5};
+  std::vector<double> cf{0.5, 0.5};
+  std::optional<ExpertGridSpec> grid;
+};
+
+struct Project {
+  QString name;
+  std::optional<MachineSpec> machine;
+  std::optional<MaterialSpec> material;
+  std::optional<OperationSpec> operation;
+  std::vector<ToolSpec> tools;
+  std::optional<ExpertSpec> expert;
+  QJsonObject document;  // the JSON as loaded; unknown keys at every level survive a save
+
+  const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
+  // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
+  // missing tool or section ("tool 'X' not found", "section 'material' is missing", ...).
+  MillingSetup setupFor(const QString& toolId) const;
+  const MachineSpec& requireMachine() const;    // throws ProjectError if the section is absent
+  const ExpertSpec& requireExpert() const;
+};
+
+// Parse and validate; throws ProjectError whose message names the field path, the value and the
+// allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
+Project projectFromJson(const QJsonObject& root);
+Project loadProject(const QString& path);
+// Back to JSON, merged over project.document so that unknown keys are kept.
+QJsonObject projectToJson(const Project& project);
+// Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
+void saveProject(const Project& project, const QString& path);
+
+}  // namespace mx::app

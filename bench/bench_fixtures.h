@@ -1,0 +1,22 @@
+#pragma once
+// Shared benchmark inputs: the 2006 paper's tool R1 (one mode per axis) in full-immersion up-milling.
+#include "model/milling_setup.h"
+
+namespace mx::bench {
+
+inline MillingSetup toolR1() {
+  MillingSetup s;
+  s.tool_id = "R1";
+  s.teeth = 3;
+  s.diameter_m = 0.030;
+  s.tangential_coefficient_pa = 6e8;
+  s.radial_ratio = 0.3;
+  s.modes_x = {{603.0, 0.039, 5.59e6}};
+  s.modes_y = {{666.0, 0.035, 5.715e6}};
+  s.direction = MillingDirection::Up;
+  s.radial_depth_m = s.diameter_m;
+  s.immersion = Immersion::fromRadialDepth(s.radial_depth_m, s.diameter_m, s.direction);
+  return s;
+}
+
+}  // namespace mx::bench

@@ -1,0 +1,10 @@
+# CPack .deb for MillExpert (Debian 12).
+install(FILES ${PROJECT_SOURCE_DIR}/packaging/millexpert.desktop DESTINATION share/applications)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/projects/ DESTINATION share/millexpert/projects FILES_MATCHING PATTERN "*.mxproj")
+set(CPACK_GENERATOR "DEB")
+set(CPACK_PACKAGE_NAME "millexpert")
+set(CPACK_PACKAGE_CONTACT "MillExpert developers")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+include(CPack)
