@@ -1,5 +1,125 @@
+// millexpert-cli lobes PROJECT --tool ID [--method zoa|sdm] [--from RPM --to RPM --step RPM]
+//                  [--delta V] [--alpha V] [--steps M] [--max-depth MM]
+// Prints {"tool","method","speed_rpm":[...],"blim_mm":[...]}: alpha times the delta-margined lower
+// envelope (Rule 1), null where no instability lies below --max-depth.
+#include <QJsonArray>
+#include <cmath>
+
+#include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "project/project.h"
+#include "stability/semi_discretization.h"
+#include "stability/zero_order_lobes.h"
 
 namespace mx::app {
-int runLobesCommand(const QStringList&) { return 1; }
+
+namespace {
+
+struct LobesRequest {
+  QString tool;
+  QString method = "zoa";
+  SpeedGrid grid;
+  double from_rpm = 0.0;
+  double step_rpm = 0.0;
+  double delta_per_s = 0.0;
+  double alpha = 1.0;
+  int steps = 40;
+  double max_depth_m = 0.02;
+};
+
+LobesRequest readRequest(const QCommandLineParser& parser, const Project& project) {
+  LobesRequest r;
+  r.tool = requiredOption(parser, "tool");
+  r.method = parser.value("method");
+  if (r.method != "zoa" && r.method != "sdm")
+    throw CliError(QString("--method = '%1': must be zoa or sdm").arg(r.method), kExitBadInput);
+  double from = 1000.0, to = 20000.0, step = 100.0;
+  if (project.expert && project.expert->grid) {
+    from = project.expert->grid->speed_from_rpm;
+    to = project.expert->grid->speed_to_rpm;
+    step = project.expert->grid->speed_step_rpm;
+  }
+  from = numberOption(parser, "from", 1e-3, 1e7).value_or(from);
+  to = numberOption(parser, "to", 1e-3, 1e7).value_or(to);
+  step = numberOption(parser, "step", 1e-3, 1e7).value_or(step);
+  if (to < from) throw CliError(QString("--to = %1: must be >= --from (%2)").arg(to).arg(from), kExitBadInput);
+  if ((to - from) / step > 200000)
+    throw CliError(QString("--step = %1: gives more than 200000 speeds").arg(step), kExitBadInput);
+  r.grid = {rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(step)};
+  r.from_rpm = from;
+  r.step_rpm = step;
+  if (project.expert) {
+    r.delta_per_s = project.expert->delta_per_s;
+    r.alpha = project.expert->alpha;
+  }
+  r.delta_per_s = numberOption(parser, "delta", 0.0, 1e6).value_or(r.delta_per_s);
+  r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(r.alpha);
+  r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
+  r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
+  return r;
+}
+
+}  // namespace
+
+int runLobesCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Stability lobes of one tool: alpha * delta-margined b_lim(N).");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"tool", "Tool id.", "ID"},
+      {"method", "zoa (zeroth-order approximation) or sdm (semi-discretization).", "METHOD", "zoa"},
+      {"from", "First speed [rpm]; default: the project's expert grid, else 1000.", "RPM"},
+      {"to", "Last speed [rpm]; default: the project's expert grid, else 20000.", "RPM"},
+      {"step", "Speed step [rpm]; default: the project's expert grid, else 100.", "RPM"},
+      {"delta", "Stability margin delta [1/s] (Rule 1.1); default: the project's.", "V"},
+      {"alpha", "Depth factor alpha in (0, 1] (Rule 1.2); default: the project's.", "V"},
+      {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
+      {"max-depth", "Depth cap [mm]: null where no instability below it (default 20).", "MM"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const Project project = loadProject(path);
+  const LobesRequest request = readRequest(parser, project);
+  const MillingSetup setup = project.setupFor(request.tool);
+  // The grid in rpm as the user gave it (exact values in the output), converted once to SI.
+  const std::vector<double> speeds = request.grid.values();
+  std::vector<double> rpm_values;
+  for (size_t i = 0; i < speeds.size(); ++i) rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
+
+  LobeDiagram diagram;
+  if (request.method == "zoa") {
+    ZoaOptions options;
+    options.delta_per_s = request.delta_per_s;
+    options.max_depth_m = request.max_depth_m;
+    diagram = computeZoaLobes(setup, speeds, options);
+  } else {
+    SdmOptions options;
+    options.delta_per_s = request.delta_per_s;
+    options.max_depth_m = request.max_depth_m;
+    options.steps_per_period = request.steps;
+    diagram = computeSdmLobes(setup, speeds, options);
+  }
+
+  QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
+  for (size_t i = 0; i < speeds.size(); ++i) {
+    speed_rpm.append(rpm_values[i]);
+    const double b = diagram.envelope_depth_m[i];
+    blim_mm.append(jsonNumberOrNull(std::isfinite(b) ? request.alpha * b * 1e3 : b));
+    chatter_hz.append(std::isfinite(b) ? jsonNumberOrNull(diagram.envelope_chatter_hz[i]) : QJsonValue());
+  }
+  for (const LobeMinimum& m : diagram.minima)
+    minima.append(QJsonObject{{"speed_rpm", revPerSToRpm(m.speed_rev_per_s)},
+                              {"blim_mm", request.alpha * m.depth_m * 1e3},
+                              {"chatter_frequency_Hz", m.chatter_hz}});
+  printJson({{"tool", request.tool},
+             {"method", request.method},
+             {"delta_per_s", request.delta_per_s},
+             {"alpha", request.alpha},
+             {"speed_rpm", speed_rpm},
+             {"blim_mm", blim_mm},
+             {"chatter_frequency_Hz", chatter_hz},
+             {"minima", minima}});
+  return kExitOk;
+}
+
 }  // namespace mx::app

@@ -1,5 +1,99 @@
+// millexpert-cli simulate PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH
+//                     [--revolutions N] [--csv FILE] [--ssv-amplitude A --ssv-frequency HZ]
+// Time-domain simulation (Rubio et al. 2006 eq. 1-7, RK4) with the chatter indicators (eq. 11,
+// Pareto Rule 15) and the Smith-Tlusty suggested speed (Rule 16).
+#include <QSaveFile>
+#include <QTextStream>
+#include <limits>
+
+#include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "project/project.h"
+#include "simulation/simulation.h"
+#include "simulation/time_domain_simulator.h"
 
 namespace mx::app {
-int runSimulateCommand(const QStringList&) { return 1; }
+
+namespace {
+
+void writeCsv(const QString& path, const SimulationTrace& trace) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+    throw CliError(QString("--csv = '%1': cannot write (%2)").arg(path, file.errorString()), kExitBadInput);
+  QTextStream out(&file);
+  out.setRealNumberPrecision(10);
+  out << "time_s,x_mm,y_mm,Fx_N,Fy_N,F_N,P_W\n";
+  for (size_t i = 0; i < trace.time_s.size(); ++i)
+    out << trace.time_s[i] << ',' << trace.x_m[i] * 1e3 << ',' << trace.y_m[i] * 1e3 << ',' << trace.fx_n[i] << ','
+        << trace.fy_n[i] << ',' << trace.force_n[i] << ',' << trace.power_w[i] << '\n';
+  out.flush();
+  if (!file.commit()) throw CliError(QString("--csv = '%1': write failed").arg(path), kExitComputationFailed);
+}
+
+}  // namespace
+
+int runSimulateCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Time-domain chatter simulation of one cutting point.");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"tool", "Tool id.", "ID"},
+      {"speed", "Spindle speed [rpm].", "RPM"},
+      {"depth", "Axial depth of cut [mm].", "MM"},
+      {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"},
+      {"revolutions", "Simulated revolutions (default 60; indicators over the last 20).", "N"},
+      {"csv", "Write time, displacements, forces and power to this CSV file.", "FILE"},
+      {"ssv-amplitude", "Spindle speed variation amplitude ratio a (eq. 12), default 0.", "A"},
+      {"ssv-frequency", "Spindle speed variation frequency [Hz] (eq. 12).", "HZ"},
+      {"passes", "Regenerative passes remembered by the chip model (1 = seed eq. 7, default).", "K"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const QString tool = requiredOption(parser, "tool");
+  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
+  const double speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
+  const double depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
+  const double feed_mm = *numberOption(parser, "feed", 1e-6, 100.0);
+  SimulationOptions options;
+  options.revolutions = integerOption(parser, "revolutions", 21, 100000).value_or(60);
+  options.ssv.amplitude_ratio = numberOption(parser, "ssv-amplitude", 0.0, 0.9).value_or(0.0);
+  options.ssv.frequency_hz = numberOption(parser, "ssv-frequency", 0.0, 1e5).value_or(0.0);
+  options.regenerative_passes = integerOption(parser, "passes", 1, kMaxRegenerativePasses).value_or(1);
+
+  const Project project = loadProject(path);
+  const MillingSetup setup = project.setupFor(tool);
+  const OperatingPoint point{rpmToRevPerS(speed_rpm), depth_mm * 1e-3, feed_mm * 1e-3};
+  if (parser.isSet("csv")) options.record_every = 1;
+  const SimulationResult result = simulateMilling(setup, point, options);
+  if (parser.isSet("csv")) writeCsv(parser.value("csv"), result.trace);
+
+  const ChatterIndicators& ind = result.indicators;
+  QJsonValue suggested;
+  if (ind.chatter_by_eta && ind.chatter_frequency_hz) {
+    double max_rev = std::numeric_limits<double>::infinity();
+    if (project.machine && project.machine->max_spindle_rpm) max_rev = rpmToRevPerS(*project.machine->max_spindle_rpm);
+    if (const auto s = smithTlustySpeed(*ind.chatter_frequency_hz, setup.teeth, point.spindle_rev_per_s, 0.0, max_rev))
+      suggested = revPerSToRpm(*s);
+  }
+  QJsonObject out{{"tool", tool},
+                  {"eta", ind.eta},
+                  {"chip_ratio", ind.chip_ratio},
+                  {"chatter", ind.chatter_by_eta},
+                  {"chatter_frequency_Hz",
+                   ind.chatter_by_eta && ind.chatter_frequency_hz ? QJsonValue(*ind.chatter_frequency_hz) : QJsonValue()},
+                  {"tooth_passing_Hz", ind.tooth_passing_hz},
+                  {"peak_force_N", ind.peak_force_n},
+                  {"peak_power_W", ind.peak_power_w},
+                  {"suggested_speed_rpm", suggested},
+                  {"A_chatter", ind.a_chatter},
+                  {"A_toothpass", ind.a_toothpass},
+                  {"chip_ratio_chatter", ind.chatter_by_chip_ratio},
+                  {"steps_per_tooth_period", result.steps_per_tooth_period},
+                  {"diverged", result.diverged},
+                  {"simulated_revolutions", result.simulated_revolutions}};
+  if (project.machine) out.insert("power_fraction", ind.peak_power_w / project.machine->spindle_power_W);
+  printJson(out);
+  return kExitOk;
+}
+
 }  // namespace mx::app

@@ -1,0 +1,36 @@
+#pragma once
+// The engine thread: a one-thread pool that runs copied-input jobs. Each submission gets a
+// generation id and an atomic cancel flag; a newer submission cancels the older one, and stale
+// results are dropped before they reach the GUI (delivered through a queued signal).
+#include <QFutureWatcher>
+#include <QObject>
+#include <QThreadPool>
+#include <atomic>
+#include <memory>
+
+#include "lobe_job.h"
+
+namespace mx::gui {
+
+class EngineRunner : public QObject {
+  Q_OBJECT
+ public:
+  explicit EngineRunner(QObject* parent = nullptr);
+  ~EngineRunner() override;
+
+  quint64 submitLobes(LobeJobInput input);
+  void cancelAll();
+  bool busy() const;
+
+ signals:
+  void lobesReady(const mx::gui::LobeJobResult& result);
+  void busyChanged(bool busy);
+
+ private:
+  QThreadPool pool_;
+  quint64 generation_ = 0;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  int running_ = 0;
+};
+
+}  // namespace mx::gui

@@ -1,0 +1,56 @@
+#pragma once
+// The numeric rules of the project document and the wording of its messages. Every message names
+// the field path, the offending value and the allowed range, e.g.
+//   "tools[0].teeth = 0: must be an integer >= 1", "material.Kt_N_mm2: missing (required number > 0)".
+#include <QJsonValue>
+#include <QString>
+
+namespace mx::app {
+
+struct NumberRule {
+  enum class Bound { None, Open, Closed };
+  Bound lower = Bound::None;
+  double lo = 0.0;
+  Bound upper = Bound::None;
+  double hi = 0.0;
+  bool integer = false;
+
+  bool accepts(double value) const;    // finite, inside the bounds, integral when required
+  QString range() const;               // "> 0", ">= 0", "in (0, 100)", "in (0, 1]", "" (any)
+  QString mustBe(double value) const;  // "must be > 0", "must be an integer >= 1", ...
+  QString requirement() const;         // "number > 0", "integer >= 1" (for missing fields)
+};
+
+namespace rules {
+using B = NumberRule::Bound;
+inline constexpr NumberRule kPositive{B::Open, 0.0, B::None, 0.0, false};
+inline constexpr NumberRule kNonNegative{B::Closed, 0.0, B::None, 0.0, false};
+inline constexpr NumberRule kPercent{B::Open, 0.0, B::Open, 100.0, false};   // damping_pct
+inline constexpr NumberRule kFraction{B::Open, 0.0, B::Closed, 1.0, false};  // alpha, a/D
+inline constexpr NumberRule kHelixDeg{B::Open, -90.0, B::Open, 90.0, false};
+inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true};  // teeth, divisions
+// Radial depth of a tool of diameter D: (0, D].
+inline constexpr NumberRule radialDepth(double diameter_mm) {
+  return {B::Open, 0.0, B::Closed, diameter_mm, false};
+}
+}  // namespace rules
+
+// Shortest text that reads back as the same double ("0.1", "150", "inf", "nan").
+QString formatNumber(double value);
+// Compact JSON text of any value ("\"up\"", "[1, 2]", "150").
+QString formatValue(const QJsonValue& value);
+// "null", "boolean", "number", "string", "array", "object".
+QString jsonTypeName(const QJsonValue& value);
+
+// "machine" + "spindle_power_W" -> "machine.spindle_power_W"; "" + "name" -> "name".
+QString childPath(const QString& parent, const QString& key);
+// "tools" + 1 -> "tools[1]".
+QString indexPath(const QString& parent, qsizetype index);
+
+// Throws ProjectError("PATH = VALUE: must be RANGE[ (context)]") unless rule.accepts(value).
+void checkNumber(const QString& path, double value, const NumberRule& rule, const QString& context = {});
+
+[[noreturn]] void throwMissing(const QString& path, const QString& requirement);
+[[noreturn]] void throwWrongType(const QString& path, const QString& expected, const QJsonValue& got);
+
+}  // namespace mx::app

@@ -1,0 +1,149 @@
+// projectToJson: the known values merged over project.document, so that unknown keys at every
+// level (root, sections, tools, modes, expert.grid) survive. Tools and modes are matched by index.
+#include <QJsonArray>
+
+#include "project/project.h"
+
+namespace mx::app {
+
+namespace {
+
+// Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
+void putNumber(QJsonObject& o, const QString& key, double value) {
+  const QJsonValue old = o.value(key);
+  if (old.isDouble() && old.toDouble() == value) return;
+  o.insert(key, value);
+}
+
+void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value) {
+  if (value) {
+    putNumber(o, key, *value);
+  } else {
+    o.remove(key);
+  }
+}
+
+QJsonObject objectAt(const QJsonArray& array, std::size_t index) {
+  const auto i = static_cast<qsizetype>(index);
+  return i < array.size() ? array.at(i).toObject() : QJsonObject();
+}
+
+QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
+  QJsonArray out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto k = static_cast<qsizetype>(i);
+    const bool same = k < old.size() && old.at(k).isDouble() && old.at(k).toDouble() == values[i];
+    out.append(same ? old.at(k) : QJsonValue(values[i]));
+  }
+  return out;
+}
+
+// Writes an expert weight vector if the file had it or it differs from the default.
+void putWeights(QJsonObject& o, const QString& key, const std::vector<double>& values,
+                const std::vector<double>& defaults) {
+  if (!o.contains(key) && values == defaults) return;
+  o.insert(key, numbersOver(o.value(key).toArray(), values));
+}
+
+QJsonArray modesJson(const QJsonArray& old, const std::vector<ModeSpec>& modes) {
+  QJsonArray out;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    QJsonObject m = objectAt(old, i);
+    putNumber(m, "freq_Hz", modes[i].freq_Hz);
+    putNumber(m, "damping_pct", modes[i].damping_pct);
+    putNumber(m, "stiffness_N_per_um", modes[i].stiffness_N_per_um);
+    out.append(m);
+  }
+  return out;
+}
+
+QJsonObject toolJson(QJsonObject t, const ToolSpec& tool) {
+  t.insert("id", tool.id);
+  putNumber(t, "teeth", tool.teeth);
+  putNumber(t, "diameter_mm", tool.diameter_mm);
+  putNumber(t, "helix_deg", tool.helix_deg);
+  putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
+  putOptional(t, "Kr", tool.Kr);
+  putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
+  t.insert("modes_x", modesJson(t.value("modes_x").toArray(), tool.modes_x));
+  t.insert("modes_y", modesJson(t.value("modes_y").toArray(), tool.modes_y));
+  return t;
+}
+
+QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
+  putNumber(o, "spindle_power_W", m.spindle_power_W);
+  putOptional(o, "max_spindle_rpm", m.max_spindle_rpm);
+  putOptional(o, "max_feed_mm_s", m.max_feed_mm_s);
+  return o;
+}
+
+QJsonObject materialJson(QJsonObject o, const MaterialSpec& m) {
+  o.insert("name", m.name);
+  putNumber(o, "Kt_N_mm2", m.Kt_N_mm2);
+  putNumber(o, "Kr", m.Kr);
+  return o;
+}
+
+QJsonObject operationJson(QJsonObject o, const OperationSpec& op) {
+  o.insert("milling", op.milling == MillingDirection::Up ? "up" : "down");
+  putOptional(o, "radial_immersion", op.radial_immersion);
+  putOptional(o, "radial_depth_mm", op.radial_depth_mm);
+  putNumber(o, "max_feed_per_tooth_mm", op.max_feed_per_tooth_mm);
+  return o;
+}
+
+QJsonObject gridJson(QJsonObject o, const ExpertGridSpec& g) {
+  putNumber(o, "speed_from_rpm", g.speed_from_rpm);
+  putNumber(o, "speed_to_rpm", g.speed_to_rpm);
+  putNumber(o, "speed_step_rpm", g.speed_step_rpm);
+  putNumber(o, "depth_divisions", g.depth_divisions);
+  putNumber(o, "feed_step_mm", g.feed_step_mm);
+  return o;
+}
+
+QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
+  const ExpertSpec defaults;
+  putNumber(o, "delta_per_s", e.delta_per_s);
+  putNumber(o, "alpha", e.alpha);
+  putWeights(o, "c", e.c, defaults.c);
+  putWeights(o, "cr", e.cr, defaults.cr);
+  putWeights(o, "ct", e.ct, defaults.ct);
+  putWeights(o, "cf", e.cf, defaults.cf);
+  if (e.grid) {
+    o.insert("grid", gridJson(o.value("grid").toObject(), *e.grid));
+  } else {
+    o.remove("grid");
+  }
+  return o;
+}
+
+template <typename Spec, typename Writer>
+void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>& spec, Writer write) {
+  if (spec) {
+    root.insert(key, write(root.value(key).toObject(), *spec));
+  } else {
+    root.remove(key);
+  }
+}
+
+}  // namespace
+
+QJsonObject projectToJson(const Project& project) {
+  QJsonObject root = project.document;
+  root.insert("format", "millexpert-project");
+  putNumber(root, "version", 1);
+  root.insert("name", project.name);
+  putSection(root, "machine", project.machine, machineJson);
+  putSection(root, "material", project.material, materialJson);
+  putSection(root, "operation", project.operation, operationJson);
+  if (!project.tools.empty() || root.contains("tools")) {
+    const QJsonArray old = root.value("tools").toArray();
+    QJsonArray tools;
+    for (std::size_t i = 0; i < project.tools.size(); ++i) tools.append(toolJson(objectAt(old, i), project.tools[i]));
+    root.insert("tools", tools);
+  }
+  putSection(root, "expert", project.expert, expertJson);
+  return root;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,193 @@
+#include "simulation/cvode_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include "model/cutting_force.h"
+#include "model/job_control.h"
+#include "simulation/cvode_integrator.h"
+#include "simulation/time_domain_simulator.h"
+
+namespace mx {
+
+namespace {
+
+void require(bool ok, const char* quantity, double value, const char* range) {
+  if (ok) return;
+  std::ostringstream message;
+  message << "simulateMillingCvode: " << quantity << " = " << value << " is outside the allowed range " << range;
+  throw InvalidInput(message.str());
+}
+
+struct ModeCoefficients {
+  bool x_axis;
+  double two_zeta_w, w2, gain;  // q'' = gain F - two_zeta_w q' - w2 q
+};
+
+// The model of eq. 1-7 for CVODE: modal equations, delayed state from the output history.
+class ReferenceModel {
+ public:
+  ReferenceModel(const MillingSetup& setup, const OperatingPoint& point, double sample_dt, int passes)
+      : setup_(setup), point_(point), h_(sample_dt), delay_(point.toothPeriodS(setup.teeth)), passes_(passes) {
+    for (const Mode& mode : setup.modes_x) add(mode, true);
+    for (const Mode& mode : setup.modes_y) add(mode, false);
+  }
+
+  int size() const { return 2 * static_cast<int>(modes_.size()); }
+  const std::vector<ModeCoefficients>& modes() const { return modes_; }
+
+  void axes(const double* s, double& x, double& y, double& vx, double& vy) const {
+    x = y = vx = vy = 0.0;
+    const std::size_t m = modes_.size();
+    for (std::size_t r = 0; r < m; ++r) (modes_[r].x_axis ? x : y) += s[r];
+    for (std::size_t r = 0; r < m; ++r) (modes_[r].x_axis ? vx : vy) += s[m + r];
+  }
+
+  void store(const double* s) {
+    double x, y, vx, vy;
+    axes(s, x, y, vx, vy);
+    hx_.push_back(x);
+    hy_.push_back(y);
+    hvx_.push_back(vx);
+    hvy_.push_back(vy);
+  }
+
+  // r(t - kT) by cubic Hermite interpolation of the stored output (zero before t = 0: rigid pre-history).
+  void delayed(double t, int k, double& x, double& y) const {
+    const double td = t - k * delay_;
+    x = y = 0.0;
+    if (td <= 0.0 || hx_.empty()) return;
+    const auto last = static_cast<long>(hx_.size()) - 1;
+    const long i = std::min(static_cast<long>(std::floor(td / h_)), std::max(0L, last - 1));
+    const double s = td / h_ - static_cast<double>(i);
+    const auto a = static_cast<std::size_t>(i);
+    const std::size_t b = std::min<std::size_t>(a + 1, static_cast<std::size_t>(last));
+    const double h00 = (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s), h10 = s * (1.0 - s) * (1.0 - s);
+    const double h01 = s * s * (3.0 - 2.0 * s), h11 = s * s * (s - 1.0);
+    x = h00 * hx_[a] + h10 * h_ * hvx_[a] + h01 * hx_[b] + h11 * h_ * hvx_[b];
+    y = h00 * hy_[a] + h10 * h_ * hvy_[a] + h01 * hy_[b] + h11 * h_ * hvy_[b];
+  }
+
+  // Summed tooth forces at time t (eq. 2-3, 7; the chip is the minimum over the remembered passes),
+  // straight from mx::toothForce.
+  StaticForce force(double t, const double* s) const {
+    double x, y, vx, vy;
+    axes(s, x, y, vx, vy);
+    double xd[8], yd[8];
+    for (int k = 0; k < passes_; ++k) delayed(t, k + 1, xd[k], yd[k]);
+    const double theta = 2.0 * std::numbers::pi * point_.spindle_rev_per_s * t;
+    StaticForce total;
+    for (int j = 0; j < setup_.teeth; ++j) {
+      const double phi = theta + j * setup_.toothPitchRad();
+      const double sn = std::sin(phi), cs = std::cos(phi);
+      double chip = point_.feed_per_tooth_m * sn + (x - xd[0]) * sn + (y - yd[0]) * cs;
+      for (int k = 1; k < passes_; ++k)
+        chip = std::min(chip, (k + 1) * point_.feed_per_tooth_m * sn + (x - xd[k]) * sn + (y - yd[k]) * cs);
+      const ToothForce f = toothForce(setup_, point_.axial_depth_m, phi, chip);
+      total.tangential_sum_n += f.tangential_n;
+      total.fx_n += f.fx_n;
+      total.fy_n += f.fy_n;
+    }
+    return total;
+  }
+
+  void rhs(double t, const double* s, double* ds) const {
+    const StaticForce f = force(t, s);
+    const std::size_t m = modes_.size();
+    for (std::size_t r = 0; r < m; ++r) {
+      const ModeCoefficients& c = modes_[r];
+      ds[r] = s[m + r];
+      ds[m + r] = c.gain * (c.x_axis ? f.fx_n : f.fy_n) - c.two_zeta_w * s[m + r] - c.w2 * s[r];
+    }
+  }
+
+ private:
+  void add(const Mode& mode, bool x_axis) {
+    const double w = 2.0 * std::numbers::pi * mode.natural_frequency_hz;
+    modes_.push_back({x_axis, 2.0 * mode.damping_ratio * w, w * w, w * w / mode.stiffness_n_per_m});
+  }
+
+  const MillingSetup& setup_;
+  OperatingPoint point_;
+  double h_;
+  double delay_;
+  int passes_;
+  std::vector<ModeCoefficients> modes_;
+  std::vector<double> hx_, hy_, hvx_, hvy_;
+};
+
+}  // namespace
+
+SimulationTrace simulateMillingCvode(const MillingSetup& setup, const OperatingPoint& point, int revolutions,
+                                     double rtol, int samples_per_tooth_period, int regenerative_passes) {
+  require(std::isfinite(point.spindle_rev_per_s) && point.spindle_rev_per_s > 0.0, "spindle speed [rev/s]",
+          point.spindle_rev_per_s, "(0, inf)");
+  require(std::isfinite(point.axial_depth_m) && point.axial_depth_m >= 0.0, "axial depth [m]", point.axial_depth_m,
+          "[0, inf)");
+  require(std::isfinite(point.feed_per_tooth_m) && point.feed_per_tooth_m > 0.0, "feed per tooth [m]",
+          point.feed_per_tooth_m, "(0, inf)");
+  require(revolutions >= 1, "revolutions", revolutions, "[1, inf)");
+  require(rtol >= 1e-13 && rtol <= 1e-2, "relative tolerance", rtol, "[1e-13, 1e-2]");
+  require(samples_per_tooth_period == 0 || samples_per_tooth_period >= 4, "samples per tooth period",
+          samples_per_tooth_period, "0 (automatic) or [4, inf)");
+  require(setup.teeth >= 1, "teeth", setup.teeth, "[1, inf)");
+  require(regenerative_passes >= 1 && regenerative_passes <= kMaxRegenerativePasses, "regenerative passes",
+          regenerative_passes, "[1, 8]");
+
+  const int m = samples_per_tooth_period > 0 ? samples_per_tooth_period
+                                             : automaticStepsPerToothPeriod(setup, point.spindle_rev_per_s);
+  const double h = point.toothPeriodS(setup.teeth) / m;
+  const long samples = static_cast<long>(m) * setup.teeth * revolutions;
+  ReferenceModel model(setup, point, h, regenerative_passes);
+  const int n = model.size();
+
+  // Absolute tolerances scaled to the static deflection K_t b s_t / k_r (and w_r times it for velocities).
+  std::vector<double> y0(static_cast<std::size_t>(n), 0.0), atol(static_cast<std::size_t>(n));
+  const double force_scale = setup.tangential_coefficient_pa * point.axial_depth_m * point.feed_per_tooth_m;
+  const auto& modes = model.modes();
+  for (std::size_t r = 0; r < modes.size(); ++r) {
+    const double q_scale = std::max(force_scale * modes[r].gain / modes[r].w2, 1e-15);
+    atol[r] = 1e-2 * rtol * q_scale;
+    atol[modes.size() + r] = 1e-2 * rtol * q_scale * std::sqrt(modes[r].w2);
+  }
+
+  SimulationTrace trace;
+  for (auto* v : {&trace.time_s, &trace.x_m, &trace.y_m, &trace.fx_n, &trace.fy_n, &trace.force_n, &trace.power_w})
+    v->reserve(static_cast<std::size_t>(samples));
+  const double circumference_speed = std::numbers::pi * setup.diameter_m * point.spindle_rev_per_s;
+  auto record = [&](double t, const double* s) {
+    double x, y, vx, vy;
+    model.axes(s, x, y, vx, vy);
+    // Right-hand limit at t_k (like the RK4 trace): a tooth entering exactly at t_k is counted.
+    const StaticForce f = model.force(t + 1e-9 * h, s);
+    trace.time_s.push_back(t);
+    trace.x_m.push_back(x);
+    trace.y_m.push_back(y);
+    trace.fx_n.push_back(f.fx_n);
+    trace.fy_n.push_back(f.fy_n);
+    trace.force_n.push_back(f.resultant());
+    trace.power_w.push_back(circumference_speed * f.tangential_sum_n);
+  };
+
+  if (n == 0) {  // both axes rigid: nothing to integrate
+    for (long k = 0; k < samples; ++k) record(k * h, nullptr);
+    return trace;
+  }
+  CvodeIntegrator integrator([&model](double t, const double* s, double* ds) { model.rhs(t, s, ds); }, 0.0, y0, rtol,
+                             atol);
+  model.store(y0.data());
+  record(0.0, y0.data());
+  // Output spacing h <= T, so every delayed time the RHS needs inside [t_k, t_k+1] is already stored.
+  for (long k = 1; k < samples; ++k) {
+    const double t = k * h;
+    integrator.advanceTo(t);
+    model.store(integrator.state());
+    record(t, integrator.state());
+  }
+  return trace;
+}
+
+}  // namespace mx

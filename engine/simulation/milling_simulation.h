@@ -1,0 +1,21 @@
+#pragma once
+// Time-domain milling simulation with chatter detection (Rubio et al. 2006, section 2; eq. 1-7, 11, 12).
+// The tool starts at rest in a surface cut by a rigid tool (zero pre-history) and runs `revolutions`
+// spindle revolutions; the indicators use the last `evaluated_revolutions`.
+#include "model/job_control.h"
+#include "model/milling_setup.h"
+#include "simulation/simulation_types.h"
+
+namespace mx {
+
+// Throws InvalidInput naming the quantity, its value and the allowed range: speed > 0, depth >= 0,
+// feed > 0, revolutions > evaluated_revolutions >= 1, |a| < 1, f_ss >= 0, steps_per_tooth_period = 0 or
+// >= 4, record_every >= 1, teeth >= 1, D > 0, K_t >= 0, modes with f > 0, k > 0, 0 <= zeta < 1,
+// at most 2e9 steps and 2e7 recorded samples.
+void validateSimulationInputs(const MillingSetup& setup, const OperatingPoint& point, const SimulationOptions& options);
+
+// Polls control.cancelled() once per revolution (throws Cancelled) and reports the fraction done.
+SimulationResult simulateMilling(const MillingSetup& setup, const OperatingPoint& point,
+                                 const SimulationOptions& options, const JobControl& control = {});
+
+}  // namespace mx

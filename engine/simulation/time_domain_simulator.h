@@ -1,0 +1,69 @@
+#pragma once
+// Fixed-step RK4 integration of the regenerative milling model (2006, section 2E; eq. 1-7):
+//   modal equations (ModalDynamics) driven by F = sum_j toothForce(phi_j, h_j),
+//   h_j = s_t sin phi_j + (x(t) - x(t - tau)) sin phi_j + (y(t) - y(t - tau)) cos phi_j,  F_j = 0 for h_j <= 0
+// with dt = T/m so that at constant speed x(t - T) is a stored sample; the half-step delayed values are
+// cubic Hermite interpolants (DelayHistory). Steps in which a tooth enters or leaves the immersion are
+// split there (EngagementPlanner), keeping RK4's order with the force discontinuity of partial
+// immersion. Under spindle speed variation tau(t) comes from SpindleKinematics and the history is
+// Hermite-interpolated at t - tau(t).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "model/job_control.h"
+#include "model/milling_setup.h"
+#include "simulation/chatter_detection.h"
+#include "simulation/simulation_types.h"
+
+namespace mx {
+
+inline constexpr int kMaxRegenerativePasses = 8;
+
+class TimeDomainSimulator {
+ public:
+  enum class Kernel {
+    Automatic,      // tabulated angles and fixed delay at constant speed, the general kernel otherwise
+    ConstantSpeed,  // requires a constant speed
+    VariableSpeed,  // general kernel: angles from theta(t), delay tau(t) by Newton (also valid for a = 0)
+  };
+
+  // The inputs must already be valid (simulateMilling validates them).
+  TimeDomainSimulator(const MillingSetup& setup, const OperatingPoint& point, const SimulationOptions& options);
+
+  int stepsPerToothPeriod() const { return steps_per_tooth_; }
+  double dt() const { return dt_; }
+  std::int64_t totalSteps() const { return total_steps_; }
+
+  void run(const JobControl& control = {}, Kernel kernel = Kernel::Automatic);
+
+  const SimulationTrace& trace() const { return trace_; }
+  SimulationTrace takeTrace() { return std::move(trace_); }
+  const WindowSignals& window() const { return window_; }
+  const std::vector<double>& finalState() const { return state_; }
+  // The run stops at the first revolution boundary where |x| or |y| exceeds the divergence limit.
+  bool diverged() const { return diverged_; }
+  int simulatedRevolutions() const { return simulated_revolutions_; }
+
+ private:
+  template <class Plans, class Delays>
+  void integrate(Plans& plans, Delays& delays, const JobControl& control);
+
+  MillingSetup setup_;
+  OperatingPoint point_;
+  SimulationOptions options_;
+  int steps_per_tooth_ = 0;
+  double dt_ = 0.0;
+  std::int64_t total_steps_ = 0;
+  std::int64_t steps_per_rev_ = 0;
+  bool diverged_ = false;
+  int simulated_revolutions_ = 0;
+  std::vector<double> state_;
+  SimulationTrace trace_;
+  WindowSignals window_;
+};
+
+// m = max(32, ceil(40 f_max T)): at least 40 steps per period of the highest mode and 32 per tooth period.
+int automaticStepsPerToothPeriod(const MillingSetup& setup, double spindle_rev_per_s);
+
+}  // namespace mx

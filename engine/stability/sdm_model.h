@@ -1,0 +1,57 @@
+#pragma once
+// Linearised regenerative milling model in semi-discretized form (Insperger & Stepan 2002, 2004).
+//
+// Per mode r on axis a (x or y), with the scaled state (q_r, q_r'/omega_r):
+//   q_r'' + 2 zeta_r omega_r q_r' + omega_r^2 q_r = (omega_r^2 / k_r) F_a,   x = sum q_x-modes, y = sum q_y-modes.
+// Regenerative force (Rubio et al. 2006 eq. 2, 3, 7 about the static chip):
+//   F(t) = b H(t) (r(t) - r(t - T)),  r = (x, y),
+//   H(t) = K_t sum_j g(phi_j) [ -(sc + K_r s^2)   -(c^2 + K_r sc) ]
+//                             [  s^2 - K_r sc       sc - K_r c^2   ],  s = sin phi_j, c = cos phi_j,
+// phi_j = Omega t + j 2 pi / n_t, g = 1 inside [entry, exit] (Immersion::contains).
+// So z' = (A0 + b P H C) z - b P H r(t - T). On step i, [t_i, t_i + dt], dt = T/m, H is replaced by its
+// time average H_i over the step (evaluated in closed form; it depends only on i, not on speed), and
+// r(t - T) by the line through r_{i-m}, r_{i-m+1}. The step maps come from one exponential of the
+// augmented matrix (Van Loan 1978):
+//   exp( dt [ L  -R  0 ; 0  0  I/dt ; 0  0  0 ] ) = [ Phi  E12  E13 ; ... ],  L = A0 + b P H_i C, R = b P H_i,
+//   Phi_i = Phi, G0_i = E12 - E13, G1_i = E13.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "model/milling_setup.h"
+#include "stability/sdm_monodromy.h"
+
+namespace mx {
+
+class SdmModel {
+ public:
+  SdmModel(const MillingSetup& setup, int steps_per_period);
+
+  int steps() const { return steps_; }
+  int modalStates() const { return static_cast<int>(a0_.rows()); }
+  int teeth() const { return teeth_; }
+  double toothPeriodS(double spindle_rev_per_s) const { return 1.0 / (spindle_rev_per_s * teeth_); }
+
+  // H_i [N/m^2]: time average of H(t) over step i; zero when no tooth is in cut during the step.
+  const Eigen::Matrix2d& averagedCoefficient(int step) const { return h_[static_cast<size_t>(step)]; }
+  bool inCut(int step) const { return in_cut_[static_cast<size_t>(step)]; }
+
+  // exp(A0 dt): the step map of every step with no tooth in cut; compute once per speed.
+  Eigen::MatrixXd freeStep(double spindle_rev_per_s) const;
+  // Fills `out` with the step maps at (speed, depth); free_step = freeStep(speed).
+  void build(double spindle_rev_per_s, double depth_m, const Eigen::MatrixXd& free_step, SdmMonodromy& out) const;
+
+  // exp(-sigma_min T): spectral radius at zero depth, sigma_min = smallest zeta*omega_n (0 if rigid).
+  double freeDecay(double spindle_rev_per_s) const;
+
+ private:
+  int steps_ = 0;
+  int teeth_ = 1;
+  double min_decay_rate_ = 0.0;
+  Eigen::MatrixXd a0_;                          // N x N
+  Eigen::Matrix<double, Eigen::Dynamic, 2> p_;  // N x 2 force input
+  Eigen::MatrixXd c_;                           // 2 x N position output
+  std::vector<Eigen::Matrix2d> h_;
+  std::vector<bool> in_cut_;
+};
+
+}  // namespace mx

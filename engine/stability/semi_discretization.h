@@ -1,0 +1,51 @@
+#pragma once
+// Milling stability by first-order semi-discretization (Insperger & Stepan 2002, IJNME 55:503-518;
+// Insperger & Stepan 2004, IJNME 61:117-141) of the regenerative model of Rubio et al. 2006, section 2
+// (eq. 1-7), linearised about the static chip. Model and step maps: stability/sdm_model.h.
+// Stability: every Floquet multiplier mu of the tooth-period monodromy map has |mu| <= exp(-delta T)
+// (Rule 1.1 margin; delta = 0 gives the nominal lobes).
+// Accuracy: the multiplier error is O(dt^2), dt = T/m. With m = 40 it reaches a few % in |mu| when
+// omega_c dt ~ 1 (low speeds); where a lobe flank makes rho(b) cross 1 at a shallow angle this moves
+// b_lim by up to ~17 % (Insperger benchmark, slot, 5000-8500 rpm), mostly towards larger (unsafe)
+// depths. Raise steps_per_period there (100 keeps it within 2 %).
+#include <complex>
+#include <vector>
+
+#include "model/job_control.h"
+#include "model/milling_setup.h"
+#include "stability/lobe_diagram.h"
+
+namespace mx {
+
+struct SdmOptions {
+  int steps_per_period = 40;      // m: time steps per tooth period (delay)
+  double delta_per_s = 0.0;       // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
+  double max_depth_m = 0.02;      // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
+  double depth_tolerance = 1e-3;  // relative tolerance on b_lim
+};
+
+// Dominant Floquet multiplier modulus of the tooth-period monodromy map at (speed, depth).
+double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period);
+
+// Dominant multiplier (largest modulus; of a conjugate pair the one with Im >= 0) and the chatter
+// frequency of its Floquet mode (SdmMonodromy::chatterFrequencyHz). A flip (period-doubling)
+// boundary has a real negative multiplier, a Hopf (secondary) boundary a complex pair.
+struct SdmMultiplier {
+  std::complex<double> value{0.0, 0.0};
+  double chatter_hz = 0.0;
+};
+SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_rev_per_s, double depth_m,
+                                    int steps_per_period);
+
+// b_lim at each speed (the lower envelope: the smallest depth whose dominant multiplier reaches
+// exp(-delta T)), the chatter frequency of that multiplier's Floquet mode, i.e. the principal value
+// |arg mu| / (2 pi T) unfolded by the dominant harmonic k of the mode's periodic factor:
+// f = |arg(mu) / (2 pi) + k| / T (0 where b_lim = kNone), and the minima (envelopeMinima).
+// lobes stays empty. Throws InvalidInput for delta outside [0, smallestDecayRate), steps < 4,
+// speeds <= 0, max_depth <= 0 or depth_tolerance outside (0, 0.1]; polls control between speeds
+// (throws Cancelled) and reports the fraction of speeds done.
+// Root search: continuation in speed with an island scan (stability/sdm_boundary.cpp).
+LobeDiagram computeSdmLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,
+                            const SdmOptions& options, const JobControl& control = {});
+
+}  // namespace mx

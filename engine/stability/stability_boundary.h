@@ -1,0 +1,51 @@
+#pragma once
+// Geometry queries on a (margined) stability boundary b_lim(N): stability verdict, the spindle
+// speed security change Delta N_s (Rubio et al. 2006, section 3.B, as read in
+// shared/notes/seed-reading.md) and the robustness ROS (Pareto paper, eq. 13). SI: rev/s, m.
+#include <vector>
+
+#include "stability/lobe_diagram.h"
+
+namespace mx {
+
+struct NormalisationSpans {
+  double speed_rev_per_s = 1.0;  // span of the admissible speed grid
+  double depth_m = 1.0;          // span of the admissible depth grid
+};
+
+class StabilityBoundary {
+ public:
+  // alpha (Rule 1.2) scales the envelope: the allowed depth is alpha * b_lim(N).
+  StabilityBoundary(const LobeDiagram& diagram, double alpha = 1.0);
+
+  double minSpeed() const { return speed_.front(); }
+  double maxSpeed() const { return speed_.back(); }
+  bool covers(double speed_rev_per_s) const;
+
+  // Linear interpolation of alpha * envelope; +inf where no lobe lies below the cap. Throws
+  // InvalidInput outside [minSpeed, maxSpeed].
+  double depthLimit(double speed_rev_per_s) const;
+  bool isStable(double speed_rev_per_s, double depth_m) const;  // b < b_lim(N)
+
+  // Delta N_s: along depth b, per side the distance to the boundary crossing (b above that side's
+  // lobe minimum) or to the speed of that side's minimum (b below it); the smaller side. Only the
+  // left side counts on the highest-speed lobe. 0 on or above the boundary.
+  double speedSecurity(double speed_rev_per_s, double depth_m) const;
+
+  // ROS: Euclidean distance to the nearest boundary point in coordinates normalised by the spans;
+  // negative (minus the distance) for an unstable point.
+  double robustness(double speed_rev_per_s, double depth_m, const NormalisationSpans& spans) const;
+
+  // Local minima of alpha * envelope (speed, depth), ascending in speed.
+  const std::vector<LobeMinimum>& minima() const { return minima_; }
+
+ private:
+  double crossingLeft(double speed, double depth, double stop) const;
+  double crossingRight(double speed, double depth, double stop) const;
+
+  std::vector<double> speed_;
+  std::vector<double> depth_;
+  std::vector<LobeMinimum> minima_;
+};
+
+}  // namespace mx

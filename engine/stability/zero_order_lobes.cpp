@@ -1,0 +1,248 @@
+#include "stability/zero_order_lobes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "model/cutting_force.h"
+#include "stability/lobe_envelope.h"
+
+namespace mx {
+
+namespace {
+
+using cplx = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+
+// Chatter-frequency grid [rad/s]: uniform over [0.3 f_min, 3 f_max] plus a dense band of
+// +-12 zeta around every mode, where the lobe minima lie.
+std::vector<double> chatterFrequencyGrid(const MillingSetup& setup, int samples) {
+  std::vector<Mode> modes = setup.modes_x;
+  modes.insert(modes.end(), setup.modes_y.begin(), setup.modes_y.end());
+  double lo = modes.front().angularFrequency(), hi = lo;
+  for (const Mode& m : modes) {
+    lo = std::min(lo, m.angularFrequency());
+    hi = std::max(hi, m.angularFrequency());
+  }
+  lo *= 0.3;
+  hi *= 3.0;
+  std::vector<double> grid;
+  grid.reserve(static_cast<size_t>(samples) + modes.size() * 241);
+  for (int i = 0; i < samples; ++i) grid.push_back(lo + (hi - lo) * i / (samples - 1));
+  for (const Mode& m : modes) {
+    const double band = 12.0 * std::max(m.damping_ratio, 1e-4) * m.angularFrequency();
+    for (int i = -120; i <= 120; ++i) {
+      const double w = m.angularFrequency() + band * i / 120.0;
+      if (w > lo && w < hi) grid.push_back(w);
+    }
+  }
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  return grid;
+}
+
+// Eigenvalues Lambda of det(I + Lambda [alpha][G]) = 0 (Budak & Altintas 1998):
+// a0 Lambda^2 + a1 Lambda + 1 = 0, a0 = Gxx Gyy (axx ayy - axy ayx), a1 = axx Gxx + ayy Gyy.
+int characteristicRoots(const DirectionalFactors& a, cplx gxx, cplx gyy, cplx roots[2]) {
+  const cplx a0 = gxx * gyy * (a.xx * a.yy - a.xy * a.yx);
+  const cplx a1 = a.xx * gxx + a.yy * gyy;
+  if (std::abs(a0) < 1e-12 * std::norm(a1)) {
+    if (std::abs(a1) == 0.0) return 0;
+    roots[0] = -1.0 / a1;
+    return 1;
+  }
+  const cplx disc = std::sqrt(a1 * a1 - 4.0 * a0);
+  roots[0] = -(a1 + disc) / (2.0 * a0);
+  roots[1] = -(a1 - disc) / (2.0 * a0);
+  return 2;
+}
+
+// Boundary point for one eigenvalue and lobe k. With c = -4 pi Lambda / (n_t K_t), the
+// characteristic equation at s = -delta + i w reads e^{delta T} e^{-i w T} = 1 - c u, u = 1/b.
+// delta = 0: u0 = 2 Re c / |c|^2 (eq. 8 with kappa = Lambda_I / Lambda_R). delta > 0: solve
+// F(u) = ln|1 - c u| - delta T(u) = 0, T(u) = (theta(u) + 2 pi k) / w, theta = -arg(1 - c u) in (0, 2 pi).
+class BoundarySolver {
+ public:
+  BoundarySolver(cplx c, double w, int k, double delta) : c_(c), w_(w), k_(k), delta_(delta) {}
+
+  double theta(double u) const {
+    double t = -std::arg(1.0 - c_ * u);
+    if (t <= 0.0) t += 2.0 * kPi;
+    return t;
+  }
+  double period(double u) const { return (theta(u) + 2.0 * kPi * k_) / w_; }
+  double f(double u) const { return std::log(std::abs(1.0 - c_ * u)) - delta_ * period(u); }
+  // Newton from a guess (continuation along the lobe); nullopt when it does not converge. Quadratic
+  // convergence: once a step is below 1e-6 u, the remaining error is ~1e-12 u and we stop.
+  std::optional<double> newton(double u) const {
+    for (int it = 0; it < 12; ++it) {
+      const cplx z = 1.0 - c_ * u;
+      const double nz = std::norm(z);
+      double t = -std::atan2(z.imag(), z.real());
+      if (t <= 0.0) t += 2.0 * kPi;
+      const double value = 0.5 * std::log(nz) - delta_ * (t + 2.0 * kPi * k_) / w_;
+      const cplx r = c_ * std::conj(z) / nz;  // c / z
+      const double slope = -r.real() - delta_ * r.imag() / w_;
+      if (!(slope > 0.0)) return std::nullopt;
+      const double step = value / slope;
+      u -= step;
+      if (!(u > 0.0)) return std::nullopt;
+      if (std::abs(step) < 1e-6 * u) return u;
+    }
+    return std::nullopt;
+  }
+
+  // F < 0 wherever |1 - c u| <= 1 (u <= u0 when Re c > 0); with Re c <= 0, |1 - c u| > 1 for all
+  // u > 0 and roots exist too. Bracket the first root above `lo` upwards, then Illinois regula falsi.
+  std::optional<double> bracketed(double lo) const {
+    double f_lo = f(lo), hi = lo, f_hi = f_lo;
+    if (f_lo >= 0.0) return std::nullopt;  // root below lo: depth above the range of interest
+    for (int it = 0; it < 200 && f_hi < 0.0; ++it) {
+      lo = hi;
+      f_lo = f_hi;
+      hi *= 1.2;
+      f_hi = f(hi);
+    }
+    if (!(f_hi >= 0.0)) return std::nullopt;
+    double u = hi;
+    int side = 0;
+    for (int it = 0; it < 100 && (hi - lo) > 1e-13 * hi; ++it) {
+      u = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+      const double fu = f(u);
+      if (fu == 0.0) break;
+      if (fu > 0.0) {
+        hi = u, f_hi = fu;
+        if (side == 1) f_lo *= 0.5;
+        side = 1;
+      } else {
+        lo = u, f_lo = fu;
+        if (side == -1) f_hi *= 0.5;
+        side = -1;
+      }
+    }
+    return u;
+  }
+
+ private:
+  cplx c_;
+  double w_;
+  int k_;
+  double delta_;
+};
+
+// u_floor: depths above 1/u_floor are not of interest. guess: the previous point's u on this lobe
+// (0 if none); updated on success.
+bool boundaryPoint(cplx c, double w, int k, double delta, double u_floor, double& guess, double& depth,
+                   double& period) {
+  if (c.real() <= 0.0 && delta == 0.0) return false;
+  const BoundarySolver solver(c, w, k, delta);
+  const double u0 = c.real() > 0.0 ? 2.0 * c.real() / std::norm(c) : 0.0;
+  std::optional<double> u = u0;
+  if (delta > 0.0) {
+    const double lower = std::max(u0, u_floor);
+    u = std::nullopt;
+    if (solver.f(lower) < 0.0) {
+      // Continuation along the lobe, else the nominal root u0 (F(u0) = -delta T).
+      const double start = guess > lower ? guess : (u0 >= lower ? u0 : 0.0);
+      if (start > 0.0) u = solver.newton(start);
+      if (!u || *u < lower) u = solver.bracketed(lower);
+    }
+    if (!u) return false;
+  }
+  depth = 1.0 / *u;
+  period = solver.period(*u);
+  guess = *u;
+  return std::isfinite(depth) && period > 0.0;
+}
+
+void validate(const MillingSetup& setup, const std::vector<double>& speeds, double delta) {
+  const double limit = smallestDecayRate(setup.modes_x, setup.modes_y);
+  if (!(delta >= 0.0) || delta >= limit) {
+    std::ostringstream msg;
+    msg << "delta = " << delta << " 1/s: must be in [0, " << limit
+        << ") (below the smallest modal decay rate zeta*omega_n)";
+    throw InvalidInput(msg.str());
+  }
+  for (double n : speeds)
+    if (!(n > 0.0) || !std::isfinite(n)) throw InvalidInput("spindle speed must be > 0");
+}
+
+}  // namespace
+
+LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds,
+                            const ZoaOptions& options, const JobControl& control) {
+  LobeDiagram out;
+  out.delta_per_s = options.delta_per_s;
+  out.speed_rev_per_s = speeds;
+  out.envelope_depth_m.assign(speeds.size(), LobeDiagram::kNone);
+  out.envelope_chatter_hz.assign(speeds.size(), 0.0);
+  if (setup.modes_x.empty() && setup.modes_y.empty()) return out;  // rigid tool: no chatter
+  validate(setup, speeds, options.delta_per_s);
+
+  const DirectionalFactors alpha = averageDirectionalFactors(setup.immersion, setup.radial_ratio);
+  const std::vector<double> omegas = chatterFrequencyGrid(setup, std::max(options.frequency_samples, 16));
+  const double min_speed = speeds.empty() ? 1.0 : *std::min_element(speeds.begin(), speeds.end());
+  const int lobes = options.lobe_count > 0
+                        ? options.lobe_count
+                        : std::min(400, static_cast<int>(omegas.back() / (2 * kPi * setup.teeth * min_speed)) + 2);
+  const double scale = -4.0 * kPi / (setup.teeth * setup.tangential_coefficient_pa);
+  const cplx shift{-options.delta_per_s, 0.0};
+  const double u_floor = 1.0 / (10.0 * options.max_depth_m);  // lobe points above 10x the cap are dropped
+
+  // Eigenvalues depend on omega only; lobes k differ through T (eq. 9-10).
+  std::vector<std::array<cplx, 2>> cs(omegas.size());
+  std::vector<int> counts(omegas.size());
+  for (size_t i = 0; i < omegas.size(); ++i) {
+    const cplx s = shift + cplx{0.0, omegas[i]};
+    cplx roots[2];
+    counts[i] = characteristicRoots(alpha, receptance(setup.modes_x, s), receptance(setup.modes_y, s), roots);
+    for (int r = 0; r < counts[i]; ++r) cs[i][static_cast<size_t>(r)] = scale * roots[r];
+  }
+
+  LobeEnvelopeBuilder envelope(speeds);
+  for (int k = 0; k < lobes; ++k) {
+    if (control.cancelled()) throw Cancelled();
+    for (int branch = 0; branch < 2; ++branch) {
+      LobeCurve curve;
+      curve.index = k;
+      double guess = 0.0;
+      auto flush = [&] {
+        guess = 0.0;
+        if (curve.speed_rev_per_s.size() >= 2) {
+          envelope.add(curve);
+          out.lobes.push_back(curve);
+        }
+        curve = LobeCurve{k, {}, {}, {}};
+      };
+      for (size_t i = 0; i < omegas.size(); ++i) {
+        double depth = 0.0, period = 0.0;
+        if (branch < counts[i] &&
+            boundaryPoint(cs[i][static_cast<size_t>(branch)], omegas[i], k, options.delta_per_s, u_floor, guess,
+                          depth, period)) {
+          curve.speed_rev_per_s.push_back(1.0 / (setup.teeth * period));  // eq. 10
+          curve.depth_m.push_back(depth);
+          curve.chatter_hz.push_back(omegas[i] / (2.0 * kPi));
+        } else {
+          flush();
+        }
+      }
+      flush();
+    }
+    control.report(static_cast<double>(k + 1) / lobes);
+  }
+  envelope.finish(out, options.max_depth_m);
+  return out;
+}
+
+double singleModeMinimumDepth(const MillingSetup& setup) {
+  const Mode& m = setup.modes_x.front();
+  const double re_g_min = -1.0 / (4.0 * m.stiffness_n_per_m * m.damping_ratio * (1.0 + m.damping_ratio));
+  const double axx = averageDirectionalFactors(setup.immersion, setup.radial_ratio).xx;
+  return 2.0 * kPi / (setup.teeth * setup.tangential_coefficient_pa * axx * re_g_min);
+}
+
+}  // namespace mx

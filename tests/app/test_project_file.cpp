@@ -1,0 +1,556 @@
+// Project document (.mxproj): parsing, SI conversion of setupFor, the validation rules, and
+// round-trip saving that keeps unknown keys.
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+
+#include "project/project.h"
+#include "project/project_validation.h"
+#include "test_main.h"
+
+using namespace mx;
+using namespace mx::app;
+
+namespace {
+
+QString projectsPath(const QString& name) {
+  return QString(MX_PROJECTS_DIR) + "/" + name;
+}
+QString fixturePath(const QString& name) {
+  return QString(MX_TEST_DATA_DIR) + "/projects/" + name;
+}
+
+QJsonObject readJson(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
+  return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+// The ProjectError message of f(), or a null string when nothing is thrown.
+QString errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+// One mutation: "a/0/b=JSON" sets, "-a/0/b" removes; JSON may also be inf, -inf or nan (in memory only).
+QJsonValue parseValue(const QString& text) {
+  if (text == "inf") return std::numeric_limits<double>::infinity();
+  if (text == "-inf") return -std::numeric_limits<double>::infinity();
+  if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+  QJsonParseError error;
+  const QJsonDocument d = QJsonDocument::fromJson("[" + text.toUtf8() + "]", &error);
+  if (error.error != QJsonParseError::NoError) qFatal("bad mutation value %s", qPrintable(text));
+  return d.array().at(0);
+}
+
+QJsonValue setAt(const QJsonValue& node, QStringList path, const std::optional<QJsonValue>& value) {
+  const QString head = path.takeFirst();
+  if (node.isArray()) {
+    QJsonArray a = node.toArray();
+    const int i = head.toInt();
+    if (path.isEmpty() && !value) {
+      a.removeAt(i);
+    } else {
+      a[i] = path.isEmpty() ? *value : setAt(a.at(i), path, value);
+    }
+    return a;
+  }
+  QJsonObject o = node.toObject();
+  if (path.isEmpty() && !value) {
+    o.remove(head);
+  } else {
+    o[head] = path.isEmpty() ? *value : setAt(o.value(head), path, value);
+  }
+  return o;
+}
+
+QJsonObject mutated(QJsonObject root, const QStringList& mutations) {
+  for (const QString& m : mutations) {
+    if (m.startsWith('-')) {
+      root = setAt(root, m.mid(1).split('/'), std::nullopt).toObject();
+    } else {
+      const qsizetype eq = m.indexOf('=');
+      root = setAt(root, m.left(eq).split('/'), parseValue(m.mid(eq + 1))).toObject();
+    }
+  }
+  return root;
+}
+
+void expectContains(const QString& message, const QStringList& fragments) {
+  QVERIFY2(!message.isNull(), "no ProjectError thrown");
+  for (const QString& f : fragments)
+    QVERIFY2(message.contains(f), qPrintable(QString("'%1' not in: %2").arg(f, message)));
+}
+
+}  // namespace
+
+class TestProjectFile : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void loadsRubioProject() {
+    const Project p = loadProject(projectsPath("rubio2006-tool-selection.mxproj"));
+    QCOMPARE(p.name, QString("Rubio, De la Sen & Ibeas (2006): tool selection R1 / R2"));
+    QVERIFY(p.machine);
+    QCOMPARE(p.machine->spindle_power_W, 745.3);
+    QCOMPARE(p.machine->max_spindle_rpm.value(), 12000.0);
+    QVERIFY(!p.machine->max_feed_mm_s);
+    QCOMPARE(p.material->name, QString("Aluminium"));
+    QCOMPARE(p.material->Kt_N_mm2, 600.0);
+    QCOMPARE(p.material->Kr, 0.3);
+    QVERIFY(p.operation->milling == MillingDirection::Up);
+    QCOMPARE(p.operation->radial_immersion.value(), 1.0);
+    QVERIFY(!p.operation->radial_depth_mm);
+    QCOMPARE(p.operation->max_feed_per_tooth_mm, 0.55);
+    QCOMPARE(p.tools.size(), std::size_t(2));
+    const ToolSpec& r2 = p.tools[1];
+    QCOMPARE(r2.id, QString("R2"));
+    QCOMPARE(r2.teeth, 2);
+    QCOMPARE(r2.diameter_mm, 12.7);
+    QCOMPARE(r2.Kr.value(), 0.07);
+    QVERIFY(!r2.Kt_N_mm2);
+    QCOMPARE(r2.modes_x.size(), std::size_t(1));
+    QCOMPARE(r2.modes_x[0].freq_Hz, 900.03);
+    QCOMPARE(r2.modes_y[0].damping_pct, 1.38);
+    QCOMPARE(r2.modes_y[0].stiffness_N_per_um, 0.971);
+    QCOMPARE(p.expert->delta_per_s, 0.05);
+    QCOMPARE(p.expert->alpha, 0.95);
+    QCOMPARE(p.expert->c, (std::vector<double>{0.2, 0.725, 0.075}));
+    QCOMPARE(p.expert->cr, (std::vector<double>{0.8, 0.1, 0.1}));
+    QCOMPARE(p.expert->grid->speed_to_rpm, 12000.0);
+    QCOMPARE(p.expert->grid->depth_divisions, 10);
+    QCOMPARE(p.expert->grid->feed_step_mm, 0.01);
+    QVERIFY(p.findTool("R1") == &p.tools[0]);
+    QVERIFY(p.findTool("R3") == nullptr);
+  }
+
+  void setupForConvertsToSi() {
+    const Project p = loadProject(projectsPath("rubio2006-tool-selection.mxproj"));
+    const MillingSetup r1 = p.setupFor("R1");
+    QCOMPARE(r1.tool_id, std::string("R1"));
+    QCOMPARE(r1.teeth, 3);
+    QCOMPARE(r1.diameter_m, 0.03);
+    QCOMPARE(r1.helix_rad, 0.0);
+    QCOMPARE(r1.tangential_coefficient_pa, 6e8);
+    QCOMPARE(r1.radial_ratio, 0.3);
+    QCOMPARE(r1.modes_x.size(), std::size_t(1));
+    QCOMPARE(r1.modes_x[0].natural_frequency_hz, 603.0);
+    QCOMPARE(r1.modes_x[0].damping_ratio, 0.039);
+    QCOMPARE(r1.modes_x[0].stiffness_n_per_m, 5.59e6);
+    QCOMPARE(r1.modes_y[0].natural_frequency_hz, 666.0);
+    QCOMPARE(r1.modes_y[0].damping_ratio, 0.035);
+    QCOMPARE(r1.modes_y[0].stiffness_n_per_m, 5.715e6);
+    QVERIFY(r1.direction == MillingDirection::Up);
+    QCOMPARE(r1.radial_depth_m, 0.03);
+    QCOMPARE(r1.immersion.entry_rad, 0.0);
+    QCOMPARE(r1.immersion.exit_rad, std::numbers::pi);
+
+    const MillingSetup r2 = p.setupFor("R2");
+    QCOMPARE(r2.diameter_m, 0.0127);
+    QCOMPARE(r2.radial_ratio, 0.07);  // tool override of material.Kr
+    QCOMPARE(r2.tangential_coefficient_pa, 6e8);
+    QCOMPARE(r2.modes_x[0].stiffness_n_per_m, 0.879e6);
+  }
+
+  void setupForInspergerRadialDepth() {
+    const Project p = loadProject(projectsPath("benchmark-insperger-1dof.mxproj"));
+    QCOMPARE(p.tools.size(), std::size_t(2));
+    QCOMPARE(p.material->Kr, 0.3333333333333333);
+    QCOMPARE(p.expert->grid->speed_from_rpm, 5000.0);
+    QCOMPARE(p.expert->c, ExpertSpec{}.c);  // absent: the default
+
+    const MillingSetup full = p.setupFor("FULL");
+    QVERIFY(full.direction == MillingDirection::Down);
+    QCOMPARE(full.radial_depth_m, 0.02);
+    QCOMPARE(full.immersion.entry_rad, 0.0);
+    QCOMPARE(full.immersion.exit_rad, std::numbers::pi);
+    QVERIFY(full.modes_y.empty());  // rigid axis
+
+    const MillingSetup low = p.setupFor("LOW");
+    QCOMPARE(low.teeth, 2);
+    QCOMPARE(low.diameter_m, 0.02);
+    QCOMPARE(low.radial_depth_m, 0.001);
+    QCOMPARE(low.immersion.entry_rad, std::acos(2.0 * 0.05 - 1.0));
+    QCOMPARE(low.immersion.exit_rad, std::numbers::pi);
+    QCOMPARE(low.modes_x[0].damping_ratio, 0.011);
+    QCOMPARE(low.modes_x[0].stiffness_n_per_m, 1.3400496480507487e6);
+    QCOMPARE(low.tangential_coefficient_pa, 6e8);
+  }
+
+  void setupForOverridesAndHelix() {
+    const Project p = loadProject(fixturePath("valid-full.mxproj"));
+    const MillingSetup t1 = p.setupFor("T1");
+    QCOMPARE(t1.helix_rad, std::numbers::pi / 6.0);
+    QCOMPARE(t1.radial_depth_m, 0.008);  // a/D = 0.5 of D = 16 mm
+    QCOMPARE(t1.immersion.entry_rad, std::numbers::pi / 2.0);
+    QCOMPARE(t1.tangential_coefficient_pa, 2e9);
+    QCOMPARE(t1.radial_ratio, 0.35);
+    QCOMPARE(t1.modes_x.size(), std::size_t(2));
+    QCOMPARE(t1.modes_x[1].damping_ratio, 0.04);
+    QCOMPARE(t1.modes_x[1].stiffness_n_per_m, 2e7);
+    const MillingSetup t2 = p.setupFor("T2");
+    QCOMPARE(t2.tangential_coefficient_pa, 8e8);
+    QCOMPARE(t2.radial_ratio, 0.2);
+    QCOMPARE(t2.radial_depth_m, 0.0025);  // the tool's own radial depth
+    QCOMPARE(t2.immersion.entry_rad, std::acos(2.0 * 0.25 - 1.0));
+    QVERIFY(t2.modes_y.empty());
+
+    Project byDepth = p;
+    byDepth.operation->radial_immersion.reset();
+    byDepth.operation->radial_depth_mm = 4.0;
+    validateProject(byDepth);
+    QCOMPARE(byDepth.setupFor("T1").radial_depth_m, 0.004);
+    QCOMPARE(byDepth.setupFor("T2").radial_depth_m, 0.0025);
+  }
+
+  void setupForErrors() {
+    const Project p = loadProject(fixturePath("valid-full.mxproj"));
+    QCOMPARE(errorOf([&] { p.setupFor("X9"); }), QString("tool 'X9' not found; available: T1, T2"));
+
+    Project noMaterial = p;
+    noMaterial.material.reset();
+    QCOMPARE(noMaterial.setupFor("T2").tangential_coefficient_pa, 8e8);  // T2 overrides Kt and Kr
+    expectContains(errorOf([&] { noMaterial.setupFor("T1"); }),
+                   {"section 'material' is missing (needed by tool 'T1'", "Kt_N_mm2 and Kr"});
+    noMaterial.tools[1].Kr.reset();
+    expectContains(errorOf([&] { noMaterial.setupFor("T2"); }), {"section 'material' is missing", "for Kr"});
+
+    Project noOperation = p;
+    noOperation.operation.reset();
+    expectContains(errorOf([&] { noOperation.setupFor("T2"); }),
+                   {"section 'operation' is missing (needed by tool 'T2'"});
+
+    Project bare = p;
+    bare.machine.reset();
+    bare.expert.reset();
+    QCOMPARE(p.requireMachine().spindle_power_W, 5000.0);
+    QCOMPARE(p.requireExpert().alpha, 0.9);
+    expectContains(errorOf([&] { bare.requireMachine(); }), {"section 'machine' is missing (needed"});
+    expectContains(errorOf([&] { bare.requireExpert(); }), {"section 'expert' is missing (needed"});
+  }
+
+  void optionalSectionsMayBeAbsent() {
+    const QJsonObject root{{"format", "millexpert-project"}, {"version", 1}, {"name", "bare"}};
+    const Project p = projectFromJson(root);
+    QVERIFY(!p.machine && !p.material && !p.operation && !p.expert);
+    QVERIFY(p.tools.empty());
+    QCOMPARE(errorOf([&] { p.setupFor("A"); }), QString("tool 'A' not found; available: (none)"));
+    QCOMPARE(projectToJson(p), root);  // no sections appear on save
+  }
+
+  void validationRules_data() {
+    QTest::addColumn<QStringList>("mutations");
+    QTest::addColumn<QStringList>("expected");
+    auto row = [](const char* name, QStringList mutations, QStringList expected) {
+      QTest::newRow(name) << mutations << expected;
+    };
+    // header
+    row("format wrong", {"format=\"other-app\""}, {"format = \"other-app\": must be \"millexpert-project\""});
+    row("format missing", {"-format"}, {"format: missing (required string \"millexpert-project\")"});
+    row("version newer", {"version=2"}, {"version = 2: ", "newer MillExpert", "version 1"});
+    row("version zero", {"version=0"}, {"version = 0: must be 1"});
+    row("version string", {"version=\"1\""}, {"version: expected a number, got string"});
+    row("name missing", {"-name"}, {"name: missing (required string)"});
+    row("name number", {"name=3"}, {"name: expected a string, got number"});
+    // section and element types
+    row("machine array", {"machine=[]"}, {"machine: expected an object, got array"});
+    row("material string", {"material=\"steel\""}, {"material: expected an object, got string"});
+    row("tools object", {"tools={}"}, {"tools: expected an array, got object"});
+    row("tool number", {"tools/1=5"}, {"tools[1]: expected an object, got number"});
+    // machine
+    row("power missing", {"-machine/spindle_power_W"}, {"machine.spindle_power_W: missing (required number > 0)"});
+    row("power zero", {"machine/spindle_power_W=0"}, {"machine.spindle_power_W = 0: must be > 0"});
+    row("power negative", {"machine/spindle_power_W=-745.3"}, {"machine.spindle_power_W = -745.3: must be > 0"});
+    row("power string", {"machine/spindle_power_W=\"5kW\""},
+        {"machine.spindle_power_W: expected a number, got string"});
+    row("power infinite", {"machine/spindle_power_W=inf"},
+        {"machine.spindle_power_W = inf: must be a finite number > 0"});
+    row("max rpm zero", {"machine/max_spindle_rpm=0"}, {"machine.max_spindle_rpm = 0: must be > 0"});
+    row("max rpm string", {"machine/max_spindle_rpm=\"fast\""},
+        {"machine.max_spindle_rpm: expected a number, got string"});
+    row("max feed negative", {"machine/max_feed_mm_s=-1"}, {"machine.max_feed_mm_s = -1: must be > 0"});
+    // material
+    row("Kt missing", {"-material/Kt_N_mm2"}, {"material.Kt_N_mm2: missing (required number > 0)"});
+    row("Kt zero", {"material/Kt_N_mm2=0"}, {"material.Kt_N_mm2 = 0: must be > 0"});
+    row("Kt nan", {"material/Kt_N_mm2=nan"}, {"material.Kt_N_mm2 = nan: must be a finite number > 0"});
+    row("Kr negative", {"material/Kr=-0.1"}, {"material.Kr = -0.1: must be >= 0"});
+    row("Kr missing", {"-material/Kr"}, {"material.Kr: missing (required number >= 0)"});
+    row("material name missing", {"-material/name"}, {"material.name: missing (required string)"});
+    // operation
+    row("milling invalid", {"operation/milling=\"sideways\""},
+        {"operation.milling = \"sideways\": must be \"up\" or \"down\""});
+    row("milling missing", {"-operation/milling"}, {"operation.milling: missing (required string)"});
+    row("milling boolean", {"operation/milling=true"}, {"operation.milling: expected a string, got boolean"});
+    row("immersion zero", {"operation/radial_immersion=0"}, {"operation.radial_immersion = 0: must be in (0, 1]"});
+    row("immersion above one", {"operation/radial_immersion=1.5"},
+        {"operation.radial_immersion = 1.5: must be in (0, 1]"});
+    row("immersion and depth", {"operation/radial_depth_mm=4"},
+        {"operation: radial_immersion = 0.5 and radial_depth_mm = 4", "exactly one"});
+    row("no radial engagement", {"-operation/radial_immersion"},
+        {"operation.radial_immersion: missing (required number in (0, 1], or operation.radial_depth_mm"});
+    row("operation depth above D", {"-operation/radial_immersion", "operation/radial_depth_mm=20"},
+        {"operation.radial_depth_mm = 20: must be in (0, 16]", "tools[0].diameter_mm = 16", "'T1'"});
+    row("operation depth zero", {"-operation/radial_immersion", "operation/radial_depth_mm=0"},
+        {"operation.radial_depth_mm = 0: must be > 0"});
+    row("max feed per tooth zero", {"operation/max_feed_per_tooth_mm=0"},
+        {"operation.max_feed_per_tooth_mm = 0: must be > 0"});
+    row("max feed per tooth missing", {"-operation/max_feed_per_tooth_mm"},
+        {"operation.max_feed_per_tooth_mm: missing (required number > 0)"});
+    // tools
+    row("id missing", {"-tools/0/id"}, {"tools[0].id: missing (required string)"});
+    row("id number", {"tools/0/id=7"}, {"tools[0].id: expected a string, got number"});
+    row("id empty", {"tools/0/id=\"\""}, {"tools[0].id = \"\": must be a non-empty string"});
+    row("duplicate ids", {"tools/1/id=\"T1\""}, {"tools[1].id = \"T1\": duplicate of tools[0].id"});
+    row("teeth zero", {"tools/0/teeth=0"}, {"tools[0].teeth = 0: must be an integer >= 1"});
+    row("teeth negative", {"tools/1/teeth=-2"}, {"tools[1].teeth = -2: must be an integer >= 1"});
+    row("teeth fractional", {"tools/0/teeth=2.5"}, {"tools[0].teeth = 2.5: must be an integer >= 1"});
+    row("teeth missing", {"-tools/0/teeth"}, {"tools[0].teeth: missing (required integer >= 1)"});
+    row("teeth string", {"tools/0/teeth=\"4\""}, {"tools[0].teeth: expected a number, got string"});
+    row("diameter zero", {"tools/0/diameter_mm=0"}, {"tools[0].diameter_mm = 0: must be > 0"});
+    row("diameter negative", {"tools/1/diameter_mm=-10"}, {"tools[1].diameter_mm = -10: must be > 0"});
+    row("diameter string", {"tools/0/diameter_mm=\"16\""}, {"tools[0].diameter_mm: expected a number, got string"});
+    row("diameter infinite", {"tools/0/diameter_mm=inf"}, {"tools[0].diameter_mm = inf: must be a finite number > 0"});
+    row("diameter missing", {"-tools/1/diameter_mm"}, {"tools[1].diameter_mm: missing (required number > 0)"});
+    row("helix missing", {"-tools/0/helix_deg"}, {"tools[0].helix_deg: missing (required number in (-90, 90))"});
+    row("helix 90", {"tools/0/helix_deg=90"}, {"tools[0].helix_deg = 90: must be in (-90, 90)"});
+    row("tool Kt zero", {"tools/1/Kt_N_mm2=0"}, {"tools[1].Kt_N_mm2 = 0: must be > 0"});
+    row("tool Kr negative", {"tools/1/Kr=-0.2"}, {"tools[1].Kr = -0.2: must be >= 0"});
+    row("tool Kr string", {"tools/1/Kr=\"low\""}, {"tools[1].Kr: expected a number, got string"});
+    row("tool depth above D", {"tools/1/radial_depth_mm=12"},
+        {"tools[1].radial_depth_mm = 12: must be in (0, 10]", "tools[1].diameter_mm = 10"});
+    row("tool depth zero", {"tools/1/radial_depth_mm=0"}, {"tools[1].radial_depth_mm = 0: must be in (0, 10]"});
+    row("tool depth just above D", {"tools/0/radial_depth_mm=16.5"},
+        {"tools[0].radial_depth_mm = 16.5: must be in (0, 16]"});
+    row("tool depth with D 0", {"tools/1/diameter_mm=0"}, {"tools[1].diameter_mm = 0: must be > 0"});
+    // modes
+    row("modes_x missing", {"-tools/0/modes_x"}, {"tools[0].modes_x: missing (required array of modes"});
+    row("modes_y object", {"tools/0/modes_y={}"}, {"tools[0].modes_y: expected an array, got object"});
+    row("mode number", {"tools/0/modes_x/1=3"}, {"tools[0].modes_x[1]: expected an object, got number"});
+    row("damping 150", {"tools/1/modes_x/0/damping_pct=150"},
+        {"tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)"});
+    row("damping zero", {"tools/0/modes_y/0/damping_pct=0"},
+        {"tools[0].modes_y[0].damping_pct = 0: must be in (0, 100)"});
+    row("damping 100", {"tools/0/modes_x/1/damping_pct=100"},
+        {"tools[0].modes_x[1].damping_pct = 100: must be in (0, 100)"});
+    row("damping nan", {"tools/0/modes_x/0/damping_pct=nan"},
+        {"tools[0].modes_x[0].damping_pct = nan: must be a finite number in (0, 100)"});
+    row("damping missing", {"-tools/0/modes_y/0/damping_pct"},
+        {"tools[0].modes_y[0].damping_pct: missing (required number in (0, 100))"});
+    row("stiffness zero", {"tools/0/modes_x/1/stiffness_N_per_um=0"},
+        {"tools[0].modes_x[1].stiffness_N_per_um = 0: must be > 0"});
+    row("stiffness negative", {"tools/1/modes_x/0/stiffness_N_per_um=-2"},
+        {"tools[1].modes_x[0].stiffness_N_per_um = -2: must be > 0"});
+    row("stiffness string", {"tools/1/modes_x/0/stiffness_N_per_um=\"2\""},
+        {"tools[1].modes_x[0].stiffness_N_per_um: expected a number, got string"});
+    row("frequency zero", {"tools/0/modes_y/0/freq_Hz=0"}, {"tools[0].modes_y[0].freq_Hz = 0: must be > 0"});
+    row("frequency -inf", {"tools/0/modes_y/0/freq_Hz=-inf"},
+        {"tools[0].modes_y[0].freq_Hz = -inf: must be a finite number > 0"});
+    row("frequency missing", {"-tools/0/modes_x/0/freq_Hz"},
+        {"tools[0].modes_x[0].freq_Hz: missing (required number > 0)"});
+    // expert
+    row("delta negative", {"expert/delta_per_s=-0.05"}, {"expert.delta_per_s = -0.05: must be >= 0"});
+    row("delta missing", {"-expert/delta_per_s"}, {"expert.delta_per_s: missing (required number >= 0)"});
+    row("alpha zero", {"expert/alpha=0"}, {"expert.alpha = 0: must be in (0, 1]"});
+    row("alpha above one", {"expert/alpha=1.2"}, {"expert.alpha = 1.2: must be in (0, 1]"});
+    row("alpha missing", {"-expert/alpha"}, {"expert.alpha: missing (required number in (0, 1])"});
+    row("c too short", {"expert/c=[0.5, 0.5]"}, {"expert.c = [0.5, 0.5]: must be an array of 3 numbers >= 0, got 2"});
+    row("cr negative", {"expert/cr/1=-0.1"}, {"expert.cr[1] = -0.1: must be >= 0"});
+    row("ct string element", {"expert/ct/0=\"a\""}, {"expert.ct[0]: expected a number, got string"});
+    row("cf not array", {"expert/cf=0.5"}, {"expert.cf: expected an array, got number"});
+    row("cf infinite", {"expert/cf/1=inf"}, {"expert.cf[1] = inf: must be a finite number >= 0"});
+    row("grid array", {"expert/grid=[]"}, {"expert.grid: expected an object, got array"});
+    row("grid from zero", {"expert/grid/speed_from_rpm=0"}, {"expert.grid.speed_from_rpm = 0: must be > 0"});
+    row("grid from equals to", {"expert/grid/speed_to_rpm=2000"},
+        {"expert.grid.speed_to_rpm = 2000: must be > expert.grid.speed_from_rpm = 2000"});
+    row("grid step zero", {"expert/grid/speed_step_rpm=0"}, {"expert.grid.speed_step_rpm = 0: must be > 0"});
+    row("grid divisions zero", {"expert/grid/depth_divisions=0"},
+        {"expert.grid.depth_divisions = 0: must be an integer >= 1"});
+    row("grid divisions fractional", {"expert/grid/depth_divisions=2.5"},
+        {"expert.grid.depth_divisions = 2.5: must be an integer >= 1"});
+    row("grid feed step negative", {"expert/grid/feed_step_mm=-0.01"},
+        {"expert.grid.feed_step_mm = -0.01: must be > 0"});
+    row("grid field missing", {"-expert/grid/feed_step_mm"},
+        {"expert.grid.feed_step_mm: missing (required number > 0)"});
+  }
+
+  void validationRules() {
+    QFETCH(QStringList, mutations);
+    QFETCH(QStringList, expected);
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    projectFromJson(base);  // the base itself is valid
+    expectContains(errorOf([&] { projectFromJson(mutated(base, mutations)); }), expected);
+  }
+
+  void validRelaxations() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    // optional fields and sections may be absent; rigid axes and many modes are fine
+    const Project p = projectFromJson(
+        mutated(base, {"-machine/max_spindle_rpm", "-machine/max_feed_mm_s", "-expert/c", "-expert/grid",
+                       "-tools/0/modes_x", "tools/0/modes_x=[]", "-material", "operation/radial_immersion=1"}));
+    QVERIFY(!p.machine->max_spindle_rpm && !p.machine->max_feed_mm_s && !p.expert->grid);
+    QCOMPARE(p.expert->c, ExpertSpec{}.c);
+    QVERIFY(p.tools[0].modes_x.empty());
+    const Project depth = projectFromJson(
+        mutated(base, {"-operation/radial_immersion", "operation/radial_depth_mm=16", "tools/1/radial_depth_mm=10"}));
+    QCOMPARE(depth.setupFor("T1").immersion.exit_rad, std::numbers::pi);  // a = D: full immersion
+  }
+
+  void loadErrorsNameTheFile() {
+    const QString missing = fixturePath("does-not-exist.mxproj");
+    expectContains(errorOf([&] { loadProject(missing); }), {missing, "not found"});
+    expectContains(errorOf([&] { loadProject(fixturePath("invalid-nan.mxproj")); }),
+                   {"invalid-nan.mxproj: invalid JSON at line 5, column 50", "illegal number"});
+    expectContains(errorOf([&] { loadProject(fixturePath("invalid-overflow.mxproj")); }),
+                   {"invalid-overflow.mxproj: invalid JSON at line 5", "illegal number"});
+    expectContains(errorOf([&] { loadProject(fixturePath("invalid-syntax.mxproj")); }),
+                   {"invalid-syntax.mxproj: invalid JSON at line 5, column 2"});
+
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("bad.mxproj");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QJsonDocument(mutated(readJson(fixturePath("valid-full.mxproj")), {"tools/0/teeth=0"})).toJson());
+    f.close();
+    QCOMPARE(errorOf([&] { loadProject(bad); }), bad + ": tools[0].teeth = 0: must be an integer >= 1");
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write("[1, 2]");
+    f.close();
+    expectContains(errorOf([&] { loadProject(bad); }), {bad, "top level must be a JSON object"});
+  }
+
+  void saveReloadIsIdentical_data() {
+    QTest::addColumn<QString>("path");
+    QTest::newRow("rubio") << projectsPath("rubio2006-tool-selection.mxproj");
+    QTest::newRow("insperger") << projectsPath("benchmark-insperger-1dof.mxproj");
+    QTest::newRow("valid-full") << fixturePath("valid-full.mxproj");
+    QTest::newRow("unknown-keys") << fixturePath("unknown-keys.mxproj");
+  }
+
+  void saveReloadIsIdentical() {
+    QFETCH(QString, path);
+    QTemporaryDir dir;
+    const QString out = dir.filePath("saved.mxproj");
+    const Project loaded = loadProject(path);
+    saveProject(loaded, out);
+    QCOMPARE(readJson(out), readJson(path));  // the file itself, unknown keys and all
+    const Project reloaded = loadProject(out);
+    QCOMPARE(projectToJson(reloaded), projectToJson(loaded));
+    QCOMPARE(reloaded.document, loaded.document);
+    QFile text(out);
+    QVERIFY(text.open(QIODevice::ReadOnly));
+    QVERIFY(text.readAll().startsWith("{\n  \"format\": \"millexpert-project\",\n  \"version\": 1,\n  \"name\": "));
+  }
+
+  void unknownKeysSurviveEdits() {
+    Project p = loadProject(fixturePath("unknown-keys.mxproj"));
+    p.machine->spindle_power_W = 800;
+    p.tools[0].teeth = 4;
+    p.tools[0].modes_x[0].damping_pct = 4.2;
+    p.expert->grid->speed_step_rpm = 50;
+    QTemporaryDir dir;
+    const QString out = dir.filePath("edited.mxproj");
+    saveProject(p, out);
+    const QJsonObject j = readJson(out);
+    QCOMPARE(j["x_root_note"].toString(), QString("kept at the root"));
+    QCOMPARE(j["x_root_table"].toArray(), (QJsonArray{1, 2.5, QJsonObject{{"deep", true}}}));
+    QCOMPARE(j["x_gui"].toObject()["last_tool"].toString(), QString("R1"));
+    QCOMPARE(j["machine"].toObject()["x_machine_vendor"].toString(), QString("ACME"));
+    QCOMPARE(j["machine"].toObject()["spindle_power_W"].toDouble(), 800.0);
+    QCOMPARE(j["material"].toObject()["x_material_grade"].toString(), QString("6061-T6"));
+    QVERIFY(j["operation"].toObject().contains("x_operation_coolant"));
+    QVERIFY(j["operation"].toObject()["x_operation_coolant"].isNull());
+    const QJsonObject tool = j["tools"].toArray()[0].toObject();
+    QCOMPARE(tool["x_tool_holder"].toString(), QString("HSK63"));
+    QCOMPARE(tool["teeth"].toDouble(), 4.0);
+    const QJsonObject mode = tool["modes_x"].toArray()[0].toObject();
+    QCOMPARE(mode["x_mode_source"].toString(), QString("tap test 12"));
+    QCOMPARE(mode["damping_pct"].toDouble(), 4.2);
+    QCOMPARE(mode["freq_Hz"].toDouble(), 603.0);
+    const QJsonObject expert = j["expert"].toObject();
+    QCOMPARE(expert["x_expert_comment"].toString(), QString("tuned"));
+    QCOMPARE(expert["grid"].toObject()["x_grid_refine"].toDouble(), 2.0);
+    QCOMPARE(expert["grid"].toObject()["speed_step_rpm"].toDouble(), 50.0);
+    QVERIFY(!expert.contains("c"));  // defaults are not written out
+    QCOMPARE(loadProject(out).tools[0].teeth, 4);
+  }
+
+  void structuralEditsOnSave() {
+    Project p = loadProject(fixturePath("unknown-keys.mxproj"));
+    p.tools[0].Kt_N_mm2 = 650.0;  // both coefficients on the tool: the material section is not needed
+    p.tools[0].Kr = 0.25;
+    ToolSpec added = p.tools[0];
+    added.id = "R9";
+    added.radial_depth_mm = 5.0;
+    p.tools.push_back(added);
+    p.operation->radial_immersion.reset();
+    p.operation->radial_depth_mm = 12.0;
+    p.machine->max_feed_mm_s = 40.0;
+    p.expert->c = {0.1, 0.8, 0.1};
+    p.material.reset();
+    QJsonObject j = projectToJson(p);
+    QJsonArray tools = j["tools"].toArray();
+    QCOMPARE(tools.size(), 2);
+    QVERIFY(!tools[1].toObject().contains("x_tool_holder"));  // a new tool is a new object
+    QCOMPARE(tools[1].toObject()["radial_depth_mm"].toDouble(), 5.0);
+    QVERIFY(!tools[1].toObject()["modes_x"].toArray()[0].toObject().contains("x_mode_source"));
+    QCOMPARE(tools[0].toObject()["Kt_N_mm2"].toDouble(), 650.0);
+    QVERIFY(!j.contains("material"));
+    QVERIFY(!j["operation"].toObject().contains("radial_immersion"));
+    QCOMPARE(j["operation"].toObject()["radial_depth_mm"].toDouble(), 12.0);
+    QCOMPARE(j["machine"].toObject()["max_feed_mm_s"].toDouble(), 40.0);
+    QCOMPARE(j["expert"].toObject()["c"].toArray(), (QJsonArray{0.1, 0.8, 0.1}));
+    const Project back = projectFromJson(j);
+    QCOMPARE(back.setupFor("R9").radial_depth_m, 0.005);
+    QCOMPARE(back.setupFor("R1").tangential_coefficient_pa, 6.5e8);
+
+    p.tools.erase(p.tools.begin());  // matched by index: the first tool object now carries R9
+    p.tools[0].Kt_N_mm2.reset();
+    p.tools[0].Kr.reset();
+    p.tools[0].modes_y.clear();
+    j = projectToJson(p);
+    tools = j["tools"].toArray();
+    QCOMPARE(tools.size(), 1);
+    QCOMPARE(tools[0].toObject()["id"].toString(), QString("R9"));
+    QVERIFY(!tools[0].toObject().contains("Kt_N_mm2"));
+    QCOMPARE(tools[0].toObject()["modes_y"].toArray(), QJsonArray());
+    p.tools.clear();
+    QCOMPARE(projectToJson(p)["tools"].toArray(), QJsonArray());
+  }
+
+  void numbersRoundTripExactly() {
+    Project p = loadProject(fixturePath("valid-full.mxproj"));
+    const double awkward[] = {0.1 + 0.2, 1.3400496480507487, 1.0 / 3.0, 5e-324, 1.7976931348623157e308};
+    QTemporaryDir dir;
+    const QString out = dir.filePath("numbers.mxproj");
+    for (double v : awkward) {
+      p.tools[0].modes_x[1].stiffness_N_per_um = v;
+      saveProject(p, out);
+      const double back = loadProject(out).tools[0].modes_x[1].stiffness_N_per_um;
+      QVERIFY2(back == v, qPrintable(QString::number(v, 'g', 17)));
+    }
+  }
+
+  void saveIsAtomicAndReportsErrors() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("p.mxproj");
+    const Project p = loadProject(fixturePath("valid-full.mxproj"));
+    saveProject(p, out);
+    saveProject(p, out);  // overwrite in place
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"p.mxproj"});
+    const QString impossible = dir.filePath("no-such-dir/p.mxproj");
+    expectContains(errorOf([&] { saveProject(p, impossible); }), {impossible, "cannot write project file"});
+  }
+};
+
+MX_TEST_MAIN(TestProjectFile)
+#include "test_project_file.moc"

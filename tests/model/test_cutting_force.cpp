@@ -1,0 +1,108 @@
+// Static cutting forces, directional factors, power, torque and MRR (Rubio et al. 2006 eq. 2-5;
+// Pareto paper eq. 8).
+#include <cmath>
+#include <numbers>
+
+#include "model/cutting_force.h"
+#include "support/fixtures.h"
+#include "test_main.h"
+
+using namespace mx;
+constexpr double kPi = std::numbers::pi;
+
+class TestCuttingForce : public QObject {
+  Q_OBJECT
+ private slots:
+  // seed-reading.md: R1 at q* = (5800 rpm, 0.4924 mm, 0.2722 mm/tooth) peaks at about 730 W.
+  // Full immersion, 3 teeth: max sum sin(phi_j) = 1, so P = pi D N/60 * K_t b s_t = 732.6 W.
+  void rubioOptimumPeakPower() {
+    const MillingSetup s = test::rubioR1();
+    const OperatingPoint q{5800.0 / 60.0, 0.4924e-3, 0.2722e-3};
+    const CutPerformance p = evaluateCut(s, q);
+    const double expected = kPi * 0.030 * 5800.0 / 60.0 * 6e8 * 0.4924e-3 * 0.2722e-3;
+    QCOMPARE_LE(std::abs(p.peak_power_w / expected - 1.0), 1e-4);
+    QVERIFY(std::abs(p.peak_power_w - 730.0) < 5.0);
+    QVERIFY(p.peak_power_w < 745.3);
+    // MRR = a b s_t n_t N with a = D.
+    QCOMPARE_LE(std::abs(p.mrr_m3_per_s - 0.030 * 0.4924e-3 * 0.2722e-3 * 3 * 5800.0 / 60.0), 1e-15);
+    // Torque = (D/2) sum F_t at the peak.
+    QCOMPARE_LE(std::abs(p.peak_torque_nm - p.peak_power_w / (2.0 * kPi * 5800.0 / 60.0)), 1e-9);
+    // Mean power over a tooth period: n_t K_t b s_t v (1 - cos phi_ex ...)/(2 pi): full immersion -> 2/(2 pi) n_t.
+    QCOMPARE_LE(std::abs(p.mean_power_w / (expected * 3.0 / kPi) - 1.0), 2e-3);
+  }
+
+  // Directional factors against their integrals evaluated numerically.
+  void directionalFactorsMatchQuadrature_data() {
+    QTest::addColumn<double>("entry");
+    QTest::addColumn<double>("exit");
+    QTest::addColumn<double>("kr");
+    QTest::newRow("full") << 0.0 << kPi << 0.3;
+    QTest::newRow("half up") << 0.0 << kPi / 2 << 0.07;
+    QTest::newRow("5% down") << std::acos(2 * 0.05 - 1) << kPi << 1.0 / 3.0;
+  }
+  void directionalFactorsMatchQuadrature() {
+    QFETCH(double, entry);
+    QFETCH(double, exit);
+    QFETCH(double, kr);
+    const DirectionalFactors a = averageDirectionalFactors({entry, exit}, kr);
+    // alpha_ij = 2 * integral over the immersion of the force-projection matrix (Budak & Altintas 1998).
+    double xx = 0, xy = 0, yx = 0, yy = 0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+      const double p = entry + (exit - entry) * (i + 0.5) / n, w = (exit - entry) / n;
+      const double s = std::sin(p), c = std::cos(p);
+      xx += -(c + kr * s) * s * 2 * w;
+      xy += -(c + kr * s) * c * 2 * w;
+      yx += (s - kr * c) * s * 2 * w;
+      yy += (s - kr * c) * c * 2 * w;
+    }
+    QCOMPARE_LE(std::abs(a.xx - xx), 1e-8);
+    QCOMPARE_LE(std::abs(a.xy - xy), 1e-8);
+    QCOMPARE_LE(std::abs(a.yx - yx), 1e-8);
+    QCOMPARE_LE(std::abs(a.yy - yy), 1e-8);
+  }
+
+  void toothForceProjection() {
+    const MillingSetup s = test::rubioR1();
+    const double phi = kPi / 3;
+    const ToothForce f = toothForce(s, 1e-3, phi, 1e-4);
+    const double ft = 6e8 * 1e-3 * 1e-4, fr = 0.3 * ft;
+    QCOMPARE_LE(std::abs(f.tangential_n - ft), 1e-12);
+    QCOMPARE_LE(std::abs(f.fx_n - (-ft * std::cos(phi) - fr * std::sin(phi))), 1e-12);
+    QCOMPARE_LE(std::abs(f.fy_n - (ft * std::sin(phi) - fr * std::cos(phi))), 1e-12);
+    QCOMPARE(toothForce(s, 1e-3, phi, -1e-5).tangential_n, 0.0);     // tool out of the cut
+    QCOMPARE(toothForce(s, 1e-3, 1.5 * kPi, 1e-4).tangential_n, 0.0);  // outside the immersion
+  }
+
+  void immersionAngles_data() {
+    QTest::addColumn<int>("direction");
+    QTest::addColumn<double>("ratio");
+    QTest::addColumn<double>("entry");
+    QTest::addColumn<double>("exit");
+    QTest::newRow("up full") << 0 << 1.0 << 0.0 << kPi;
+    QTest::newRow("up half") << 0 << 0.5 << 0.0 << kPi / 2;
+    QTest::newRow("down half") << 1 << 0.5 << kPi / 2 << kPi;
+    QTest::newRow("down 5%") << 1 << 0.05 << std::acos(-0.9) << kPi;
+    QTest::newRow("up 5%") << 0 << 0.05 << 0.0 << std::acos(0.9);
+  }
+  void immersionAngles() {
+    QFETCH(int, direction);
+    QFETCH(double, ratio);
+    QFETCH(double, entry);
+    QFETCH(double, exit);
+    const Immersion im =
+        Immersion::fromRadialDepth(ratio * 0.02, 0.02, direction == 0 ? MillingDirection::Up : MillingDirection::Down);
+    QCOMPARE_LE(std::abs(im.entry_rad - entry), 1e-12);
+    QCOMPARE_LE(std::abs(im.exit_rad - exit), 1e-12);
+  }
+
+  void powerScalesWithDepthAndFeed() {
+    const MillingSetup s = test::rubioR2();
+    const double per_unit = peakPowerPerDepthFeed(s, 100.0);
+    const CutPerformance p = evaluateCut(s, {100.0, 2e-3, 5e-5});
+    QCOMPARE_LE(std::abs(p.peak_power_w / (per_unit * 2e-3 * 5e-5) - 1.0), 1e-12);
+  }
+};
+
+MX_TEST_MAIN(TestCuttingForce)
+#include "test_cutting_force.moc"

@@ -1,0 +1,110 @@
+// Time-domain simulation (RK4, seed eq. 1-7) against semi-discretization: the depth at which eta
+// (seed eq. 11) crosses 1.3 lies within 10 % of the SDM b_lim at 6 or more speeds; and the delta
+// margin (Rule 1.1): just below the delta = 50 1/s lobe, perturbations decay at rate delta or faster.
+#include <algorithm>
+#include <cmath>
+
+#include "simulation/simulation.h"
+#include "stability/semi_discretization.h"
+#include "support/fixtures.h"
+#include "test_main.h"
+
+using namespace mx;
+
+namespace {
+double etaAt(const MillingSetup& s, double rev_per_s, double depth) {
+  SimulationOptions o;
+  o.revolutions = 300;  // slow growth near the boundary at zeta = 1.1 % needs a long run
+  o.record_every = 1000000;
+  return simulateMilling(s, {rev_per_s, depth, 1e-4}, o).indicators.eta;
+}
+
+// Smallest depth where eta >= 1.3, by bisection between a stable and a chattering depth.
+double etaThresholdDepth(const MillingSetup& s, double rev_per_s, double guess) {
+  double lo = 0.5 * guess, hi = 2.0 * guess;
+  if (etaAt(s, rev_per_s, lo) >= 1.3 || etaAt(s, rev_per_s, hi) < 1.3) return -1.0;
+  for (int i = 0; i < 9; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (etaAt(s, rev_per_s, mid) >= 1.3 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+}  // namespace
+
+class TestStabilityAgreement : public QObject {
+  Q_OBJECT
+ private slots:
+  void etaThresholdMatchesSdm_data() {
+    QTest::addColumn<int>("tool");
+    QTest::newRow("Rubio R1 (3 teeth, full immersion, up)") << 1;
+    QTest::newRow("Insperger (2 teeth, full immersion, down)") << 2;
+  }
+  void etaThresholdMatchesSdm() {
+    QFETCH(int, tool);
+    const MillingSetup s = tool == 1 ? test::rubioR1() : test::insperger(1.0);
+    const std::vector<double> rpm = tool == 1 ? std::vector<double>{4000, 5000, 6000, 7000, 8500, 10000}
+                                              : std::vector<double>{6000, 8000, 10000, 12000, 15000, 17000, 19000};
+    std::vector<double> speeds;
+    for (double n : rpm) speeds.push_back(n / 60.0);
+    SdmOptions o;
+    o.steps_per_period = 60;
+    o.depth_tolerance = 1e-3;
+    const LobeDiagram sdm = computeSdmLobes(s, speeds, o);
+    int agreeing = 0;
+    for (size_t i = 0; i < speeds.size(); ++i) {
+      const double blim = sdm.envelope_depth_m[i];
+      QVERIFY(std::isfinite(blim));
+      const double td = etaThresholdDepth(s, speeds[i], blim);
+      const double rel = td > 0 ? td / blim - 1.0 : 1.0;
+      qInfo("%6.0f rpm: SDM b_lim %.4f mm, eta = 1.3 at %.4f mm (%+.1f %%)", rpm[i], blim * 1e3, td * 1e3, rel * 100);
+      if (std::abs(rel) < 0.10) ++agreeing;
+    }
+    // Issue 2: at 6 or more speeds. Insperger at 19000 rpm (flip lobe, b_lim 2.68 mm) is not among them:
+    // the start from rest throws the teeth out of the cut and the model jumps to a coexisting chatter
+    // state at ~2.12 mm, 21 % below the linear limit (subcritical; docs/fidelity.md).
+    QVERIFY2(agreeing >= 6, qPrintable(QString("%1 of %2 speeds within 10 %").arg(agreeing).arg(speeds.size())));
+  }
+
+  // Two runs that differ only in the initial displacement: their difference is the homogeneous
+  // (transient) solution, which just below the delta-lobe decays like exp(-delta t) or faster.
+  void deltaMarginDecayRate() {
+    const MillingSetup s = test::insperger(1.0);
+    const double delta = 50.0;
+    for (double rpm : {9000.0, 13000.0}) {
+      const double n = rpm / 60.0;
+      SdmOptions o;
+      o.steps_per_period = 60;
+      o.delta_per_s = delta;
+      const double b_delta = computeSdmLobes(s, {n}, o).envelope_depth_m.front();
+      QVERIFY(std::isfinite(b_delta));
+      const double b = 0.98 * b_delta;
+      SimulationOptions a;
+      a.revolutions = 40;
+      a.evaluated_revolutions = 10;
+      a.steps_per_tooth_period = 60;
+      const SimulationResult base = simulateMilling(s, {n, b, 1e-4}, a);
+      a.initial_x_m = 1e-7;
+      const SimulationResult kicked = simulateMilling(s, {n, b, 1e-4}, a);
+      // Peak |difference| per tooth period, and the decay rate fitted over the run.
+      const int m = base.steps_per_tooth_period;
+      const double T = 1.0 / (n * s.teeth);
+      std::vector<double> t, logpeak;
+      for (size_t k = 2; (k + 1) * m < base.trace.size(); ++k) {
+        double peak = 0.0;
+        for (size_t j = k * m; j < (k + 1) * m; ++j)
+          peak = std::max(peak, std::abs(kicked.trace.x_m[j] - base.trace.x_m[j]));
+        if (peak < 1e-15) break;
+        t.push_back(k * T);
+        logpeak.push_back(std::log(peak));
+      }
+      QVERIFY(t.size() > 20);
+      const double rate = -(logpeak.back() - logpeak.front()) / (t.back() - t.front());
+      qInfo("%6.0f rpm: b = 0.98 b_delta = %.4f mm, transient decay rate %.1f 1/s (delta = %.0f)", rpm, b * 1e3, rate,
+            delta);
+      QVERIFY2(rate >= 0.95 * delta, qPrintable(QString("decay rate %1 < delta %2").arg(rate).arg(delta)));
+    }
+  }
+};
+
+MX_TEST_MAIN(TestStabilityAgreement)
+#include "test_stability_agreement.moc"

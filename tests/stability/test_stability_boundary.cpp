@@ -1,0 +1,96 @@
+// Lobe-geometry queries on a synthetic envelope whose answers are known by hand.
+#include <cmath>
+
+#include "model/job_control.h"
+#include "stability/stability_boundary.h"
+#include "test_main.h"
+
+using namespace mx;
+
+namespace {
+// Two parabolic lobes, A: b = 1 + (n-100)^2/625 mm and B: b = 2 + (n-200)^2/833.33 mm, meeting
+// at 5 mm at 150 rev/s; envelope min(A, B) sampled every 1 rev/s from 80 to 250 rev/s.
+double lobeA(double n) { return 1.0 + (n - 100.0) * (n - 100.0) / 625.0; }
+double lobeB(double n) { return 2.0 + (n - 200.0) * (n - 200.0) / (2500.0 / 3.0); }
+LobeDiagram twoLobes() {
+  LobeDiagram d;
+  for (int n = 80; n <= 250; ++n) {
+    d.speed_rev_per_s.push_back(n);
+    d.envelope_depth_m.push_back(std::min(lobeA(n), lobeB(n)) * 1e-3);
+    d.envelope_chatter_hz.push_back(0.0);
+  }
+  return d;
+}
+}  // namespace
+
+class TestStabilityBoundary : public QObject {
+  Q_OBJECT
+ private slots:
+  void minimaAreFound() {
+    const StabilityBoundary s(twoLobes());
+    QCOMPARE(s.minima().size(), size_t{2});
+    QCOMPARE_LE(std::abs(s.minima()[0].speed_rev_per_s - 100.0), 1e-9);
+    QCOMPARE_LE(std::abs(s.minima()[1].depth_m - 2e-3), 1e-12);
+  }
+
+  void alphaScalesTheLimit() {
+    const StabilityBoundary s(twoLobes(), 0.5);
+    QCOMPARE_LE(std::abs(s.depthLimit(150.0) - 2.5e-3), 1e-9);
+    QVERIFY(s.isStable(150.0, 2.4e-3));
+    QVERIFY(!s.isStable(150.0, 2.6e-3));
+  }
+
+  void speedSecurity_data() {
+    QTest::addColumn<double>("speed");
+    QTest::addColumn<double>("depth_mm");
+    QTest::addColumn<double>("expected");
+    // Pocket at 3 mm: A crosses at 100 + sqrt(1250) (14.645 left of 150), B at 200 - sqrt(833.3)
+    // (21.13 right): the smaller side wins.
+    QTest::newRow("pocket, both above minima") << 150.0 << 3.0 << 50.0 - std::sqrt(1250.0);
+    // 1.5 mm at 120: above A's minimum -> crossing at 100 + sqrt(312.5); below B's minimum (2 mm)
+    // -> distance to its speed, 80. Smaller: 20 - 17.678.
+    QTest::newRow("left crossing nearer") << 120.0 << 1.5 << 20.0 - std::sqrt(312.5);
+    QTest::newRow("below both minima") << 150.0 << 0.5 << 50.0;
+    // Highest-speed lobe: only the left side (B's minimum at 200) counts.
+    QTest::newRow("highest lobe, below minimum") << 240.0 << 1.0 << 40.0;
+    QTest::newRow("unstable point") << 100.0 << 1.5 << 0.0;
+  }
+  void speedSecurity() {
+    QFETCH(double, speed);
+    QFETCH(double, depth_mm);
+    QFETCH(double, expected);
+    const StabilityBoundary s(twoLobes());
+    // Linear interpolation on a 1 rev/s grid: crossings accurate to ~0.01 rev/s.
+    QCOMPARE_LE(std::abs(s.speedSecurity(speed, depth_mm * 1e-3) - expected), 0.01);
+  }
+
+  // ROS: normalised distance to the boundary, against a brute-force search over the polyline.
+  void robustnessMatchesBruteForce() {
+    const LobeDiagram d = twoLobes();
+    const StabilityBoundary s(d);
+    const NormalisationSpans spans{170.0, 5e-3};
+    for (double n : {90.0, 130.0, 175.0, 240.0}) {
+      for (double b : {0.5e-3, 1.5e-3}) {
+        double best = 1e300;
+        for (int i = 0; i <= 170000; ++i) {
+          const double ns = 80.0 + i * 1e-3;
+          const double dn = (n - ns) / spans.speed_rev_per_s;
+          const double db = (b - s.depthLimit(ns)) / spans.depth_m;
+          best = std::min(best, std::hypot(dn, db));
+        }
+        const double ros = s.robustness(n, b, spans);
+        QCOMPARE_LE(std::abs(std::abs(ros) - best), 1e-6);
+        QCOMPARE(ros > 0.0, s.isStable(n, b));
+      }
+    }
+  }
+
+  void outsideRangeIsRefused() {
+    const StabilityBoundary s(twoLobes());
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, s.depthLimit(10.0));
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, StabilityBoundary(twoLobes(), 1.5));
+  }
+};
+
+MX_TEST_MAIN(TestStabilityBoundary)
+#include "test_stability_boundary.moc"
