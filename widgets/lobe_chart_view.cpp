@@ -56,12 +56,15 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
     }
   }
   if (max_speed > min_speed) plot_->xAxis->setRange(min_speed, max_speed);
-  // Show the interesting part: up to three times the lowest lobe minimum, at most the cap.
-  double lowest = max_depth;
-  for (const ToolLobeSeries& s : series)
+  // Show the interesting part: up to three times the highest of the tools' lowest lobes.
+  double highest_minimum = 0.0;
+  for (const ToolLobeSeries& s : series) {
+    double lowest = max_depth;
     for (double b : s.nominal_mm)
       if (std::isfinite(b)) lowest = std::min(lowest, b);
-  plot_->yAxis->setRange(0.0, std::min(max_depth, std::max(4.0 * lowest, 1e-3)) * 1.05 + 1e-6);
+    highest_minimum = std::max(highest_minimum, lowest);
+  }
+  plot_->yAxis->setRange(0.0, std::min(max_depth, std::max(3.0 * highest_minimum, 1e-3)) * 1.05 + 1e-6);
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

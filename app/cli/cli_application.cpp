@@ -17,6 +17,7 @@ const char* kUsage =
     "  check     validate a project file\n"
     "  lobes     stability lobes of one tool (--tool ID [--method zoa|sdm] ...)\n"
     "  simulate  time-domain simulation of one cutting point (--tool ID --speed --depth --feed ...)\n"
+    "  point     stability margin, Delta N_s, ROS, power and MRR of one operating point\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 
 void printError(const QString& message) { QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl; }

@@ -5,10 +5,11 @@
 namespace mx::app {
 
 const CliCommand* findCommand(const QString& name) {
-  static const std::array<CliCommand, 3> commands{{
+  static const std::array<CliCommand, 4> commands{{
       {"check", "validate a project file", &runCheckCommand},
       {"lobes", "stability lobes of one tool", &runLobesCommand},
       {"simulate", "time-domain simulation of one cutting point", &runSimulateCommand},
+      {"point", "stability margin, power and MRR of one operating point", &runPointCommand},
   }};
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

@@ -16,5 +16,6 @@ const CliCommand* findCommand(const QString& name);
 int runCheckCommand(const QStringList& arguments);
 int runLobesCommand(const QStringList& arguments);
 int runSimulateCommand(const QStringList& arguments);
+int runPointCommand(const QStringList& arguments);
 
 }  // namespace mx::app

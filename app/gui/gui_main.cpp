@@ -10,6 +10,7 @@
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
+  Q_INIT_RESOURCE(resources);  // the .qrc lives in the static millexpert_gui_core
   std::setlocale(LC_NUMERIC, "C");
   QApplication::setApplicationName("MillExpert");
   QApplication::setOrganizationName("MillExpert");

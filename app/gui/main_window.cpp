@@ -89,7 +89,7 @@ bool MainWindow::openProject(const QString& path) {
 
 void MainWindow::recomputeLobes() {
   LobeJobInput input;
-  double from = 1000.0, to = 20000.0, step = 50.0;
+  double from = 1000.0, to = 20000.0, step = 10.0;  // fine grid for smooth lobe peaks
   if (project_->expert) {
     input.delta_per_s = project_->expert->delta_per_s;
     input.alpha = project_->expert->alpha;

@@ -13,6 +13,24 @@ std::vector<double> SpeedGrid::values() const {
   return out;
 }
 
+namespace {
+// A lobe minimum, not root-finding noise: on each side the envelope rises kProminence above the
+// candidate before it falls below it again (+inf counts as risen).
+constexpr double kProminence = 0.01;
+bool isProminent(const std::vector<double>& depth, size_t i) {
+  const double c = depth[i], high = c * (1.0 + kProminence);
+  auto rises = [&](int step) {
+    for (long j = static_cast<long>(i) + step; j >= 0 && j < static_cast<long>(depth.size()); j += step) {
+      const double v = depth[static_cast<size_t>(j)];
+      if (v < c) return false;
+      if (v > high) return true;
+    }
+    return false;
+  };
+  return rises(-1) && rises(+1);
+}
+}  // namespace
+
 std::vector<LobeMinimum> envelopeMinima(const std::vector<double>& speed, const std::vector<double>& depth,
                                         const std::vector<double>& chatter_hz) {
   std::vector<LobeMinimum> out;
@@ -20,6 +38,7 @@ std::vector<LobeMinimum> envelopeMinima(const std::vector<double>& speed, const 
     const double l = depth[i - 1], c = depth[i], r = depth[i + 1];
     if (!std::isfinite(l) || !std::isfinite(c) || !std::isfinite(r)) continue;
     if (!(c < l && c <= r)) continue;
+    if (!isProminent(depth, i)) continue;
     // Parabola through three equally spaced samples: vertex offset and value.
     const double h = speed[i + 1] - speed[i];
     const double curvature = l - 2.0 * c + r;

@@ -38,7 +38,8 @@ struct LobeDiagram {
 };
 
 // Local minima of a sampled envelope (interior points lower than both neighbours, refined by a
-// parabola through three samples). Points at +inf are skipped.
+// parabola through three samples). Points at +inf are skipped, and so is a minimum that the envelope
+// does not rise 1 % above on both sides before falling below it (root-finding noise, not a lobe).
 std::vector<LobeMinimum> envelopeMinima(const std::vector<double>& speed, const std::vector<double>& depth,
                                         const std::vector<double>& chatter_hz);
 

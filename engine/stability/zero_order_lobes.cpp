@@ -186,6 +186,13 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
   const DirectionalFactors alpha = averageDirectionalFactors(setup.immersion, setup.radial_ratio);
   const std::vector<double> omegas = chatterFrequencyGrid(setup, std::max(options.frequency_samples, 16));
   const double min_speed = speeds.empty() ? 1.0 : *std::min_element(speeds.begin(), speeds.end());
+  const double max_speed = speeds.empty() ? 1.0 : *std::max_element(speeds.begin(), speeds.end());
+  // Lobe k at chatter frequency w lies between w / (2 pi n_t (k + 1)) and w / (2 pi n_t k) (eq. 9-10,
+  // 0 < eps < 2 pi); points whose whole interval is outside the requested speeds (+-10 %) are skipped.
+  auto inRange = [&](double w, int k) {
+    const double per_lobe = w / (2.0 * kPi * setup.teeth);
+    return per_lobe / (k + 1) <= 1.1 * max_speed && (k == 0 || per_lobe / k >= min_speed / 1.1);
+  };
   const int lobes = options.lobe_count > 0
                         ? options.lobe_count
                         : std::min(400, static_cast<int>(omegas.back() / (2 * kPi * setup.teeth * min_speed)) + 2);
@@ -220,7 +227,7 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
       };
       for (size_t i = 0; i < omegas.size(); ++i) {
         double depth = 0.0, period = 0.0;
-        if (branch < counts[i] &&
+        if (branch < counts[i] && inRange(omegas[i], k) &&
             boundaryPoint(cs[i][static_cast<size_t>(branch)], omegas[i], k, options.delta_per_s, u_floor, guess,
                           depth, period)) {
           curve.speed_rev_per_s.push_back(1.0 / (setup.teeth * period));  // eq. 10

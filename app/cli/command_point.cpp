@@ -1,0 +1,104 @@
+// millexpert-cli point PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH [--method zoa|sdm]
+//                   [--delta V] [--alpha V] [--steps M]
+// Everything the lobe chart shows for one operating point: b_lim at the speed (alpha * delta-lobes,
+// Rule 1), the stability verdict, Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
+// torque and MRR (Pareto eq. 8).
+#include <QJsonArray>
+#include <algorithm>
+#include <cmath>
+
+#include "cli/cli_application.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "model/cutting_force.h"
+#include "project/project.h"
+#include "stability/semi_discretization.h"
+#include "stability/stability_boundary.h"
+#include "stability/zero_order_lobes.h"
+
+namespace mx::app {
+
+int runPointCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Stability margin, power and MRR of one operating point.");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"tool", "Tool id.", "ID"},
+      {"speed", "Spindle speed [rpm].", "RPM"},
+      {"depth", "Axial depth of cut [mm].", "MM"},
+      {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"},
+      {"method", "zoa or sdm (default zoa).", "METHOD", "zoa"},
+      {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
+      {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
+      {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const QString tool = requiredOption(parser, "tool");
+  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
+  const double speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
+  const double depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
+  const double feed_mm = *numberOption(parser, "feed", 1e-6, 100.0);
+  const QString method = parser.value("method");
+  if (method != "zoa" && method != "sdm")
+    throw CliError(QString("--method = '%1': must be zoa or sdm").arg(method), kExitBadInput);
+
+  const Project project = loadProject(path);
+  const MillingSetup setup = project.setupFor(tool);
+  double delta = project.expert ? project.expert->delta_per_s : 0.0;
+  double alpha = project.expert ? project.expert->alpha : 1.0;
+  delta = numberOption(parser, "delta", 0.0, 1e6).value_or(delta);
+  alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(alpha);
+  const int steps = integerOption(parser, "steps", 4, 2000).value_or(40);
+
+  // The lobes over the project's speed range (or +-50 % around the point), 10 rpm apart.
+  double from = speed_rpm * 0.5, to = speed_rpm * 1.5;
+  if (project.expert && project.expert->grid) {
+    from = std::min(project.expert->grid->speed_from_rpm, speed_rpm);
+    to = std::max(project.expert->grid->speed_to_rpm, speed_rpm);
+  }
+  const std::vector<double> speeds = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(10.0)}.values();
+  LobeDiagram diagram;
+  if (method == "zoa") {
+    ZoaOptions o;
+    o.delta_per_s = delta;
+    diagram = computeZoaLobes(setup, speeds, o);
+  } else {
+    SdmOptions o;
+    o.delta_per_s = delta;
+    o.steps_per_period = steps;
+    diagram = computeSdmLobes(setup, speeds, o);
+  }
+  const StabilityBoundary boundary(diagram, alpha);
+  const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;
+  double depth_span = 0.0;
+  for (double d : diagram.envelope_depth_m)
+    if (std::isfinite(d)) depth_span = std::max(depth_span, alpha * d);
+  const NormalisationSpans spans{speeds.back() - speeds.front(), depth_span > 0.0 ? depth_span : 1.0};
+  const CutPerformance perf = evaluateCut(setup, {n, b, feed_mm * 1e-3});
+  const double blim = boundary.depthLimit(n);
+  const bool stable = boundary.isStable(n, b);
+
+  QJsonObject out{{"tool", tool},
+                  {"method", method},
+                  {"speed_rpm", speed_rpm},
+                  {"depth_mm", depth_mm},
+                  {"feed_per_tooth_mm", feed_mm},
+                  {"blim_mm", jsonNumberOrNull(blim * 1e3)},
+                  {"stable", stable},
+                  {"delta_Ns_rpm", revPerSToRpm(boundary.speedSecurity(n, b))},
+                  {"ROS", jsonNumberOrNull(boundary.robustness(n, b, spans))},
+                  {"peak_power_W", perf.peak_power_w},
+                  {"mean_power_W", perf.mean_power_w},
+                  {"peak_torque_Nm", perf.peak_torque_nm},
+                  {"MRR_mm3_s", perf.mrr_m3_per_s * 1e9},
+                  {"cutting_speed_m_min", perf.cutting_speed_m_per_s * 60.0},
+                  {"feed_mm_s", feed_mm * setup.teeth * n}};
+  if (project.machine) {
+    out.insert("power_fraction", perf.peak_power_w / project.machine->spindle_power_W);
+    out.insert("power_ok", perf.peak_power_w <= project.machine->spindle_power_W);
+  }
+  printJson(out);
+  return kExitOk;
+}
+
+}  // namespace mx::app

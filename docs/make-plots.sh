@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Regenerates the lobe plots in docs/plots/ from the CLI (Release build), offscreen.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cli=build/release/app/millexpert-cli
+plot=build/release/app/gui/millexpert-plot
+out=docs/plots
+tmp=$(mktemp -d)
+mkdir -p "$out"
+export QT_QPA_PLATFORM=offscreen
+p=projects/benchmark-insperger-1dof.mxproj
+for tool in FULL LOW; do
+  for method in zoa sdm; do
+    "$cli" lobes "$p" --tool "$tool" --method "$method" --from 5000 --to 25000 --step 50 --delta 0 --alpha 1 \
+      --max-depth 10 > "$tmp/$tool-$method.json"
+  done
+  "$cli" lobes "$p" --tool "$tool" --method sdm --from 5000 --to 25000 --step 50 --delta 50 --alpha 1 \
+    --max-depth 10 > "$tmp/$tool-sdm-delta50.json"
+done
+"$plot" "$out/insperger-full-immersion.png" --title "Insperger benchmark, a/D = 1, 2 teeth, down milling" \
+  --max-depth 5 "$tmp/FULL-zoa.json=ZOA (delta = 0)" "$tmp/FULL-sdm.json=SDM m = 40 (delta = 0)" \
+  "$tmp/FULL-sdm-delta50.json=SDM m = 40, delta = 50 1/s"
+"$plot" "$out/insperger-low-immersion.png" --title "Insperger benchmark, a/D = 0.05, 2 teeth, down milling" \
+  --max-depth 10 "$tmp/LOW-zoa.json=ZOA (delta = 0)" "$tmp/LOW-sdm.json=SDM m = 40 (delta = 0)" \
+  "$tmp/LOW-sdm-delta50.json=SDM m = 40, delta = 50 1/s"
+p=projects/rubio2006-tool-selection.mxproj
+for tool in R1 R2; do
+  "$cli" lobes "$p" --tool "$tool" --method zoa --from 1000 --to 12000 --step 10 --delta 0 --alpha 1 > "$tmp/$tool-zoa.json"
+  "$cli" lobes "$p" --tool "$tool" --method sdm --from 1000 --to 12000 --step 50 --delta 0 --alpha 1 > "$tmp/$tool-sdm.json"
+done
+"$plot" "$out/rubio2006-r1-r2.png" --title "Rubio et al. 2006: tools R1 and R2, full-immersion up milling" \
+  --max-depth 2.5 "$tmp/R1-zoa.json=R1 ZOA" "$tmp/R1-sdm.json=R1 SDM m = 40" "$tmp/R2-zoa.json=R2 ZOA" \
+  "$tmp/R2-sdm.json=R2 SDM m = 40"
+rm -rf "$tmp"
+echo "plots written to $out/"

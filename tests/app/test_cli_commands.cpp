@@ -1,0 +1,175 @@
+// millexpert-cli lobes / simulate / point: the fixed JSON interface, flag handling and exit codes
+// (0 ok, 1 computation failed, 2 bad input), driven through the real executable.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "test_main.h"
+
+namespace {
+const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+const QString kInsperger = QStringLiteral(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj");
+
+struct Run {
+  int code = -1;
+  QJsonObject json;
+  QString err;
+};
+
+Run cli(const QStringList& args) {
+  QProcess p;
+  p.start(MX_CLI_PATH, args);
+  p.waitForFinished(120000);
+  Run r;
+  r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+  r.json = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+  r.err = QString::fromUtf8(p.readAllStandardError());
+  return r;
+}
+}  // namespace
+
+class TestCliCommands : public QObject {
+  Q_OBJECT
+ private slots:
+  void lobesJsonInterface() {
+    const Run r = cli({"lobes", kRubio, "--tool", "R1", "--from", "4000", "--to", "6000", "--step", "500"});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"tool", "method", "speed_rpm", "blim_mm"}) QVERIFY2(r.json.contains(key), key);
+    QCOMPARE(r.json["tool"].toString(), QString("R1"));
+    QCOMPARE(r.json["method"].toString(), QString("zoa"));
+    const QJsonArray speeds = r.json["speed_rpm"].toArray();
+    QCOMPARE(speeds.size(), 5);
+    QCOMPARE(speeds[0].toDouble(), 4000.0);
+    QCOMPARE(speeds[4].toDouble(), 6000.0);
+    // Defaults from the project: delta 0.05, alpha 0.95.
+    QCOMPARE(r.json["alpha"].toDouble(), 0.95);
+  }
+
+  // alpha scales the envelope; delta 0 / alpha 1 are the nominal lobes (>= the margined ones).
+  void lobesMarginsAndNulls() {
+    const QStringList base{"lobes", kRubio, "--tool", "R1", "--from", "3000", "--to", "12000", "--step", "250"};
+    const Run nominal = cli(base + QStringList{"--delta", "0", "--alpha", "1"});
+    const Run half = cli(base + QStringList{"--delta", "0", "--alpha", "0.5"});
+    const Run margined = cli(base + QStringList{"--delta", "100", "--alpha", "1"});
+    QCOMPARE(nominal.code, 0);
+    const QJsonArray n = nominal.json["blim_mm"].toArray(), h = half.json["blim_mm"].toArray(),
+                     m = margined.json["blim_mm"].toArray();
+    int nulls = 0;
+    for (qsizetype i = 0; i < n.size(); ++i) {
+      if (n[i].isNull()) {
+        ++nulls;
+        continue;
+      }
+      QCOMPARE_LE(std::abs(h[i].toDouble() - 0.5 * n[i].toDouble()), 1e-12);
+      QVERIFY(m[i].toDouble() < n[i].toDouble());
+    }
+    QCOMPARE(nulls, 0);
+    // Above --max-depth there is no instability: null entries.
+    const Run capped = cli(base + QStringList{"--max-depth", "1.0", "--delta", "0", "--alpha", "1"});
+    int capped_nulls = 0;
+    for (const QJsonValue& v : capped.json["blim_mm"].toArray()) capped_nulls += v.isNull() ? 1 : 0;
+    QVERIFY(capped_nulls > 0);
+  }
+
+  void lobesSdmMatchesZoaAtFullImmersion() {
+    const QStringList base{"lobes", kRubio, "--tool", "R1", "--from", "7000", "--to", "8500", "--step", "100",
+                           "--delta", "0", "--alpha", "1"};
+    const Run zoa = cli(base);
+    const Run sdm = cli(base + QStringList{"--method", "sdm", "--steps", "40"});
+    QCOMPARE(sdm.code, 0);
+    QCOMPARE(sdm.json["method"].toString(), QString("sdm"));
+    const double zmin = zoa.json["minima"].toArray()[0].toObject()["blim_mm"].toDouble();
+    const double smin = sdm.json["minima"].toArray()[0].toObject()["blim_mm"].toDouble();
+    QCOMPARE_LE(std::abs(smin / zmin - 1.0), 0.05);
+  }
+
+  void simulateJsonInterfaceAndCsv() {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("trace.csv");
+    const Run r = cli({"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "0.4924", "--feed", "0.2722",
+                       "--csv", csv});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"eta", "chip_ratio", "chatter", "chatter_frequency_Hz", "tooth_passing_Hz", "peak_force_N",
+                            "peak_power_W", "suggested_speed_rpm"})
+      QVERIFY2(r.json.contains(key), key);
+    QCOMPARE(r.json["chatter"].toBool(), false);
+    QVERIFY(r.json["chatter_frequency_Hz"].isNull());
+    QVERIFY(r.json["suggested_speed_rpm"].isNull());
+    QCOMPARE(r.json["tooth_passing_Hz"].toDouble(), 290.0);
+    QCOMPARE_LE(std::abs(r.json["peak_power_W"].toDouble() - 732.66), 0.05);
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readLine().trimmed(), QByteArray("time_s,x_mm,y_mm,Fx_N,Fy_N,F_N,P_W"));
+    int rows = 0;
+    while (!f.atEnd()) rows += f.readLine().split(',').size() == 7 ? 1 : 0;
+    QVERIFY(rows > 1000);
+  }
+
+  // A chattering cut: the chatter frequency and a Smith-Tlusty speed N = 60 f_c / (n_t k) come back.
+  void simulateChatterSuggestsSpeed() {
+    const Run r = cli({"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "3", "--feed", "0.1",
+                       "--passes", "4"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.json["chatter"].toBool());
+    QVERIFY(r.json["eta"].toDouble() >= 1.3);
+    const double fc = r.json["chatter_frequency_Hz"].toDouble();
+    const double n = r.json["suggested_speed_rpm"].toDouble();
+    const double k = 60.0 * fc / (3.0 * n);
+    QCOMPARE_LE(std::abs(k - std::round(k)), 1e-9);
+    QVERIFY(n <= 12000.0);  // machine.max_spindle_rpm
+  }
+
+  void pointReadouts() {
+    const Run r = cli({"point", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "0.4924", "--feed", "0.2722"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.json["stable"].toBool());
+    // Below both lobe minima (4786 and 7761 rpm): Delta N_s = 5800 - 4786.
+    QCOMPARE_LE(std::abs(r.json["delta_Ns_rpm"].toDouble() - 1014.0), 5.0);
+    QVERIFY(r.json["ROS"].toDouble() > 0.0);
+    QVERIFY(r.json["power_ok"].toBool());
+  }
+
+  void badInputExitsWithTwo_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("names");
+    QTest::newRow("unknown tool") << QStringList{"lobes", kRubio, "--tool", "X9"} << "X9";
+    QTest::newRow("missing tool flag") << QStringList{"lobes", kRubio} << "--tool";
+    QTest::newRow("bad method") << QStringList{"lobes", kRubio, "--tool", "R1", "--method", "fem"} << "--method";
+    QTest::newRow("delta above decay rate") << QStringList{"lobes", kRubio, "--tool", "R1", "--delta", "500"} << "delta";
+    QTest::newRow("alpha > 1") << QStringList{"lobes", kRubio, "--tool", "R1", "--alpha", "1.5"} << "--alpha";
+    QTest::newRow("to < from") << QStringList{"lobes", kRubio, "--tool", "R1", "--from", "9000", "--to", "100"} << "--to";
+    QTest::newRow("steps too few") << QStringList{"lobes", kRubio, "--tool", "R1", "--method", "sdm", "--steps", "2"}
+                                   << "--steps";
+    QTest::newRow("nan speed") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "nan", "--depth", "1",
+                                              "--feed", "0.1"}
+                               << "--speed";
+    QTest::newRow("negative depth") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "5000", "--depth",
+                                                   "-1", "--feed", "0.1"}
+                                    << "--depth";
+    QTest::newRow("missing feed") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "5000", "--depth", "1"}
+                                  << "--feed";
+    QTest::newRow("unknown flag") << QStringList{"lobes", kRubio, "--tool", "R1", "--colour", "red"} << "colour";
+    QTest::newRow("missing project") << QStringList{"lobes", "/nonexistent.mxproj", "--tool", "R1"} << "nonexistent";
+    QTest::newRow("unknown command") << QStringList{"frobnicate", kRubio} << "frobnicate";
+  }
+  void badInputExitsWithTwo() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, names);
+    const Run r = cli(args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(names), qPrintable(r.err));
+  }
+
+  void inspergerLowImmersionSdmRuns() {
+    const Run r = cli({"lobes", kInsperger, "--tool", "LOW", "--method", "sdm", "--from", "9000", "--to", "12000",
+                       "--step", "500"});
+    QCOMPARE(r.code, 0);
+    for (const QJsonValue& v : r.json["blim_mm"].toArray()) QVERIFY(v.isNull() || v.toDouble() > 0.0);
+  }
+};
+
+MX_TEST_MAIN(TestCliCommands)
+#include "test_cli_commands.moc"
