@@ -21,6 +21,8 @@ class EngineRunner : public QObject {
   quint64 submitLobes(LobeJobInput input);
   void cancelAll();
   bool busy() const;
+  // The engine thread (a one-thread pool): every job of the GUI runs here, never on the GUI thread.
+  QThreadPool* pool() { return &pool_; }
 
  signals:
   void lobesReady(const mx::gui::LobeJobResult& result);
