@@ -1,27 +1,60 @@
 #include "lobe_chart_view.h"
 
+#include <QKeyEvent>
+#include <QPainter>
+#include <QSvgGenerator>
 #include <QVBoxLayout>
 #include <cmath>
+#include <limits>
 #include <qcustomplot.h>
 
 namespace mx::widgets {
+
+namespace {
+const QColor kUnstableFill(214, 39, 40, 38);
+const QColor kAdmissibleFill(44, 160, 44, 40);
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+QColor verdictColor(PointVerdict v) {
+  switch (v) {
+    case PointVerdict::Stable: return QColor(30, 150, 30);
+    case PointVerdict::Unstable: return QColor(200, 20, 20);
+    case PointVerdict::PowerExceeded: return QColor(230, 120, 0);
+    case PointVerdict::Unknown: break;
+  }
+  return QColor(90, 90, 90);
+}
+}  // namespace
 
 LobeChartView::LobeChartView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
+  setFocusPolicy(Qt::StrongFocus);
+  plot_->setFocusPolicy(Qt::NoFocus);
   plot_->xAxis->setLabel("Spindle speed N [rpm]");
   plot_->yAxis->setLabel("Axial depth of cut b [mm]");
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
+  plot_->legend->setBrush(QColor(255, 255, 255, 220));
   plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-  plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-  plot_->setToolTip(tr("Stability lobes: below a curve the cut is chatter-free. Wheel zooms, drag pans."));
-  connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent* event) {
-    const double rpm = plot_->xAxis->pixelToCoord(event->position().x());
-    const double mm = plot_->yAxis->pixelToCoord(event->position().y());
-    emit operatingPointPicked(rpm, mm);
-  });
+  plot_->setInteractions(QCP::iRangeZoom);  // left drag moves the point; right drag pans (below)
+  plot_->setToolTip(tr("Drag with the left button to pick the operating point; arrow keys nudge it "
+                       "(Shift snaps to the grid). Wheel zooms, right button pans."));
+  marker_ = new QCPItemTracer(plot_);
+  marker_->setLayer("overlay");
+  marker_->setStyle(QCPItemTracer::tsCircle);
+  marker_->setSize(14);
+  marker_->setVisible(false);
+  marker_label_ = new QCPItemText(plot_);
+  marker_label_->setLayer("overlay");
+  marker_label_->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+  marker_label_->position->setParentAnchor(marker_->position);
+  marker_label_->position->setCoords(10, -8);
+  marker_label_->setVisible(false);
+  connect(plot_, &QCustomPlot::mousePress, this, &LobeChartView::onMousePress);
+  connect(plot_, &QCustomPlot::mouseMove, this, &LobeChartView::onMouseMove);
+  connect(plot_, &QCustomPlot::mouseRelease, this, &LobeChartView::onMouseRelease);
 }
 
 QColor LobeChartView::toolColor(int index) {
@@ -30,47 +63,256 @@ QColor LobeChartView::toolColor(int index) {
   return palette[index % 6];
 }
 
+QWidget* LobeChartView::plotWidget() const { return plot_; }
+
 void LobeChartView::clear() {
+  series_.clear();
+  power_mm_.clear();
   plot_->clearGraphs();
+  unstable_top_ = unstable_fill_ = admissible_fill_ = power_graph_ = nullptr;
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha) {
-  plot_->clearGraphs();
-  double max_depth = 0.0, min_speed = 1e300, max_speed = 0.0;
+  clear();
+  series_ = series;
+  // Region fills first so that the curves are drawn over them.
+  unstable_top_ = plot_->addGraph();
+  unstable_top_->removeFromLegend();
+  unstable_top_->setPen(Qt::NoPen);
+  unstable_fill_ = plot_->addGraph();
+  unstable_fill_->setName(tr("unstable (nominal lobes)"));
+  unstable_fill_->setPen(Qt::NoPen);
+  unstable_fill_->setBrush(kUnstableFill);
+  unstable_fill_->setChannelFillGraph(unstable_top_);
+  admissible_fill_ = plot_->addGraph();
+  admissible_fill_->setName(tr("admissible (below margined lobe and power limit)"));
+  admissible_fill_->setPen(Qt::NoPen);
+  admissible_fill_->setBrush(kAdmissibleFill);
+  double max_depth = 0.0, highest_minimum = 0.0;
   for (int i = 0; i < series.size(); ++i) {
     const ToolLobeSeries& s = series[i];
-    const QColor color = toolColor(i);
     QCPGraph* nominal = plot_->addGraph();
     nominal->setName(QString("%1 nominal (\u03b4 = 0, \u03b1 = 1)").arg(s.tool_id));
-    nominal->setPen(QPen(color, 2.0));
+    nominal->setPen(QPen(toolColor(i), 2.0));
     nominal->setData(s.speed_rpm, s.nominal_mm, true);
     QCPGraph* margined = plot_->addGraph();
     margined->setName(QString("%1 margined (\u03b4 = %2 1/s, \u03b1 = %3)").arg(s.tool_id).arg(delta_per_s).arg(alpha));
-    margined->setPen(QPen(color, 1.5, Qt::DashLine));
+    margined->setPen(QPen(toolColor(i), 1.5, Qt::DashLine));
     margined->setData(s.speed_rpm, s.margined_mm, true);
-    for (int j = 0; j < s.speed_rpm.size(); ++j) {
-      if (std::isfinite(s.nominal_mm[j])) max_depth = std::max(max_depth, s.nominal_mm[j]);
-      min_speed = std::min(min_speed, s.speed_rpm[j]);
-      max_speed = std::max(max_speed, s.speed_rpm[j]);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (double b : s.nominal_mm)
+      if (std::isfinite(b)) {
+        max_depth = std::max(max_depth, b);
+        lowest = std::min(lowest, b);
+      }
+    if (std::isfinite(lowest)) highest_minimum = std::max(highest_minimum, lowest);
+  }
+  power_graph_ = plot_->addGraph();
+  power_graph_->setPen(QPen(QColor(40, 40, 40), 1.5, Qt::DashDotLine));
+  power_graph_->removeFromLegend();
+  if (!series.isEmpty() && !series.front().speed_rpm.isEmpty()) {
+    home_x0_ = series.front().speed_rpm.front();
+    home_x1_ = series.front().speed_rpm.back();
+  }
+  home_y1_ = std::min(max_depth, std::max(3.0 * highest_minimum, 1e-3)) * 1.05 + 1e-6;
+  if (active_ >= series.size()) active_ = series.isEmpty() ? -1 : 0;
+  if (active_ < 0 && !series.isEmpty()) active_ = 0;
+  updateRegions();
+  resetView();
+}
+
+void LobeChartView::setActiveTool(int index) {
+  active_ = (index >= 0 && index < series_.size()) ? index : -1;
+  updateRegions();
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void LobeChartView::setPowerLimit(const QVector<double>& depth_mm, const QString& label) {
+  power_mm_ = depth_mm;
+  if (power_graph_) {
+    if (depth_mm.isEmpty()) {
+      power_graph_->data()->clear();
+      power_graph_->removeFromLegend();
+    } else {
+      power_graph_->setName(label);
+      power_graph_->addToLegend();
     }
   }
-  if (max_speed > min_speed) plot_->xAxis->setRange(min_speed, max_speed);
-  // Show the interesting part: up to three times the highest of the tools' lowest lobes.
-  double highest_minimum = 0.0;
-  for (const ToolLobeSeries& s : series) {
-    double lowest = max_depth;
-    for (double b : s.nominal_mm)
-      if (std::isfinite(b)) lowest = std::min(lowest, b);
-    highest_minimum = std::max(highest_minimum, lowest);
-  }
-  plot_->yAxis->setRange(0.0, std::min(max_depth, std::max(3.0 * highest_minimum, 1e-3)) * 1.05 + 1e-6);
+  updateRegions();
   plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+// Unstable region: above the active tool's nominal envelope. Admissible: below the margined
+// envelope and the power limit.
+void LobeChartView::updateRegions() {
+  if (!unstable_fill_) return;
+  QVector<double> x, top, unstable, admissible;
+  if (active_ >= 0) {
+    const ToolLobeSeries& s = series_[active_];
+    const double ceiling = home_y1_ * 1000.0;
+    for (int j = 0; j < s.speed_rpm.size(); ++j) {
+      x.push_back(s.speed_rpm[j]);
+      top.push_back(ceiling);
+      unstable.push_back(std::isfinite(s.nominal_mm[j]) ? s.nominal_mm[j] : ceiling);
+      double allowed = std::isfinite(s.margined_mm[j]) ? s.margined_mm[j] : ceiling;
+      if (j < power_mm_.size()) allowed = std::min(allowed, power_mm_[j]);
+      admissible.push_back(allowed);
+    }
+  }
+  unstable_top_->setData(x, top, true);
+  unstable_fill_->setData(x, unstable, true);
+  admissible_fill_->setData(x, admissible, true);
+  if (power_graph_ && active_ >= 0 && power_mm_.size() == x.size()) power_graph_->setData(x, power_mm_, true);
+}
+
+void LobeChartView::resetView() {
+  plot_->xAxis->setRange(home_x0_, home_x1_);
+  plot_->yAxis->setRange(0.0, home_y1_);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+  emit viewReset();
+}
+
+void LobeChartView::setSnapGrid(double speed_step_rpm, double depth_step_mm) {
+  if (speed_step_rpm > 0.0) snap_rpm_ = speed_step_rpm;
+  if (depth_step_mm > 0.0) snap_mm_ = depth_step_mm;
+}
+
+void LobeChartView::setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict) {
+  point_rpm_ = speed_rpm;
+  point_mm_ = depth_mm;
+  const QColor c = verdictColor(verdict);
+  marker_->position->setCoords(speed_rpm, depth_mm);
+  marker_->setPen(QPen(c.darker(130), 2.0));
+  marker_->setBrush(c);
+  marker_->setVisible(true);
+  marker_label_->setText(QString("%1 rpm, %2 mm").arg(speed_rpm, 0, 'f', 0).arg(depth_mm, 0, 'f', 3));
+  marker_label_->setColor(c.darker(150));
+  marker_label_->setVisible(true);
+  replotOverlay();
+}
+
+void LobeChartView::setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color) {
+  auto* tracer = new QCPItemTracer(plot_);
+  tracer->setLayer("overlay");
+  tracer->setStyle(QCPItemTracer::tsSquare);
+  tracer->setSize(10);
+  tracer->setPen(QPen(color, 2.0));
+  tracer->position->setCoords(speed_rpm, depth_mm);
+  auto* text = new QCPItemText(plot_);
+  text->setLayer("overlay");
+  text->position->setParentAnchor(tracer->position);
+  text->position->setCoords(8, 8);
+  text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+  text->setText(name);
+  text->setColor(color);
+  extra_markers_.push_back(tracer);
+  extra_markers_.push_back(text);
+  replotOverlay();
+}
+
+void LobeChartView::clearMarkers() {
+  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it) plot_->removeItem(*it);
+  extra_markers_.clear();
+  replotOverlay();
+}
+
+void LobeChartView::replotOverlay() {
+  // Markers live on the buffered overlay layer: only that layer repaints while dragging.
+  if (QCPLayer* overlay = plot_->layer("overlay")) overlay->replot();
+  plot_->update();
+}
+
+QPoint LobeChartView::pixelFor(double speed_rpm, double depth_mm) const {
+  return QPoint(qRound(plot_->xAxis->coordToPixel(speed_rpm)), qRound(plot_->yAxis->coordToPixel(depth_mm)));
+}
+
+void LobeChartView::movePointTo(double speed_rpm, double depth_mm, bool snap) {
+  if (snap) {
+    speed_rpm = std::round(speed_rpm / snap_rpm_) * snap_rpm_;
+    depth_mm = std::round(depth_mm / snap_mm_) * snap_mm_;
+  }
+  speed_rpm = std::max(speed_rpm, 1.0);
+  depth_mm = std::max(depth_mm, 0.0);
+  point_rpm_ = speed_rpm;
+  point_mm_ = depth_mm;
+}
+
+void LobeChartView::onMousePress(QMouseEvent* event) {
+  setFocus(Qt::MouseFocusReason);
+  const QPointF p = event->position();
+  if (event->button() == Qt::RightButton) {
+    panning_ = true;
+    pan_start_ = p.toPoint();
+    pan_x0_ = plot_->xAxis->range().lower, pan_x1_ = plot_->xAxis->range().upper;
+    pan_y0_ = plot_->yAxis->range().lower, pan_y1_ = plot_->yAxis->range().upper;
+    return;
+  }
+  if (event->button() != Qt::LeftButton || !plot_->axisRect()->rect().contains(p.toPoint())) return;
+  dragging_ = true;
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()),
+              event->modifiers() & Qt::ShiftModifier);
+  emit pointDragged(point_rpm_, point_mm_);
+}
+
+void LobeChartView::onMouseMove(QMouseEvent* event) {
+  const QPointF p = event->position();
+  if (panning_) {
+    const double dx = plot_->xAxis->pixelToCoord(pan_start_.x()) - plot_->xAxis->pixelToCoord(p.x());
+    const double dy = plot_->yAxis->pixelToCoord(pan_start_.y()) - plot_->yAxis->pixelToCoord(p.y());
+    plot_->xAxis->setRange(pan_x0_ + dx, pan_x1_ + dx);
+    plot_->yAxis->setRange(pan_y0_ + dy, pan_y1_ + dy);
+    pan_start_ = p.toPoint();
+    pan_x0_ += dx, pan_x1_ += dx, pan_y0_ += dy, pan_y1_ += dy;
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+    return;
+  }
+  if (!dragging_) return;
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()),
+              event->modifiers() & Qt::ShiftModifier);
+  emit pointDragged(point_rpm_, point_mm_);
+}
+
+void LobeChartView::onMouseRelease(QMouseEvent* event) {
+  if (event->button() == Qt::RightButton) {
+    panning_ = false;
+    return;
+  }
+  if (!dragging_ || event->button() != Qt::LeftButton) return;
+  dragging_ = false;
+  emit pointReleased(point_rpm_, point_mm_);
+}
+
+void LobeChartView::keyPressEvent(QKeyEvent* event) {
+  const bool snap = event->modifiers() & Qt::ShiftModifier;
+  const double step_rpm = snap ? snap_rpm_ : plot_->xAxis->range().size() / 200.0;
+  const double step_mm = snap ? snap_mm_ : plot_->yAxis->range().size() / 200.0;
+  double n = point_rpm_, b = point_mm_;
+  switch (event->key()) {
+    case Qt::Key_Left: n -= step_rpm; break;
+    case Qt::Key_Right: n += step_rpm; break;
+    case Qt::Key_Up: b += step_mm; break;
+    case Qt::Key_Down: b -= step_mm; break;
+    case Qt::Key_Home: resetView(); return;
+    default: QWidget::keyPressEvent(event); return;
+  }
+  movePointTo(n, b, snap);
+  emit pointReleased(point_rpm_, point_mm_);
 }
 
 bool LobeChartView::saveImage(const QString& path, int width, int height) {
   plot_->replot();
   if (path.endsWith(".pdf", Qt::CaseInsensitive)) return plot_->savePdf(path, width, height);
+  if (path.endsWith(".svg", Qt::CaseInsensitive)) {
+    QSvgGenerator svg;
+    svg.setFileName(path);
+    svg.setSize(QSize(width, height));
+    svg.setViewBox(QRect(0, 0, width, height));
+    svg.setTitle("MillExpert stability lobes");
+    QCPPainter painter(&svg);
+    plot_->toPainter(&painter, width, height);
+    return painter.end();
+  }
   return plot_->savePng(path, width, height);
 }
 

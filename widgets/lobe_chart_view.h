@@ -1,12 +1,21 @@
 #pragma once
-// Stability-lobe chart: one envelope per tool (nominal and margined), spindle speed [rpm] against
-// axial depth [mm]. The plot library (QCustomPlot) stays behind this class.
+// Interactive stability-lobe chart (QCustomPlot stays behind this class): the nominal and margined
+// envelopes of the tools, the unstable region of the active tool shaded, the power-limit curve for
+// the current feed, the admissible region (below both), and the operating point, which the user
+// drags with the left button (live signals), nudges with the arrow keys (Shift snaps to the
+// admissible grid), zooms with the wheel and pans with the right button.
 #include <QColor>
+#include <QPoint>
 #include <QString>
 #include <QVector>
 #include <QWidget>
 
 class QCustomPlot;
+class QCPGraph;
+class QCPItemTracer;
+class QCPItemText;
+class QCPAbstractItem;
+class QMouseEvent;
 
 namespace mx::widgets {
 
@@ -17,22 +26,64 @@ struct ToolLobeSeries {
   QVector<double> margined_mm;  // alpha * delta-lobes (Rule 1); NaN where none below the cap
 };
 
+enum class PointVerdict { Unknown, Stable, Unstable, PowerExceeded };
+
 class LobeChartView : public QWidget {
   Q_OBJECT
  public:
   explicit LobeChartView(QWidget* parent = nullptr);
 
   void setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha);
+  void setActiveTool(int index);  // whose unstable region is shaded; -1 = none
+  // Depth [mm] where peak power reaches the spindle limit, on the active tool's speeds; empty = none.
+  void setPowerLimit(const QVector<double>& depth_mm, const QString& label);
+  void setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict);
+  void setSnapGrid(double speed_step_rpm, double depth_step_mm);
+  void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color);  // q*, q**
+  void clearMarkers();
   void clear();
-  bool saveImage(const QString& path, int width = 0, int height = 0);
+  void resetView();
+  bool saveImage(const QString& path, int width = 1600, int height = 900);  // .png, .svg or .pdf
+
+  double pointSpeed() const { return point_rpm_; }
+  double pointDepth() const { return point_mm_; }
+  QPoint pixelFor(double speed_rpm, double depth_mm) const;  // in plotWidget() coordinates
+  QWidget* plotWidget() const;
   static QColor toolColor(int index);
 
  signals:
-  // A point on the chart was clicked (speed [rpm], depth [mm]).
-  void operatingPointPicked(double speed_rpm, double depth_mm);
+  void pointDragged(double speed_rpm, double depth_mm);   // live, during a drag
+  void pointReleased(double speed_rpm, double depth_mm);  // drag released or key nudge
+  void viewReset();
+
+ protected:
+  void keyPressEvent(QKeyEvent* event) override;
 
  private:
+  void onMousePress(QMouseEvent* event);
+  void onMouseMove(QMouseEvent* event);
+  void onMouseRelease(QMouseEvent* event);
+  void movePointTo(double speed_rpm, double depth_mm, bool snap);
+  void updateRegions();
+  void replotOverlay();
+
   QCustomPlot* plot_;
+  QCPGraph* unstable_top_ = nullptr;
+  QCPGraph* unstable_fill_ = nullptr;
+  QCPGraph* admissible_fill_ = nullptr;
+  QCPGraph* power_graph_ = nullptr;
+  QCPItemTracer* marker_ = nullptr;
+  QCPItemText* marker_label_ = nullptr;
+  QVector<QCPAbstractItem*> extra_markers_;  // q*, q** tracers and their labels
+  QVector<ToolLobeSeries> series_;
+  QVector<double> power_mm_;
+  int active_ = -1;
+  double point_rpm_ = 0.0, point_mm_ = 0.0;
+  double snap_rpm_ = 100.0, snap_mm_ = 0.05;
+  bool dragging_ = false, panning_ = false;
+  QPoint pan_start_;
+  double pan_x0_ = 0.0, pan_x1_ = 0.0, pan_y0_ = 0.0, pan_y1_ = 0.0;
+  double home_x0_ = 0.0, home_x1_ = 1.0, home_y1_ = 1.0;
 };
 
 }  // namespace mx::widgets

@@ -18,6 +18,8 @@ const char* kUsage =
     "  lobes     stability lobes of one tool (--tool ID [--method zoa|sdm] ...)\n"
     "  simulate  time-domain simulation of one cutting point (--tool ID --speed --depth --feed ...)\n"
     "  point     stability margin, Delta N_s, ROS, power and MRR of one operating point\n"
+    "  rank      expert system: tool ranking, q* and q** ([--c c1,c2,c3] [--cr ...] [--no-simulation])\n"
+    "  weights-sweep  minimum tool cost against the weights (--c3 V | --simplex STEP)\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 
 void printError(const QString& message) { QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl; }

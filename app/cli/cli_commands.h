@@ -17,5 +17,7 @@ int runCheckCommand(const QStringList& arguments);
 int runLobesCommand(const QStringList& arguments);
 int runSimulateCommand(const QStringList& arguments);
 int runPointCommand(const QStringList& arguments);
+int runRankCommand(const QStringList& arguments);
+int runWeightsSweepCommand(const QStringList& arguments);
 
 }  // namespace mx::app

@@ -1,5 +1,6 @@
 #include "engine_runner.h"
 
+#include <QPointer>
 #include <QtConcurrent>
 
 namespace mx::gui {
@@ -33,8 +34,21 @@ quint64 EngineRunner::submitLobes(LobeJobInput input) {
     if (generation == generation_) emit lobesReady(result);  // stale results are dropped
   });
   if (running_++ == 0) emit busyChanged(true);
-  watcher->setFuture(QtConcurrent::run(&pool_, [input = std::move(input), generation, cancel] {
-    return runLobeJob(input, generation, *cancel);
+  // Progress crosses to the GUI thread queued, at most once per percent.
+  QPointer<EngineRunner> self(this);
+  auto last = std::make_shared<std::atomic<int>>(-1);
+  auto progress = [self, generation, last](double f) {
+    const int percent = static_cast<int>(f * 100.0);
+    if (percent == last->exchange(percent)) return;
+    QMetaObject::invokeMethod(
+        self.data(),
+        [self, generation, f] {
+          if (self && generation == self->generation_) emit self->lobeProgress(f);
+        },
+        Qt::QueuedConnection);
+  };
+  watcher->setFuture(QtConcurrent::run(&pool_, [input = std::move(input), generation, cancel, progress] {
+    return runLobeJob(input, generation, *cancel, progress);
   }));
   return generation;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The engine thread: a one-thread pool that runs copied-input jobs. Each submission gets a
 // generation id and an atomic cancel flag; a newer submission cancels the older one, and stale
-// results are dropped before they reach the GUI (delivered through a queued signal).
+// results are dropped before they reach the GUI (delivered through queued signals).
 #include <QFutureWatcher>
 #include <QObject>
 #include <QThreadPool>
@@ -26,6 +26,7 @@ class EngineRunner : public QObject {
 
  signals:
   void lobesReady(const mx::gui::LobeJobResult& result);
+  void lobeProgress(double fraction);
   void busyChanged(bool busy);
 
  private:

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   parser.setApplicationDescription("MillExpert: milling stability lobes, expert tool selection and control.");
   parser.addHelpOption();
   parser.addPositionalArgument("project", "Project file (.mxproj); default: the bundled example.");
-  parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes are shown, then quit.",
+  parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the first simulation are shown, then quit.",
                     "FILE"});
   parser.process(app);
 
@@ -28,9 +28,10 @@ int main(int argc, char** argv) {
   mx::gui::MainWindow window;
   const QString screenshot = parser.value("screenshot");
   window.setQuiet(!screenshot.isEmpty());
+  if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
   if (!screenshot.isEmpty()) {
-    QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, [&window, screenshot] {
+    QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&window, screenshot] {
       QTimer::singleShot(300, &window, [&window, screenshot] {
         window.grab().save(screenshot);
         QApplication::quit();

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "model/job_control.h"
+#include "stability/semi_discretization.h"
 #include "stability/zero_order_lobes.h"
 
 namespace mx::gui {
@@ -15,28 +16,61 @@ QVector<double> toMillimetres(const std::vector<double>& depth_m, double factor)
   for (double b : depth_m) out.push_back(std::isfinite(b) ? b * factor * 1e3 : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
+
+LobeDiagram computeLobes(const LobeJobInput& in, const MillingSetup& setup, double delta, const JobControl& control) {
+  if (in.method == LobeMethod::ZeroOrder) {
+    ZoaOptions o;
+    o.delta_per_s = delta;
+    o.max_depth_m = in.max_depth_m;
+    return computeZoaLobes(setup, in.speeds_rev_per_s, o, control);
+  }
+  SdmOptions o;
+  o.delta_per_s = delta;
+  o.max_depth_m = in.max_depth_m;
+  o.steps_per_period = in.sdm_steps;
+  return computeSdmLobes(setup, in.speeds_rev_per_s, o, control);
+}
 }  // namespace
 
-LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const std::atomic<bool>& cancel) {
+QVector<widgets::ToolLobeSeries> LobeSnapshot::series() const {
+  QVector<widgets::ToolLobeSeries> out;
+  for (const ToolLobes& t : tools) {
+    widgets::ToolLobeSeries s;
+    s.tool_id = QString::fromStdString(t.setup.tool_id);
+    for (double n : t.nominal.speed_rev_per_s) s.speed_rpm.push_back(revPerSToRpm(n));
+    s.nominal_mm = toMillimetres(t.nominal.envelope_depth_m, 1.0);
+    s.margined_mm = toMillimetres(t.margined.envelope_depth_m, alpha);
+    out.push_back(s);
+  }
+  return out;
+}
+
+LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const std::atomic<bool>& cancel,
+                         const std::function<void(double)>& progress) {
   LobeJobResult result;
   result.generation = generation;
-  JobControl control;
-  control.cancel = &cancel;
+  auto snapshot = std::make_shared<LobeSnapshot>();
+  snapshot->method = input.method;
+  snapshot->delta_per_s = input.delta_per_s;
+  snapshot->alpha = input.alpha;
+  const double jobs = 2.0 * static_cast<double>(std::max<size_t>(input.tools.size(), 1));
   try {
-    for (const MillingSetup& setup : input.tools) {
-      if (control.cancelled()) throw Cancelled();
-      ZoaOptions options;
-      options.max_depth_m = input.max_depth_m;
-      const LobeDiagram nominal = computeZoaLobes(setup, input.speeds_rev_per_s, options, control);
-      options.delta_per_s = input.delta_per_s;
-      const LobeDiagram margined = computeZoaLobes(setup, input.speeds_rev_per_s, options, control);
-      widgets::ToolLobeSeries series;
-      series.tool_id = QString::fromStdString(setup.tool_id);
-      for (double n : input.speeds_rev_per_s) series.speed_rpm.push_back(revPerSToRpm(n));
-      series.nominal_mm = toMillimetres(nominal.envelope_depth_m, 1.0);
-      series.margined_mm = toMillimetres(margined.envelope_depth_m, input.alpha);
-      result.series.push_back(series);
+    for (size_t i = 0; i < input.tools.size(); ++i) {
+      ToolLobes t;
+      t.setup = input.tools[i];
+      for (int pass = 0; pass < 2; ++pass) {
+        JobControl control;
+        control.cancel = &cancel;
+        const double done = static_cast<double>(2 * i + pass);
+        if (progress) control.progress = [&](double f) { progress((done + f) / jobs); };
+        if (control.cancelled()) throw Cancelled();
+        (pass == 0 ? t.nominal : t.margined) = computeLobes(input, t.setup, pass == 0 ? 0.0 : input.delta_per_s, control);
+      }
+      snapshot->tools.push_back(std::move(t));
     }
+    result.snapshot = std::move(snapshot);
+  } catch (const Cancelled&) {
+    result.cancelled = true;
   } catch (const std::exception& e) {
     result.error = QString::fromStdString(e.what());
   }

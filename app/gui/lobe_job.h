@@ -1,32 +1,57 @@
 #pragma once
-// The lobe job: inputs copied from the project, computed on the engine thread.
+// The lobe job: inputs copied from the project, computed on the engine thread. The result is an
+// immutable snapshot (per tool: setup, nominal and margined lobes) that the GUI thread queries for
+// readouts without recomputing anything.
 #include <QMetaType>
 #include <QString>
 #include <QVector>
 #include <atomic>
+#include <functional>
 #include <memory>
 
 #include "lobe_chart_view.h"
 #include "model/milling_setup.h"
+#include "stability/lobe_diagram.h"
 
 namespace mx::gui {
+
+enum class LobeMethod { ZeroOrder, SemiDiscretization };
 
 struct LobeJobInput {
   std::vector<MillingSetup> tools;
   std::vector<double> speeds_rev_per_s;
+  LobeMethod method = LobeMethod::ZeroOrder;
+  int sdm_steps = 40;
   double delta_per_s = 0.0;
   double alpha = 1.0;
   double max_depth_m = 0.02;
 };
 
-struct LobeJobResult {
-  quint64 generation = 0;
-  QVector<widgets::ToolLobeSeries> series;
-  QString error;  // empty on success
+struct ToolLobes {
+  MillingSetup setup;
+  LobeDiagram nominal;   // delta = 0
+  LobeDiagram margined;  // the delta-lobes (alpha is applied by the consumers)
 };
 
-// Nominal and margined zeroth-order lobes of every tool; polls `cancel` between tools.
-LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const std::atomic<bool>& cancel);
+struct LobeSnapshot {
+  LobeMethod method = LobeMethod::ZeroOrder;
+  double delta_per_s = 0.0;
+  double alpha = 1.0;
+  std::vector<ToolLobes> tools;
+  QVector<widgets::ToolLobeSeries> series() const;  // for the chart, in rpm and mm
+};
+
+struct LobeJobResult {
+  quint64 generation = 0;
+  std::shared_ptr<const LobeSnapshot> snapshot;  // null on error or cancel
+  QString error;                                 // empty on success
+  bool cancelled = false;
+};
+
+// Nominal and margined lobes of every tool. Polls `cancel` between speeds/lobes; reports the
+// fraction done through `progress`.
+LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const std::atomic<bool>& cancel,
+                         const std::function<void(double)>& progress = {});
 
 }  // namespace mx::gui
 

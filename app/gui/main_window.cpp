@@ -1,140 +1,278 @@
 #include "main_window.h"
 
-#include <QAction>
-#include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QMenuBar>
+#include <QCloseEvent>
+#include <QFile>
+#include <QSettings>
+#include <limits>
 #include <QMessageBox>
 #include <QStatusBar>
-#include <QToolBar>
+#include <cmath>
 
+#include "machine_operation_panel.h"
+#include "simulation_runner.h"
+#include "simulation_view.h"
 #include "stability/lobe_diagram.h"
+#include "tool_library_editor.h"
 
 namespace mx::gui {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       chart_(new widgets::LobeChartView(this)),
-      tool_list_(new QListWidget(this)),
-      status_label_(new QLabel(this)),
+      readout_(new widgets::OperatingPointReadout(this)),
+      engine_(new EngineRunner(this)),
+      tool_combo_(new QComboBox(this)),
+      method_combo_(new QComboBox(this)),
+      feed_spin_(new QDoubleSpinBox(this)),
+      status_point_(new QLabel(this)),
+      status_engine_(new QLabel(this)),
       progress_(new QProgressBar(this)),
-      engine_(new EngineRunner(this)) {
-  setWindowTitle("MillExpert");
+      cancel_button_(new QToolButton(this)) {
+  setObjectName("MillExpertMainWindow");
   setWindowIcon(QIcon(":/icons/millexpert.svg"));
   setCentralWidget(chart_);
-  auto* dock = new QDockWidget(tr("Tools"), this);
-  dock->setObjectName("toolsDock");
-  dock->setWidget(tool_list_);
-  tool_list_->setToolTip(tr("Tools of the project: teeth, diameter and modes"));
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
-  progress_->setRange(0, 0);
-  progress_->setMaximumWidth(160);
+  sim_runner_ = new SimulationRunner(engine_->pool(), this);
+  readout_->setUnits(&units_);
+  buildDocks();
+  buildActions();
+
+  progress_->setRange(0, 100);
+  progress_->setMaximumWidth(180);
   progress_->setVisible(false);
-  statusBar()->addWidget(status_label_, 1);
+  cancel_button_->setText(tr("Cancel"));
+  cancel_button_->setToolTip(tr("Cancel the running computation"));
+  cancel_button_->setVisible(false);
+  statusBar()->addWidget(status_point_, 1);
+  statusBar()->addPermanentWidget(status_engine_);
   statusBar()->addPermanentWidget(progress_);
-  buildMenus();
+  statusBar()->addPermanentWidget(cancel_button_);
+  status_engine_->setText(tr("Engine idle"));
+
+  recompute_timer_.setSingleShot(true);
+  recompute_timer_.setInterval(120);
+  connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recomputeLobes);
+  connect(&doc_, &ProjectDocument::projectChanged, this, &MainWindow::onProjectChanged);
+  connect(&doc_, &ProjectDocument::pointChanged, this, &MainWindow::onPointChanged);
+  connect(&doc_, &ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
+  connect(&doc_, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
   connect(engine_, &EngineRunner::lobesReady, this, &MainWindow::onLobesReady);
-  connect(engine_, &EngineRunner::busyChanged, progress_, &QProgressBar::setVisible);
-  resize(1280, 800);
+  connect(engine_, &EngineRunner::lobeProgress, this, [this](double f) { progress_->setValue(qRound(100 * f)); });
+  connect(engine_, &EngineRunner::busyChanged, this, [this](bool busy) {
+    progress_->setVisible(busy);
+    cancel_button_->setVisible(busy);
+    progress_->setValue(0);
+    status_engine_->setText(busy ? tr("Engine: computing lobes...") : tr("Engine idle"));
+  });
+  connect(cancel_button_, &QToolButton::clicked, this, [this] {
+    engine_->cancelAll();
+    sim_runner_->cancel();
+  });
+  connect(chart_, &widgets::LobeChartView::pointDragged, this, &MainWindow::onPointDragged);
+  connect(chart_, &widgets::LobeChartView::pointReleased, this, &MainWindow::onPointReleased);
+  connect(sim_runner_, &SimulationRunner::chunkReady, this, [this](quint64 g, const SimulationChunkData& chunk) {
+    if (g == sim_generation_) sim_view_->appendChunk(chunk);
+  });
+  connect(sim_runner_, &SimulationRunner::finished, this, &MainWindow::onSimulationFinished);
+  connect(sim_runner_, &SimulationRunner::failed, this, [this](quint64 g, const QString& message) {
+    if (g == sim_generation_) sim_view_->setStatus(tr("Simulation failed: %1").arg(message));
+  });
+  connect(sim_view_, &widgets::SimulationView::moveToSpeedRequested, this, [this](double rpm) {
+    PickedPoint p = doc_.point();
+    p.speed_rpm = rpm;
+    doc_.setPoint(p);
+    startSimulation();
+  });
+  resize(1600, 950);
+  updateTitle();
+  onProjectChanged();
 }
 
-void MainWindow::buildMenus() {
-  QMenu* file = menuBar()->addMenu(tr("&File"));
-  QToolBar* toolbar = addToolBar(tr("Main"));
-  toolbar->setObjectName("mainToolbar");
-  QAction* open = file->addAction(tr("&Open project..."), this, &MainWindow::onOpen);
-  open->setShortcut(QKeySequence::Open);
-  open->setToolTip(tr("Open a MillExpert project (.mxproj)"));
-  toolbar->addAction(open);
-  QAction* exportChart = file->addAction(tr("&Export chart..."), this, &MainWindow::onExportChart);
-  exportChart->setShortcut(QKeySequence(tr("Ctrl+E")));
-  exportChart->setToolTip(tr("Save the lobe chart as PNG or PDF"));
-  toolbar->addAction(exportChart);
-  file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setShortcut(QKeySequence::Quit);
+MainWindow::~MainWindow() {
+  sim_runner_->cancel();
+  engine_->cancelAll();
 }
 
 void MainWindow::showError(const QString& title, const QString& message) {
-  status_label_->setText(title + ": " + message);
+  statusBar()->showMessage(title + ": " + message, 10000);
   if (!quiet_) QMessageBox::critical(this, title, message);
 }
 
-bool MainWindow::openProject(const QString& path) {
-  try {
-    app::Project project = app::loadProject(path);
-    project_ = std::move(project);
-  } catch (const app::ProjectError& e) {
-    showError(tr("Cannot open project"), QString::fromStdString(e.what()));
-    return false;
-  }
-  project_path_ = path;
-  setWindowTitle(QString("MillExpert \u2014 %1 [%2]").arg(project_->name, QFileInfo(path).fileName()));
-  tool_list_->clear();
-  for (int i = 0; i < static_cast<int>(project_->tools.size()); ++i) {
-    const app::ToolSpec& t = project_->tools[static_cast<size_t>(i)];
-    auto* item = new QListWidgetItem(QString("%1: %2 teeth, D = %3 mm, %4 + %5 modes")
-                                         .arg(t.id)
-                                         .arg(t.teeth)
-                                         .arg(t.diameter_mm)
-                                         .arg(t.modes_x.size())
-                                         .arg(t.modes_y.size()));
-    item->setForeground(widgets::LobeChartView::toolColor(i));
-    tool_list_->addItem(item);
-  }
-  recomputeLobes();
-  return true;
+void MainWindow::setMethod(LobeMethod method) {
+  method_combo_->setCurrentIndex(method == LobeMethod::ZeroOrder ? 0 : 1);
+}
+
+// The project changed (edit, undo, redo, load): refresh the views and recompute the lobes.
+void MainWindow::onProjectChanged() {
+  const app::Project& p = doc_.project();
+  if (tool_editor_) tool_editor_->setProject(p);
+  if (machine_panel_) machine_panel_->setProject(p);
+  const QString keep = active_tool_;
+  tool_combo_->blockSignals(true);
+  tool_combo_->clear();
+  for (const app::ToolSpec& t : p.tools) tool_combo_->addItem(t.id);
+  const int index = tool_combo_->findText(keep);
+  tool_combo_->setCurrentIndex(index >= 0 ? index : 0);
+  tool_combo_->blockSignals(false);
+  active_tool_ = tool_combo_->currentText();
+  recompute_timer_.start();
 }
 
 void MainWindow::recomputeLobes() {
+  const app::Project& p = doc_.project();
   LobeJobInput input;
-  double from = 1000.0, to = 20000.0, step = 10.0;  // fine grid for smooth lobe peaks
-  if (project_->expert) {
-    input.delta_per_s = project_->expert->delta_per_s;
-    input.alpha = project_->expert->alpha;
-    if (project_->expert->grid) {
-      from = project_->expert->grid->speed_from_rpm;
-      to = project_->expert->grid->speed_to_rpm;
-      step = std::min(step, project_->expert->grid->speed_step_rpm);
+  input.method = method_;
+  double from = 1000.0, to = 20000.0, step = 10.0;
+  if (p.expert) {
+    input.delta_per_s = p.expert->delta_per_s;
+    input.alpha = p.expert->alpha;
+    if (p.expert->grid) {
+      from = p.expert->grid->speed_from_rpm;
+      to = p.expert->grid->speed_to_rpm;
     }
   }
+  // The ZOA is cheap on a fine grid; the SDM envelope uses 200 speeds.
+  if (method_ == LobeMethod::SemiDiscretization) step = std::max((to - from) / 199.0, 1.0);
   input.speeds_rev_per_s = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(step)}.values();
   try {
-    for (const app::ToolSpec& t : project_->tools) input.tools.push_back(project_->setupFor(t.id));
+    for (const app::ToolSpec& t : p.tools) input.tools.push_back(p.setupFor(t.id));
   } catch (const app::ProjectError& e) {
-    showError(tr("Cannot compute lobes"), QString::fromStdString(e.what()));
+    chart_->clear();
+    snapshot_.reset();
+    evaluator_ = PointEvaluator();
+    status_engine_->setText(tr("Lobes unavailable: %1").arg(QString::fromStdString(e.what())));
     return;
   }
-  status_label_->setText(tr("Computing stability lobes of %1 tool(s)...").arg(input.tools.size()));
+  if (input.tools.empty()) {
+    chart_->clear();
+    return;
+  }
   engine_->submitLobes(std::move(input));
 }
 
 void MainWindow::onLobesReady(const LobeJobResult& result) {
+  if (result.cancelled) {
+    statusBar()->showMessage(tr("Lobe computation cancelled"), 5000);
+    return;
+  }
   if (!result.error.isEmpty()) {
     showError(tr("Lobe computation failed"), result.error);
     return;
   }
-  const double delta = project_->expert ? project_->expert->delta_per_s : 0.0;
-  const double alpha = project_->expert ? project_->expert->alpha : 1.0;
-  chart_->setSeries(result.series, delta, alpha);
-  status_label_->setText(tr("Lobes of %1 tool(s): zeroth-order approximation, \u03b4 = %2 1/s, \u03b1 = %3")
-                             .arg(result.series.size())
-                             .arg(delta)
-                             .arg(alpha));
+  snapshot_ = result.snapshot;
+  const app::Project& p = doc_.project();
+  evaluator_ = PointEvaluator(snapshot_, p.machine ? p.machine->spindle_power_W : 0.0);
+  chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
+  const int tool = std::max(0, evaluator_.toolIndex(active_tool_));
+  chart_->setActiveTool(tool);
+  if (p.expert && p.expert->grid) chart_->setSnapGrid(p.expert->grid->speed_step_rpm, 0.0);
+  if (doc_.point().speed_rpm <= 0.0) {
+    // First lobes of this project: start in the middle of the range at half the limit there.
+    const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
+    PickedPoint start;
+    start.speed_rpm = std::round(revPerSToRpm(0.5 * (speeds.front() + speeds.back())) / 100.0) * 100.0;
+    const widgets::PointReadout r = evaluator_.evaluate(tool, start.speed_rpm, 0.0, 0.1);
+    start.depth_mm = std::isfinite(r.blim_mm) ? 0.5 * r.blim_mm : 1.0;
+    start.feed_mm_per_tooth = p.operation ? 0.5 * p.operation->max_feed_per_tooth_mm : 0.1;
+    doc_.initPoint(start);
+    startSimulation();
+  } else {
+    onPointChanged(doc_.point());
+  }
+  updatePowerLimit();
+  status_engine_->setText(tr("Lobes: %1, %2 tool(s)")
+                              .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))
+                              .arg(snapshot_->tools.size()));
   emit lobesShown();
 }
 
-void MainWindow::onOpen() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open project"), QFileInfo(project_path_).path(),
-                                                    tr("MillExpert projects (*.mxproj);;All files (*)"));
-  if (!path.isEmpty()) openProject(path);
+void MainWindow::updatePowerLimit() {
+  const int tool = evaluator_.toolIndex(active_tool_);
+  const double feed = doc_.point().feed_mm_per_tooth;
+  const app::Project& p = doc_.project();
+  const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
+  chart_->setPowerLimit(limit, p.machine ? tr("power limit %1 W at s_t = %2 mm/tooth")
+                                               .arg(p.machine->spindle_power_W)
+                                               .arg(feed, 0, 'f', 3)
+                                         : QString());
 }
 
-void MainWindow::onExportChart() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Export chart"), "lobes.png", tr("PNG image (*.png);;PDF (*.pdf)"));
-  if (!path.isEmpty() && !chart_->saveImage(path)) showError(tr("Export failed"), path);
+void MainWindow::onPointChanged(const PickedPoint& point) {
+  const int tool = evaluator_.toolIndex(active_tool_);
+  const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
+  readout_->setReadout(r);
+  widgets::PointVerdict verdict = widgets::PointVerdict::Unknown;
+  if (r.valid) verdict = !r.stable ? widgets::PointVerdict::Unstable
+                         : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
+                                        : widgets::PointVerdict::Stable;
+  chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
+  feed_spin_->blockSignals(true);
+  feed_spin_->setValue(units_.fromMm(point.feed_mm_per_tooth));
+  feed_spin_->blockSignals(false);
+  status_point_->setText(tr("Point: %1 rpm, b = %2 mm, s_t = %3 mm/tooth \u2014 %4")
+                             .arg(point.speed_rpm, 0, 'f', 0)
+                             .arg(point.depth_mm, 0, 'f', 3)
+                             .arg(point.feed_mm_per_tooth, 0, 'f', 3)
+                             .arg(readout_->text("verdict")));
+}
+
+void MainWindow::onPointDragged(double speed_rpm, double depth_mm) {
+  PickedPoint p = doc_.point();
+  p.speed_rpm = speed_rpm;
+  p.depth_mm = depth_mm;
+  doc_.setPoint(p, drag_id_);
+}
+
+void MainWindow::onPointReleased(double speed_rpm, double depth_mm) {
+  onPointDragged(speed_rpm, depth_mm);
+  ++drag_id_;
+  startSimulation();
+}
+
+void MainWindow::startSimulation() {
+  const app::Project& p = doc_.project();
+  const PickedPoint& pt = doc_.point();
+  if (active_tool_.isEmpty() || pt.speed_rpm <= 0.0 || pt.feed_mm_per_tooth <= 0.0) return;
+  try {
+    const MillingSetup setup = p.setupFor(active_tool_);
+    SimulationOptions options;
+    options.revolutions = 60;
+    const double power = p.machine ? p.machine->spindle_power_W : 0.0;
+    const double max_speed = p.machine && p.machine->max_spindle_rpm ? rpmToRevPerS(*p.machine->max_spindle_rpm)
+                                                                     : std::numeric_limits<double>::infinity();
+    const OperatingPoint op{rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3};
+    sim_generation_ = sim_runner_->submit(setup, op, options, power, max_speed);
+    sim_view_->beginRun(power, setup.teeth, op.spindle_rev_per_s * setup.teeth);
+  } catch (const std::exception& e) {
+    sim_view_->setStatus(tr("Cannot simulate: %1").arg(e.what()));
+  }
+}
+
+void MainWindow::onSimulationFinished(quint64 generation, const SimulationSummary& summary) {
+  if (generation != sim_generation_) return;
+  sim_view_->setSummary(summary);
+  emit simulationFinished();
+}
+
+void MainWindow::setActiveTool(const QString& id) {
+  if (id.isEmpty() || id == active_tool_) return;
+  active_tool_ = id;
+  const int index = tool_combo_->findText(id);
+  if (index >= 0 && tool_combo_->currentIndex() != index) tool_combo_->setCurrentIndex(index);
+  chart_->setActiveTool(evaluator_.toolIndex(id));
+  updatePowerLimit();
+  onPointChanged(doc_.point());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  QFile::remove(doc_.autosavePath());
+  event->accept();
 }
 
 }  // namespace mx::gui

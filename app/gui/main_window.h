@@ -1,49 +1,117 @@
 #pragma once
-// MillExpert main window: opens a project and shows the stability lobes of its tools.
+// MillExpert main window: the project document with undo/redo and autosave, the interactive lobe
+// chart (central), docks for the tool library, machine and operation, the operating-point readouts
+// and the live simulation, and the engine thread behind them. Later issues add docks (weights and
+// ranking, control, supervisor) next to these.
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
-#include <QListWidget>
 #include <QMainWindow>
 #include <QProgressBar>
-#include <optional>
+#include <QTimer>
+#include <QToolButton>
 
+#include "display_units.h"
 #include "engine_runner.h"
 #include "lobe_chart_view.h"
-#include "project/project.h"
+#include "operating_point_readout.h"
+#include "point_evaluator.h"
+#include "project_document.h"
+
+namespace mx::widgets {
+class ToolLibraryEditor;
+class MachineOperationPanel;
+class SimulationView;
+}  // namespace mx::widgets
 
 namespace mx::gui {
+
+class SimulationRunner;
+struct SimulationSummary;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
+  enum class RecoveryPolicy { Ask, Recover, Discard };
   explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
 
-  bool openProject(const QString& path);  // false (and a message box unless quiet) on a bad file
-  const std::optional<app::Project>& project() const { return project_; }
+  bool openProject(const QString& path);  // false (and a message unless quiet) on a bad file
+  bool saveProject(const QString& path = {});
+  const app::Project* project() const { return &doc_.project(); }
+  ProjectDocument* document() { return &doc_; }
   widgets::LobeChartView* lobeChart() const { return chart_; }
+  widgets::OperatingPointReadout* readout() const { return readout_; }
+  widgets::ToolLibraryEditor* toolEditor() const { return tool_editor_; }
+  widgets::SimulationView* simulationView() const { return sim_view_; }
   EngineRunner* engine() const { return engine_; }
-  void setQuiet(bool quiet) { quiet_ = quiet; }
+  SimulationRunner* simulations() const { return sim_runner_; }
+  const PointEvaluator& evaluator() const { return evaluator_; }
+  void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
+  void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
+  void setMethod(LobeMethod method);
 
  signals:
   void lobesShown();
+  void simulationFinished();
 
- private slots:
-  void onOpen();
-  void onLobesReady(const mx::gui::LobeJobResult& result);
-  void onExportChart();
+ protected:
+  void closeEvent(QCloseEvent* event) override;
 
  private:
-  void buildMenus();
+  // main_window_actions.cpp
+  void buildActions();
+  void buildDocks();
+  void updateRecentMenu();
+  void addRecentFile(const QString& path);
+  // main_window_file.cpp
+  void onNew();
+  void onOpen();
+  bool onSave();
+  bool onSaveAs();
+  bool maybeSave();
+  void onExportChart();
+  void updateTitle();
+  // main_window.cpp
+  void onProjectChanged();
   void recomputeLobes();
+  void onLobesReady(const mx::gui::LobeJobResult& result);
+  void onPointChanged(const PickedPoint& point);
+  void onPointDragged(double speed_rpm, double depth_mm);
+  void onPointReleased(double speed_rpm, double depth_mm);
+  void startSimulation();
+  void onSimulationFinished(quint64 generation, const SimulationSummary& summary);
+  void setActiveTool(const QString& id);
+  void updatePowerLimit();
   void showError(const QString& title, const QString& message);
 
+  ProjectDocument doc_;
+  widgets::DisplayUnits units_;
   widgets::LobeChartView* chart_;
-  QListWidget* tool_list_;
-  QLabel* status_label_;
-  QProgressBar* progress_;
+  widgets::OperatingPointReadout* readout_;
+  widgets::ToolLibraryEditor* tool_editor_ = nullptr;
+  widgets::MachineOperationPanel* machine_panel_ = nullptr;
+  widgets::SimulationView* sim_view_ = nullptr;
   EngineRunner* engine_;
-  std::optional<app::Project> project_;
-  QString project_path_;
+  SimulationRunner* sim_runner_ = nullptr;
+  PointEvaluator evaluator_;
+  std::shared_ptr<const LobeSnapshot> snapshot_;
+  QComboBox* tool_combo_;
+  QComboBox* method_combo_;
+  QDoubleSpinBox* feed_spin_;
+  QLabel* status_point_;
+  QLabel* status_engine_;
+  QProgressBar* progress_;
+  QToolButton* cancel_button_;
+  QMenu* recent_menu_ = nullptr;
+  QTimer recompute_timer_;
+  QString active_tool_;
+  LobeMethod method_ = LobeMethod::ZeroOrder;
+  int drag_id_ = 1;
   bool quiet_ = false;
+  RecoveryPolicy recovery_ = RecoveryPolicy::Ask;
+  quint64 sim_generation_ = 0;
 };
 
 }  // namespace mx::gui

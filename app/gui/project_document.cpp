@@ -93,6 +93,18 @@ void ProjectDocument::load(const QString& path) {
   emit filePathChanged(path_);
 }
 
+void ProjectDocument::recover(const QString& path) {
+  const app::Project recovered = app::loadProject(path + ".autosave");
+  if (QFileInfo::exists(path)) {
+    load(path);
+  } else {
+    newProject();
+    path_ = path;
+    emit filePathChanged(path_);
+  }
+  undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave")));
+}
+
 void ProjectDocument::save(const QString& path) {
   const QString target = path.isEmpty() ? path_ : path;
   if (target.isEmpty()) throw app::ProjectError(tr("no file name to save to"));

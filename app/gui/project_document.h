@@ -35,6 +35,10 @@ class ProjectDocument : public QObject {
   QString applyEdit(const app::Project& edited, const QString& description);
   // Undoable move of the operating point (consecutive moves within one drag merge: `drag_id` > 0).
   void setPoint(const PickedPoint& point, int drag_id = 0);
+  // Sets the point without an undo entry (the initial point after loading).
+  void initPoint(const PickedPoint& point) { setPointSilently(point); }
+  // Loads `path` and applies its newer autosave on top as one undoable, unsaved edit.
+  void recover(const QString& path);
 
   void newProject();
   void load(const QString& path);          // throws app::ProjectError; clears undo history

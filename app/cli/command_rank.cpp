@@ -1,0 +1,86 @@
+// millexpert-cli rank PROJECT [--c c1,c2,c3] [--cr c1r,c2r,c3r] [--no-simulation] [--method zoa|sdm]
+// The 2006 expert system (section 3): Rule 4 tool ranking by minimum tool cost (eq. 13), q* of the
+// selected tool, Rule 5 q** by C_resultant (eq. 18-20) from time-domain simulations of the best K
+// points, Rule 6 malfunction loop. Prints
+//   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
+//    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
+//    "c" (the weights after Rule 6), "method", "excluded": [{"tool","reason"}...]}.
+// Exit 2: weights off the simplex or a bad project; exit 1: empty admissible space (message names
+// the constraint that emptied it).
+#include <QJsonArray>
+#include <cmath>
+
+#include "cli/cli_application.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "cli/expert_request.h"
+#include "expert/expert_session.h"
+#include "project/project.h"
+
+namespace mx::app {
+
+namespace {
+
+// Grid values without the noise of the unit conversions (1e-6 rpm, 1e-9 mm).
+double rounded(double value, double unit) { return std::round(value / unit) * unit; }
+
+QJsonObject pointJson(const ExpertPoint& q) {
+  return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s), 1e-6)},
+          {"depth_mm", rounded(q.depth_m * 1e3, 1e-9)},
+          {"feed_mm_per_tooth", rounded(q.feed_per_tooth_m * 1e3, 1e-9)}};
+}
+
+}  // namespace
+
+int runRankCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Rank the project's tools and select the cutting parameters (expert system).");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"c", "Tool-cost weights c1,c2,c3 (power, MRR, Delta N_s); sum 1. Default: the project's.", "C1,C2,C3"},
+      {"cr", "Resultant-cost weights c1r,c2r,c3r (C, C_t, C_f); sum 1. Default: the project's.", "C1R,C2R,C3R"},
+      {"no-simulation", "Rule 4 only: no time-domain refinement (q_star_star null, no Rule 6)."},
+      {"method", "Lobes: zoa (default) or sdm; default: the project's expert.method.", "METHOD"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  std::optional<std::vector<double>> c, cr;
+  if (parser.isSet("c")) c = parseWeightList("c", parser.value("c"), 3);
+  if (parser.isSet("cr")) cr = parseWeightList("cr", parser.value("cr"), 3);
+  const Project project = loadProject(path);
+  ExpertRequest request = expertRequestFromProject(project);
+  applyMethodOption(parser, request.settings);
+  if (c) std::copy(c->begin(), c->end(), request.weights.c.begin());
+  if (cr) std::copy(cr->begin(), cr->end(), request.weights.cr.begin());
+  const bool simulate = !parser.isSet("no-simulation");
+
+  ExpertSession session(request.tools, request.settings);
+  if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
+  const ExpertResult result = session.run(request.weights, simulate);
+
+  QJsonArray ranking;
+  for (const ToolChoice& t : result.ranking.tools)
+    ranking.append(QJsonObject{{"tool", request.tool_ids[static_cast<qsizetype>(t.tool)]},
+                               {"min_cost", t.min_cost},
+                               {"q", pointJson(t.q)},
+                               {"power_W", t.q.power_w},
+                               {"mrr_mm3_min", t.q.mrr_m3_per_s * 1e9 * 60.0},
+                               {"dNs_rpm", revPerSToRpm(t.q.speed_security)}});
+  QJsonArray excluded;
+  for (std::size_t t : result.ranking.excluded)
+    excluded.append(QJsonObject{
+        {"tool", request.tool_ids[static_cast<qsizetype>(t)]},
+        {"reason", QString::fromStdString(describeConstraint(session.grid(t).funnel().emptiedBy(), request.settings))}});
+  const ToolChoice& selected = result.ranking.selected();
+  QJsonObject out{{"selected", request.tool_ids[static_cast<qsizetype>(selected.tool)]},
+                  {"ranking", ranking},
+                  {"q_star", pointJson(selected.q)},
+                  {"q_star_star", result.refinement ? QJsonValue(pointJson(result.refinement->chosen().q)) : QJsonValue()},
+                  {"malfunction_iterations", result.malfunction_iterations},
+                  {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
+                  {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
+                  {"excluded", excluded}};
+  printJson(out);
+  return kExitOk;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,36 @@
+#pragma once
+// Shared by `rank` and `weights-sweep`: a project's expert inputs (tools, grid, limits, margins and
+// weights) in engine form, and the --c / --cr weight flags. Keys of the project's `expert` section
+// beyond the parsed ones (read from the document, optional):
+//   expert.method: "zoa" (default) or "sdm";  expert.simulated_points: K of Rule 5 (default 12);
+//   expert.grid.modal_candidate_speeds: add the Rule 7.2 speeds 60 f_n / (n_t k) (default true).
+#include <QCommandLineParser>
+#include <QString>
+#include <QStringList>
+#include <array>
+#include <vector>
+
+#include "expert/cost_weights.h"
+#include "expert/expert_settings.h"
+#include "model/milling_setup.h"
+#include "project/project.h"
+
+namespace mx::app {
+
+struct ExpertRequest {
+  QStringList tool_ids;
+  std::vector<MillingSetup> tools;
+  ExpertSettings settings;
+  CostWeights weights;  // the project's, validated (exit 2 when off the simplex)
+};
+
+// Throws ProjectError (exit 2) for missing sections, CliError(2) for weights off the simplex.
+ExpertRequest expertRequestFromProject(const Project& project);
+
+// "--name a,b,c": `count` numbers, non-negative, summing to 1 within 1e-6; CliError(2) otherwise.
+std::vector<double> parseWeightList(const QString& flag, const QString& text, std::size_t count);
+
+// Applies --method (zoa|sdm) when the parser has it set.
+void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& settings);
+
+}  // namespace mx::app

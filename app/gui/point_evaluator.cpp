@@ -1,0 +1,75 @@
+#include "point_evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "model/cutting_force.h"
+
+namespace mx::gui {
+
+PointEvaluator::PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, double spindle_power_w)
+    : snapshot_(std::move(snapshot)), spindle_power_w_(spindle_power_w) {
+  if (!snapshot_) return;
+  for (const ToolLobes& t : snapshot_->tools) {
+    if (t.margined.speed_rev_per_s.size() < 2) return;
+    boundaries_.emplace_back(t.margined, snapshot_->alpha);
+    double depth_span = 0.0;
+    for (double b : t.margined.envelope_depth_m)
+      if (std::isfinite(b)) depth_span = std::max(depth_span, snapshot_->alpha * b);
+    const auto& n = t.margined.speed_rev_per_s;
+    spans_.push_back({n.back() - n.front(), depth_span > 0.0 ? depth_span : 1.0});
+    // Peak power is proportional to N b s_t at fixed immersion (Pareto eq. 8).
+    power_per_depth_feed_speed_.push_back(peakPowerPerDepthFeed(t.setup, 1.0));
+  }
+}
+
+int PointEvaluator::toolIndex(const QString& id) const {
+  if (!snapshot_) return -1;
+  for (size_t i = 0; i < snapshot_->tools.size(); ++i)
+    if (QString::fromStdString(snapshot_->tools[i].setup.tool_id) == id) return static_cast<int>(i);
+  return -1;
+}
+
+widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, double depth_mm, double feed) const {
+  widgets::PointReadout r;
+  r.speed_rpm = speed_rpm;
+  r.depth_mm = depth_mm;
+  r.feed_mm_per_tooth = feed;
+  r.power_limit_w = spindle_power_w_;
+  if (!ready() || tool < 0 || tool >= toolCount()) {
+    r.message = QObject::tr("no lobes computed yet");
+    return r;
+  }
+  const ToolLobes& t = snapshot_->tools[static_cast<size_t>(tool)];
+  const StabilityBoundary& boundary = boundaries_[static_cast<size_t>(tool)];
+  r.tool_id = QString::fromStdString(t.setup.tool_id);
+  const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;
+  const CutPerformance perf = evaluateCut(t.setup, {n, b, feed * 1e-3});
+  r.peak_power_w = perf.peak_power_w;
+  r.mrr_mm3_per_s = perf.mrr_m3_per_s * 1e9;
+  if (!boundary.covers(n)) {
+    r.message = QObject::tr("%1 rpm is outside the computed lobes (%2-%3 rpm)")
+                    .arg(speed_rpm, 0, 'f', 0)
+                    .arg(revPerSToRpm(boundary.minSpeed()), 0, 'f', 0)
+                    .arg(revPerSToRpm(boundary.maxSpeed()), 0, 'f', 0);
+    return r;
+  }
+  r.blim_mm = boundary.depthLimit(n) * 1e3;
+  r.stable = boundary.isStable(n, b);
+  r.delta_ns_rpm = revPerSToRpm(boundary.speedSecurity(n, b));
+  r.ros = boundary.robustness(n, b, spans_[static_cast<size_t>(tool)]);
+  r.valid = true;
+  return r;
+}
+
+QVector<double> PointEvaluator::powerLimitMm(int tool, double feed) const {
+  QVector<double> out;
+  if (!ready() || tool < 0 || tool >= toolCount() || spindle_power_w_ <= 0.0 || feed <= 0.0) return out;
+  const ToolLobes& t = snapshot_->tools[static_cast<size_t>(tool)];
+  const double k = power_per_depth_feed_speed_[static_cast<size_t>(tool)] * feed * 1e-3;
+  for (double n : t.margined.speed_rev_per_s) out.push_back(spindle_power_w_ / (k * n) * 1e3);
+  return out;
+}
+
+}  // namespace mx::gui

@@ -1,0 +1,36 @@
+#pragma once
+// Readouts for an operating point, from the immutable lobe snapshot computed on the engine thread:
+// geometry queries on the margined boundary (b_lim, Delta N_s, ROS) and the static cut (power, MRR).
+// Each evaluation costs microseconds, so dragging updates the readouts live on the GUI thread.
+#include <memory>
+#include <vector>
+
+#include "lobe_job.h"
+#include "point_readout.h"
+#include "stability/stability_boundary.h"
+
+namespace mx::gui {
+
+class PointEvaluator {
+ public:
+  PointEvaluator() = default;
+  PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, double spindle_power_w);
+
+  bool ready() const { return snapshot_ != nullptr && !boundaries_.empty(); }
+  int toolCount() const { return static_cast<int>(boundaries_.size()); }
+  int toolIndex(const QString& id) const;
+  widgets::PointReadout evaluate(int tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) const;
+
+  // Depth [mm] at which the peak power reaches the spindle power, per speed of the snapshot
+  // (P = pi D N K_t b s_t S_max with S_max = max_theta sum_j sin(phi_j) over the immersion).
+  QVector<double> powerLimitMm(int tool, double feed_mm_per_tooth) const;
+
+ private:
+  std::shared_ptr<const LobeSnapshot> snapshot_;
+  std::vector<StabilityBoundary> boundaries_;
+  std::vector<NormalisationSpans> spans_;
+  std::vector<double> power_per_depth_feed_speed_;  // peak power / (b s_t N) [W s / m^2]
+  double spindle_power_w_ = 0.0;
+};
+
+}  // namespace mx::gui

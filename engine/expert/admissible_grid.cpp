@@ -1,0 +1,190 @@
+#include "expert/admissible_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "expert/candidate_speeds.h"
+#include "model/cutting_force.h"
+#include "model/job_control.h"
+#include "stability/semi_discretization.h"
+#include "stability/zero_order_lobes.h"
+
+namespace mx {
+
+namespace {
+constexpr double kEps = 1e-9;                       // relative slack of the grid comparisons
+constexpr std::int64_t kUnbounded = std::int64_t{1} << 40;
+constexpr std::int64_t kMaxFeedsPerCell = 1000000;
+
+// floor(x) with a relative slack, so that a grid value equal to a limit counts as inside it.
+std::int64_t countUpTo(double limit, double step) {
+  if (!std::isfinite(limit)) return kUnbounded;
+  if (limit <= 0.0) return 0;
+  return static_cast<std::int64_t>(std::floor(limit / step * (1.0 + kEps)));
+}
+}  // namespace
+
+QConstraint ConstraintFunnel::emptiedBy() const {
+  if (admissible_points > 0) return QConstraint::None;
+  if (below_max_speed == 0) return QConstraint::SpindleSpeed;
+  if (stable_cells == 0) return QConstraint::Stability;
+  if (feeds == 0) return QConstraint::FeedPerTooth;
+  if (feed_drive_points == 0) return QConstraint::FeedDrive;
+  if (power_points == 0) return QConstraint::SpindlePower;
+  return QConstraint::SpeedSecurity;
+}
+
+std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
+  std::ostringstream out;
+  switch (c) {
+    case QConstraint::None: out << "no constraint"; break;
+    case QConstraint::SpindleSpeed:
+      out << "the spindle speed maximum (" << s.limits.max_spindle_rev_per_s * 60.0 << " rpm, grid from "
+          << s.grid.speed_from_rev_per_s * 60.0 << " rpm)";
+      break;
+    case QConstraint::Stability: out << "the margined stability lobes (Rule 1)"; break;
+    case QConstraint::FeedPerTooth:
+      out << "the feed per tooth maximum (" << s.limits.max_feed_per_tooth_m * 1e3 << " mm, feed step "
+          << s.grid.feed_step_m * 1e3 << " mm)";
+      break;
+    case QConstraint::FeedDrive:
+      out << "the feed-drive maximum (" << s.limits.max_feed_velocity_m_per_s * 1e3 << " mm/s)";
+      break;
+    case QConstraint::SpindlePower: out << "the spindle power limit (" << s.limits.spindle_power_w << " W)"; break;
+    case QConstraint::SpeedSecurity: out << "Delta N_s > 0 (every remaining point lies on the lobe boundary)"; break;
+  }
+  return out.str();
+}
+
+std::vector<double> AdmissibleGrid::lobeSpeeds(const ExpertSettings& s) {
+  const StabilitySettings& st = s.stability;
+  const double step = st.method == StabilityMethod::ZeroOrder ? st.lobe_step_rev_per_s : st.sdm_lobe_step_rev_per_s;
+  const double from = st.lobe_range_low_factor * s.grid.speed_from_rev_per_s;
+  const double to = st.lobe_range_high_factor * s.grid.speed_to_rev_per_s;
+  if (!(step > 0.0 && from > 0.0 && to > from) || (to - from) / step > 2e5)
+    throw InvalidInput("expert lobe grid: needs a positive step, 0 < from < to and at most 2e5 speeds");
+  std::vector<double> speeds = SpeedGrid{from, to, step}.values();
+  if (speeds.back() < to * (1.0 - kEps)) speeds.push_back(to);
+  return speeds;
+}
+
+LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s) {
+  const std::vector<double> speeds = lobeSpeeds(s);
+  if (s.stability.method == StabilityMethod::ZeroOrder) {
+    ZoaOptions o;
+    o.delta_per_s = s.stability.delta_per_s;
+    o.max_depth_m = s.stability.max_depth_m;
+    return computeZoaLobes(setup, speeds, o);
+  }
+  SdmOptions o;
+  o.delta_per_s = s.stability.delta_per_s;
+  o.max_depth_m = s.stability.max_depth_m;
+  o.steps_per_period = s.stability.sdm_steps_per_period;
+  return computeSdmLobes(setup, speeds, o);
+}
+
+AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings)
+    : AdmissibleGrid(setup, settings, computeLobes(setup, settings)) {}
+
+AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes)
+    : setup_(setup), settings_(settings), lobes_(lobes), boundary_(lobes_, settings.stability.alpha) {
+  build();
+}
+
+void AdmissibleGrid::build() {
+  const ExpertGrid& g = settings_.grid;
+  const MachineLimits& lim = settings_.limits;
+  if (!(g.feed_step_m > 0.0) || g.depth_divisions < 1)
+    throw InvalidInput("expert grid: feed step must be > 0 and depth divisions >= 1");
+  speeds_ = rankingSpeeds(setup_, g);
+  if (!boundary_.covers(speeds_.front()) || !boundary_.covers(speeds_.back()))
+    throw InvalidInput("expert grid: the lobes do not cover the speed range of the grid");
+  feed_step_ = g.feed_step_m;
+  const double cap = settings_.stability.max_depth_m;
+
+  // b_min: the minimum of the margined border line over [from, to] (lobe samples and grid speeds).
+  b_min_ = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < lobes_.speed_rev_per_s.size(); ++i) {
+    const double n = lobes_.speed_rev_per_s[i];
+    if (n >= g.speed_from_rev_per_s && n <= g.speed_to_rev_per_s) b_min_ = std::min(b_min_, boundary_.depthLimit(n));
+  }
+  for (double n : speeds_) b_min_ = std::min(b_min_, boundary_.depthLimit(n));
+  if (!std::isfinite(b_min_)) b_min_ = cap;
+  depth_step_ = b_min_ / g.depth_divisions;
+
+  const double radial = setup_.radial_depth_m;
+  const std::int64_t grid_feeds = countUpTo(lim.max_feed_per_tooth_m, feed_step_);
+  funnel_ = {};
+  funnel_.speeds = static_cast<std::int64_t>(speeds_.size());
+  funnel_.feeds = grid_feeds >= kUnbounded ? -1 : grid_feeds;
+  // The peak power per (b s_t) is proportional to N (v = pi D N; the force pattern over a tooth period
+  // does not depend on N), so one evaluation per tool serves every speed.
+  const double power_per_depth_feed_per_speed = peakPowerPerDepthFeed(setup_, 1.0);
+  cells_.clear();
+  max_mrr_ = 0.0;
+  max_dns_ = 0.0;
+  for (double n : speeds_) {
+    if (n > lim.max_spindle_rev_per_s * (1.0 + kEps)) continue;
+    ++funnel_.below_max_speed;
+    const double b_lim = std::min(boundary_.depthLimit(n), cap);
+    // depths j * step < b_lim (strictly: b = b_lim is on the boundary)
+    std::int64_t depths = static_cast<std::int64_t>(std::ceil(b_lim / depth_step_ * (1.0 - kEps))) - 1;
+    depths = std::max<std::int64_t>(depths, 0);
+    while (depths > 0 && static_cast<double>(depths) * depth_step_ >= b_lim) --depths;
+    funnel_.stable_cells += depths;
+    if (grid_feeds == 0 || depths == 0) continue;
+    const std::int64_t drive_feeds =
+        std::min(grid_feeds, countUpTo(lim.max_feed_velocity_m_per_s / (setup_.teeth * n), feed_step_));
+    if (drive_feeds >= kUnbounded && !std::isfinite(lim.spindle_power_w))
+      throw InvalidInput("expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum "
+                         "or a spindle power limit");
+    funnel_.feed_drive_points = drive_feeds >= kUnbounded
+                                    ? kUnbounded
+                                    : std::min(kUnbounded, funnel_.feed_drive_points + depths * drive_feeds);
+    if (drive_feeds == 0) continue;
+    const double power_per_depth_feed = power_per_depth_feed_per_speed * n;
+    for (std::int64_t j = 1; j <= depths; ++j) {
+      const double b = static_cast<double>(j) * depth_step_;
+      const double power_per_feed = power_per_depth_feed * b;
+      const std::int64_t feeds = std::min(drive_feeds, countUpTo(lim.spindle_power_w / power_per_feed, feed_step_));
+      if (feeds == 0) break;  // the power grows with b: no deeper cell fits either
+      if (feeds > kMaxFeedsPerCell)
+        throw InvalidInput("expert grid: more than 1e6 admissible feeds per cell; raise the feed step");
+      funnel_.power_points += feeds;
+      const double dns = boundary_.speedSecurity(n, b);
+      if (!(dns > 0.0)) continue;
+      GridCell cell;
+      cell.speed_rev_per_s = n;
+      cell.depth_m = b;
+      cell.power_per_feed = power_per_feed;
+      cell.mrr_per_feed = radial * b * setup_.teeth * n;
+      cell.speed_security = dns;
+      cell.feed_count = static_cast<int>(feeds);
+      cells_.push_back(cell);
+      funnel_.admissible_points += feeds;
+      max_mrr_ = std::max(max_mrr_, cell.mrr_per_feed * feed_step_ * feeds);
+      max_dns_ = std::max(max_dns_, dns);
+    }
+  }
+}
+
+ExpertPoint AdmissibleGrid::point(std::size_t cell, int feed_index) const {
+  const GridCell& c = cells_.at(cell);
+  const double s = feed_step_ * feed_index;
+  return {c.speed_rev_per_s, c.depth_m, s, c.power_per_feed * s, c.mrr_per_feed * s, c.speed_security};
+}
+
+bool AdmissibleGrid::isAdmissible(double n, double b, double s) const {
+  const MachineLimits& lim = settings_.limits;
+  if (!boundary_.covers(n) || !(b > 0.0) || !(s > 0.0)) return false;
+  if (n > lim.max_spindle_rev_per_s * (1.0 + kEps)) return false;
+  if (!(b < boundary_.depthLimit(n)) || !(boundary_.speedSecurity(n, b) > 0.0)) return false;
+  if (s > lim.max_feed_per_tooth_m * (1.0 + kEps)) return false;
+  if (s * setup_.teeth * n > lim.max_feed_velocity_m_per_s * (1.0 + kEps)) return false;
+  const CutPerformance perf = evaluateCut(setup_, {n, b, s});
+  return perf.peak_power_w <= lim.spindle_power_w * (1.0 + 1e-6);
+}
+
+}  // namespace mx

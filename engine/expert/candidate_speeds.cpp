@@ -1,0 +1,47 @@
+#include "expert/candidate_speeds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "model/job_control.h"
+#include "stability/lobe_diagram.h"
+
+namespace mx {
+
+std::vector<double> modalCandidateSpeeds(const MillingSetup& setup, double from, double to) {
+  std::vector<double> out;
+  for (const ModalAxis* axis : {&setup.modes_x, &setup.modes_y}) {
+    for (const Mode& mode : *axis) {
+      for (int k = 1;; ++k) {
+        const double n = mode.natural_frequency_hz / (setup.teeth * static_cast<double>(k));
+        if (n < from || k > 100000) break;
+        if (n <= to) out.push_back(n);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<double> rankingSpeeds(const MillingSetup& setup, const ExpertGrid& grid) {
+  const double from = grid.speed_from_rev_per_s, to = grid.speed_to_rev_per_s, step = grid.speed_step_rev_per_s;
+  if (!(from > 0.0 && to >= from && step > 0.0) || (to - from) / step > 1e6) {
+    std::ostringstream msg;
+    msg << "expert speed grid " << from * 60.0 << " .. " << to * 60.0 << " rpm by " << step * 60.0
+        << " rpm: needs 0 < from <= to, step > 0 and at most 1e6 speeds";
+    throw InvalidInput(msg.str());
+  }
+  std::vector<double> speeds = SpeedGrid{from, to, step}.values();
+  if (grid.modal_candidate_speeds) {
+    const std::vector<double> modal = modalCandidateSpeeds(setup, from, to);
+    speeds.insert(speeds.end(), modal.begin(), modal.end());
+    std::sort(speeds.begin(), speeds.end());
+  }
+  std::vector<double> unique;
+  for (double n : speeds)
+    if (unique.empty() || std::abs(n - unique.back()) > 1e-9 * n) unique.push_back(n);
+  return unique;
+}
+
+}  // namespace mx

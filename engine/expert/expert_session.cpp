@@ -1,0 +1,198 @@
+#include "expert/expert_session.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "expert/parallel_for.h"
+#include "model/job_control.h"
+
+namespace mx {
+
+namespace {
+
+RankKey keyOf(const ToolChoice& t, double cost) {
+  return {cost, t.q.mrr_m3_per_s, t.q.power_w, t.q.speed_rev_per_s, t.q.depth_m};
+}
+
+// Visits every admissible point of a grid with its cost; visit(cell, feed_index, cost) returns nothing.
+template <class Visit>
+void forEachPoint(const AdmissibleGrid& grid, const std::array<double, 3>& c, const CostNormalisation& nf,
+                  const Visit& visit) {
+  const double fs = grid.feedStep();
+  const double power_weight = std::isfinite(nf.available_power_w) ? c[0] / nf.available_power_w : 0.0;
+  const double mrr_weight = c[1] * nf.max_mrr_m3_per_s;
+  const double dns_weight = c[2] * nf.max_speed_security;
+  const std::vector<GridCell>& cells = grid.cells();
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const GridCell& cell = cells[i];
+    const double a = power_weight * cell.power_per_feed;  // cost per unit feed
+    const double b = mrr_weight / cell.mrr_per_feed;      // cost times feed
+    const double k = dns_weight / cell.speed_security;
+    for (int f = 1; f <= cell.feed_count; ++f) {
+      const double s = fs * f;
+      visit(i, f, a * s + b / s + k);
+    }
+  }
+}
+
+ToolChoice makeChoice(const AdmissibleGrid& grid, std::size_t tool, std::size_t cell, int feed, double cost,
+                      const std::array<double, 3>& c, const CostNormalisation& nf) {
+  ToolChoice t;
+  t.tool = tool;
+  t.cell = cell;
+  t.feed_index = feed;
+  t.q = grid.point(cell, feed);
+  t.terms = toolCostTerms(c, nf, t.q.power_w, t.q.mrr_m3_per_s, t.q.speed_security);
+  t.min_cost = cost;
+  return t;
+}
+
+// The minimum-cost point of one grid (ties by rankBefore). nullopt for an empty grid.
+std::optional<ToolChoice> bestOfGrid(const AdmissibleGrid& grid, std::size_t tool, const std::array<double, 3>& c,
+                                     const CostNormalisation& nf) {
+  bool have = false;
+  double best_cost = 0.0;
+  std::size_t best_cell = 0;
+  int best_feed = 0;
+  forEachPoint(grid, c, nf, [&](std::size_t cell, int feed, double cost) {
+    if (!have) {
+      have = true;
+    } else {
+      const double tol = kCostTieTolerance * std::max(std::abs(cost), std::abs(best_cost));
+      if (cost > best_cost + tol) return;
+      if (cost >= best_cost - tol) {  // a tie in cost: the full rule decides
+        const ExpertPoint p = grid.point(cell, feed), q = grid.point(best_cell, best_feed);
+        if (!rankBefore({cost, p.mrr_m3_per_s, p.power_w, p.speed_rev_per_s, p.depth_m},
+                        {best_cost, q.mrr_m3_per_s, q.power_w, q.speed_rev_per_s, q.depth_m}))
+          return;
+      }
+    }
+    best_cost = cost;
+    best_cell = cell;
+    best_feed = feed;
+  });
+  if (!have) return std::nullopt;
+  return makeChoice(grid, tool, best_cell, best_feed, best_cost, c, nf);
+}
+
+}  // namespace
+
+ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings)
+    : settings_(settings), tools_(std::move(tools)), cache_(settings.refinement) {
+  if (tools_.empty()) throw InvalidInput("the expert system needs at least one candidate tool");
+  std::vector<std::optional<AdmissibleGrid>> built(tools_.size());
+  parallelFor(tools_.size(), settings_.refinement.threads,
+              [&](std::size_t i) { built[i].emplace(tools_[i], settings_); });
+  grids_.reserve(built.size());
+  for (auto& g : built) grids_.push_back(std::move(*g));
+  nf_.available_power_w = settings_.limits.spindle_power_w;
+  for (const AdmissibleGrid& g : grids_) {
+    nf_.max_mrr_m3_per_s = std::max(nf_.max_mrr_m3_per_s, g.maxMrr());
+    nf_.max_speed_security = std::max(nf_.max_speed_security, g.maxSpeedSecurity());
+  }
+}
+
+bool ExpertSession::empty() const {
+  return std::all_of(grids_.begin(), grids_.end(), [](const AdmissibleGrid& g) { return g.empty(); });
+}
+
+std::string ExpertSession::emptyReason() const {
+  if (!empty()) return {};
+  QConstraint latest = QConstraint::None;  // the constraint that removed the last point of the longest-lived tool
+  for (const AdmissibleGrid& g : grids_) latest = std::max(latest, g.funnel().emptiedBy());
+  std::ostringstream out;
+  out << "the admissible cutting-parameter space is empty for every tool: " << describeConstraint(latest, settings_)
+      << " leaves no grid point";
+  return out.str();
+}
+
+Ranking ExpertSession::rank(const std::array<double, 3>& c) const {
+  validateSimplexWeights("c", {c.begin(), c.end()}, 3);
+  Ranking r;
+  r.c = c;
+  for (std::size_t t = 0; t < grids_.size(); ++t) {
+    if (auto best = bestOfGrid(grids_[t], t, c, nf_))
+      r.tools.push_back(*best);
+    else
+      r.excluded.push_back(t);
+  }
+  std::stable_sort(r.tools.begin(), r.tools.end(), [](const ToolChoice& a, const ToolChoice& b) {
+    return rankBefore(keyOf(a, a.min_cost), keyOf(b, b.min_cost));
+  });
+  return r;
+}
+
+std::vector<double> ExpertSession::minimumCosts(const std::array<double, 3>& c) const {
+  validateSimplexWeights("c", {c.begin(), c.end()}, 3);
+  std::vector<double> out;
+  for (std::size_t t = 0; t < grids_.size(); ++t) {
+    const auto best = bestOfGrid(grids_[t], t, c, nf_);
+    out.push_back(best ? best->min_cost : std::numeric_limits<double>::quiet_NaN());
+  }
+  return out;
+}
+
+std::vector<ToolChoice> ExpertSession::bestPoints(std::size_t tool, const std::array<double, 3>& c,
+                                                  std::size_t count) const {
+  const AdmissibleGrid& grid = grids_.at(tool);
+  std::vector<ToolChoice> best;
+  if (count == 0) return best;
+  forEachPoint(grid, c, nf_, [&](std::size_t cell, int feed, double cost) {
+    if (best.size() == count) {
+      const ExpertPoint p = grid.point(cell, feed);
+      if (!rankBefore({cost, p.mrr_m3_per_s, p.power_w, p.speed_rev_per_s, p.depth_m}, keyOf(best.back(), best.back().min_cost)))
+        return;
+      best.pop_back();
+    }
+    ToolChoice choice = makeChoice(grid, tool, cell, feed, cost, c, nf_);
+    auto at = std::find_if(best.begin(), best.end(),
+                           [&](const ToolChoice& b) { return rankBefore(keyOf(choice, cost), keyOf(b, b.min_cost)); });
+    best.insert(at, std::move(choice));
+  });
+  return best;
+}
+
+Refinement ExpertSession::refine(std::size_t tool, const CostWeights& weights) {
+  weights.validate();
+  const int k = std::max(1, settings_.refinement.simulated_points);
+  const std::vector<ToolChoice> points = bestPoints(tool, weights.c, static_cast<std::size_t>(k));
+  if (points.empty()) throw InvalidInput("Rule 5: the tool has no admissible point");
+  std::vector<SimulationCache::Request> requests;
+  for (const ToolChoice& p : points)
+    requests.push_back({tool, &tools_[tool], {p.q.speed_rev_per_s, p.q.depth_m, p.q.feed_per_tooth_m}});
+  const std::vector<ResponseMetrics> metrics = cache_.evaluate(requests);
+  Refinement r;
+  r.tool = tool;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    RefinementCandidate c;
+    c.q = points[i].q;
+    c.cost = points[i].min_cost;
+    c.metrics = metrics[i];
+    r.candidates.push_back(c);
+  }
+  r.best = selectByResultantCost(r.candidates, weights);
+  return r;
+}
+
+ExpertResult ExpertSession::run(const CostWeights& weights, bool simulate) {
+  weights.validate();
+  ExpertResult result;
+  result.weights = weights;
+  for (;;) {
+    result.ranking = rank(result.weights.c);
+    if (result.ranking.tools.empty() || !simulate) return result;
+    result.refinement = refine(result.ranking.selected().tool, result.weights);
+    if (!result.refinement->chosen().metrics.malfunction(settings_.refinement.malfunction_ratio)) break;
+    if (result.malfunction_iterations >= settings_.refinement.max_malfunction_iterations) {
+      result.malfunction_limit_reached = true;
+      break;
+    }
+    result.weights.c = malfunctionStep(result.weights.c);
+    ++result.malfunction_iterations;
+  }
+  return result;
+}
+
+}  // namespace mx

@@ -1,0 +1,96 @@
+#pragma once
+// The expert system of Rubio, De la Sen & Ibeas (2006), section 3, over a library of candidate tools.
+//
+// Construction does everything that does not depend on the weights, once: per tool the lobes and the
+// admissible grid Q (AdmissibleGrid: power and MRR per unit feed, Delta N_s and feed count of every
+// (N, b) cell), and the normalisation factors NF1..NF3 over all tools. Afterwards
+//   rank(c)      Rule 4: one pass over the cached cells (no lobes, no simulation),
+//   refine(...)  Rule 5: simulates the best K points of a tool through the SimulationCache,
+//   run(...)     Rules 4, 5 and 6 (the malfunction loop).
+// A weight change re-uses every cached grid and simulation. Thread-safety: const members may run
+// concurrently; refine/run mutate the simulation cache (internally locked).
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "expert/admissible_grid.h"
+#include "expert/cost_weights.h"
+#include "expert/expert_settings.h"
+#include "expert/resultant_cost.h"
+#include "expert/simulation_cache.h"
+#include "expert/tool_cost.h"
+#include "model/milling_setup.h"
+
+namespace mx {
+
+struct ToolChoice {
+  std::size_t tool = 0;   // index into the session's tools
+  double min_cost = 0.0;  // min over Q of C (eq. 13)
+  CostTerms terms;        // at q*
+  ExpertPoint q;          // q*: the cost-minimising point of this tool
+  std::size_t cell = 0;
+  int feed_index = 0;
+};
+
+struct Ranking {
+  std::array<double, 3> c{};
+  std::vector<ToolChoice> tools;       // tools with a non-empty Q, best first (rankBefore on min cost)
+  std::vector<std::size_t> excluded;   // tools whose Q is empty, by index
+  const ToolChoice& selected() const { return tools.front(); }  // Rule 4 (requires !tools.empty())
+};
+
+struct Refinement {
+  std::size_t tool = 0;
+  std::vector<RefinementCandidate> candidates;  // the best K points by C, in that order
+  std::size_t best = 0;                         // q** = candidates[best].q
+  const RefinementCandidate& chosen() const { return candidates[best]; }
+};
+
+struct ExpertResult {
+  CostWeights weights;       // after Rule 6
+  Ranking ranking;
+  std::optional<Refinement> refinement;  // absent without simulation
+  int malfunction_iterations = 0;
+  bool malfunction_limit_reached = false;  // Rule 6 stopped at the iteration limit
+};
+
+class ExpertSession {
+ public:
+  // Builds every tool's grid (in parallel). Throws InvalidInput for an empty library or bad settings.
+  ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings);
+
+  std::size_t toolCount() const { return grids_.size(); }
+  const AdmissibleGrid& grid(std::size_t tool) const { return grids_.at(tool); }
+  const ExpertSettings& settings() const { return settings_; }
+  const CostNormalisation& normalisation() const { return nf_; }
+
+  // True when no tool has an admissible point; emptyReason() then names the constraint (the first one,
+  // in the order of ConstraintFunnel, that left no point for any tool).
+  bool empty() const;
+  std::string emptyReason() const;
+
+  // Rule 4. c must lie on the simplex (InvalidInput otherwise).
+  Ranking rank(const std::array<double, 3>& c) const;
+  // Minimum cost of every tool (NaN for an empty Q), in tool order: the figure 4/5 sweeps.
+  std::vector<double> minimumCosts(const std::array<double, 3>& c) const;
+  // The best `count` points of one tool by C, best first.
+  std::vector<ToolChoice> bestPoints(std::size_t tool, const std::array<double, 3>& c, std::size_t count) const;
+
+  // Rule 5 for one tool: simulate its best K points (cached) and pick q** by C_resultant.
+  Refinement refine(std::size_t tool, const CostWeights& weights);
+  // Rules 4-6. Without simulation: Rule 4 only (no q**, no Rule 6).
+  ExpertResult run(const CostWeights& weights, bool simulate);
+
+  const SimulationCache& simulations() const { return cache_; }
+
+ private:
+  ExpertSettings settings_;
+  std::vector<MillingSetup> tools_;
+  std::vector<AdmissibleGrid> grids_;
+  CostNormalisation nf_;
+  SimulationCache cache_;
+};
+
+}  // namespace mx

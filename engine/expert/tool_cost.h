@@ -1,0 +1,43 @@
+#pragma once
+// The 2006 tool cost function (eq. 13) and the deterministic order of candidate points.
+//   C = c1 P / P_av + c2 MRR_max / MRR + c3 Delta N_s,max / Delta N_s
+// NF1 = 1 / P_av (available spindle power), NF2 = MRR_max and NF3 = Delta N_s,max over the admissible
+// points of all candidate tools. Lower is better. Delta N_s = 0 points are not admissible, so the
+// third term is always finite.
+#include <array>
+
+namespace mx {
+
+struct CostNormalisation {
+  double available_power_w = 0.0;   // P_av (+inf: the power term vanishes)
+  double max_mrr_m3_per_s = 0.0;    // NF2
+  double max_speed_security = 0.0;  // NF3 [rev/s]
+};
+
+struct CostTerms {
+  double power = 0.0;           // c1 P / P_av
+  double mrr = 0.0;             // c2 MRR_max / MRR
+  double speed_security = 0.0;  // c3 Delta N_s,max / Delta N_s
+  double total() const { return power + mrr + speed_security; }
+};
+
+CostTerms toolCostTerms(const std::array<double, 3>& c, const CostNormalisation& nf, double power_w,
+                        double mrr_m3_per_s, double speed_security);
+
+// Candidate order (Rule 4 and q*): lower cost; costs within kCostTieTolerance (relative) are a tie,
+// broken by higher MRR, then lower power, then lower speed, then lower depth (each compared with the
+// same relative tolerance; exact equality of everything keeps the earlier candidate).
+inline constexpr double kCostTieTolerance = 1e-9;
+
+struct RankKey {
+  double cost = 0.0;
+  double mrr = 0.0;
+  double power = 0.0;
+  double speed = 0.0;
+  double depth = 0.0;
+};
+
+// True when a is strictly preferred to b.
+bool rankBefore(const RankKey& a, const RankKey& b);
+
+}  // namespace mx

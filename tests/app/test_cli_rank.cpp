@@ -1,0 +1,157 @@
+// millexpert-cli rank / weights-sweep: the fixed JSON interface, the 2006 example through the project
+// file, and the exit codes (2: weights off the simplex; 1: empty admissible space, naming the constraint).
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "test_main.h"
+
+namespace {
+const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+
+struct Run {
+  int code = -1;
+  QJsonObject json;
+  QString err;
+};
+
+Run cli(const QStringList& args) {
+  QProcess p;
+  p.start(MX_CLI_PATH, args);
+  p.waitForFinished(120000);
+  Run r;
+  r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+  r.json = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+  r.err = QString::fromUtf8(p.readAllStandardError());
+  return r;
+}
+
+// The Rubio project with one machine value replaced, written to dir.
+QString rubioWith(const QTemporaryDir& dir, const QString& key, double value) {
+  QFile in(kRubio);
+  in.open(QIODevice::ReadOnly);
+  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+  QJsonObject machine = root["machine"].toObject();
+  machine[key] = value;
+  root["machine"] = machine;
+  const QString path = dir.filePath("p.mxproj");
+  QFile out(path);
+  out.open(QIODevice::WriteOnly);
+  out.write(QJsonDocument(root).toJson());
+  return path;
+}
+}  // namespace
+
+class TestCliRank : public QObject {
+  Q_OBJECT
+ private slots:
+  void rankReproducesPaper() {
+    const Run r = cli({"rank", kRubio});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"selected", "ranking", "q_star", "q_star_star", "malfunction_iterations"})
+      QVERIFY2(r.json.contains(key), key);
+    QCOMPARE(r.json["selected"].toString(), QString("R1"));
+    const QJsonArray ranking = r.json["ranking"].toArray();
+    QCOMPARE(ranking.size(), 2);
+    const QJsonObject first = ranking[0].toObject();
+    for (const char* key : {"tool", "min_cost", "q", "power_W", "mrr_mm3_min", "dNs_rpm"})
+      QVERIFY2(first.contains(key), key);
+    QCOMPARE(first["tool"].toString(), QString("R1"));
+    QCOMPARE(ranking[1].toObject()["tool"].toString(), QString("R2"));
+    QVERIFY(first["min_cost"].toDouble() < ranking[1].toObject()["min_cost"].toDouble());
+    const QJsonObject q = r.json["q_star"].toObject();
+    QCOMPARE(q["speed_rpm"].toDouble(), 5800.0);
+    QCOMPARE_LE(std::abs(q["depth_mm"].toDouble() * q["feed_mm_per_tooth"].toDouble() / (0.4924 * 0.2722) - 1), 0.02);
+    QCOMPARE_LE(std::abs(first["power_W"].toDouble() / 745.3 - 1.0), 0.02);
+    QVERIFY(first["power_W"].toDouble() <= 745.3);
+    QCOMPARE(first["q"].toObject(), q);
+    // mm^3/min = a b s_t n_t N
+    QCOMPARE_LE(std::abs(first["mrr_mm3_min"].toDouble() / (30.0 * q["depth_mm"].toDouble() *
+                                                             q["feed_mm_per_tooth"].toDouble() * 3 * 5800.0) - 1),
+                1e-9);
+    const QJsonObject qss = r.json["q_star_star"].toObject();
+    for (const char* key : {"speed_rpm", "depth_mm", "feed_mm_per_tooth"}) QVERIFY2(qss.contains(key), key);
+    QCOMPARE(r.json["malfunction_iterations"].toInt(), 0);
+  }
+
+  void rankWithoutSimulation() {
+    const Run r = cli({"rank", kRubio, "--no-simulation", "--c", "0.1,0.8,0.1"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.json["q_star_star"].isNull());
+    QCOMPARE(r.json["selected"].toString(), QString("R1"));
+    QCOMPARE(r.json["c"].toArray()[1].toDouble(), 0.8);
+  }
+
+  void badWeights_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("c sum") << QStringList{"--c", "0.2,0.7,0.2"} << "must sum to 1";
+    QTest::newRow("c negative") << QStringList{"--c", "-0.1,1.0,0.1"} << ">= 0";
+    QTest::newRow("c count") << QStringList{"--c", "0.5,0.5"} << "expected 3";
+    QTest::newRow("cr sum") << QStringList{"--cr", "0.8,0.1,0.2"} << "--cr";
+    QTest::newRow("c text") << QStringList{"--c", "a,b,c"} << "not a finite number";
+  }
+  void badWeights() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    const Run r = cli(QStringList{"rank", kRubio, "--no-simulation"} + args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(r.json.isEmpty());
+  }
+
+  void emptySpaceIsExit1() {
+    QTemporaryDir dir;
+    const Run r = cli({"rank", rubioWith(dir, "spindle_power_W", 0.001), "--no-simulation"});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains("spindle power limit (0.001 W)"), qPrintable(r.err));
+    const Run s = cli({"rank", rubioWith(dir, "max_spindle_rpm", 500)});
+    QCOMPARE(s.code, 1);
+    QVERIFY2(s.err.contains("spindle speed maximum (500 rpm"), qPrintable(s.err));
+    const Run w = cli({"weights-sweep", rubioWith(dir, "spindle_power_W", 0.001), "--c3", "0.075"});
+    QCOMPARE(w.code, 1);
+  }
+
+  // Figure 4: c3 = 0.075, c1 = 0 .. 0.925; R1 cheaper everywhere.
+  void sweepC3() {
+    const Run r = cli({"weights-sweep", kRubio, "--c3", "0.075"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["c3"].toDouble(), 0.075);
+    const QJsonArray c1 = r.json["c1"].toArray();
+    QCOMPARE(c1.size(), 38);  // 0, 0.025, ..., 0.925
+    QCOMPARE(c1.first().toDouble(), 0.0);
+    QCOMPARE_LE(std::abs(c1.last().toDouble() - 0.925), 1e-12);
+    const QJsonArray r1 = r.json["min_cost"].toObject()["R1"].toArray();
+    const QJsonArray r2 = r.json["min_cost"].toObject()["R2"].toArray();
+    QCOMPARE(r1.size(), c1.size());
+    for (int i = 0; i < c1.size(); ++i) QVERIFY(r1[i].toDouble() < r2[i].toDouble());
+  }
+
+  // Figure 5 over the simplex: R1 everywhere except the power-only corner (1, 0, 0).
+  void sweepSimplex() {
+    const Run r = cli({"weights-sweep", kRubio, "--simplex", "0.1"});
+    QCOMPARE(r.code, 0);
+    const QJsonArray points = r.json["points"].toArray();
+    QCOMPARE(points.size(), 66);
+    for (const QJsonValue& v : points) {
+      const QJsonObject p = v.toObject();
+      const QJsonArray c = p["c"].toArray();
+      QCOMPARE_LE(std::abs(c[0].toDouble() + c[1].toDouble() + c[2].toDouble() - 1.0), 1e-12);
+      QVERIFY(p["min_cost"].toObject().contains("R1") && p["min_cost"].toObject().contains("R2"));
+      const bool corner = c[0].toDouble() > 0.999;
+      QCOMPARE(p["selected"].toString(), QString(corner ? "R2" : "R1"));
+    }
+  }
+
+  void sweepNeedsOneForm() {
+    QCOMPARE(cli({"weights-sweep", kRubio}).code, 2);
+    QCOMPARE(cli({"weights-sweep", kRubio, "--c3", "0.1", "--simplex", "0.1"}).code, 2);
+    QCOMPARE(cli({"weights-sweep", kRubio, "--c3", "1.5"}).code, 2);
+  }
+};
+
+MX_TEST_MAIN(TestCliRank)
+#include "test_cli_rank.moc"

@@ -1,0 +1,170 @@
+// The expert system on the 2006 example (section 3.D): Rule 4 selects R1 over the simplex, q* on the
+// power limit at 5800 rpm, Rule 5 from cached simulations, Rule 6 keeps the weights on the simplex,
+// and the invariants of the ranking (admissible points, MRR monotone in c2).
+#include <cmath>
+
+#include "expert/expert_session.h"
+#include "expert_fixtures.h"
+#include "test_main.h"
+
+using namespace mx;
+
+namespace {
+const ExpertSession& rubio() {
+  static const ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
+  return session;
+}
+constexpr std::size_t kR1 = 0, kR2 = 1;
+}  // namespace
+
+class TestExpertSession : public QObject {
+  Q_OBJECT
+ private slots:
+  // c = (0.2, 0.725, 0.075): R1, q* = (5800 rpm, 0.5048 mm, 0.27 mm) on the power limit.
+  // Paper: q* = (5800, 0.4924, 0.2722); the cost is flat along b s_t = const on the power limit.
+  void paperWeightsQStar() {
+    const Ranking r = rubio().rank({0.2, 0.725, 0.075});
+    QCOMPARE(r.tools.size(), std::size_t(2));
+    QCOMPARE(r.selected().tool, kR1);
+    const ExpertPoint q = r.selected().q;
+    qInfo("q* = (%.3f rpm, %.4f mm, %.4f mm), P = %.2f W, dNs = %.1f rpm, C = %.5f", q.speed_rev_per_s * 60,
+          q.depth_m * 1e3, q.feed_per_tooth_m * 1e3, q.power_w, q.speed_security * 60, r.selected().min_cost);
+    QCOMPARE_LE(std::abs(q.speed_rev_per_s * 60.0 - 5800.0), 1e-6);
+    QVERIFY(q.power_w <= 745.3);
+    QVERIFY(q.power_w >= 0.98 * 745.3);  // on the power limit within 2 %
+    const double bs_paper = 0.4924 * 0.2722, bs = q.depth_m * q.feed_per_tooth_m * 1e6;
+    QCOMPARE_LE(std::abs(bs / bs_paper - 1.0), 0.02);
+    QCOMPARE_LE(std::abs(q.speed_security * 60.0 - 1014.0), 5.0);  // 5800 - 4786 (left lobe minimum)
+    QCOMPARE(r.tools[1].tool, kR2);
+    QVERIFY(r.tools[1].min_cost > 5.0 * r.selected().min_cost);
+  }
+
+  // Figure 4: c3 = 0.075, c2 = 1 - c1 - c3: R1 has the lower minimum cost for every c1.
+  void figure4() {
+    for (int i = 0; i <= 37; ++i) {
+      const double c1 = 0.025 * i;
+      const std::vector<double> costs = rubio().minimumCosts({c1, 0.925 - c1, 0.075});
+      QVERIFY2(costs[kR1] < costs[kR2], qPrintable(QString("c1 = %1").arg(c1)));
+    }
+  }
+
+  // Figure 5: R1 over the simplex (step 0.05, 231 points) except the power-only corner c = (1, 0, 0),
+  // where C = P / P_av and the lightest cut of the small R2 wins (see docs/fidelity.md).
+  void figure5() {
+    int r1 = 0, r2 = 0;
+    for (int i = 0; i <= 20; ++i) {
+      for (int j = 0; i + j <= 20; ++j) {
+        const std::array<double, 3> c{0.05 * i, 0.05 * j, std::max(0.0, 1.0 - 0.05 * i - 0.05 * j)};
+        const std::size_t selected = rubio().rank(c).selected().tool;
+        if (i == 20) {
+          QCOMPARE(selected, kR2);
+          ++r2;
+        } else {
+          QVERIFY2(selected == kR1, qPrintable(QString("c = (%1, %2, %3)").arg(c[0]).arg(c[1]).arg(c[2])));
+          ++r1;
+        }
+      }
+    }
+    QCOMPARE(r1, 230);
+    QCOMPARE(r2, 1);
+  }
+
+  // Every ranked point (q* of every tool, and the best 12 points of R1) is admissible.
+  void rankedPointsAdmissible_data() {
+    QTest::addColumn<double>("c1");
+    QTest::addColumn<double>("c2");
+    QTest::newRow("paper") << 0.2 << 0.725;
+    QTest::newRow("power") << 0.9 << 0.05;
+    QTest::newRow("mrr") << 0.0 << 1.0;
+    QTest::newRow("security") << 0.0 << 0.0;
+    QTest::newRow("centre") << 1.0 / 3.0 << 1.0 / 3.0;
+  }
+  void rankedPointsAdmissible() {
+    QFETCH(double, c1);
+    QFETCH(double, c2);
+    const std::array<double, 3> c{c1, c2, 1.0 - c1 - c2};
+    const Ranking r = rubio().rank(c);
+    for (const ToolChoice& t : r.tools) {
+      QVERIFY(rubio().grid(t.tool).isAdmissible(t.q.speed_rev_per_s, t.q.depth_m, t.q.feed_per_tooth_m));
+      QVERIFY(t.q.speed_security > 0.0);
+    }
+    const std::vector<ToolChoice> best = rubio().bestPoints(kR1, c, 12);
+    QCOMPARE(best.size(), std::size_t(12));
+    QCOMPARE(best.front().min_cost, r.tools.front().min_cost);
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      QVERIFY(rubio().grid(kR1).isAdmissible(best[i].q.speed_rev_per_s, best[i].q.depth_m, best[i].q.feed_per_tooth_m));
+      if (i > 0) QVERIFY(best[i - 1].min_cost <= best[i].min_cost * (1 + 1e-9));
+    }
+  }
+
+  // Raising c2 (c1 : c3 kept) never lowers the MRR of the selected point (a theorem for an exact argmin).
+  void raisingC2NeverLowersMrr_data() {
+    QTest::addColumn<double>("share1");  // c1 / (c1 + c3)
+    QTest::newRow("c1 only") << 1.0;
+    QTest::newRow("paper ratio") << 0.2 / 0.275;
+    QTest::newRow("balanced") << 0.5;
+    QTest::newRow("c3 only") << 0.0;
+  }
+  void raisingC2NeverLowersMrr() {
+    QFETCH(double, share1);
+    double previous = 0.0;
+    for (int i = 0; i <= 50; ++i) {
+      const double c2 = 0.02 * i, rest = 1.0 - c2;
+      const ToolChoice q = rubio().rank({share1 * rest, c2, (1.0 - share1) * rest}).selected();
+      QVERIFY2(q.q.mrr_m3_per_s >= previous * (1.0 - 1e-9), qPrintable(QString("c2 = %1").arg(c2)));
+      previous = q.q.mrr_m3_per_s;
+    }
+    QVERIFY(previous > 0.0);
+  }
+
+  // Rule 5: q** from 12 cached simulations; re-weighing runs no new simulation.
+  void refinementIsCached() {
+    ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
+    CostWeights w;
+    const ExpertResult first = session.run(w, true);
+    QVERIFY(first.refinement.has_value());
+    QCOMPARE(first.refinement->candidates.size(), std::size_t(12));
+    QCOMPARE(session.simulations().simulationsRun(), std::size_t(12));
+    QCOMPARE(first.malfunction_iterations, 0);
+    const ExpertPoint qss = first.refinement->chosen().q;
+    qInfo("q** = (%.3f rpm, %.4f mm, %.4f mm), P = %.2f W", qss.speed_rev_per_s * 60, qss.depth_m * 1e3,
+          qss.feed_per_tooth_m * 1e3, qss.power_w);
+    QVERIFY(session.grid(kR1).isAdmissible(qss.speed_rev_per_s, qss.depth_m, qss.feed_per_tooth_m));
+    for (const RefinementCandidate& c : first.refinement->candidates) QVERIFY(!c.metrics.chatter);
+    for (double c1 : {0.1, 0.3, 0.5}) session.rank({c1, 0.9 - c1, 0.1});
+    const ExpertResult again = session.run(w, true);
+    QCOMPARE(session.simulations().simulationsRun(), std::size_t(12));
+    QCOMPARE(again.refinement->chosen().q.depth_m, qss.depth_m);
+    const ExpertResult plain = session.run(w, false);
+    QVERIFY(!plain.refinement.has_value());
+  }
+
+  // Rule 6 forced to fire every time: stops at 200 iterations, weights on the simplex, c2 -> 0.99^200 c2.
+  void malfunctionLoopStaysOnSimplex() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.refinement.malfunction_ratio = 0.0;  // A_chatter > 0 always holds
+    s.refinement.simulated_points = 4;
+    ExpertSession session({test::rubioR1(), test::rubioR2()}, s);
+    const ExpertResult r = session.run(CostWeights{}, true);
+    QCOMPARE(r.malfunction_iterations, 200);
+    QVERIFY(r.malfunction_limit_reached);
+    const auto& c = r.weights.c;
+    QCOMPARE_LE(std::abs(c[0] + c[1] + c[2] - 1.0), 1e-12);
+    for (double v : c) QVERIFY(v >= 0.0);
+    QCOMPARE_LE(std::abs(c[0] - 0.2), 1e-12);
+    QCOMPARE_LE(std::abs(c[1] - 0.725 * std::pow(0.99, 200)), 1e-12);
+  }
+
+  void emptySpaceNamesConstraint() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.limits.spindle_power_w = 1e-3;
+    const ExpertSession session({test::rubioR1(), test::rubioR2()}, s);
+    QVERIFY(session.empty());
+    QVERIFY(QString::fromStdString(session.emptyReason()).contains("spindle power limit (0.001 W)"));
+    QVERIFY(session.rank({0.2, 0.725, 0.075}).tools.empty());
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, session.rank({0.5, 0.6, 0.0}));
+  }
+};
+
+MX_TEST_MAIN(TestExpertSession)
+#include "test_expert_session.moc"

@@ -1,0 +1,228 @@
+// Tool library import/export: CSV and JSON round trips, the documented CSV layout, and all-or-nothing
+// import (a bad row changes nothing and is reported by line and column).
+#include <QApplication>
+#include <QJsonArray>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+#include "project/project.h"
+#include "test_main.h"
+#include "tool_library_csv.h"
+#include "tool_library_editor.h"
+
+using mx::app::Project;
+using mx::app::ToolSpec;
+using mx::widgets::ToolLibraryCsv;
+using mx::widgets::ToolLibraryEditor;
+
+namespace {
+
+QJsonArray toolsJson(const std::vector<ToolSpec>& tools) {
+  Project p;
+  p.tools = tools;
+  return mx::app::projectToJson(p).value("tools").toArray();
+}
+
+Project rubio() { return mx::app::loadProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"); }
+
+QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
+  const QString path = dir.filePath(name);
+  QFile f(path);
+  f.open(QIODevice::WriteOnly);
+  f.write(text);
+  return path;
+}
+
+const QByteArray kHeader =
+    "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,stiffness_N_per_um\n";
+
+}  // namespace
+
+class TestToolLibraryCsv : public QObject {
+  Q_OBJECT
+ private slots:
+  void parsesTheDocumentedLayout() {
+    QByteArray text;
+    QVERIFY(ToolLibraryCsv::readFile(MX_TEST_DATA_DIR "/library/tools.csv", text).isEmpty());
+    const auto file = ToolLibraryCsv::fromCsv(text);
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    QCOMPARE(file.tools.size(), std::size_t{3});
+    const ToolSpec& e16 = file.tools[0];
+    QCOMPARE(e16.id, QString("E16"));
+    QCOMPARE(e16.teeth, 4);
+    QCOMPARE(e16.diameter_mm, 16.0);
+    QCOMPARE(e16.helix_deg, 30.0);
+    QVERIFY(!e16.Kt_N_mm2);
+    QCOMPARE(*e16.Kr, 0.25);
+    QCOMPARE(e16.modes_x.size(), std::size_t{2});
+    QCOMPARE(e16.modes_x[1].freq_Hz, 1450.0);
+    QCOMPARE(e16.modes_x[1].stiffness_N_per_um, 12.0);
+    QCOMPARE(e16.modes_y.size(), std::size_t{1});
+    QCOMPARE(e16.modes_y[0].damping_pct, 2.4);
+    QCOMPARE(file.tools[1].id, QString("Ball, 10 mm"));
+    QCOMPARE(*file.tools[1].Kt_N_mm2, 750.0);
+    QCOMPARE(*file.tools[1].radial_depth_mm, 5.0);
+    QVERIFY(file.tools[2].modes_y.empty());
+    QCOMPARE(file.lines, (std::vector<int>{3, 6, 7}));
+  }
+
+  void csvRoundTripIsExact() {
+    QByteArray text;
+    ToolLibraryCsv::readFile(MX_TEST_DATA_DIR "/library/tools.csv", text);
+    std::vector<ToolSpec> tools = rubio().tools;
+    for (const ToolSpec& t : ToolLibraryCsv::fromCsv(text).tools) tools.push_back(t);
+    tools.push_back(ToolSpec{"Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, {}, {}});  // no modes at all
+    const auto back = ToolLibraryCsv::fromCsv(ToolLibraryCsv::toCsv(tools));
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(toolsJson(back.tools), toolsJson(tools));
+    QCOMPARE(back.tools.back().diameter_mm, 0.1 + 0.2);  // shortest round-trip text, no rounding
+  }
+
+  void editorExportImportRoundTrip() {
+    QTemporaryDir dir;
+    ToolLibraryEditor editor;
+    const Project p = rubio();
+    editor.setProject(p);
+    const QString path = dir.filePath("lib.csv");
+    QCOMPARE(editor.exportCsv(path), QString());
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QCOMPARE(editor.importCsv(path, true), QString());
+    QCOMPARE(spy.count(), 1);
+    const Project edited = spy.at(0).at(0).value<Project>();
+    QCOMPARE(toolsJson(edited.tools), toolsJson(p.tools));
+    QCOMPARE(edited.material->Kt_N_mm2, 600.0);  // the rest of the project is untouched
+  }
+
+  void appendAddsToTheLibrary() {
+    ToolLibraryEditor editor;
+    editor.setProject(rubio());
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QCOMPARE(editor.importCsv(MX_TEST_DATA_DIR "/library/tools.csv", false), QString());
+    QCOMPARE(spy.count(), 1);
+    const Project edited = spy.at(0).at(0).value<Project>();
+    QCOMPARE(edited.tools.size(), std::size_t{5});
+    QCOMPARE(edited.tools[0].id, QString("R1"));
+    QCOMPARE(edited.tools[4].id, QString("Rigid-Y"));
+  }
+
+  void badRowChangesNothing_data() {
+    QTest::addColumn<QByteArray>("csv");
+    QTest::addColumn<bool>("replace");
+    QTest::addColumn<QString>("message");
+    const QByteArray good = "A,2,10,0,,,,x,1000,2,10\n";
+    QTest::newRow("non-number") << kHeader + good + "A,,,,,,,y,abc,2,10\n" << true
+                                << "line 3, column 9 (freq_Hz): 'abc' is not a number (number > 0)";
+    QTest::newRow("out of range") << "# comment\n" + kHeader + good + "A,,,,,,,y,-3,2,10\n" << true
+                                  << "line 4, column 9 (freq_Hz): '-3' must be > 0";
+    QTest::newRow("damping") << kHeader + "A,2,10,0,,,,x,1000,150,10\n" << true
+                             << "line 2, column 10 (damping_pct): '150' must be in (0, 100)";
+    QTest::newRow("stiffness") << kHeader + good + "\nB,2,10,0,,,,y,1000,2,0\n" << true
+                               << "line 4, column 11 (stiffness_N_per_um): '0' must be > 0";
+    QTest::newRow("too few columns") << kHeader + good + "A,,,,,,,y,1000,2\n" << true
+                                     << "line 3, column 11: the row has 10 columns, expected 11";
+    QTest::newRow("too many columns") << kHeader + "A,2,10,0,,,,x,1000,2,10,7\n" << true
+                                      << "line 2, column 12: the row has 12 columns, expected 11";
+    QTest::newRow("unknown axis") << kHeader + good + "A,,,,,,,z,1000,2,10\n" << true
+                                  << "line 3, column 8 (axis): 'z' must be x or y";
+    QTest::newRow("duplicate id") << kHeader + good + "B,2,10,0,,,,x,1000,2,10\nA,2,10,0,,,,y,1000,2,10\n" << true
+                                  << "line 4, column 1 (tool_id): 'A' duplicate tool id (first on line 2)";
+    QTest::newRow("id already in library") << kHeader + "R2,2,10,0,,,,x,1000,2,10\n" << false
+                                           << "line 2, column 1 (tool_id): 'R2' duplicate tool id (already in the library)";
+    QTest::newRow("teeth not integer") << kHeader + "A,2.5,10,0,,,,x,1000,2,10\n" << true
+                                       << "line 2, column 2 (teeth): '2.5' must be an integer >= 1";
+    QTest::newRow("radial depth > D") << kHeader + "A,2,10,0,,,12,x,1000,2,10\n" << true
+                                      << "line 2, column 7 (radial_depth_mm): '12' must be in (0, 10]";
+    QTest::newRow("continuation differs") << kHeader + good + "A,3,,,,,,y,1000,2,10\n" << true
+                                          << "line 3, column 2 (teeth): '3' differs from the tool's first row (line 2";
+    QTest::newRow("missing id") << kHeader + good + ",2,10,0,,,,x,1000,2,10\n" << true
+                                << "line 3, column 1 (tool_id): '' must be a non-empty tool id";
+    QTest::newRow("unknown header") << QByteArray("tool_id,teeth,diam\n") << true
+                                    << "line 1, column 3: unknown column 'diam'";
+    QTest::newRow("reordered header") << QByteArray("axis,tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,"
+                                                    "radial_depth_mm,freq_Hz,damping_pct,stiffness_N_per_um\n"
+                                                    "q,A,2,10,0,,,,1000,2,10\n")
+                                      << true << "line 2, column 1 (axis): 'q' must be x or y";
+  }
+  void badRowChangesNothing() {
+    QFETCH(QByteArray, csv);
+    QFETCH(bool, replace);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const QString path = writeText(dir, "bad.csv", csv);
+    ToolLibraryEditor editor;
+    const Project p = rubio();
+    editor.setProject(p);
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    const QString error = editor.importCsv(path, replace);
+    QVERIFY2(error.startsWith(message), qPrintable(error));
+    QCOMPARE(spy.count(), 0);
+    QVERIFY(editor.errorText().contains(message));
+    QCOMPARE(toolsJson(editor.project().tools), toolsJson(p.tools));
+    QCOMPARE(editor.toolModel()->rowCount(), 2);
+  }
+
+  // A row that is fine alone but not in this project (the operation's radial depth exceeds its D).
+  void importIsValidatedAgainstTheProject() {
+    Project p = rubio();
+    p.operation->radial_immersion.reset();
+    p.operation->radial_depth_mm = 12.0;
+    ToolLibraryEditor editor;
+    editor.setProject(p);
+    QTemporaryDir dir;
+    const QString path = writeText(dir, "small.csv", kHeader + "S8,2,8,0,,,,x,1000,2,10\n");
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    const QString error = editor.importCsv(path, false);
+    QVERIFY2(error.startsWith("line 2: operation.radial_depth_mm = 12: must be in (0, 8]"), qPrintable(error));
+    QCOMPARE(spy.count(), 0);
+  }
+
+  void jsonRoundTrip() {
+    QTemporaryDir dir;
+    ToolLibraryEditor editor;
+    const Project p = rubio();
+    editor.setProject(p);
+    const QString path = dir.filePath("lib.json");
+    QCOMPARE(editor.exportJson(path), QString());
+    QVERIFY(mx::app::loadProject(path).tools.size() == 2);  // the export is a loadable project file
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QCOMPARE(editor.importJson(path, true), QString());
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(toolsJson(spy.at(0).at(0).value<Project>().tools), toolsJson(p.tools));
+  }
+
+  void badJsonNamesTheFieldPath_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("damping") << QString(MX_TEST_DATA_DIR "/library/bad-damping.json") << QByteArray()
+                             << "tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)";
+    QTest::newRow("type") << QString() << QByteArray(R"([{"id":"A","teeth":"two"}])")
+                          << "tools[0].teeth: expected";
+    QTest::newRow("no tools") << QString() << QByteArray(R"({"name":"x"})")
+                              << "tools: missing (required array of tools)";
+    QTest::newRow("syntax") << QString() << QByteArray("{ \"tools\": [ ") << "JSON syntax error at offset";
+  }
+  void badJsonNamesTheFieldPath() {
+    QFETCH(QString, path);
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    if (path.isEmpty()) path = writeText(dir, "bad.json", json);
+    ToolLibraryEditor editor;
+    editor.setProject(rubio());
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    const QString error = editor.importJson(path, false);
+    QVERIFY2(error.startsWith(message), qPrintable(error));
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(editor.project().tools.size(), std::size_t{2});
+  }
+
+  void missingFileIsReported() {
+    ToolLibraryEditor editor;
+    QVERIFY(editor.importCsv("/nonexistent/lib.csv", true).contains("cannot read"));
+    QVERIFY(!editor.exportCsv("/nonexistent/dir/lib.csv").isEmpty());
+  }
+};
+
+MX_TEST_MAIN_WITH_APP(TestToolLibraryCsv, QApplication)
+#include "test_tool_library_csv.moc"

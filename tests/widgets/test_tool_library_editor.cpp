@@ -1,0 +1,293 @@
+// The tool-library editor: in-place edits through the real models and delegates, refusal of invalid
+// values (nothing emitted, old value kept, reason shown), undo through a real ProjectDocument,
+// selection kept across refreshes, and inch display.
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QSignalSpy>
+
+#include "display_units.h"
+#include "project_document.h"
+#include "test_main.h"
+#include "tool_library_editor.h"
+
+using mx::app::Project;
+using mx::widgets::ModeTableModel;
+using mx::widgets::ToolLibraryEditor;
+using mx::widgets::ToolTableModel;
+using Axis = ModeTableModel::Axis;
+
+namespace {
+
+const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+
+// The editor wired to a document exactly as the main window does it.
+void wire(ToolLibraryEditor& editor, mx::gui::ProjectDocument& doc) {
+  QObject::connect(&editor, &ToolLibraryEditor::editRequested, &doc,
+                   [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
+  QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &editor,
+                   [&] { editor.setProject(doc.project()); });
+  editor.setProject(doc.project());
+}
+
+// The delegate commits and closes its editor through queued calls.
+void settle() {
+  QCoreApplication::processEvents();
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
+// Types `text` into the spin box editor of `index` and presses Return.
+void typeInto(QTableView* view, const QModelIndex& index, const QString& text) {
+  view->setCurrentIndex(index);
+  view->edit(index);
+  auto* box = view->viewport()->findChild<QDoubleSpinBox*>();
+  QVERIFY(box);
+  box->selectAll();
+  QTest::keyClicks(box, text);
+  QTest::keyClick(box, Qt::Key_Return);
+  settle();
+}
+
+bool labelShows(const ToolLibraryEditor& editor, const QString& text) {
+  for (const QLabel* label : editor.findChildren<QLabel*>()) {
+    if (!label->isHidden() && label->text().contains(text)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+class TestToolLibraryEditor : public QObject {
+  Q_OBJECT
+ private slots:
+  void showsTheTools() {
+    ToolLibraryEditor editor;
+    QSignalSpy selected(&editor, &ToolLibraryEditor::toolSelected);
+    editor.setProject(mx::app::loadProject(kRubio));
+    ToolTableModel* m = editor.toolModel();
+    QCOMPARE(m->rowCount(), 2);
+    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("diameter [mm]"));
+    QCOMPARE(m->index(1, ToolTableModel::Id).data().toString(), QString("R2"));
+    QCOMPARE(m->index(1, ToolTableModel::Diameter).data().toString(), QString("12.7"));
+    QCOMPARE(m->index(1, ToolTableModel::Kr).data().toString(), QString("0.07"));
+    QCOMPARE(m->index(1, ToolTableModel::Kt).data().toString(), QString());  // the material's
+    QVERIFY(m->index(1, ToolTableModel::Kt).data(Qt::ToolTipRole).toString().contains("600"));
+    QCOMPARE(m->index(0, ToolTableModel::ModesX).data().toString(), QString("1"));
+    QCOMPARE(editor.currentToolId(), QString("R1"));
+    QCOMPARE(selected.count(), 1);
+    QVERIFY(editor.selectTool("R2"));
+    QCOMPARE(selected.last().at(0).toString(), QString("R2"));
+    QCOMPARE(editor.modeModel(Axis::X)->index(0, ModeTableModel::Frequency).data(Qt::EditRole).toDouble(), 900.03);
+    QCOMPARE(editor.modeModel(Axis::Y)->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 0.971);
+  }
+
+  void invalidStiffnessIsRefused_data() {
+    QTest::addColumn<QVariant>("value");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("zero") << QVariant(0.0) << "tools[0].modes_x[0].stiffness_N_per_um = 0: must be > 0";
+    QTest::newRow("negative") << QVariant(-5.0) << "tools[0].modes_x[0].stiffness_N_per_um = -5: must be > 0";
+    QTest::newRow("text") << QVariant("soft") << "tools[0].modes_x[0].stiffness_N_per_um = 'soft': not a number";
+  }
+  void invalidStiffnessIsRefused() {
+    QFETCH(QVariant, value);
+    QFETCH(QString, message);
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    ModeTableModel* modes = editor.modeModel(Axis::X);
+    const QModelIndex k = modes->index(0, ModeTableModel::Stiffness);
+    QVERIFY(!modes->setData(k, value, Qt::EditRole));
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(k.data(Qt::EditRole).toDouble(), 5.59);
+    QCOMPARE(editor.errorText(), message);
+    QVERIFY(labelShows(editor, message));
+  }
+
+  void typedStiffnessGoesThroughTheDelegate() {
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QTableView* view = editor.modeView(Axis::X);
+    const QModelIndex k = editor.modeModel(Axis::X)->index(0, ModeTableModel::Stiffness);
+    typeInto(view, k, "0");
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(k.data(Qt::EditRole).toDouble(), 5.59);
+    QVERIFY(editor.errorText().contains("stiffness_N_per_um = 0: must be > 0"));
+
+    typeInto(view, k, "7.25");
+    QCOMPARE(spy.count(), 1);
+    const Project edited = spy.at(0).at(0).value<Project>();
+    QCOMPARE(edited.tools[0].modes_x[0].stiffness_N_per_um, 7.25);
+    QCOMPARE(edited.tools[0].modes_y[0].stiffness_N_per_um, 5.715);
+    QCOMPARE(editor.errorText(), QString());  // a good edit clears the message
+  }
+
+  void validStiffnessEmitsTheNewValue() {
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    editor.selectTool("R2");
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    ModeTableModel* modes = editor.modeModel(Axis::Y);
+    QVERIFY(modes->setData(modes->index(0, ModeTableModel::Stiffness), 1.25, Qt::EditRole));
+    QCOMPARE(spy.count(), 1);
+    const Project edited = spy.at(0).at(0).value<Project>();
+    QCOMPARE(edited.tools[1].modes_y[0].stiffness_N_per_um, 1.25);
+    QVERIFY(spy.at(0).at(1).toString().contains("stiffness_N_per_um"));
+  }
+
+  void undoRestoresTheOldValue() {
+    mx::gui::ProjectDocument doc;
+    doc.load(kRubio);
+    ToolLibraryEditor editor;
+    wire(editor, doc);
+    editor.selectTool("R2");
+    ModeTableModel* modes = editor.modeModel(Axis::X);
+    const QModelIndex k = modes->index(0, ModeTableModel::Stiffness);
+    QVERIFY(modes->setData(k, 2.5, Qt::EditRole));
+    QCOMPARE(doc.project().tools[1].modes_x[0].stiffness_N_per_um, 2.5);
+    QCOMPARE(k.data(Qt::EditRole).toDouble(), 2.5);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.project().tools[1].modes_x[0].stiffness_N_per_um, 0.879);
+    QCOMPARE(modes->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 0.879);
+    QCOMPARE(editor.currentToolId(), QString("R2"));  // the selection survives the refresh
+    doc.undoStack()->redo();
+    QCOMPARE(modes->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 2.5);
+  }
+
+  void addDuplicateRemoveAreUndoable() {
+    mx::gui::ProjectDocument doc;
+    doc.load(kRubio);
+    ToolLibraryEditor editor;
+    wire(editor, doc);
+    editor.addTool();
+    QCOMPARE(doc.project().tools.size(), std::size_t{3});
+    QCOMPARE(doc.project().tools[2].id, QString("T1"));
+    QCOMPARE(editor.currentToolId(), QString("T1"));
+    editor.selectTool("R1");
+    editor.duplicateTool();
+    QCOMPARE(doc.project().tools[1].id, QString("R1-copy"));
+    QCOMPARE(doc.project().tools[1].modes_y[0].freq_Hz, 666.0);
+    QCOMPARE(editor.currentToolId(), QString("R1-copy"));
+    editor.removeTool();
+    QCOMPARE(doc.project().tools.size(), std::size_t{3});
+    QCOMPARE(editor.currentToolId(), QString("R2"));
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(editor.toolModel()->rowCount(), 2);
+    QVERIFY(!editor.currentToolId().isEmpty());
+  }
+
+  void modesAreAddedAndRemoved() {
+    mx::gui::ProjectDocument doc;
+    doc.load(kRubio);
+    ToolLibraryEditor editor;
+    wire(editor, doc);
+    ModeTableModel* x = editor.modeModel(Axis::X);
+    QVERIFY(x->addMode());
+    QCOMPARE(doc.project().tools[0].modes_x.size(), std::size_t{2});
+    QCOMPARE(x->rowCount(), 2);
+    QVERIFY(x->removeMode(0));
+    QCOMPARE(doc.project().tools[0].modes_x.size(), std::size_t{1});
+    QVERIFY(editor.modeModel(Axis::Y)->removeMode(0));
+    QVERIFY(doc.project().tools[0].modes_y.empty());  // a rigid axis is allowed
+  }
+
+  void invalidToolEditsAreRefused_data() {
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QVariant>("value");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("diameter") << int(ToolTableModel::Diameter) << QVariant(0.0)
+                              << "tools[0].diameter_mm = 0: must be > 0";
+    QTest::newRow("teeth") << int(ToolTableModel::Teeth) << QVariant(0) << "tools[0].teeth = 0: must be an integer >= 1";
+    QTest::newRow("helix") << int(ToolTableModel::Helix) << QVariant(90.0)
+                           << "tools[0].helix_deg = 90: must be in (-90, 90)";
+    QTest::newRow("duplicate id") << int(ToolTableModel::Id) << QVariant("R2")
+                                  << "tools[1].id = \"R2\": duplicate of tools[0].id";
+    QTest::newRow("radial depth > D") << int(ToolTableModel::RadialDepth) << QVariant(31.0)
+                                      << "tools[0].radial_depth_mm = 31: must be in (0, 30]";
+  }
+  void invalidToolEditsAreRefused() {
+    QFETCH(int, column);
+    QFETCH(QVariant, value);
+    QFETCH(QString, message);
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    const QModelIndex cell = editor.toolModel()->index(0, column);
+    const QVariant before = cell.data(Qt::EditRole);
+    QVERIFY(!editor.toolModel()->setData(cell, value, Qt::EditRole));
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(cell.data(Qt::EditRole), before);
+    QVERIFY2(editor.errorText().startsWith(message), qPrintable(editor.errorText()));
+    QVERIFY(labelShows(editor, message));
+  }
+
+  void optionalOverridesAreSetAndCleared() {
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    ToolTableModel* m = editor.toolModel();
+    QVERIFY(m->setData(m->index(0, ToolTableModel::Kt), 700.0));
+    QCOMPARE(*spy.at(0).at(0).value<Project>().tools[0].Kt_N_mm2, 700.0);
+    QVERIFY(m->setData(m->index(0, ToolTableModel::Kr), QVariant()));  // back to the material's
+    QVERIFY(!spy.at(1).at(0).value<Project>().tools[0].Kr);
+    QVERIFY(m->setData(m->index(1, ToolTableModel::Id), "R2b"));
+    QCOMPARE(spy.at(2).at(0).value<Project>().tools[1].id, QString("R2b"));
+  }
+
+  void inchUnits() {
+    mx::widgets::DisplayUnits units;
+    ToolLibraryEditor editor;
+    editor.setUnits(&units);
+    editor.setProject(mx::app::loadProject(kRubio));
+    units.setLength(mx::widgets::DisplayUnits::Length::Inch);
+    ToolTableModel* m = editor.toolModel();
+    const QModelIndex d = m->index(0, ToolTableModel::Diameter);
+    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("diameter [in]"));
+    QCOMPARE(d.data().toString(), QString("1.1811"));
+    QVERIFY(qAbs(d.data(Qt::EditRole).toDouble() - 30.0 / 25.4) < 1e-12);
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QVERIFY(m->setData(d, 1.0));
+    QCOMPARE(spy.at(0).at(0).value<Project>().tools[0].diameter_mm, 25.4);
+
+    // Through the delegate: the spin box shows inches, typing 1 stores 25.4 mm.
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QTableView* view = editor.toolView();
+    const QModelIndex d2 = m->index(1, ToolTableModel::Diameter);
+    view->edit(d2);
+    auto* box = view->viewport()->findChild<QDoubleSpinBox*>();
+    QVERIFY(box);
+    QCOMPARE(box->suffix(), QString(" in"));
+    QCOMPARE(box->value(), 0.5);  // 12.7 mm
+    box->selectAll();
+    QTest::keyClicks(box, "1");
+    QTest::keyClick(box, Qt::Key_Return);
+    settle();
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(spy.at(1).at(0).value<Project>().tools[1].diameter_mm, 25.4);
+  }
+
+  void openingAndClosingAnEditorChangesNothing() {
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj"));
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QTableView* view = editor.modeView(Axis::X);
+    const QModelIndex k = editor.modeModel(Axis::X)->index(0, ModeTableModel::Stiffness);
+    view->edit(k);
+    auto* box = view->viewport()->findChild<QDoubleSpinBox*>();
+    QVERIFY(box);
+    QTest::keyClick(box, Qt::Key_Return);  // 1.3400496480507487 shown as 1.3400: not an edit
+    settle();
+    QVERIFY(!view->viewport()->findChild<QDoubleSpinBox*>());  // the editor was committed and closed
+    QCOMPARE(spy.count(), 0);
+  }
+};
+
+MX_TEST_MAIN_WITH_APP(TestToolLibraryEditor, QApplication)
+#include "test_tool_library_editor.moc"

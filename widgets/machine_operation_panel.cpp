@@ -1,0 +1,316 @@
+#include "machine_operation_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRadioButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "tool_library_csv.h"
+
+namespace mx::widgets {
+
+namespace {
+
+using Opt = std::optional<double>;
+
+app::MachineSpec& machine(app::Project& p) {
+  if (!p.machine) p.machine = MachineOperationPanel::defaultMachine();
+  return *p.machine;
+}
+app::MaterialSpec& material(app::Project& p) {
+  if (!p.material) p.material = MachineOperationPanel::defaultMaterial();
+  return *p.material;
+}
+app::OperationSpec& operation(app::Project& p) {
+  if (!p.operation) p.operation = MachineOperationPanel::defaultOperation();
+  return *p.operation;
+}
+app::ExpertSpec& expert(app::Project& p) {
+  if (!p.expert) p.expert = app::ExpertSpec{};
+  return *p.expert;
+}
+
+}  // namespace
+
+app::MachineSpec MachineOperationPanel::defaultMachine() { return {5000.0, std::nullopt, std::nullopt}; }
+app::MaterialSpec MachineOperationPanel::defaultMaterial() { return {QStringLiteral("Aluminium"), 600.0, 0.3}; }
+app::OperationSpec MachineOperationPanel::defaultOperation() {
+  return {MillingDirection::Up, 1.0, std::nullopt, 0.1};
+}
+
+MachineOperationPanel::MachineOperationPanel(QWidget* parent) : QWidget(parent) {
+  errorLabel_ = new QLabel(this);
+  errorLabel_->setStyleSheet("color: #c00000;");
+  errorLabel_->setWordWrap(true);
+  errorLabel_->setToolTip(tr("Why the last edit was refused; the project keeps its previous value"));
+  errorLabel_->hide();
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(machineGroup());
+  layout->addWidget(operationGroup());
+  layout->addWidget(materialGroup());
+  layout->addWidget(expertGroup());
+  layout->addWidget(errorLabel_);
+  layout->addStretch(1);
+  refresh();
+}
+
+QWidget* MachineOperationPanel::addNumber(const QString& path, double max, int decimals, const QString& tip,
+                                          NumberField field) {
+  field.box = new QDoubleSpinBox(this);
+  field.box->setRange(0.0, max);  // 0 can be typed and is refused with its reason where it is invalid
+  field.box->setDecimals(decimals);
+  field.box->setKeyboardTracking(false);
+  field.box->setToolTip(tip);
+  field.box->setObjectName(path);
+  controls_.insert(path, field.box);
+  tips_.insert(path, tip);
+  connect(field.box, &QDoubleSpinBox::valueChanged, this, [this, path] { commitNumber(path); });
+  QWidget* widget = field.box;
+  if (field.enabled) {
+    field.enabled->setToolTip(tr("Checked: limited to the value at the right; unchecked: no limit"));
+    controls_.insert(path + ".enabled", field.enabled);
+    connect(field.enabled, &QCheckBox::toggled, this, [this, path] { commitNumber(path); });
+    widget = new QWidget(this);
+    auto* row = new QHBoxLayout(widget);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(field.enabled);
+    row->addWidget(field.box, 1);
+  }
+  numbers_.insert(path, field);
+  return widget;
+}
+
+QGroupBox* MachineOperationPanel::machineGroup() {
+  auto* box = new QGroupBox(this);
+  box->setToolTip(tr("The machine: spindle power and the optional speed and feed limits"));
+  groups_.insert("machine", box);
+  auto* form = new QFormLayout(box);
+  form->addRow(tr("Spindle power"),
+               addNumber("machine.spindle_power_W", 1e7, 1, tr("Spindle power P [W] (> 0)"),
+                         {.suffix = " W", .get = [](const app::Project& p) { return Opt(p.machine->spindle_power_W); },
+                          .set = [](app::Project& p, Opt v) { machine(p).spindle_power_W = v.value_or(0.0); }}));
+  form->addRow(tr("Max spindle speed"),
+               addNumber("machine.max_spindle_rpm", 1e6, 0, tr("Maximum spindle speed [rpm] (> 0); optional"),
+                         {.enabled = new QCheckBox(this), .suffix = " rpm", .fallback = 12000.0,
+                          .get = [](const app::Project& p) { return p.machine->max_spindle_rpm; },
+                          .set = [](app::Project& p, Opt v) { machine(p).max_spindle_rpm = v; }}));
+  form->addRow(tr("Max feed rate"),
+               addNumber("machine.max_feed_mm_s", 1e5, 3, tr("Feed-drive limit [length/s] (> 0); optional"),
+                         {.enabled = new QCheckBox(this), .length = true, .suffix = " %1/s", .fallback = 100.0,
+                          .get = [](const app::Project& p) { return p.machine->max_feed_mm_s; },
+                          .set = [](app::Project& p, Opt v) { machine(p).max_feed_mm_s = v; }}));
+  return box;
+}
+
+QGroupBox* MachineOperationPanel::operationGroup() {
+  auto* box = new QGroupBox(this);
+  box->setToolTip(tr("The operation: milling direction, radial engagement and feed per tooth"));
+  groups_.insert("operation", box);
+  auto* form = new QFormLayout(box);
+  milling_ = new QComboBox(this);
+  milling_->addItems({tr("up milling"), tr("down milling")});
+  milling_->setToolTip(tr("Up (conventional) or down (climb) milling"));
+  controls_.insert("operation.milling", milling_);
+  connect(milling_, &QComboBox::currentIndexChanged, this, &MachineOperationPanel::commitMilling);
+  form->addRow(tr("Direction"), milling_);
+
+  useImmersion_ = new QRadioButton(tr("Radial immersion a/D"), this);
+  useImmersion_->setToolTip(tr("Give the radial engagement as the fraction a/D of each tool's diameter"));
+  useDepth_ = new QRadioButton(tr("Radial depth a"), this);
+  useDepth_->setToolTip(tr("Give the radial engagement as one radial depth a for every tool (a <= D)"));
+  controls_.insert("operation.use_radial_depth", useDepth_);
+  connect(useDepth_, &QRadioButton::toggled, this, &MachineOperationPanel::commitRadialChoice);
+  form->addRow(useImmersion_,
+               addNumber("operation.radial_immersion", 1.0, 3, tr("Radial immersion a/D in (0, 1]"),
+                         {.get = [](const app::Project& p) { return p.operation->radial_immersion; },
+                          .set = [](app::Project& p, Opt v) { operation(p).radial_immersion = v; }}));
+  form->addRow(useDepth_,
+               addNumber("operation.radial_depth_mm", 1e4, 4, tr("Radial depth of cut a in (0, D] for every tool"),
+                         {.length = true, .suffix = " %1",
+                          .get = [](const app::Project& p) { return p.operation->radial_depth_mm; },
+                          .set = [](app::Project& p, Opt v) { operation(p).radial_depth_mm = v; }}));
+  form->addRow(tr("Max feed per tooth"),
+               addNumber("operation.max_feed_per_tooth_mm", 100.0, 4, tr("Largest admissible feed per tooth (> 0)"),
+                         {.length = true, .suffix = " %1/tooth",
+                          .get = [](const app::Project& p) { return Opt(p.operation->max_feed_per_tooth_mm); },
+                          .set = [](app::Project& p, Opt v) { operation(p).max_feed_per_tooth_mm = v.value_or(0); }}));
+  return box;
+}
+
+QGroupBox* MachineOperationPanel::materialGroup() {
+  auto* box = new QGroupBox(this);
+  box->setToolTip(tr("The work material's cutting-force coefficients (tools may override them)"));
+  groups_.insert("material", box);
+  auto* form = new QFormLayout(box);
+  materialName_ = new QLineEdit(this);
+  materialName_->setToolTip(tr("Name of the work material"));
+  controls_.insert("material.name", materialName_);
+  connect(materialName_, &QLineEdit::editingFinished, this, &MachineOperationPanel::commitName);
+  form->addRow(tr("Name"), materialName_);
+  form->addRow(tr("K_t"), addNumber("material.Kt_N_mm2", 1e6, 2,
+                                    tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
+                                    {.suffix = " N/mm²",
+                                     .get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
+                                     .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
+  form->addRow(tr("K_r"), addNumber("material.Kr", 100.0, 4, tr("Radial force ratio K_r = F_r / F_t (>= 0)"),
+                                    {.get = [](const app::Project& p) { return Opt(p.material->Kr); },
+                                     .set = [](app::Project& p, Opt v) { material(p).Kr = v.value_or(0); }}));
+  return box;
+}
+
+QGroupBox* MachineOperationPanel::expertGroup() {
+  auto* box = new QGroupBox(this);
+  box->setToolTip(tr("The expert system's safety margins"));
+  groups_.insert("expert", box);
+  auto* form = new QFormLayout(box);
+  form->addRow(tr("Margin δ"),
+               addNumber("expert.delta_per_s", 1e4, 4,
+                         tr("Rule 1.1 stability margin δ [1/s] (>= 0, below the smallest modal decay rate ζω_n)"),
+                         {.suffix = " 1/s", .get = [](const app::Project& p) { return Opt(p.expert->delta_per_s); },
+                          .set = [](app::Project& p, Opt v) { expert(p).delta_per_s = v.value_or(0); }}));
+  form->addRow(tr("Depth factor α"),
+               addNumber("expert.alpha", 1.0, 3, tr("Rule 1.2 depth factor α in (0, 1]"),
+                         {.get = [](const app::Project& p) { return Opt(p.expert->alpha); },
+                          .set = [](app::Project& p, Opt v) { expert(p).alpha = v.value_or(0); }}));
+  return box;
+}
+
+app::Project MachineOperationPanel::shown() const {
+  app::Project p = project_;
+  machine(p);
+  material(p);
+  operation(p);
+  expert(p);
+  return p;
+}
+
+void MachineOperationPanel::setProject(const app::Project& project) {
+  project_ = project;
+  refresh();
+}
+
+void MachineOperationPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &MachineOperationPanel::refresh);
+  refresh();
+}
+
+void MachineOperationPanel::refresh() {
+  updating_ = true;
+  const app::Project s = shown();
+  const QString unit = units_ ? units_->lengthSuffix() : QStringLiteral("mm");
+  for (auto it = numbers_.begin(); it != numbers_.end(); ++it) {
+    NumberField& f = it.value();
+    const Opt v = f.get(s);
+    f.box->setSuffix(f.length ? f.suffix.arg(unit) : f.suffix);
+    if (f.length) f.box->setDecimals(units_ ? units_->lengthDecimals() : 4);
+    if (f.enabled) f.enabled->setChecked(v.has_value());
+    f.box->setEnabled(v.has_value());
+    f.box->setValue(v ? (f.length ? toDisplay(*v) : *v) : (f.length ? toDisplay(f.fallback) : f.fallback));
+  }
+  milling_->setCurrentIndex(s.operation->milling == MillingDirection::Up ? 0 : 1);
+  useDepth_->setChecked(s.operation->radial_depth_mm.has_value());
+  useImmersion_->setChecked(!s.operation->radial_depth_mm.has_value());
+  materialName_->setText(s.material->name);
+  const QString absent = tr(" (not in the project: defaults shown, an edit adds it)");
+  groups_["machine"]->setTitle(tr("Machine") + (project_.machine ? QString() : absent));
+  groups_["operation"]->setTitle(tr("Operation") + (project_.operation ? QString() : absent));
+  groups_["material"]->setTitle(tr("Material") + (project_.material ? QString() : absent));
+  groups_["expert"]->setTitle(tr("Expert margins") + (project_.expert ? QString() : absent));
+  updating_ = false;
+}
+
+void MachineOperationPanel::commitNumber(const QString& path) {
+  if (updating_) return;
+  const NumberField& f = numbers_[path];
+  if (f.enabled) f.box->setEnabled(f.enabled->isChecked());
+  const Opt current = f.get(shown());
+  Opt wanted;
+  if (!f.enabled || f.enabled->isChecked()) wanted = f.length ? toMm(f.box->value()) : f.box->value();
+  if (current.has_value() == wanted.has_value()) {
+    // Unchanged as shown (the box rounds to its decimals): keep the project's exact value.
+    if (!wanted) return;
+    const double shownValue = f.length ? toDisplay(*current) : *current;
+    if (std::abs(shownValue - f.box->value()) <= 0.5 * std::pow(10.0, -f.box->decimals())) return;
+  }
+  app::Project edited = project_;
+  f.set(edited, wanted);
+  request(edited, path, wanted ? tr("Set %1").arg(path) : tr("Remove %1").arg(path));
+}
+
+void MachineOperationPanel::commitMilling() {
+  if (updating_) return;
+  const MillingDirection wanted = milling_->currentIndex() == 0 ? MillingDirection::Up : MillingDirection::Down;
+  if (shown().operation->milling == wanted && project_.operation) return;
+  app::Project edited = project_;
+  operation(edited).milling = wanted;
+  request(edited, "operation.milling", wanted == MillingDirection::Up ? tr("Up milling") : tr("Down milling"));
+}
+
+void MachineOperationPanel::commitName() {
+  if (updating_ || (project_.material && materialName_->text() == project_.material->name)) return;
+  app::Project edited = project_;
+  material(edited).name = materialName_->text();
+  request(edited, "material.name", tr("Rename the material"));
+}
+
+// Switching keeps the engagement of the smallest tool: a = a/D * D_min, or a/D = a / D_max (<= 1).
+void MachineOperationPanel::commitRadialChoice() {
+  if (updating_) return;
+  app::Project edited = project_;
+  app::OperationSpec& op = operation(edited);
+  double dMin = 0.0, dMax = 0.0;
+  for (const app::ToolSpec& t : edited.tools) {
+    dMin = dMin == 0.0 ? t.diameter_mm : std::min(dMin, t.diameter_mm);
+    dMax = std::max(dMax, t.diameter_mm);
+  }
+  if (useDepth_->isChecked()) {
+    if (op.radial_depth_mm) return;
+    op.radial_depth_mm = op.radial_immersion.value_or(1.0) * (dMin > 0.0 ? dMin : 10.0);
+    op.radial_immersion.reset();
+    request(edited, "operation.radial_depth_mm", tr("Give the radial depth of cut"));
+  } else {
+    if (op.radial_immersion) return;
+    const double depth = op.radial_depth_mm.value_or(1.0);
+    op.radial_immersion = dMax > 0.0 ? std::min(1.0, depth / dMax) : 1.0;
+    op.radial_depth_mm.reset();
+    request(edited, "operation.radial_immersion", tr("Give the radial immersion"));
+  }
+}
+
+void MachineOperationPanel::request(const app::Project& edited, const QString& path, const QString& description) {
+  const QString error = ToolLibraryCsv::validationError(edited);
+  markError(error.isEmpty() ? QString() : path, error);
+  if (!error.isEmpty()) {
+    refresh();  // refused in place: the field shows the project's value again
+    return;
+  }
+  emit editRequested(edited, description);
+}
+
+void MachineOperationPanel::markError(const QString& path, const QString& reason) {
+  if (QWidget* old = controls_.value(errorPath_)) {
+    old->setStyleSheet({});
+    old->setToolTip(tips_.value(errorPath_, old->toolTip()));
+  }
+  if (QWidget* w = controls_.value(path)) {
+    if (!tips_.contains(path)) tips_.insert(path, w->toolTip());
+    w->setStyleSheet("border: 1px solid #c00000;");
+    w->setToolTip(tips_.value(path) + "\n" + tr("Refused: %1").arg(reason));
+  }
+  errorPath_ = path;
+  error_ = reason;
+  errorLabel_->setText(reason.isEmpty() ? QString() : tr("Refused: %1").arg(reason));
+  errorLabel_->setVisible(!reason.isEmpty());
+}
+
+}  // namespace mx::widgets

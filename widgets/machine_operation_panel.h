@@ -1,0 +1,96 @@
+#pragma once
+// The machine / operation / material / expert-margin form of a project. Like the tool-library editor
+// it shows the project given by setProject() and never changes it: an edit of one field builds the
+// edited project, validates it (validateProject) and emits editRequested(), or refuses it in place
+// (no signal, the field returns to the project's value, the reason appears in red under the form
+// and in the field's tooltip, the field gets a red border). A section the project lacks is shown
+// with defaults and created by the first edit. Lengths follow the DisplayUnits (project in mm).
+#include <QHash>
+#include <QPointer>
+#include <QWidget>
+#include <functional>
+#include <optional>
+
+#include "display_units.h"
+#include "project/project.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QRadioButton;
+
+namespace mx::widgets {
+
+class MachineOperationPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit MachineOperationPanel(QWidget* parent = nullptr);
+
+  void setProject(const app::Project& project);
+  const app::Project& project() const { return project_; }
+  void setUnits(DisplayUnits* units);  // radial depth, feed per tooth and feed rate in mm or inch
+
+  // The control of a project field, by its path: "machine.spindle_power_W", "machine.max_spindle_rpm",
+  // "machine.max_feed_mm_s", "operation.milling", "operation.radial_immersion",
+  // "operation.radial_depth_mm", "operation.max_feed_per_tooth_mm", "material.name",
+  // "material.Kt_N_mm2", "material.Kr", "expert.delta_per_s", "expert.alpha"; the check boxes of the
+  // optional limits are "<path>.enabled", the radial choice "operation.use_radial_depth". nullptr if unknown.
+  QWidget* field(const QString& path) const { return controls_.value(path); }
+  QString errorText() const { return error_; }  // the last refusal ("" after a good edit)
+
+  // The sections the panel creates when the project lacks them.
+  static app::MachineSpec defaultMachine();
+  static app::MaterialSpec defaultMaterial();
+  static app::OperationSpec defaultOperation();
+
+ signals:
+  void editRequested(const mx::app::Project& edited, const QString& description);
+
+ private:
+  // One numeric field: its spin box, an optional enabling check box, and access to the project.
+  struct NumberField {
+    QDoubleSpinBox* box = nullptr;
+    QCheckBox* enabled = nullptr;  // optional values only
+    bool length = false;           // shown in display length units ("%1" in the suffix is the unit)
+    QString suffix = {};
+    double fallback = 0.0;         // shown while an optional value is absent
+    std::function<std::optional<double>(const app::Project&)> get;
+    std::function<void(app::Project&, std::optional<double>)> set;
+  };
+  // Creates the spin box (and check box) of `path`; returns the widget to put into the form.
+  QWidget* addNumber(const QString& path, double max, int decimals, const QString& tip, NumberField field);
+  QGroupBox* machineGroup();
+  QGroupBox* operationGroup();
+  QGroupBox* materialGroup();
+  QGroupBox* expertGroup();
+  void commitNumber(const QString& path);
+  void commitMilling();
+  void commitName();
+  void commitRadialChoice();
+  void request(const app::Project& edited, const QString& path, const QString& description);
+  void markError(const QString& path, const QString& reason);
+  void refresh();
+  app::Project shown() const;  // project_ with default sections filled in
+  double toDisplay(double mm) const { return units_ ? units_->fromMm(mm) : mm; }
+  double toMm(double v) const { return units_ ? units_->toMm(v) : v; }
+
+  app::Project project_;
+  QPointer<DisplayUnits> units_;
+  QHash<QString, QWidget*> controls_;
+  QHash<QString, QString> tips_;
+  QHash<QString, NumberField> numbers_;
+  QHash<QString, QGroupBox*> groups_;
+  QComboBox* milling_ = nullptr;
+  QRadioButton* useImmersion_ = nullptr;
+  QRadioButton* useDepth_ = nullptr;
+  QLineEdit* materialName_ = nullptr;
+  QLabel* errorLabel_ = nullptr;
+  QString error_;
+  QString errorPath_;
+  bool updating_ = false;
+};
+
+}  // namespace mx::widgets

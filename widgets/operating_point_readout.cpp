@@ -1,0 +1,106 @@
+#include "operating_point_readout.h"
+
+#include <QFormLayout>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace mx::widgets {
+
+OperatingPointReadout::OperatingPointReadout(QWidget* parent) : QWidget(parent), verdict_(new QLabel(this)) {
+  auto* outer = new QVBoxLayout(this);
+  verdict_->setAlignment(Qt::AlignCenter);
+  verdict_->setMinimumHeight(32);
+  verdict_->setToolTip(tr("Stable when the depth is below alpha times the delta-margined lobe (Rule 1)"));
+  outer->addWidget(verdict_);
+  auto* form = new QFormLayout;
+  form->setLabelAlignment(Qt::AlignRight);
+  outer->addLayout(form);
+  outer->addStretch(1);
+  setLayout(outer);
+  const struct {
+    const char* key;
+    const char* label;
+    const char* tip;
+  } rows[] = {
+      {"tool", "Tool", "The tool whose lobes are evaluated"},
+      {"speed", "Spindle speed N", "Spindle speed of the operating point"},
+      {"depth", "Axial depth b", "Axial depth of cut of the operating point"},
+      {"feed", "Feed per tooth s_t", "Feed per tooth used for power and MRR"},
+      {"power", "Peak power P", "Peak cutting power over a tooth period, v * sum F_t (Pareto paper eq. 8)"},
+      {"power_fraction", "P / P_spindle", "Peak power as a fraction of the spindle power"},
+      {"mrr", "MRR", "Material removal rate a * b * s_t * n_t * N"},
+      {"blim", "b_lim(N)", "Alpha times the delta-margined stability limit at this speed"},
+      {"dns", "\u0394N_s", "Spindle speed security change: distance in speed to the lobes (2006, section 3.B)"},
+      {"ros", "ROS", "Normalised distance to the stability boundary (negative when unstable)"},
+  };
+  for (const auto& r : rows) values_.insert(r.key, addRow(r.key, tr(r.label), tr(r.tip)));
+  refresh();
+}
+
+QLabel* OperatingPointReadout::addRow(const QString& key, const QString& label, const QString& tooltip) {
+  auto* form = static_cast<QFormLayout*>(static_cast<QVBoxLayout*>(layout())->itemAt(1)->layout());
+  auto* name = new QLabel(label + ":", this);
+  auto* value = new QLabel(this);
+  value->setObjectName("readout_" + key);
+  value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  name->setToolTip(tooltip);
+  value->setToolTip(tooltip);
+  form->addRow(name, value);
+  return value;
+}
+
+void OperatingPointReadout::setUnits(DisplayUnits* units) {
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &OperatingPointReadout::refresh);
+  refresh();
+}
+
+void OperatingPointReadout::setReadout(const PointReadout& readout) {
+  readout_ = readout;
+  refresh();
+}
+
+QString OperatingPointReadout::text(const QString& field) const {
+  if (field == "verdict") return verdict_->text();
+  return values_.contains(field) ? values_[field]->text() : QString();
+}
+
+void OperatingPointReadout::refresh() {
+  const PointReadout& r = readout_;
+  const double f = units_ ? units_->fromMm(1.0) : 1.0;
+  const QString u = units_ ? units_->lengthSuffix() : QStringLiteral("mm");
+  const int dec = units_ ? units_->lengthDecimals() : 4;
+  auto len = [&](double mm) { return QString("%1 %2").arg(mm * f, 0, 'f', dec).arg(u); };
+  values_["tool"]->setText(r.tool_id.isEmpty() ? "\u2014" : r.tool_id);
+  values_["speed"]->setText(QString("%1 rpm").arg(r.speed_rpm, 0, 'f', 0));
+  values_["depth"]->setText(len(r.depth_mm));
+  values_["feed"]->setText(QString("%1 %2/tooth").arg(r.feed_mm_per_tooth * f, 0, 'f', dec).arg(u));
+  values_["power"]->setText(QString("%1 W").arg(r.peak_power_w, 0, 'f', 1));
+  values_["power_fraction"]->setText(r.power_limit_w > 0 ? QString("%1 %").arg(100.0 * r.powerFraction(), 0, 'f', 1)
+                                                          : tr("no spindle limit"));
+  const QString volume = u + QStringLiteral("\u00b3/s");  // "%2\u00b3" would read as placeholder %23
+  values_["mrr"]->setText(QString("%1 %2").arg(r.mrr_mm3_per_s * f * f * f, 0, 'f', f != 1.0 ? 4 : 1).arg(volume));
+  const bool valid = r.valid;
+  values_["blim"]->setText(!valid ? "\u2014" : std::isfinite(r.blim_mm) ? len(r.blim_mm) : tr("none below the cap"));
+  values_["dns"]->setText(valid ? QString("%1 rpm").arg(r.delta_ns_rpm, 0, 'f', 0) : "\u2014");
+  values_["ros"]->setText(valid && std::isfinite(r.ros) ? QString::number(r.ros, 'f', 4) : "\u2014");
+  QString verdict, color;
+  if (!valid) {
+    verdict = r.message.isEmpty() ? tr("No operating point") : r.message;
+    color = "#777777";
+  } else if (!r.stable) {
+    verdict = tr("UNSTABLE \u2014 chatter expected");
+    color = "#c81414";
+  } else if (!r.powerOk()) {
+    verdict = tr("Stable, but spindle power exceeded");
+    color = "#e67800";
+  } else {
+    verdict = tr("STABLE");
+    color = "#1e961e";
+  }
+  verdict_->setText(verdict);
+  verdict_->setStyleSheet(QString("QLabel { color: white; background: %1; font-weight: bold; padding: 6px; "
+                                  "border-radius: 4px; }").arg(color));
+}
+
+}  // namespace mx::widgets

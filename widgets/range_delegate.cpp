@@ -1,0 +1,71 @@
+#include "range_delegate.h"
+
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <cmath>
+
+namespace mx::widgets {
+
+namespace {
+constexpr char kOriginal[] = "mx_original";  // the value shown when the editor opened
+}
+
+QWidget* RangeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem& option,
+                                     const QModelIndex& index) const {
+  const QVariant minimum = index.data(MinimumRole);
+  if (!minimum.isValid()) return QStyledItemDelegate::createEditor(parent, option, index);
+  const int decimals = index.data(DecimalsRole).toInt();
+  QAbstractSpinBox* editor = nullptr;
+  if (decimals == 0) {
+    auto* box = new QSpinBox(parent);
+    box->setRange(minimum.toInt(), index.data(MaximumRole).toInt());
+    box->setSuffix(index.data(SuffixRole).toString());
+    editor = box;
+  } else {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setDecimals(decimals);
+    box->setRange(minimum.toDouble(), index.data(MaximumRole).toDouble());
+    const QVariant step = index.data(StepRole);
+    if (step.isValid()) box->setSingleStep(step.toDouble());
+    box->setSuffix(index.data(SuffixRole).toString());
+    editor = box;
+  }
+  editor->setSpecialValueText(index.data(SpecialTextRole).toString());
+  editor->setToolTip(index.data(Qt::ToolTipRole).toString());
+  editor->setFrame(false);
+  return editor;
+}
+
+void RangeDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
+  const QVariant value = index.data(Qt::EditRole);
+  editor->setProperty(kOriginal, value);
+  if (auto* box = qobject_cast<QSpinBox*>(editor)) {
+    box->setValue(value.isValid() ? value.toInt() : box->minimum());
+  } else if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) {
+    box->setValue(value.isValid() ? value.toDouble() : box->minimum());
+  } else {
+    QStyledItemDelegate::setEditorData(editor, index);
+  }
+}
+
+void RangeDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+  auto* spin = qobject_cast<QAbstractSpinBox*>(editor);
+  if (!spin) return QStyledItemDelegate::setModelData(editor, model, index);
+  spin->interpretText();
+  const QVariant original = editor->property(kOriginal);
+  const bool special = !spin->specialValueText().isEmpty();
+  QVariant value;
+  if (auto* box = qobject_cast<QSpinBox*>(editor)) {
+    if (!(special && box->value() == box->minimum())) value = box->value();
+  } else if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) {
+    if (!(special && box->value() == box->minimum())) value = box->value();
+    // Opening and closing the editor must not round a more precise stored value to the box's decimals.
+    if (value.isValid() && original.isValid() &&
+        std::abs(original.toDouble() - box->value()) <= 0.5 * std::pow(10.0, -box->decimals()))
+      return;
+  }
+  if (value.isValid() == original.isValid() && (!value.isValid() || value.toDouble() == original.toDouble())) return;
+  model->setData(index, value, Qt::EditRole);
+}
+
+}  // namespace mx::widgets

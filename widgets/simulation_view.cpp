@@ -1,0 +1,328 @@
+#include "simulation_view.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <qcustomplot.h>
+#include <vector>
+
+#include "indicator_gauge.h"
+#include "spectrum_plot.h"
+
+namespace mx::widgets {
+
+namespace {
+constexpr int kSpacing = 8;
+constexpr int kLiveSpectrumIntervalMs = 250;
+constexpr std::size_t kLiveSpectrumSamples = 8192;
+const QColor kXColor(31, 119, 180);
+const QColor kYColor(255, 127, 14);
+const QColor kForceColor(120, 120, 120, 150);  // translucent: behind the displacements
+const QColor kPowerColor(44, 160, 44);
+const QColor kLimitColor(214, 39, 40);
+
+QCustomPlot* makePlot(QWidget* parent, const QString& tooltip) {
+  auto* plot = new QCustomPlot(parent);
+  plot->setMinimumSize(320, 200);
+  plot->legend->setVisible(true);
+  plot->legend->setFont(QFont(parent->font().family(), 9));
+  plot->legend->setBrush(QColor(255, 255, 255, 210));
+  plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  plot->setToolTip(tooltip);
+  return plot;
+}
+
+QCPGraph* addGraph(QCustomPlot* plot, QCPAxis* value_axis, const QString& name, const QPen& pen) {
+  QCPGraph* graph = plot->addGraph(plot->xAxis, value_axis);
+  graph->setName(name);
+  graph->setPen(pen);
+  graph->setAdaptiveSampling(true);
+  return graph;
+}
+
+// Graph data (t, v[i]) for the kept samples; `lo`/`hi` widen to the values seen.
+QVector<QCPGraphData> graphData(const RingBuffer<double>& t, const RingBuffer<double>& v, double& lo, double& hi) {
+  QVector<QCPGraphData> out(static_cast<qsizetype>(t.size()));
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    out[static_cast<qsizetype>(i)] = QCPGraphData(t[i], v[i]);
+    if (std::isfinite(v[i])) {
+      lo = std::min(lo, v[i]);
+      hi = std::max(hi, v[i]);
+    }
+  }
+  return out;
+}
+
+QString verdictStyle(const QColor& color) {
+  return QString("QLabel { background: %1; color: white; padding: 6px; border-radius: 4px; font-weight: bold; }")
+      .arg(color.name());
+}
+}  // namespace
+
+SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
+    : QWidget(parent),
+      time_(capacity),
+      x_um_(capacity),
+      y_um_(capacity),
+      force_n_(capacity),
+      power_w_(capacity),
+      motion_plot_(makePlot(this, tr("Tool vibration and resultant cutting force of the running simulation "
+                                     "(the last samples are kept). Wheel zooms, drag pans."))),
+      power_plot_(makePlot(this, tr("Spindle power P = v \u03a3 F_t against the machine's spindle power limit."))),
+      spectrum_(new SpectrumPlot(this)),
+      replot_timer_(new QTimer(this)) {
+  motion_plot_->xAxis->setLabel(tr("Time t [s]"));
+  motion_plot_->yAxis->setLabel(tr("Tool displacement [\u00b5m]"));
+  motion_plot_->yAxis2->setLabel(tr("Resultant force |F| [N]"));
+  motion_plot_->yAxis2->setVisible(true);
+  motion_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  // The force first, so that the displacements are drawn over it.
+  force_graph_ = addGraph(motion_plot_, motion_plot_->yAxis2, tr("Resultant force |F| [N] (right axis)"),
+                          QPen(kForceColor, 1.0));
+  x_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement x [\u00b5m]"), QPen(kXColor, 1.2));
+  y_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement y [\u00b5m]"), QPen(kYColor, 1.2));
+
+  power_plot_->xAxis->setLabel(tr("Time t [s]"));
+  power_plot_->yAxis->setLabel(tr("Spindle power P [W]"));
+  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power P [W]"), QPen(kPowerColor, 1.2));
+  limit_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power limit"), QPen(kLimitColor, 2.0, Qt::DashLine));
+  limit_graph_->setAdaptiveSampling(false);
+
+  auto* grid = new QGridLayout(this);
+  grid->setContentsMargins(kSpacing, kSpacing, kSpacing, kSpacing);
+  grid->setSpacing(kSpacing);
+  grid->addWidget(motion_plot_, 0, 0);
+  grid->addWidget(spectrum_, 0, 1);
+  grid->addWidget(power_plot_, 1, 0);
+  grid->addWidget(buildIndicatorPanel(), 1, 1);
+  grid->setColumnStretch(0, 3);
+  grid->setColumnStretch(1, 2);
+  grid->setRowStretch(0, 3);
+  grid->setRowStretch(1, 2);
+
+  replot_timer_->setSingleShot(true);
+  replot_timer_->setInterval(kReplotIntervalMs);
+  connect(replot_timer_, &QTimer::timeout, this, &SimulationView::flushPlots);
+  clear();
+}
+
+QWidget* SimulationView::buildIndicatorPanel() {
+  auto* panel = new QWidget(this);
+  auto* layout = new QVBoxLayout(panel);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(kSpacing);
+  status_label_ = new QLabel(panel);
+  verdict_label_ = new QLabel(panel);
+  verdict_label_->setWordWrap(true);
+  eta_gauge_ = new IndicatorGauge(QStringLiteral("\u03b7"),
+                                  tr("\u03b7 = max|F_dynamic| / max|F_static| over the evaluated revolutions "
+                                     "(Rubio et al. 2006, eq. 11)"),
+                                  1.3, panel);
+  chip_gauge_ = new IndicatorGauge(tr("Chip ratio h_dyn/h_st"),
+                                   tr("Maximum dynamic over maximum static chip thickness (Rule 15)"), 1.25, panel);
+  details_label_ = new QLabel(panel);
+  details_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  details_label_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  move_button_ = new QPushButton(panel);
+  move_button_->setObjectName(QStringLiteral("moveToSpeedButton"));
+  connect(move_button_, &QPushButton::clicked, this, [this] {
+    if (suggested_rpm_ > 0.0) emit moveToSpeedRequested(suggested_rpm_);
+  });
+  layout->addWidget(status_label_);
+  layout->addWidget(verdict_label_);
+  layout->addWidget(eta_gauge_);
+  layout->addWidget(chip_gauge_);
+  layout->addWidget(details_label_);
+  layout->addWidget(move_button_);
+  layout->addStretch(1);
+  return panel;
+}
+
+void SimulationView::clear() {
+  replot_timer_->stop();
+  for (RingBuffer<double>* b : {&time_, &x_um_, &y_um_, &force_n_, &power_w_}) b->clear();
+  running_ = false;
+  summary_shown_ = false;
+  chatter_shown_ = false;
+  suggested_rpm_ = 0.0;
+  eta_gauge_->clear();
+  chip_gauge_->clear();
+  status_label_->setText(tr("No simulation yet: pick an operating point."));
+  verdict_label_->setText(tr("Verdict: \u2013"));
+  verdict_label_->setStyleSheet(verdictStyle(palette().color(QPalette::Mid)));
+  details_label_->clear();
+  move_button_->setText(tr("Move to suggested speed"));
+  move_button_->setEnabled(false);
+  move_button_->setToolTip(tr("Shown when chatter is detected: the Smith-Tlusty speed N = 60 f_c / (n_t k)."));
+  spectrum_->clear();
+  spectrum_->setToothPassingHz(tooth_passing_hz_);
+  flushPlots();
+}
+
+void SimulationView::beginRun(double spindle_power_limit_w, int teeth, double tooth_passing_hz) {
+  power_limit_w_ = std::isfinite(spindle_power_limit_w) && spindle_power_limit_w > 0.0 ? spindle_power_limit_w : 0.0;
+  teeth_ = teeth;
+  tooth_passing_hz_ = tooth_passing_hz;
+  clear();
+  running_ = true;
+  spectrum_clock_.start();
+  status_label_->setText(tr("Simulating\u2026"));
+  verdict_label_->setText(tr("Verdict: pending (the indicators use the last revolutions)"));
+}
+
+void SimulationView::appendChunk(const mx::gui::SimulationChunkData& chunk) {
+  const qsizetype n = std::min({chunk.time_s.size(), chunk.x_m.size(), chunk.y_m.size(), chunk.force_n.size(),
+                                chunk.power_w.size()});
+  // Only the last capacity() samples of a chunk can survive.
+  const qsizetype first = std::max<qsizetype>(0, n - static_cast<qsizetype>(capacity()));
+  for (qsizetype i = first; i < n; ++i) {
+    time_.push(chunk.time_s[i]);
+    x_um_.push(chunk.x_m[i] * 1e6);
+    y_um_.push(chunk.y_m[i] * 1e6);
+    force_n_.push(chunk.force_n[i]);
+    power_w_.push(chunk.power_w[i]);
+  }
+  if (chunk.revolutions > 0 && !summary_shown_)
+    status_label_->setText(tr("Simulating\u2026 revolution %1 of %2 (%3 %)")
+                               .arg(chunk.revolution)
+                               .arg(chunk.revolutions)
+                               .arg(100 * chunk.revolution / chunk.revolutions));
+  scheduleReplot();
+}
+
+void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
+  running_ = false;
+  summary_shown_ = true;
+  tooth_passing_hz_ = s.tooth_passing_hz;
+  eta_gauge_->setThreshold(s.eta_threshold);
+  eta_gauge_->setValue(s.eta);
+  chip_gauge_->setThreshold(s.chip_ratio_threshold);
+  chip_gauge_->setValue(s.chip_ratio);
+  chatter_shown_ = s.chatter;
+
+  QString verdict;
+  if (s.chatter) {
+    QStringList by;
+    if (s.chatter_by_eta) by << tr("\u03b7 \u2265 %1").arg(s.eta_threshold);
+    if (s.chatter_by_chip_ratio) by << tr("chip ratio \u2265 %1").arg(s.chip_ratio_threshold);
+    verdict = s.chatter_frequency_hz ? tr("CHATTER at f_c = %1 Hz (%2)").arg(*s.chatter_frequency_hz, 0, 'f', 1).arg(by.join(", "))
+                                     : tr("CHATTER (%1)").arg(by.join(", "));
+  } else {
+    verdict = tr("STABLE: no chatter (\u03b7 < %1, chip ratio < %2)").arg(s.eta_threshold).arg(s.chip_ratio_threshold);
+  }
+  if (s.diverged) verdict += tr("; vibration diverged after %1 revolutions").arg(s.simulated_revolutions);
+  verdict_label_->setText(verdict);
+  verdict_label_->setStyleSheet(verdictStyle(s.chatter ? IndicatorGauge::alarmColor() : IndicatorGauge::okColor()));
+  status_label_->setText(tr("Finished: %1 revolutions at %2 rpm; indicators over the last %3")
+                             .arg(s.simulated_revolutions)
+                             .arg(s.spindle_rpm, 0, 'f', 0)
+                             .arg(s.evaluated_revolutions));
+
+  const QString power_limit = s.spindle_power_limit_w > 0.0
+                                  ? tr(" of %1 W limit%2").arg(s.spindle_power_limit_w, 0, 'f', 0)
+                                        .arg(s.power_limit_exceeded ? tr(": EXCEEDED") : QString())
+                                  : QString();
+  details_label_->setText(
+      tr("Tooth-passing frequency f_tp: %1 Hz\nChatter frequency f_c: %2\nA_chatter: %3 N    A_toothpass: %4 N\n"
+         "Peak force: %5 N\nPeak power: %6 W%7")
+          .arg(s.tooth_passing_hz, 0, 'f', 1)
+          .arg(s.chatter_frequency_hz ? tr("%1 Hz").arg(*s.chatter_frequency_hz, 0, 'f', 1) : tr("\u2013 (no chatter)"))
+          .arg(s.a_chatter_n, 0, 'g', 4)
+          .arg(s.a_toothpass_n, 0, 'g', 4)
+          .arg(s.peak_force_n, 0, 'f', 1)
+          .arg(s.peak_power_w, 0, 'f', 1)
+          .arg(power_limit));
+
+  suggested_rpm_ = s.suggested_rpm.value_or(0.0);
+  move_button_->setEnabled(suggested_rpm_ > 0.0);
+  if (suggested_rpm_ > 0.0) {
+    move_button_->setText(tr("Move to %1 rpm").arg(suggested_rpm_, 0, 'f', 0));
+    move_button_->setToolTip(tr("Smith-Tlusty: tooth-passing frequency = f_c / %1, i.e. N = 60 f_c / (%2 \u00d7 %1) rpm")
+                                 .arg(s.suggested_k)
+                                 .arg(s.teeth));
+  } else {
+    move_button_->setText(s.chatter ? tr("No chatter-free speed in range") : tr("Move to suggested speed"));
+  }
+
+  spectrum_->setToothPassingHz(s.tooth_passing_hz);
+  spectrum_->setChatterFrequency(s.chatter_frequency_hz);
+  spectrum_->setSpectrum({s.spectrum_hz, s.spectrum_n}, tr("last %1 revolutions").arg(s.evaluated_revolutions));
+  scheduleReplot();
+}
+
+void SimulationView::setStatus(const QString& message) {
+  running_ = false;
+  status_label_->setText(message);
+}
+
+int SimulationView::plottedSampleCount() const { return x_graph_->dataCount(); }
+int SimulationView::spectrumPointCount() const { return spectrum_->pointCount(); }
+QString SimulationView::verdictText() const { return verdict_label_->text(); }
+QString SimulationView::suggestedSpeedText() const { return suggested_rpm_ > 0.0 ? move_button_->text() : QString(); }
+bool SimulationView::replotPending() const { return replot_timer_->isActive(); }
+
+void SimulationView::scheduleReplot() {
+  if (!replot_timer_->isActive()) replot_timer_->start();  // coalesces the chunks of ~33 ms
+}
+
+void SimulationView::flushPlots() {
+  ++flush_count_;
+  double lo = 0.0, hi = 0.0, f_lo = 0.0, f_hi = 0.0, p_lo = 0.0, p_hi = 0.0;
+  x_graph_->data()->set(graphData(time_, x_um_, lo, hi), true);
+  y_graph_->data()->set(graphData(time_, y_um_, lo, hi), true);
+  force_graph_->data()->set(graphData(time_, force_n_, f_lo, f_hi), true);
+  power_graph_->data()->set(graphData(time_, power_w_, p_lo, p_hi), true);
+  const double t0 = time_.empty() ? 0.0 : time_.front();
+  const double t1 = time_.empty() ? 1.0 : std::max(time_.back(), t0 + 1e-6);
+  const double amplitude = std::max({std::abs(lo), std::abs(hi), 1e-3});
+  motion_plot_->xAxis->setRange(t0, t1);
+  motion_plot_->yAxis->setRange(-1.1 * amplitude, 1.1 * amplitude);
+  motion_plot_->yAxis2->setRange(0.0, std::max(f_hi, 1.0) * 1.1);
+  power_plot_->xAxis->setRange(t0, t1);
+  p_hi = std::max(p_hi, 1.0);
+  updatePowerLimit();
+  // Keep the trace readable: the limit sets the range only when within 4x the peak.
+  const bool limit_in_range = power_limit_w_ > 0.0 && power_limit_w_ <= 4.0 * p_hi;
+  power_plot_->yAxis->setRange(0.0, 1.12 * (limit_in_range ? std::max(p_hi, power_limit_w_) : p_hi));
+  if (running_ && spectrum_clock_.isValid() && spectrum_clock_.elapsed() >= kLiveSpectrumIntervalMs) {
+    updateLiveSpectrum();
+    spectrum_clock_.restart();
+  }
+  motion_plot_->replot(QCustomPlot::rpQueuedReplot);
+  power_plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SimulationView::updatePowerLimit() {
+  if (power_limit_w_ <= 0.0 || time_.empty()) {
+    limit_graph_->data()->clear();
+    if (power_limit_w_ <= 0.0) limit_graph_->removeFromLegend();
+    return;
+  }
+  limit_graph_->addToLegend();
+  double p_hi = 1.0;
+  for (std::size_t i = 0; i < power_w_.size(); ++i) p_hi = std::max(p_hi, power_w_[i]);
+  const bool above = power_limit_w_ > 4.0 * p_hi;
+  limit_graph_->setName(above ? tr("Spindle power limit %1 W (above the range)").arg(power_limit_w_, 0, 'f', 0)
+                              : tr("Spindle power limit %1 W").arg(power_limit_w_, 0, 'f', 0));
+  limit_graph_->setData({time_.front(), time_.back()}, {power_limit_w_, power_limit_w_}, true);
+}
+
+void SimulationView::updateLiveSpectrum() {
+  const std::size_t n = std::min(force_n_.size(), kLiveSpectrumSamples);
+  if (n < 64) return;
+  std::vector<double> signal(n);
+  const std::size_t first = force_n_.size() - n;
+  for (std::size_t i = 0; i < n; ++i) signal[i] = force_n_[first + i];
+  const double duration = time_.back() - time_[first];
+  if (!(duration > 0.0)) return;
+  const double rate = static_cast<double>(n - 1) / duration;
+  const double revolutions = teeth_ > 0 ? duration * tooth_passing_hz_ / teeth_ : 0.0;
+  spectrum_->setSpectrum(SpectrumPlot::computeSpectrum(signal, rate, tooth_passing_hz_),
+                         tr("live, last %1 revolutions").arg(revolutions, 0, 'f', 1));
+}
+
+}  // namespace mx::widgets

@@ -1,0 +1,96 @@
+#pragma once
+// Live simulation view: streams a running time-domain simulation chunk by chunk.
+//   (1) tool displacement x, y [um] (left axis) and resultant force |F| [N] (right axis) against time,
+//   (2) spindle power P [W] against time with the spindle power limit,
+//   (3) the force amplitude spectrum with the tooth-passing harmonics and the chatter frequency,
+// and the indicators eta and chip-thickness ratio against their thresholds, the verdict and a one-click
+// "Move to N rpm" for the Smith-Tlusty speed. Memory is bounded: each signal keeps the last
+// capacity() samples in a ring buffer; plots repaint at most ~30 Hz (rpQueuedReplot). QCustomPlot stays
+// behind this class.
+#include <QElapsedTimer>
+#include <QString>
+#include <QWidget>
+#include <cstddef>
+
+#include "ring_buffer.h"
+#include "simulation_data.h"
+
+class QCustomPlot;
+class QCPGraph;
+class QLabel;
+class QPushButton;
+class QTimer;
+
+namespace mx::widgets {
+
+class IndicatorGauge;
+class SpectrumPlot;
+
+class SimulationView : public QWidget {
+  Q_OBJECT
+ public:
+  static constexpr std::size_t kDefaultCapacity = 20000;
+  static constexpr int kReplotIntervalMs = 33;
+
+  explicit SimulationView(QWidget* parent = nullptr, std::size_t capacity = kDefaultCapacity);
+
+  // A new run: clears the plots and indicators. spindle_power_limit_w <= 0: no limit line.
+  void beginRun(double spindle_power_limit_w, int teeth, double tooth_passing_hz);
+  void appendChunk(const mx::gui::SimulationChunkData& chunk);
+  void setSummary(const mx::gui::SimulationSummary& summary);
+  // A failed or cancelled run: keeps the traces, shows the message.
+  void setStatus(const QString& message);
+  void clear();
+
+  // Test accessors.
+  std::size_t capacity() const { return time_.capacity(); }
+  int sampleCount() const { return static_cast<int>(time_.size()); }  // samples kept per signal
+  int plottedSampleCount() const;                                     // samples in the displacement graph
+  int spectrumPointCount() const;
+  double latestTime() const { return time_.empty() ? 0.0 : time_.back(); }
+  bool chatterShown() const { return chatter_shown_; }
+  QString verdictText() const;
+  QString suggestedSpeedText() const;  // empty when no speed is suggested
+  double suggestedSpeedRpm() const { return suggested_rpm_; }
+  bool replotPending() const;
+  int flushCount() const { return flush_count_; }  // plot updates so far (coalesced chunks)
+
+ signals:
+  void moveToSpeedRequested(double speed_rpm);
+
+ private:
+  void scheduleReplot();
+  void flushPlots();
+  void updateLiveSpectrum();
+  void updatePowerLimit();
+  QWidget* buildIndicatorPanel();
+
+  RingBuffer<double> time_, x_um_, y_um_, force_n_, power_w_;
+  QCustomPlot* motion_plot_;
+  QCustomPlot* power_plot_;
+  SpectrumPlot* spectrum_;
+  QCPGraph* x_graph_ = nullptr;
+  QCPGraph* y_graph_ = nullptr;
+  QCPGraph* force_graph_ = nullptr;
+  QCPGraph* power_graph_ = nullptr;
+  QCPGraph* limit_graph_ = nullptr;
+  IndicatorGauge* eta_gauge_ = nullptr;
+  IndicatorGauge* chip_gauge_ = nullptr;
+  QLabel* status_label_ = nullptr;
+  QLabel* verdict_label_ = nullptr;
+  QLabel* details_label_ = nullptr;
+  QPushButton* move_button_ = nullptr;
+  QTimer* replot_timer_;
+  QElapsedTimer spectrum_clock_;
+
+  double power_limit_w_ = 0.0;
+  double tooth_passing_hz_ = 0.0;
+  int teeth_ = 0;
+  bool running_ = false;
+  bool summary_shown_ = false;
+  bool chatter_shown_ = false;
+  double suggested_rpm_ = 0.0;
+  int flush_count_ = 0;
+};
+
+}  // namespace mx::widgets

@@ -1,0 +1,348 @@
+#include "tool_library_csv.h"
+
+#include <QFile>
+#include <QHash>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLocale>
+#include <QRegularExpression>
+#include <QSaveFile>
+#include <QSet>
+
+#include "project/json_format.h"
+#include "project/project_rules.h"
+#include "project/project_validation.h"
+
+namespace mx::widgets {
+
+namespace {
+
+namespace rules = app::rules;
+
+enum Col { kId, kTeeth, kDiameter, kHelix, kKt, kKr, kRadial, kAxis, kFreq, kDamping, kStiffness, kColumnCount };
+
+// Splits one CSV line (RFC 4180 quoting, no line breaks inside a field). Cells are trimmed unless quoted.
+bool splitCsvLine(const QString& line, QStringList& cells) {
+  cells.clear();
+  QString cell;
+  bool quoted = false, wasQuoted = false;
+  for (qsizetype i = 0; i < line.size(); ++i) {
+    const QChar c = line.at(i);
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line.at(i + 1) == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"' && cell.trimmed().isEmpty()) {
+      quoted = wasQuoted = true;
+      cell.clear();
+    } else if (c == ',') {
+      cells << (wasQuoted ? cell : cell.trimmed());
+      cell.clear();
+      wasQuoted = false;
+    } else {
+      cell += c;
+    }
+  }
+  cells << (wasQuoted ? cell : cell.trimmed());
+  return !quoted;
+}
+
+QString quoteCsv(const QString& text) {
+  if (!text.contains(',') && !text.contains('"') && text.trimmed() == text) return text;
+  return '"' + QString(text).replace("\"", "\"\"") + '"';
+}
+
+// Parser state: the header's column positions and the tool being read.
+class CsvReader {
+ public:
+  QString error;
+
+  bool readHeader(int line, const QStringList& cells) {
+    pos_.fill(-1, kColumnCount);
+    for (qsizetype c = 0; c < cells.size(); ++c) {
+      const qsizetype known = ToolLibraryCsv::columns().indexOf(cells[c]);
+      if (known < 0)
+        return fail(QString("line %1, column %2: unknown column '%3' (expected the header %4)")
+                        .arg(line).arg(c + 1).arg(cells[c], ToolLibraryCsv::columns().join(',')));
+      if (pos_[known] >= 0)
+        return fail(QString("line %1, column %2: column '%3' given twice").arg(line).arg(c + 1).arg(cells[c]));
+      pos_[known] = static_cast<int>(c);
+    }
+    for (int k = 0; k < kColumnCount; ++k) {
+      if (pos_[k] < 0)
+        return fail(QString("line %1: missing column '%2' (the header must be %3)")
+                        .arg(line).arg(ToolLibraryCsv::columns()[k], ToolLibraryCsv::columns().join(',')));
+    }
+    width_ = static_cast<int>(cells.size());
+    return true;
+  }
+
+  bool readRow(int line, const QStringList& cells, ToolLibraryFile& out) {
+    line_ = line;
+    cells_ = cells;
+    if (cells.size() != width_) {
+      const auto at = std::min<qsizetype>(cells.size(), width_) + 1;
+      return fail(QString("line %1, column %2: the row has %3 columns, expected %4")
+                      .arg(line).arg(at).arg(cells.size()).arg(width_));
+    }
+    const QString id = cell(kId);
+    if (id.isEmpty()) return bad(kId, "must be a non-empty tool id");
+    const bool continuation = !out.tools.empty() && out.tools.back().id == id;
+    if (!continuation) {
+      if (firstLine_.contains(id))
+        return bad(kId, QString("duplicate tool id (first on line %1); the rows of one tool must be consecutive")
+                            .arg(firstLine_.value(id)));
+      app::ToolSpec tool;
+      tool.id = id;
+      double teeth = 0.0;
+      if (!required(kTeeth, rules::kCountAtLeastOne, teeth) || !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
+          !required(kHelix, rules::kHelixDeg, tool.helix_deg) || !optional(kKt, rules::kPositive, tool.Kt_N_mm2) ||
+          !optional(kKr, rules::kNonNegative, tool.Kr) ||
+          !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm))
+        return false;
+      tool.teeth = static_cast<int>(teeth);
+      firstLine_.insert(id, line);
+      out.tools.push_back(tool);
+      out.lines.push_back(line);
+    } else if (!sameAsFirst(out.tools.back())) {
+      return false;
+    }
+    return readMode(out.tools.back(), continuation);
+  }
+
+ private:
+  QString cell(int col) const { return cells_.at(pos_[col]); }
+
+  bool fail(const QString& message) {
+    error = message;
+    return false;
+  }
+  bool bad(int col, const QString& what) {
+    return fail(QString("line %1, column %2 (%3): '%4' %5")
+                    .arg(line_).arg(pos_[col] + 1).arg(ToolLibraryCsv::columns()[col], cell(col), what));
+  }
+  bool number(int col, const app::NumberRule& rule, double& value) {
+    bool ok = false;
+    value = QLocale::c().toDouble(cell(col), &ok);
+    if (!ok) return bad(col, "is not a number (" + rule.requirement() + ")");
+    if (!rule.accepts(value)) return bad(col, rule.mustBe(value));
+    return true;
+  }
+  bool required(int col, const app::NumberRule& rule, double& value) {
+    if (cell(col).isEmpty()) return bad(col, "is empty (required " + rule.requirement() + ")");
+    return number(col, rule, value);
+  }
+  bool optional(int col, const app::NumberRule& rule, std::optional<double>& value) {
+    if (cell(col).isEmpty()) return true;
+    double v = 0.0;
+    if (!number(col, rule, v)) return false;
+    value = v;
+    return true;
+  }
+  // A continuation row leaves the tool fields blank or repeats them exactly.
+  bool sameAsFirst(const app::ToolSpec& t) {
+    const std::pair<int, std::optional<double>> fields[] = {
+        {kTeeth, double(t.teeth)}, {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg},
+        {kKt, t.Kt_N_mm2},         {kKr, t.Kr},                {kRadial, t.radial_depth_mm}};
+    for (const auto& [col, first] : fields) {
+      if (cell(col).isEmpty()) continue;
+      bool ok = false;
+      const double v = QLocale::c().toDouble(cell(col), &ok);
+      if (!ok || !first || v != *first)
+        return bad(col, QString("differs from the tool's first row (line %1, '%2'); leave it blank or repeat it")
+                            .arg(firstLine_.value(t.id))
+                            .arg(first ? app::formatNumber(*first) : QString()));
+    }
+    return true;
+  }
+  bool readMode(app::ToolSpec& tool, bool continuation) {
+    const QString axis = cell(kAxis).toLower();
+    if (axis.isEmpty()) {
+      if (continuation) return bad(kAxis, "is empty: a further row of a tool must give a mode (axis x or y)");
+      for (int col : {kFreq, kDamping, kStiffness}) {
+        if (!cell(col).isEmpty()) return bad(col, "is given but the axis is empty (x or y)");
+      }
+      return true;
+    }
+    if (axis != "x" && axis != "y") return bad(kAxis, "must be x or y");
+    app::ModeSpec m;
+    if (!required(kFreq, rules::kPositive, m.freq_Hz) || !required(kDamping, rules::kPercent, m.damping_pct) ||
+        !required(kStiffness, rules::kPositive, m.stiffness_N_per_um))
+      return false;
+    (axis == "x" ? tool.modes_x : tool.modes_y).push_back(m);
+    return true;
+  }
+
+  QList<int> pos_;
+  int width_ = 0;
+  int line_ = 0;
+  QStringList cells_;
+  QHash<QString, int> firstLine_;
+};
+
+}  // namespace
+
+const QStringList& ToolLibraryCsv::columns() {
+  static const QStringList kColumns{"tool_id", "teeth",  "diameter_mm", "helix_deg",   "Kt_N_mm2",          "Kr",
+                                    "radial_depth_mm", "axis", "freq_Hz", "damping_pct", "stiffness_N_per_um"};
+  return kColumns;
+}
+
+QByteArray ToolLibraryCsv::toCsv(const std::vector<app::ToolSpec>& tools) {
+  const auto opt = [](const std::optional<double>& v) { return v ? app::formatNumber(*v) : QString(); };
+  QStringList lines{columns().join(',')};
+  for (const app::ToolSpec& t : tools) {
+    const QString head = QStringList{quoteCsv(t.id), QString::number(t.teeth), app::formatNumber(t.diameter_mm),
+                                     app::formatNumber(t.helix_deg), opt(t.Kt_N_mm2), opt(t.Kr), opt(t.radial_depth_mm)}
+                             .join(',');
+    const auto mode = [&](const char* axis, const app::ModeSpec& m) {
+      lines << QStringList{head, axis, app::formatNumber(m.freq_Hz), app::formatNumber(m.damping_pct),
+                           app::formatNumber(m.stiffness_N_per_um)}
+                   .join(',');
+    };
+    for (const app::ModeSpec& m : t.modes_x) mode("x", m);
+    for (const app::ModeSpec& m : t.modes_y) mode("y", m);
+    if (t.modes_x.empty() && t.modes_y.empty()) lines << head + ",,,,";
+  }
+  return (lines.join('\n') + '\n').toUtf8();
+}
+
+ToolLibraryFile ToolLibraryCsv::fromCsv(const QByteArray& text) {
+  ToolLibraryFile out;
+  QString all = QString::fromUtf8(text);
+  if (all.startsWith(QChar(0xFEFF))) all.remove(0, 1);
+  const QStringList lines = all.split('\n');
+  CsvReader reader;
+  bool header = false;
+  QStringList cells;
+  for (qsizetype i = 0; i < lines.size(); ++i) {
+    const int lineNo = static_cast<int>(i + 1);
+    QString line = lines[i];
+    if (line.endsWith('\r')) line.chop(1);
+    if (line.trimmed().isEmpty() || line.trimmed().startsWith('#')) continue;
+    if (!splitCsvLine(line, cells)) {
+      out.error = QString("line %1, column %2: unterminated quoted field").arg(lineNo).arg(cells.size());
+      break;
+    }
+    const bool ok = header ? reader.readRow(lineNo, cells, out) : reader.readHeader(lineNo, cells);
+    if (!ok) {
+      out.error = reader.error;
+      break;
+    }
+    if (!header) out.idColumn = static_cast<int>(cells.indexOf("tool_id")) + 1;
+    header = true;
+  }
+  if (out.error.isEmpty() && !header) out.error = "line 1: missing header row (" + columns().join(',') + ")";
+  if (!out.ok()) {
+    out.tools.clear();
+    out.lines.clear();
+  }
+  return out;
+}
+
+QByteArray ToolLibraryCsv::toJson(const std::vector<app::ToolSpec>& tools) {
+  app::Project p;
+  p.name = "Tool library";
+  p.tools = tools;
+  return app::formatProjectJson(app::projectToJson(p));
+}
+
+ToolLibraryFile ToolLibraryCsv::fromJson(const QByteArray& text) {
+  ToolLibraryFile out;
+  QJsonParseError parse{};
+  const QJsonDocument doc = QJsonDocument::fromJson(text, &parse);
+  if (parse.error != QJsonParseError::NoError) {
+    out.error = QString("JSON syntax error at offset %1: %2").arg(parse.offset).arg(parse.errorString());
+    return out;
+  }
+  QJsonValue tools = doc.isArray() ? QJsonValue(doc.array()) : doc.object().value("tools");
+  if (tools.isUndefined()) {
+    out.error = "tools: missing (required array of tools)";
+    return out;
+  }
+  if (!tools.isArray()) {
+    out.error = "tools: expected an array, got " + app::jsonTypeName(tools);
+    return out;
+  }
+  const QJsonObject root{{"format", "millexpert-project"}, {"version", 1}, {"name", ""}, {"tools", tools}};
+  try {
+    out.tools = app::projectFromJson(root).tools;
+    out.json = tools.toArray();
+    out.lines.assign(out.tools.size(), 0);
+  } catch (const app::ProjectError& e) {
+    out.error = QString::fromStdString(e.what());
+  }
+  return out;
+}
+
+QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& file, bool replace,
+                              app::Project& merged) {
+  if (!file.ok()) return file.error;
+  app::Project p = base;
+  QJsonArray docTools = replace ? QJsonArray() : p.document.value("tools").toArray();
+  while (docTools.size() > static_cast<qsizetype>(p.tools.size())) docTools.removeLast();
+  if (replace) p.tools.clear();
+  const std::size_t offset = p.tools.size();
+  QSet<QString> existing;
+  for (const app::ToolSpec& t : p.tools) existing.insert(t.id);
+  for (std::size_t i = 0; i < file.tools.size(); ++i) {
+    if (existing.contains(file.tools[i].id)) {
+      const QString where = file.lines[i] > 0
+                                ? QString("line %1, column %2 (tool_id): ").arg(file.lines[i]).arg(file.idColumn)
+                                : QString("tools[%1].id: ").arg(i);
+      return where + QString("'%1' duplicate tool id (already in the library)").arg(file.tools[i].id);
+    }
+    p.tools.push_back(file.tools[i]);
+  }
+  if (!file.json.isEmpty()) {
+    while (docTools.size() < static_cast<qsizetype>(offset)) docTools.append(QJsonObject());
+    for (const QJsonValue& t : file.json) docTools.append(t);
+  }
+  if (docTools.isEmpty()) {
+    p.document.remove("tools");
+  } else {
+    p.document.insert("tools", docTools);
+  }
+  QString error = validationError(p);
+  if (!error.isEmpty()) {
+    // Name the file's line when the rule concerns an imported tool.
+    const QRegularExpressionMatch m = QRegularExpression(R"(tools\[(\d+)\])").match(error);
+    const qsizetype index = m.hasMatch() ? m.captured(1).toLongLong() - static_cast<qsizetype>(offset) : -1;
+    if (index >= 0 && index < static_cast<qsizetype>(file.lines.size()) && file.lines[std::size_t(index)] > 0)
+      return QString("line %1: %2").arg(file.lines[std::size_t(index)]).arg(error);
+    return "the imported tools do not fit the project: " + error;
+  }
+  merged = p;
+  return {};
+}
+
+QString ToolLibraryCsv::validationError(const app::Project& project) {
+  try {
+    app::validateProject(project);
+  } catch (const app::ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+QString ToolLibraryCsv::writeFile(const QString& path, const QByteArray& bytes) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly)) return QString("%1: cannot write (%2)").arg(path, file.errorString());
+  if (file.write(bytes) != bytes.size() || !file.commit())
+    return QString("%1: write failed (%2)").arg(path, file.errorString());
+  return {};
+}
+
+QString ToolLibraryCsv::readFile(const QString& path, QByteArray& bytes) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) return QString("%1: cannot read (%2)").arg(path, file.errorString());
+  bytes = file.readAll();
+  return {};
+}
+
+}  // namespace mx::widgets

@@ -1,0 +1,317 @@
+#include "tool_library_editor.h"
+
+#include <algorithm>
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QJsonArray>
+#include <QMessageBox>
+#include <QVBoxLayout>
+
+#include "range_delegate.h"
+#include "tool_library_csv.h"
+
+namespace mx::widgets {
+
+namespace {
+
+QPushButton* button(const QString& text, const QString& tip, QWidget* parent) {
+  auto* b = new QPushButton(text, parent);
+  b->setToolTip(tip);
+  return b;
+}
+
+QLabel* errorLabel(QWidget* parent) {
+  auto* l = new QLabel(parent);
+  l->setStyleSheet("color: #c00000;");
+  l->setWordWrap(true);
+  l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  l->setToolTip(QObject::tr("Why the last edit was refused; the project keeps its previous value"));
+  l->hide();
+  return l;
+}
+
+void setError(QLabel* label, const QString& text) {
+  label->setText(text);
+  label->setVisible(!text.isEmpty());
+}
+
+}  // namespace
+
+ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
+    : QWidget(parent),
+      tools_(new ToolTableModel(this)),
+      modesX_(new ModeTableModel(Axis::X, this)),
+      modesY_(new ModeTableModel(Axis::Y, this)),
+      toolView_(new QTableView(this)),
+      toolError_(errorLabel(this)),
+      modeError_(errorLabel(this)),
+      modeBox_(new QGroupBox(tr("Modes"), this)) {
+  auto* add = button(tr("Add tool"), tr("Add a new tool to the library (undoable)"), this);
+  duplicate_ = button(tr("Duplicate"), tr("Add a copy of the selected tool (undoable)"), this);
+  remove_ = button(tr("Remove"), tr("Remove the selected tool from the library (undoable)"), this);
+  auto* importCsvButton = button(tr("Import CSV…"), tr("Replace or extend the library from a CSV file"), this);
+  auto* exportCsvButton = button(tr("Export CSV…"), tr("Write the library as CSV (one row per mode)"), this);
+  auto* importJsonButton =
+      button(tr("Import JSON…"), tr("Replace or extend the library from the tools of a project / library file"), this);
+  auto* exportJsonButton = button(tr("Export JSON…"), tr("Write the library as a JSON tool library"), this);
+  connect(add, &QPushButton::clicked, this, &ToolLibraryEditor::addTool);
+  connect(duplicate_, &QPushButton::clicked, this, &ToolLibraryEditor::duplicateTool);
+  connect(remove_, &QPushButton::clicked, this, &ToolLibraryEditor::removeTool);
+  connect(importCsvButton, &QPushButton::clicked, this, [this] { chooseImport(true); });
+  connect(exportCsvButton, &QPushButton::clicked, this, [this] { chooseExport(true); });
+  connect(importJsonButton, &QPushButton::clicked, this, [this] { chooseImport(false); });
+  connect(exportJsonButton, &QPushButton::clicked, this, [this] { chooseExport(false); });
+
+  auto* buttons = new QHBoxLayout;
+  for (QPushButton* b : {add, duplicate_, remove_}) buttons->addWidget(b);
+  buttons->addStretch(1);
+  for (QPushButton* b : {importCsvButton, exportCsvButton, importJsonButton, exportJsonButton}) buttons->addWidget(b);
+
+  toolView_->setModel(tools_);
+  toolView_->setItemDelegate(new RangeDelegate(toolView_));
+  toolView_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  toolView_->setSelectionMode(QAbstractItemView::SingleSelection);
+  toolView_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                             QAbstractItemView::AnyKeyPressed);
+  toolView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  toolView_->verticalHeader()->hide();
+  toolView_->setToolTip(tr("The tool library; double-click a cell to edit it (empty K_t / K_r / radial depth: "
+                           "the material's / operation's value applies)"));
+  connect(toolView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+          &ToolLibraryEditor::onSelectionChanged);
+  connect(tools_, &QAbstractItemModel::modelReset, this, &ToolLibraryEditor::onSelectionChanged);
+
+  auto* modes = new QHBoxLayout(modeBox_);
+  modes->addWidget(buildModePane(Axis::X));
+  modes->addWidget(buildModePane(Axis::Y));
+  modeBox_->setToolTip(tr("The modal parameters of the selected tool (tool-point FRF), per axis"));
+
+  // Refusals are shown next to the table they come from; a good edit clears the message.
+  const auto refuseIn = [this](QLabel* label) {
+    return [this, label](const QString& reason) {
+      showError({});
+      error_ = reason;
+      setError(label, reason);
+    };
+  };
+  const auto forward = [this](const app::Project& edited, const QString& text) { request(edited, text); };
+  connect(tools_, &ToolTableModel::editRequested, this, forward);
+  connect(tools_, &ToolTableModel::editRefused, this, refuseIn(toolError_));
+  for (ModeTableModel* m : {modesX_, modesY_}) {
+    connect(m, &ModeTableModel::editRequested, this, forward);
+    connect(m, &ModeTableModel::editRefused, this, refuseIn(modeError_));
+  }
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(buttons);
+  layout->addWidget(toolView_, 2);
+  layout->addWidget(toolError_);
+  layout->addWidget(modeBox_, 1);
+  layout->addWidget(modeError_);
+  onSelectionChanged();
+}
+
+QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
+  ModeTableModel* model = modeModel(axis);
+  const QString name = model->axisName();
+  auto* pane = new QWidget(this);
+  auto* view = new QTableView(pane);
+  view->setModel(model);
+  view->setItemDelegate(new RangeDelegate(view));
+  view->setSelectionBehavior(QAbstractItemView::SelectRows);
+  view->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  view->setToolTip(tr("Modes of the selected tool in %1; an empty table is a rigid axis").arg(name));
+  (axis == Axis::X ? modeViewX_ : modeViewY_) = view;
+  auto* add = button(tr("Add %1 mode").arg(name), tr("Add a mode in %1 to the selected tool").arg(name), pane);
+  auto* remove = button(tr("Remove %1 mode").arg(name), tr("Remove the selected mode in %1").arg(name), pane);
+  connect(add, &QPushButton::clicked, model, &ModeTableModel::addMode);
+  connect(remove, &QPushButton::clicked, this, [model, view] {
+    const QModelIndex current = view->currentIndex();
+    if (current.isValid()) model->removeMode(current.row());
+  });
+  auto* title = new QLabel(tr("%1 direction").arg(name), pane);
+  title->setToolTip(tr("Modes of the tool-point FRF in the feed-normal plane, axis %1").arg(name));
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(add);
+  buttons->addWidget(remove);
+  buttons->addStretch(1);
+  auto* layout = new QVBoxLayout(pane);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(title);
+  layout->addWidget(view);
+  layout->addLayout(buttons);
+  return pane;
+}
+
+void ToolLibraryEditor::setProject(const app::Project& project) {
+  const QString keep = pendingSelect_.isEmpty() ? currentToolId() : pendingSelect_;
+  const int oldRow = toolView_->currentIndex().row();
+  pendingSelect_.clear();
+  tools_->setProject(project);
+  modesX_->setProject(project);
+  modesY_->setProject(project);
+  if (!selectTool(keep) && tools_->rowCount() > 0 && !toolView_->currentIndex().isValid())
+    toolView_->setCurrentIndex(tools_->index(std::clamp(oldRow, 0, tools_->rowCount() - 1), 0));
+  onSelectionChanged();
+}
+
+void ToolLibraryEditor::setUnits(DisplayUnits* units) { tools_->setUnits(units); }
+
+QString ToolLibraryEditor::currentToolId() const { return tools_->idAt(toolView_->currentIndex().row()); }
+
+bool ToolLibraryEditor::selectTool(const QString& id) {
+  const int row = id.isEmpty() ? -1 : tools_->rowOf(id);
+  if (row < 0) return false;
+  if (toolView_->currentIndex().row() != row) {
+    const int column = std::max(0, toolView_->currentIndex().column());
+    toolView_->setCurrentIndex(tools_->index(row, column));
+  }
+  return true;
+}
+
+void ToolLibraryEditor::onSelectionChanged() {
+  const QString id = currentToolId();
+  modesX_->setToolId(id);
+  modesY_->setToolId(id);
+  modeBox_->setTitle(id.isEmpty() ? tr("Modes (no tool selected)") : tr("Modes of tool %1").arg(id));
+  modeBox_->setEnabled(!id.isEmpty());
+  duplicate_->setEnabled(!id.isEmpty());
+  remove_->setEnabled(!id.isEmpty());
+  if (id != selected_) {
+    selected_ = id;
+    emit toolSelected(id);
+  }
+}
+
+void ToolLibraryEditor::showError(const QString& reason) {
+  error_ = reason;
+  setError(toolError_, reason);
+  setError(modeError_, {});
+}
+
+void ToolLibraryEditor::request(const app::Project& edited, const QString& description, const QString& select) {
+  const QString error = ToolLibraryCsv::validationError(edited);
+  if (!error.isEmpty()) {
+    showError(error);
+    return;
+  }
+  showError({});
+  pendingSelect_ = select;
+  emit editRequested(edited, description);
+}
+
+QString ToolLibraryEditor::uniqueId(const QString& stem) const {
+  if (stem != "T" && tools_->rowOf(stem) < 0) return stem;
+  for (int n = stem == "T" ? 1 : 2;; ++n) {
+    const QString id = QString("%1%2%3").arg(stem, stem == "T" ? "" : "-").arg(n);
+    if (tools_->rowOf(id) < 0) return id;
+  }
+}
+
+void ToolLibraryEditor::addTool() {
+  app::Project edited = project();
+  app::ToolSpec t;
+  t.id = uniqueId("T");
+  t.teeth = 2;
+  t.diameter_mm = 10.0;
+  if (edited.operation && edited.operation->radial_depth_mm)
+    t.diameter_mm = std::max(t.diameter_mm, *edited.operation->radial_depth_mm);
+  t.modes_x = {app::ModeSpec{1000.0, 2.0, 10.0}};
+  t.modes_y = {app::ModeSpec{1000.0, 2.0, 10.0}};
+  edited.tools.push_back(t);
+  request(edited, tr("Add tool %1").arg(t.id), t.id);
+}
+
+void ToolLibraryEditor::duplicateTool() {
+  const int row = toolView_->currentIndex().row();
+  if (row < 0 || row >= tools_->rowCount()) return;
+  app::Project edited = project();
+  app::ToolSpec copy = edited.tools[std::size_t(row)];
+  copy.id = uniqueId(copy.id + "-copy");
+  edited.tools.insert(edited.tools.begin() + row + 1, copy);
+  QJsonArray docTools = edited.document.value("tools").toArray();  // keep unknown keys with their tools
+  if (row < docTools.size()) {
+    docTools.insert(row + 1, docTools.at(row));
+    edited.document.insert("tools", docTools);
+  }
+  request(edited, tr("Duplicate tool %1").arg(tools_->idAt(row)), copy.id);
+}
+
+void ToolLibraryEditor::removeTool() {
+  const int row = toolView_->currentIndex().row();
+  if (row < 0 || row >= tools_->rowCount()) return;
+  app::Project edited = project();
+  const QString id = edited.tools[std::size_t(row)].id;
+  edited.tools.erase(edited.tools.begin() + row);
+  QJsonArray docTools = edited.document.value("tools").toArray();
+  if (row < docTools.size()) {
+    docTools.removeAt(row);
+    edited.document.insert("tools", docTools);
+  }
+  const QString next = tools_->idAt(row + 1).isEmpty() ? tools_->idAt(row - 1) : tools_->idAt(row + 1);
+  request(edited, tr("Remove tool %1").arg(id), next);
+}
+
+QString ToolLibraryEditor::importFile(const QString& path, bool replace, bool csv) {
+  QByteArray bytes;
+  QString error = ToolLibraryCsv::readFile(path, bytes);
+  app::Project merged;
+  if (error.isEmpty()) {
+    const ToolLibraryFile file = csv ? ToolLibraryCsv::fromCsv(bytes) : ToolLibraryCsv::fromJson(bytes);
+    error = ToolLibraryCsv::merge(project(), file, replace, merged);
+  }
+  if (!error.isEmpty()) {
+    showError(tr("Import refused, the library is unchanged: %1").arg(error));
+    return error;
+  }
+  request(merged, replace ? tr("Replace the tool library from %1").arg(QFileInfo(path).fileName())
+                          : tr("Add tools from %1").arg(QFileInfo(path).fileName()));
+  return {};
+}
+
+QString ToolLibraryEditor::importCsv(const QString& path, bool replace) { return importFile(path, replace, true); }
+
+QString ToolLibraryEditor::importJson(const QString& path, bool replace) { return importFile(path, replace, false); }
+
+QString ToolLibraryEditor::exportCsv(const QString& path) const {
+  return ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toCsv(project().tools));
+}
+
+QString ToolLibraryEditor::exportJson(const QString& path) const {
+  return ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toJson(project().tools));
+}
+
+void ToolLibraryEditor::chooseImport(bool csv) {
+  const QString filter = csv ? tr("CSV tool library (*.csv)") : tr("JSON tool library or project (*.json *.mxproj)");
+  const QString path = QFileDialog::getOpenFileName(this, tr("Import tool library"), {}, filter);
+  if (path.isEmpty()) return;
+  bool replace = true;
+  if (tools_->rowCount() > 0) {
+    QMessageBox box(QMessageBox::Question, tr("Import tool library"),
+                    tr("Replace the current %n tool(s) or add the imported tools to them?", nullptr,
+                       tools_->rowCount()),
+                    QMessageBox::Cancel, this);
+    QAbstractButton* replaceButton = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
+    QAbstractButton* appendButton = box.addButton(tr("Append"), QMessageBox::AcceptRole);
+    box.exec();
+    if (box.clickedButton() != replaceButton && box.clickedButton() != appendButton) return;
+    replace = box.clickedButton() == replaceButton;
+  }
+  const QString error = csv ? importCsv(path, replace) : importJson(path, replace);
+  if (!error.isEmpty()) QMessageBox::warning(this, tr("Import refused"), error);
+}
+
+void ToolLibraryEditor::chooseExport(bool csv) {
+  const QString filter = csv ? tr("CSV tool library (*.csv)") : tr("JSON tool library (*.json)");
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export tool library"), {}, filter);
+  if (path.isEmpty()) return;
+  const QString error = csv ? exportCsv(path) : exportJson(path);
+  if (!error.isEmpty()) QMessageBox::warning(this, tr("Export failed"), error);
+}
+
+}  // namespace mx::widgets

@@ -1,0 +1,84 @@
+#pragma once
+// The tool-library editor: a table of the project's tools (edited in place), add / duplicate /
+// remove, and for the selected tool its x and y modes. It shows the project given by setProject()
+// and never changes it: every edit is validated (validateProject) and requested with editRequested();
+// an invalid edit is refused in place (no signal, the old value stays, the reason is shown in red
+// under the table). CSV and JSON import/export of the library are all-or-nothing.
+#include <QLabel>
+#include <QPointer>
+#include <QPushButton>
+#include <QTableView>
+#include <QWidget>
+
+#include "display_units.h"
+#include "mode_table_model.h"
+#include "project/project.h"
+#include "tool_table_model.h"
+
+class QGroupBox;
+
+namespace mx::widgets {
+
+class ToolLibraryEditor : public QWidget {
+  Q_OBJECT
+ public:
+  using Axis = ModeTableModel::Axis;
+  explicit ToolLibraryEditor(QWidget* parent = nullptr);
+
+  // Shows `project` (after every document change, including undo/redo); keeps the selected tool.
+  void setProject(const app::Project& project);
+  const app::Project& project() const { return tools_->project(); }
+  void setUnits(DisplayUnits* units);  // lengths in mm or inch; nullptr = mm
+
+  QString currentToolId() const;        // "" when no tool is selected
+  bool selectTool(const QString& id);   // false when the library has no such tool
+  QString errorText() const { return error_; }  // the last refusal shown ("" after a good edit)
+
+  // Import / export of the library; return "" on success, else the reason (also shown in the
+  // editor). Imports validate everything first and emit at most one editRequested.
+  QString importCsv(const QString& path, bool replace);
+  QString exportCsv(const QString& path) const;
+  QString importJson(const QString& path, bool replace);
+  QString exportJson(const QString& path) const;
+
+  ToolTableModel* toolModel() const { return tools_; }
+  ModeTableModel* modeModel(Axis axis) const { return axis == Axis::X ? modesX_ : modesY_; }
+  QTableView* toolView() const { return toolView_; }
+  QTableView* modeView(Axis axis) const { return axis == Axis::X ? modeViewX_ : modeViewY_; }
+
+ public slots:
+  void addTool();        // a new tool "T<n>" (2 teeth, 10 mm, one 1000 Hz mode per axis)
+  void duplicateTool();  // a copy of the selected tool after it, id "<id>-copy"
+  void removeTool();     // the selected tool
+  void showError(const QString& reason);  // "" hides the message
+
+ signals:
+  void editRequested(const mx::app::Project& edited, const QString& description);
+  void toolSelected(const QString& id);
+
+ private:
+  QWidget* buildModePane(Axis axis);
+  void request(const app::Project& edited, const QString& description, const QString& select = {});
+  QString importFile(const QString& path, bool replace, bool csv);
+  void chooseImport(bool csv);
+  void chooseExport(bool csv);
+  void onSelectionChanged();
+  QString uniqueId(const QString& stem) const;
+
+  ToolTableModel* tools_;
+  ModeTableModel* modesX_;
+  ModeTableModel* modesY_;
+  QTableView* toolView_;
+  QTableView* modeViewX_ = nullptr;
+  QTableView* modeViewY_ = nullptr;
+  QLabel* toolError_;
+  QLabel* modeError_;
+  QGroupBox* modeBox_;
+  QPushButton* duplicate_;
+  QPushButton* remove_;
+  QString error_;
+  QString selected_;       // the tool id last announced by toolSelected
+  QString pendingSelect_;  // select this tool once the document shows it (after add / duplicate)
+};
+
+}  // namespace mx::widgets

@@ -1,0 +1,220 @@
+#include "tool_table_model.h"
+
+#include <cmath>
+
+#include "project/project_rules.h"
+#include "range_delegate.h"
+#include "tool_library_csv.h"
+
+namespace mx::widgets {
+
+namespace {
+
+QString number(double value) { return QString::number(value, 'g', 6); }
+
+const char* fieldName(int column) {
+  static const char* kNames[] = {"id",       "teeth",           "diameter_mm", "helix_deg", "Kt_N_mm2",
+                                 "Kr",       "radial_depth_mm", "modes_x",     "modes_y"};
+  return kNames[column];
+}
+
+}  // namespace
+
+ToolTableModel::ToolTableModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void ToolTableModel::setProject(const app::Project& project) {
+  if (project.tools.size() == project_.tools.size()) {
+    project_ = project;
+    refreshAll();
+    return;
+  }
+  beginResetModel();
+  project_ = project;
+  endResetModel();
+}
+
+void ToolTableModel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &ToolTableModel::refreshAll);
+  refreshAll();
+}
+
+void ToolTableModel::refreshAll() {
+  emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+  if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+}
+
+int ToolTableModel::rowOf(const QString& id) const {
+  for (std::size_t i = 0; i < project_.tools.size(); ++i) {
+    if (project_.tools[i].id == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+QString ToolTableModel::idAt(int row) const {
+  return row >= 0 && row < rowCount() ? project_.tools[std::size_t(row)].id : QString();
+}
+
+int ToolTableModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : static_cast<int>(project_.tools.size());
+}
+
+int ToolTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
+  const auto opt = [](const std::optional<double>& v) { return v ? QVariant(*v) : QVariant(); };
+  switch (column) {
+    case Id: return t.id;
+    case Teeth: return t.teeth;
+    case Diameter: return toDisplay(t.diameter_mm);
+    case Helix: return t.helix_deg;
+    case Kt: return opt(t.Kt_N_mm2);
+    case Kr: return opt(t.Kr);
+    case RadialDepth: return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
+    case ModesX: return static_cast<int>(t.modes_x.size());
+    case ModesY: return static_cast<int>(t.modes_y.size());
+    default: return {};
+  }
+}
+
+// The spin-box ranges (RangeDelegate roles), in display units. The minimum of a required positive
+// value is 0 so that typing 0 is possible and refused with its reason.
+QVariant ToolTableModel::rangeData(int column, int role) const {
+  using D = RangeDelegate;
+  const bool inch = units_ && units_->length() == DisplayUnits::Length::Inch;
+  const int lengthDecimals = units_ ? units_->lengthDecimals() : 4;
+  struct Range { double lo, hi; int decimals; double step; const char* special; };
+  Range r{};
+  switch (column) {
+    case Teeth: r = {0, 99, 0, 1, ""}; break;
+    case Diameter: r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, ""}; break;
+    case Helix: r = {-90, 90, 2, 1, ""}; break;
+    case Kt: r = {0, 100000, 2, 10, "material's"}; break;
+    case Kr: r = {-0.001, 10, 3, 0.01, "material's"}; break;
+    case RadialDepth: r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"}; break;
+    default: return {};
+  }
+  switch (role) {
+    case D::MinimumRole: return r.lo;
+    case D::MaximumRole: return r.hi;
+    case D::DecimalsRole: return r.decimals;
+    case D::StepRole: return r.step;
+    case D::SpecialTextRole: return QString(r.special);
+    case D::SuffixRole:
+      return column == Diameter || column == RadialDepth ? " " + lengthUnit() : QString();
+    default: return {};
+  }
+}
+
+QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
+  switch (column) {
+    case Id: return tr("Tool id (unique, non-empty)");
+    case Teeth: return tr("Number of teeth (integer >= 1)");
+    case Diameter: return tr("Tool diameter D [%1] (> 0)").arg(lengthUnit());
+    case Helix: return tr("Helix angle [deg] in (-90, 90); carried, the force model is straight-tooth");
+    case Kt:
+      return project_.material
+                 ? tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's %1")
+                       .arg(app::formatNumber(project_.material->Kt_N_mm2))
+                 : tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's");
+    case Kr:
+      return project_.material ? tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's %1")
+                                     .arg(app::formatNumber(project_.material->Kr))
+                               : tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's");
+    case RadialDepth:
+      return tr("Radial depth of cut a [%1] in (0, D]; empty = the operation's radial engagement").arg(lengthUnit());
+    case ModesX: return tr("%n mode(s) in x; edit them in the mode tables below", nullptr, int(t.modes_x.size()));
+    case ModesY: return tr("%n mode(s) in y; edit them in the mode tables below", nullptr, int(t.modes_y.size()));
+    default: return {};
+  }
+}
+
+QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid() || index.row() >= rowCount()) return {};
+  const app::ToolSpec& t = project_.tools[std::size_t(index.row())];
+  const int column = index.column();
+  switch (role) {
+    case Qt::DisplayRole: {
+      const QVariant v = editValue(t, column);
+      if (!v.isValid()) return QString();
+      return v.typeId() == QMetaType::Double ? number(v.toDouble()) : v.toString();
+    }
+    case Qt::EditRole: return editValue(t, column);
+    case Qt::ToolTipRole: return toolTip(t, column);
+    case Qt::TextAlignmentRole:
+      return column == Id ? QVariant(Qt::AlignLeft | Qt::AlignVCenter) : QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    default: return role >= RangeDelegate::MinimumRole ? rangeData(column, role) : QVariant();
+  }
+}
+
+QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (orientation != Qt::Horizontal) return QAbstractTableModel::headerData(section, orientation, role);
+  const QString unit = lengthUnit();
+  if (role == Qt::DisplayRole) {
+    switch (section) {
+      case Id: return tr("id");
+      case Teeth: return tr("teeth");
+      case Diameter: return tr("diameter [%1]").arg(unit);
+      case Helix: return tr("helix [deg]");
+      case Kt: return tr("K_t [N/mm²]");
+      case Kr: return tr("K_r");
+      case RadialDepth: return tr("radial depth [%1]").arg(unit);
+      case ModesX: return tr("modes x");
+      case ModesY: return tr("modes y");
+      default: return {};
+    }
+  }
+  if (role == Qt::ToolTipRole) return toolTip(app::ToolSpec{}, section);
+  return {};
+}
+
+Qt::ItemFlags ToolTableModel::flags(const QModelIndex& index) const {
+  if (!index.isValid()) return Qt::NoItemFlags;
+  Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
+  if (index.column() != ModesX && index.column() != ModesY) f |= Qt::ItemIsEditable;
+  return f;
+}
+
+bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+  if (role != Qt::EditRole || !index.isValid() || index.row() >= rowCount()) return false;
+  const int column = index.column();
+  if (column == ModesX || column == ModesY) return false;
+  if (editValue(project_.tools[std::size_t(index.row())], column) == value) return true;
+  app::Project edited = project_;
+  app::ToolSpec& t = edited.tools[std::size_t(index.row())];
+  const QString oldId = t.id;
+  const auto optional = [&](std::optional<double>& field, bool length) {
+    field = value.isValid() && !value.toString().isEmpty()
+                ? std::optional<double>(length ? toMm(value.toDouble()) : value.toDouble())
+                : std::nullopt;
+  };
+  bool ok = true, integral = true;
+  switch (column) {
+    case Id: t.id = value.toString().trimmed(); break;
+    case Teeth: {
+      const double teeth = value.toDouble(&ok);
+      integral = ok && teeth == std::floor(teeth) && std::abs(teeth) < 1e6;
+      t.teeth = integral ? static_cast<int>(teeth) : 0;
+      break;
+    }
+    case Diameter: t.diameter_mm = toMm(value.toDouble(&ok)); break;
+    case Helix: t.helix_deg = value.toDouble(&ok); break;
+    case Kt: optional(t.Kt_N_mm2, false); break;
+    case Kr: optional(t.Kr, false); break;
+    case RadialDepth: optional(t.radial_depth_mm, true); break;
+    default: return false;
+  }
+  const QString path = QString("tools[%1].%2").arg(index.row()).arg(fieldName(column));
+  QString error = !ok          ? QString("%1 = '%2': not a number").arg(path, value.toString())
+                  : !integral ? QString("%1 = %2: must be an integer >= 1").arg(path, value.toString())
+                              : ToolLibraryCsv::validationError(edited);
+  if (!error.isEmpty()) {
+    emit editRefused(error);
+    return false;
+  }
+  emit editRequested(edited, tr("Edit %1 of tool %2").arg(fieldName(column), oldId));
+  return true;
+}
+
+}  // namespace mx::widgets
