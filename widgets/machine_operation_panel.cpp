@@ -40,8 +40,12 @@ app::ExpertSpec& expert(app::Project& p) {
 
 }  // namespace
 
-app::MachineSpec MachineOperationPanel::defaultMachine() { return {5000.0, std::nullopt, std::nullopt}; }
-app::MaterialSpec MachineOperationPanel::defaultMaterial() { return {QStringLiteral("Aluminium"), 600.0, 0.3}; }
+app::MachineSpec MachineOperationPanel::defaultMachine() {
+  return {5000.0, std::nullopt, std::nullopt};
+}
+app::MaterialSpec MachineOperationPanel::defaultMaterial() {
+  return {QStringLiteral("Aluminium"), 600.0, 0.3};
+}
 app::OperationSpec MachineOperationPanel::defaultOperation() {
   return {MillingDirection::Up, 1.0, std::nullopt, 0.1};
 }
@@ -95,16 +99,22 @@ QGroupBox* MachineOperationPanel::machineGroup() {
   auto* form = new QFormLayout(box);
   form->addRow(tr("Spindle power"),
                addNumber("machine.spindle_power_W", 1e7, 1, tr("Spindle power P [W] (> 0)"),
-                         {.suffix = " W", .get = [](const app::Project& p) { return Opt(p.machine->spindle_power_W); },
+                         {.suffix = " W",
+                          .get = [](const app::Project& p) { return Opt(p.machine->spindle_power_W); },
                           .set = [](app::Project& p, Opt v) { machine(p).spindle_power_W = v.value_or(0.0); }}));
   form->addRow(tr("Max spindle speed"),
                addNumber("machine.max_spindle_rpm", 1e6, 0, tr("Maximum spindle speed [rpm] (> 0); optional"),
-                         {.enabled = new QCheckBox(this), .suffix = " rpm", .fallback = 12000.0,
+                         {.enabled = new QCheckBox(this),
+                          .suffix = " rpm",
+                          .fallback = 12000.0,
                           .get = [](const app::Project& p) { return p.machine->max_spindle_rpm; },
                           .set = [](app::Project& p, Opt v) { machine(p).max_spindle_rpm = v; }}));
   form->addRow(tr("Max feed rate"),
                addNumber("machine.max_feed_mm_s", 1e5, 3, tr("Feed-drive limit [length/s] (> 0); optional"),
-                         {.enabled = new QCheckBox(this), .length = true, .suffix = " %1/s", .fallback = 100.0,
+                         {.enabled = new QCheckBox(this),
+                          .length = true,
+                          .suffix = " %1/s",
+                          .fallback = 100.0,
                           .get = [](const app::Project& p) { return p.machine->max_feed_mm_s; },
                           .set = [](app::Project& p, Opt v) { machine(p).max_feed_mm_s = v; }}));
   return box;
@@ -126,20 +136,22 @@ QGroupBox* MachineOperationPanel::operationGroup() {
   useImmersion_->setToolTip(tr("Give the radial engagement as the fraction a/D of each tool's diameter"));
   useDepth_ = new QRadioButton(tr("Radial depth a"), this);
   useDepth_->setToolTip(tr("Give the radial engagement as one radial depth a for every tool (a <= D)"));
+  controls_.insert("operation.use_radial_immersion", useImmersion_);
   controls_.insert("operation.use_radial_depth", useDepth_);
   connect(useDepth_, &QRadioButton::toggled, this, &MachineOperationPanel::commitRadialChoice);
-  form->addRow(useImmersion_,
-               addNumber("operation.radial_immersion", 1.0, 3, tr("Radial immersion a/D in (0, 1]"),
-                         {.get = [](const app::Project& p) { return p.operation->radial_immersion; },
-                          .set = [](app::Project& p, Opt v) { operation(p).radial_immersion = v; }}));
+  form->addRow(useImmersion_, addNumber("operation.radial_immersion", 1.0, 3, tr("Radial immersion a/D in (0, 1]"),
+                                        {.get = [](const app::Project& p) { return p.operation->radial_immersion; },
+                                         .set = [](app::Project& p, Opt v) { operation(p).radial_immersion = v; }}));
   form->addRow(useDepth_,
                addNumber("operation.radial_depth_mm", 1e4, 4, tr("Radial depth of cut a in (0, D] for every tool"),
-                         {.length = true, .suffix = " %1",
+                         {.length = true,
+                          .suffix = " %1",
                           .get = [](const app::Project& p) { return p.operation->radial_depth_mm; },
                           .set = [](app::Project& p, Opt v) { operation(p).radial_depth_mm = v; }}));
   form->addRow(tr("Max feed per tooth"),
                addNumber("operation.max_feed_per_tooth_mm", 100.0, 4, tr("Largest admissible feed per tooth (> 0)"),
-                         {.length = true, .suffix = " %1/tooth",
+                         {.length = true,
+                          .suffix = " %1/tooth",
                           .get = [](const app::Project& p) { return Opt(p.operation->max_feed_per_tooth_mm); },
                           .set = [](app::Project& p, Opt v) { operation(p).max_feed_per_tooth_mm = v.value_or(0); }}));
   return box;
@@ -155,11 +167,11 @@ QGroupBox* MachineOperationPanel::materialGroup() {
   controls_.insert("material.name", materialName_);
   connect(materialName_, &QLineEdit::editingFinished, this, &MachineOperationPanel::commitName);
   form->addRow(tr("Name"), materialName_);
-  form->addRow(tr("K_t"), addNumber("material.Kt_N_mm2", 1e6, 2,
-                                    tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
-                                    {.suffix = " N/mm²",
-                                     .get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
-                                     .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
+  form->addRow(tr("K_t"),
+               addNumber("material.Kt_N_mm2", 1e6, 2, tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
+                         {.suffix = " N/mm²",
+                          .get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
+                          .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
   form->addRow(tr("K_r"), addNumber("material.Kr", 100.0, 4, tr("Radial force ratio K_r = F_r / F_t (>= 0)"),
                                     {.get = [](const app::Project& p) { return Opt(p.material->Kr); },
                                      .set = [](app::Project& p, Opt v) { material(p).Kr = v.value_or(0); }}));
@@ -174,7 +186,8 @@ QGroupBox* MachineOperationPanel::expertGroup() {
   form->addRow(tr("Margin δ"),
                addNumber("expert.delta_per_s", 1e4, 4,
                          tr("Rule 1.1 stability margin δ [1/s] (>= 0, below the smallest modal decay rate ζω_n)"),
-                         {.suffix = " 1/s", .get = [](const app::Project& p) { return Opt(p.expert->delta_per_s); },
+                         {.suffix = " 1/s",
+                          .get = [](const app::Project& p) { return Opt(p.expert->delta_per_s); },
                           .set = [](app::Project& p, Opt v) { expert(p).delta_per_s = v.value_or(0); }}));
   form->addRow(tr("Depth factor α"),
                addNumber("expert.alpha", 1.0, 3, tr("Rule 1.2 depth factor α in (0, 1]"),

@@ -37,7 +37,8 @@ class MachineOperationPanel : public QWidget {
   // "machine.max_feed_mm_s", "operation.milling", "operation.radial_immersion",
   // "operation.radial_depth_mm", "operation.max_feed_per_tooth_mm", "material.name",
   // "material.Kt_N_mm2", "material.Kr", "expert.delta_per_s", "expert.alpha"; the check boxes of the
-  // optional limits are "<path>.enabled", the radial choice "operation.use_radial_depth". nullptr if unknown.
+  // optional limits are "<path>.enabled", the radio buttons of the radial choice "operation.use_radial_immersion" and
+  // "operation.use_radial_depth". nullptr if unknown.
   QWidget* field(const QString& path) const { return controls_.value(path); }
   QString errorText() const { return error_; }  // the last refusal ("" after a good edit)
 
@@ -56,7 +57,7 @@ class MachineOperationPanel : public QWidget {
     QCheckBox* enabled = nullptr;  // optional values only
     bool length = false;           // shown in display length units ("%1" in the suffix is the unit)
     QString suffix = {};
-    double fallback = 0.0;         // shown while an optional value is absent
+    double fallback = 0.0;  // shown while an optional value is absent
     std::function<std::optional<double>(const app::Project&)> get;
     std::function<void(app::Project&, std::optional<double>)> set;
   };

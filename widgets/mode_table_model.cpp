@@ -45,16 +45,22 @@ void ModeTableModel::reshape(const app::Project& project, const QString& id) {
   endResetModel();
 }
 
-void ModeTableModel::setProject(const app::Project& project) { reshape(project, toolId_); }
+void ModeTableModel::setProject(const app::Project& project) {
+  reshape(project, toolId_);
+}
 
-void ModeTableModel::setToolId(const QString& id) { reshape(project_, id); }
+void ModeTableModel::setToolId(const QString& id) {
+  reshape(project_, id);
+}
 
 int ModeTableModel::rowCount(const QModelIndex& parent) const {
   const auto* m = modes();
   return parent.isValid() || !m ? 0 : static_cast<int>(m->size());
 }
 
-int ModeTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int ModeTableModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant ModeTableModel::data(const QModelIndex& index, int role) const {
   if (!index.isValid() || index.row() >= rowCount()) return {};
@@ -63,16 +69,25 @@ QVariant ModeTableModel::data(const QModelIndex& index, int role) const {
   const int c = index.column();
   using D = RangeDelegate;
   switch (role) {
-    case Qt::DisplayRole: return QString::number(values[c], 'g', 6);
-    case Qt::EditRole: return values[c];
-    case Qt::ToolTipRole: return headerData(c, Qt::Horizontal, Qt::ToolTipRole);
-    case Qt::TextAlignmentRole: return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    case Qt::DisplayRole:
+      return QString::number(values[c], 'g', 6);
+    case Qt::EditRole:
+      return values[c];
+    case Qt::ToolTipRole:
+      return headerData(c, Qt::Horizontal, Qt::ToolTipRole);
+    case Qt::TextAlignmentRole:
+      return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     // Minimum 0 for all three: typing 0 is possible and refused with the reason.
-    case D::MinimumRole: return 0.0;
-    case D::MaximumRole: return c == Frequency ? 1e6 : c == Damping ? 100.0 : 1e6;
-    case D::DecimalsRole: return c == Frequency ? 3 : 4;
-    case D::StepRole: return c == Frequency ? 10.0 : c == Damping ? 0.1 : 0.1;
-    default: return {};
+    case D::MinimumRole:
+      return 0.0;
+    case D::MaximumRole:
+      return c == Frequency ? 1e6 : c == Damping ? 100.0 : 1e6;
+    case D::DecimalsRole:
+      return c == Frequency ? 3 : 4;
+    case D::StepRole:
+      return c == Frequency ? 10.0 : c == Damping ? 0.1 : 0.1;
+    default:
+      return {};
   }
 }
 
@@ -80,18 +95,26 @@ QVariant ModeTableModel::headerData(int section, Qt::Orientation orientation, in
   if (orientation != Qt::Horizontal) return QAbstractTableModel::headerData(section, orientation, role);
   if (role == Qt::DisplayRole) {
     switch (section) {
-      case Frequency: return tr("frequency [Hz]");
-      case Damping: return tr("damping [%]");
-      case Stiffness: return tr("stiffness [N/µm]");
-      default: return {};
+      case Frequency:
+        return tr("frequency [Hz]");
+      case Damping:
+        return tr("damping [%]");
+      case Stiffness:
+        return tr("stiffness [N/µm]");
+      default:
+        return {};
     }
   }
   if (role == Qt::ToolTipRole) {
     switch (section) {
-      case Frequency: return tr("Natural frequency f_n [Hz] of this %1 mode (> 0)").arg(axisName());
-      case Damping: return tr("Damping ratio ζ [%] of this %1 mode, in (0, 100)").arg(axisName());
-      case Stiffness: return tr("Modal stiffness k [N/µm] of this %1 mode (> 0; 1 N/µm = 1 kN/mm)").arg(axisName());
-      default: return {};
+      case Frequency:
+        return tr("Natural frequency f_n [Hz] of this %1 mode (> 0)").arg(axisName());
+      case Damping:
+        return tr("Damping ratio ζ [%] of this %1 mode, in (0, 100)").arg(axisName());
+      case Stiffness:
+        return tr("Modal stiffness k [N/µm] of this %1 mode (> 0; 1 N/µm = 1 kN/mm)").arg(axisName());
+      default:
+        return {};
     }
   }
   return {};
@@ -115,7 +138,8 @@ bool ModeTableModel::request(const app::Project& edited, const QString& descript
 bool ModeTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
   if (role != Qt::EditRole || !index.isValid() || index.row() >= rowCount()) return false;
   const int ti = toolIndex();
-  const QString path = QString("tools[%1].%2[%3].%4").arg(ti).arg(modesKey()).arg(index.row()).arg(fieldName(index.column()));
+  const QString path =
+      QString("tools[%1].%2[%3].%4").arg(ti).arg(modesKey()).arg(index.row()).arg(fieldName(index.column()));
   bool ok = false;
   const double v = value.toDouble(&ok);
   if (!ok) {
@@ -129,7 +153,9 @@ bool ModeTableModel::setData(const QModelIndex& index, const QVariant& value, in
   double* fields[] = {&m.freq_Hz, &m.damping_pct, &m.stiffness_N_per_um};
   *fields[index.column()] = v;
   return request(edited, tr("Edit %1 of mode %2%3 of tool %4")
-                             .arg(fieldName(index.column()), axisName()).arg(index.row() + 1).arg(toolId_));
+                             .arg(fieldName(index.column()), axisName())
+                             .arg(index.row() + 1)
+                             .arg(toolId_));
 }
 
 bool ModeTableModel::addMode() {

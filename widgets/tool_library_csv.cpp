@@ -68,7 +68,9 @@ class CsvReader {
       const qsizetype known = ToolLibraryCsv::columns().indexOf(cells[c]);
       if (known < 0)
         return fail(QString("line %1, column %2: unknown column '%3' (expected the header %4)")
-                        .arg(line).arg(c + 1).arg(cells[c], ToolLibraryCsv::columns().join(',')));
+                        .arg(line)
+                        .arg(c + 1)
+                        .arg(cells[c], ToolLibraryCsv::columns().join(',')));
       if (pos_[known] >= 0)
         return fail(QString("line %1, column %2: column '%3' given twice").arg(line).arg(c + 1).arg(cells[c]));
       pos_[known] = static_cast<int>(c);
@@ -76,7 +78,8 @@ class CsvReader {
     for (int k = 0; k < kColumnCount; ++k) {
       if (pos_[k] < 0)
         return fail(QString("line %1: missing column '%2' (the header must be %3)")
-                        .arg(line).arg(ToolLibraryCsv::columns()[k], ToolLibraryCsv::columns().join(',')));
+                        .arg(line)
+                        .arg(ToolLibraryCsv::columns()[k], ToolLibraryCsv::columns().join(',')));
     }
     width_ = static_cast<int>(cells.size());
     return true;
@@ -88,7 +91,10 @@ class CsvReader {
     if (cells.size() != width_) {
       const auto at = std::min<qsizetype>(cells.size(), width_) + 1;
       return fail(QString("line %1, column %2: the row has %3 columns, expected %4")
-                      .arg(line).arg(at).arg(cells.size()).arg(width_));
+                      .arg(line)
+                      .arg(at)
+                      .arg(cells.size())
+                      .arg(width_));
     }
     const QString id = cell(kId);
     if (id.isEmpty()) return bad(kId, "must be a non-empty tool id");
@@ -100,7 +106,8 @@ class CsvReader {
       app::ToolSpec tool;
       tool.id = id;
       double teeth = 0.0;
-      if (!required(kTeeth, rules::kCountAtLeastOne, teeth) || !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
+      if (!required(kTeeth, rules::kCountAtLeastOne, teeth) ||
+          !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
           !required(kHelix, rules::kHelixDeg, tool.helix_deg) || !optional(kKt, rules::kPositive, tool.Kt_N_mm2) ||
           !optional(kKr, rules::kNonNegative, tool.Kr) ||
           !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm))
@@ -124,7 +131,9 @@ class CsvReader {
   }
   bool bad(int col, const QString& what) {
     return fail(QString("line %1, column %2 (%3): '%4' %5")
-                    .arg(line_).arg(pos_[col] + 1).arg(ToolLibraryCsv::columns()[col], cell(col), what));
+                    .arg(line_)
+                    .arg(pos_[col] + 1)
+                    .arg(ToolLibraryCsv::columns()[col], cell(col), what));
   }
   bool number(int col, const app::NumberRule& rule, double& value) {
     bool ok = false;
@@ -147,8 +156,8 @@ class CsvReader {
   // A continuation row leaves the tool fields blank or repeats them exactly.
   bool sameAsFirst(const app::ToolSpec& t) {
     const std::pair<int, std::optional<double>> fields[] = {
-        {kTeeth, double(t.teeth)}, {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg},
-        {kKt, t.Kt_N_mm2},         {kKr, t.Kr},                {kRadial, t.radial_depth_mm}};
+        {kTeeth, double(t.teeth)},   {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg}, {kKt, t.Kt_N_mm2}, {kKr, t.Kr},
+        {kRadial, t.radial_depth_mm}};
     for (const auto& [col, first] : fields) {
       if (cell(col).isEmpty()) continue;
       bool ok = false;
@@ -188,8 +197,8 @@ class CsvReader {
 }  // namespace
 
 const QStringList& ToolLibraryCsv::columns() {
-  static const QStringList kColumns{"tool_id", "teeth",  "diameter_mm", "helix_deg",   "Kt_N_mm2",          "Kr",
-                                    "radial_depth_mm", "axis", "freq_Hz", "damping_pct", "stiffness_N_per_um"};
+  static const QStringList kColumns{"tool_id",         "teeth", "diameter_mm", "helix_deg",   "Kt_N_mm2",          "Kr",
+                                    "radial_depth_mm", "axis",  "freq_Hz",     "damping_pct", "stiffness_N_per_um"};
   return kColumns;
 }
 
@@ -197,8 +206,13 @@ QByteArray ToolLibraryCsv::toCsv(const std::vector<app::ToolSpec>& tools) {
   const auto opt = [](const std::optional<double>& v) { return v ? app::formatNumber(*v) : QString(); };
   QStringList lines{columns().join(',')};
   for (const app::ToolSpec& t : tools) {
-    const QString head = QStringList{quoteCsv(t.id), QString::number(t.teeth), app::formatNumber(t.diameter_mm),
-                                     app::formatNumber(t.helix_deg), opt(t.Kt_N_mm2), opt(t.Kr), opt(t.radial_depth_mm)}
+    const QString head = QStringList{quoteCsv(t.id),
+                                     QString::number(t.teeth),
+                                     app::formatNumber(t.diameter_mm),
+                                     app::formatNumber(t.helix_deg),
+                                     opt(t.Kt_N_mm2),
+                                     opt(t.Kr),
+                                     opt(t.radial_depth_mm)}
                              .join(',');
     const auto mode = [&](const char* axis, const app::ModeSpec& m) {
       lines << QStringList{head, axis, app::formatNumber(m.freq_Hz), app::formatNumber(m.damping_pct),

@@ -1,7 +1,5 @@
 #include "tool_library_editor.h"
 
-#include <algorithm>
-
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGroupBox>
@@ -11,6 +9,7 @@
 #include <QJsonArray>
 #include <QMessageBox>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "range_delegate.h"
 #include "tool_library_csv.h"
@@ -80,8 +79,9 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
                              QAbstractItemView::AnyKeyPressed);
   toolView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   toolView_->verticalHeader()->hide();
-  toolView_->setToolTip(tr("The tool library; double-click a cell to edit it (empty K_t / K_r / radial depth: "
-                           "the material's / operation's value applies)"));
+  toolView_->setToolTip(
+      tr("The tool library; double-click a cell to edit it (empty K_t / K_r / radial depth: "
+         "the material's / operation's value applies)"));
   connect(toolView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
           &ToolLibraryEditor::onSelectionChanged);
   connect(tools_, &QAbstractItemModel::modelReset, this, &ToolLibraryEditor::onSelectionChanged);
@@ -160,9 +160,13 @@ void ToolLibraryEditor::setProject(const app::Project& project) {
   onSelectionChanged();
 }
 
-void ToolLibraryEditor::setUnits(DisplayUnits* units) { tools_->setUnits(units); }
+void ToolLibraryEditor::setUnits(DisplayUnits* units) {
+  tools_->setUnits(units);
+}
 
-QString ToolLibraryEditor::currentToolId() const { return tools_->idAt(toolView_->currentIndex().row()); }
+QString ToolLibraryEditor::currentToolId() const {
+  return tools_->idAt(toolView_->currentIndex().row());
+}
 
 bool ToolLibraryEditor::selectTool(const QString& id) {
   const int row = id.isEmpty() ? -1 : tools_->rowOf(id);
@@ -274,9 +278,13 @@ QString ToolLibraryEditor::importFile(const QString& path, bool replace, bool cs
   return {};
 }
 
-QString ToolLibraryEditor::importCsv(const QString& path, bool replace) { return importFile(path, replace, true); }
+QString ToolLibraryEditor::importCsv(const QString& path, bool replace) {
+  return importFile(path, replace, true);
+}
 
-QString ToolLibraryEditor::importJson(const QString& path, bool replace) { return importFile(path, replace, false); }
+QString ToolLibraryEditor::importJson(const QString& path, bool replace) {
+  return importFile(path, replace, false);
+}
 
 QString ToolLibraryEditor::exportCsv(const QString& path) const {
   return ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toCsv(project().tools));
@@ -292,10 +300,10 @@ void ToolLibraryEditor::chooseImport(bool csv) {
   if (path.isEmpty()) return;
   bool replace = true;
   if (tools_->rowCount() > 0) {
-    QMessageBox box(QMessageBox::Question, tr("Import tool library"),
-                    tr("Replace the current %n tool(s) or add the imported tools to them?", nullptr,
-                       tools_->rowCount()),
-                    QMessageBox::Cancel, this);
+    QMessageBox box(
+        QMessageBox::Question, tr("Import tool library"),
+        tr("Replace the current %n tool(s) or add the imported tools to them?", nullptr, tools_->rowCount()),
+        QMessageBox::Cancel, this);
     QAbstractButton* replaceButton = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
     QAbstractButton* appendButton = box.addButton(tr("Append"), QMessageBox::AcceptRole);
     box.exec();

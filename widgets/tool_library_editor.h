@@ -30,8 +30,8 @@ class ToolLibraryEditor : public QWidget {
   const app::Project& project() const { return tools_->project(); }
   void setUnits(DisplayUnits* units);  // lengths in mm or inch; nullptr = mm
 
-  QString currentToolId() const;        // "" when no tool is selected
-  bool selectTool(const QString& id);   // false when the library has no such tool
+  QString currentToolId() const;                // "" when no tool is selected
+  bool selectTool(const QString& id);           // false when the library has no such tool
   QString errorText() const { return error_; }  // the last refusal shown ("" after a good edit)
 
   // Import / export of the library; return "" on success, else the reason (also shown in the
@@ -47,9 +47,9 @@ class ToolLibraryEditor : public QWidget {
   QTableView* modeView(Axis axis) const { return axis == Axis::X ? modeViewX_ : modeViewY_; }
 
  public slots:
-  void addTool();        // a new tool "T<n>" (2 teeth, 10 mm, one 1000 Hz mode per axis)
-  void duplicateTool();  // a copy of the selected tool after it, id "<id>-copy"
-  void removeTool();     // the selected tool
+  void addTool();                         // a new tool "T<n>" (2 teeth, 10 mm, one 1000 Hz mode per axis)
+  void duplicateTool();                   // a copy of the selected tool after it, id "<id>-copy"
+  void removeTool();                      // the selected tool
   void showError(const QString& reason);  // "" hides the message
 
  signals:

@@ -10,11 +10,13 @@ namespace mx::widgets {
 
 namespace {
 
-QString number(double value) { return QString::number(value, 'g', 6); }
+QString number(double value) {
+  return QString::number(value, 'g', 6);
+}
 
 const char* fieldName(int column) {
-  static const char* kNames[] = {"id",       "teeth",           "diameter_mm", "helix_deg", "Kt_N_mm2",
-                                 "Kr",       "radial_depth_mm", "modes_x",     "modes_y"};
+  static const char* kNames[] = {"id", "teeth",           "diameter_mm", "helix_deg", "Kt_N_mm2",
+                                 "Kr", "radial_depth_mm", "modes_x",     "modes_y"};
   return kNames[column];
 }
 
@@ -60,21 +62,33 @@ int ToolTableModel::rowCount(const QModelIndex& parent) const {
   return parent.isValid() ? 0 : static_cast<int>(project_.tools.size());
 }
 
-int ToolTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int ToolTableModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
   const auto opt = [](const std::optional<double>& v) { return v ? QVariant(*v) : QVariant(); };
   switch (column) {
-    case Id: return t.id;
-    case Teeth: return t.teeth;
-    case Diameter: return toDisplay(t.diameter_mm);
-    case Helix: return t.helix_deg;
-    case Kt: return opt(t.Kt_N_mm2);
-    case Kr: return opt(t.Kr);
-    case RadialDepth: return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
-    case ModesX: return static_cast<int>(t.modes_x.size());
-    case ModesY: return static_cast<int>(t.modes_y.size());
-    default: return {};
+    case Id:
+      return t.id;
+    case Teeth:
+      return t.teeth;
+    case Diameter:
+      return toDisplay(t.diameter_mm);
+    case Helix:
+      return t.helix_deg;
+    case Kt:
+      return opt(t.Kt_N_mm2);
+    case Kr:
+      return opt(t.Kr);
+    case RadialDepth:
+      return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
+    case ModesX:
+      return static_cast<int>(t.modes_x.size());
+    case ModesY:
+      return static_cast<int>(t.modes_y.size());
+    default:
+      return {};
   }
 }
 
@@ -84,49 +98,79 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
   using D = RangeDelegate;
   const bool inch = units_ && units_->length() == DisplayUnits::Length::Inch;
   const int lengthDecimals = units_ ? units_->lengthDecimals() : 4;
-  struct Range { double lo, hi; int decimals; double step; const char* special; };
+  struct Range {
+    double lo, hi;
+    int decimals;
+    double step;
+    const char* special;
+  };
   Range r{};
   switch (column) {
-    case Teeth: r = {0, 99, 0, 1, ""}; break;
-    case Diameter: r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, ""}; break;
-    case Helix: r = {-90, 90, 2, 1, ""}; break;
-    case Kt: r = {0, 100000, 2, 10, "material's"}; break;
-    case Kr: r = {-0.001, 10, 3, 0.01, "material's"}; break;
-    case RadialDepth: r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"}; break;
-    default: return {};
+    case Teeth:
+      r = {0, 99, 0, 1, ""};
+      break;
+    case Diameter:
+      r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, ""};
+      break;
+    case Helix:
+      r = {-90, 90, 2, 1, ""};
+      break;
+    case Kt:
+      r = {0, 100000, 2, 10, "material's"};
+      break;
+    case Kr:
+      r = {-0.001, 10, 3, 0.01, "material's"};
+      break;
+    case RadialDepth:
+      r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"};
+      break;
+    default:
+      return {};
   }
   switch (role) {
-    case D::MinimumRole: return r.lo;
-    case D::MaximumRole: return r.hi;
-    case D::DecimalsRole: return r.decimals;
-    case D::StepRole: return r.step;
-    case D::SpecialTextRole: return QString(r.special);
+    case D::MinimumRole:
+      return r.lo;
+    case D::MaximumRole:
+      return r.hi;
+    case D::DecimalsRole:
+      return r.decimals;
+    case D::StepRole:
+      return r.step;
+    case D::SpecialTextRole:
+      return QString(r.special);
     case D::SuffixRole:
       return column == Diameter || column == RadialDepth ? " " + lengthUnit() : QString();
-    default: return {};
+    default:
+      return {};
   }
 }
 
 QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
   switch (column) {
-    case Id: return tr("Tool id (unique, non-empty)");
-    case Teeth: return tr("Number of teeth (integer >= 1)");
-    case Diameter: return tr("Tool diameter D [%1] (> 0)").arg(lengthUnit());
-    case Helix: return tr("Helix angle [deg] in (-90, 90); carried, the force model is straight-tooth");
+    case Id:
+      return tr("Tool id (unique, non-empty)");
+    case Teeth:
+      return tr("Number of teeth (integer >= 1)");
+    case Diameter:
+      return tr("Tool diameter D [%1] (> 0)").arg(lengthUnit());
+    case Helix:
+      return tr("Helix angle [deg] in (-90, 90); carried, the force model is straight-tooth");
     case Kt:
-      return project_.material
-                 ? tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's %1")
-                       .arg(app::formatNumber(project_.material->Kt_N_mm2))
-                 : tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's");
+      return project_.material ? tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's %1")
+                                     .arg(app::formatNumber(project_.material->Kt_N_mm2))
+                               : tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's");
     case Kr:
       return project_.material ? tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's %1")
                                      .arg(app::formatNumber(project_.material->Kr))
                                : tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's");
     case RadialDepth:
       return tr("Radial depth of cut a [%1] in (0, D]; empty = the operation's radial engagement").arg(lengthUnit());
-    case ModesX: return tr("%n mode(s) in x; edit them in the mode tables below", nullptr, int(t.modes_x.size()));
-    case ModesY: return tr("%n mode(s) in y; edit them in the mode tables below", nullptr, int(t.modes_y.size()));
-    default: return {};
+    case ModesX:
+      return tr("%n mode(s) in x; edit them in the mode tables below", nullptr, int(t.modes_x.size()));
+    case ModesY:
+      return tr("%n mode(s) in y; edit them in the mode tables below", nullptr, int(t.modes_y.size()));
+    default:
+      return {};
   }
 }
 
@@ -140,11 +184,14 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
       if (!v.isValid()) return QString();
       return v.typeId() == QMetaType::Double ? number(v.toDouble()) : v.toString();
     }
-    case Qt::EditRole: return editValue(t, column);
-    case Qt::ToolTipRole: return toolTip(t, column);
+    case Qt::EditRole:
+      return editValue(t, column);
+    case Qt::ToolTipRole:
+      return toolTip(t, column);
     case Qt::TextAlignmentRole:
       return column == Id ? QVariant(Qt::AlignLeft | Qt::AlignVCenter) : QVariant(Qt::AlignRight | Qt::AlignVCenter);
-    default: return role >= RangeDelegate::MinimumRole ? rangeData(column, role) : QVariant();
+    default:
+      return role >= RangeDelegate::MinimumRole ? rangeData(column, role) : QVariant();
   }
 }
 
@@ -153,16 +200,26 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
   const QString unit = lengthUnit();
   if (role == Qt::DisplayRole) {
     switch (section) {
-      case Id: return tr("id");
-      case Teeth: return tr("teeth");
-      case Diameter: return tr("diameter [%1]").arg(unit);
-      case Helix: return tr("helix [deg]");
-      case Kt: return tr("K_t [N/mm²]");
-      case Kr: return tr("K_r");
-      case RadialDepth: return tr("radial depth [%1]").arg(unit);
-      case ModesX: return tr("modes x");
-      case ModesY: return tr("modes y");
-      default: return {};
+      case Id:
+        return tr("id");
+      case Teeth:
+        return tr("teeth");
+      case Diameter:
+        return tr("diameter [%1]").arg(unit);
+      case Helix:
+        return tr("helix [deg]");
+      case Kt:
+        return tr("K_t [N/mm²]");
+      case Kr:
+        return tr("K_r");
+      case RadialDepth:
+        return tr("radial depth [%1]").arg(unit);
+      case ModesX:
+        return tr("modes x");
+      case ModesY:
+        return tr("modes y");
+      default:
+        return {};
     }
   }
   if (role == Qt::ToolTipRole) return toolTip(app::ToolSpec{}, section);
@@ -191,22 +248,35 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
   };
   bool ok = true, integral = true;
   switch (column) {
-    case Id: t.id = value.toString().trimmed(); break;
+    case Id:
+      t.id = value.toString().trimmed();
+      break;
     case Teeth: {
       const double teeth = value.toDouble(&ok);
       integral = ok && teeth == std::floor(teeth) && std::abs(teeth) < 1e6;
       t.teeth = integral ? static_cast<int>(teeth) : 0;
       break;
     }
-    case Diameter: t.diameter_mm = toMm(value.toDouble(&ok)); break;
-    case Helix: t.helix_deg = value.toDouble(&ok); break;
-    case Kt: optional(t.Kt_N_mm2, false); break;
-    case Kr: optional(t.Kr, false); break;
-    case RadialDepth: optional(t.radial_depth_mm, true); break;
-    default: return false;
+    case Diameter:
+      t.diameter_mm = toMm(value.toDouble(&ok));
+      break;
+    case Helix:
+      t.helix_deg = value.toDouble(&ok);
+      break;
+    case Kt:
+      optional(t.Kt_N_mm2, false);
+      break;
+    case Kr:
+      optional(t.Kr, false);
+      break;
+    case RadialDepth:
+      optional(t.radial_depth_mm, true);
+      break;
+    default:
+      return false;
   }
   const QString path = QString("tools[%1].%2").arg(index.row()).arg(fieldName(column));
-  QString error = !ok          ? QString("%1 = '%2': not a number").arg(path, value.toString())
+  QString error = !ok         ? QString("%1 = '%2': not a number").arg(path, value.toString())
                   : !integral ? QString("%1 = %2: must be an integer >= 1").arg(path, value.toString())
                               : ToolLibraryCsv::validationError(edited);
   if (!error.isEmpty()) {

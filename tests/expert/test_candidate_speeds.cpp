@@ -1,7 +1,10 @@
 // Rule 7.2 candidate speeds N = 60 f_n / (n_t k) merged into the regular grid.
 #include <cmath>
 
+#include <algorithm>
+
 #include "expert/candidate_speeds.h"
+#include "model/job_control.h"
 #include "support/fixtures.h"
 #include "test_main.h"
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "expert/expert_session.h"
+#include "model/job_control.h"
 #include "expert_fixtures.h"
 #include "test_main.h"
 

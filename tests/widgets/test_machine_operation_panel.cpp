@@ -77,7 +77,7 @@ class TestMachineOperationPanel : public QObject {
     MachineOperationPanel panel;
     panel.setProject(mx::app::loadProject(kRubio));
     QSignalSpy spy(&panel, &MachineOperationPanel::editRequested);
-    qobject_cast<QRadioButton*>(panel.field("operation.use_radial_depth"))->setChecked(true);
+    qobject_cast<QRadioButton*>(panel.field("operation.use_radial_depth"))->click();
     QCOMPARE(spy.count(), 1);
     const Project edited = spy.at(0).at(0).value<Project>();
     QVERIFY(!edited.operation->radial_immersion);
@@ -98,7 +98,7 @@ class TestMachineOperationPanel : public QObject {
              qPrintable(panel.errorText()));
     QCOMPARE(spin(panel, "operation.radial_depth_mm")->value(), 10.0);
     // Back to a/D: 10 mm of the largest tool (30 mm).
-    qobject_cast<QRadioButton*>(panel.field("operation.use_radial_depth"))->setChecked(false);
+    qobject_cast<QRadioButton*>(panel.field("operation.use_radial_immersion"))->click();
     QCOMPARE(spy.count(), 1);
     const Project edited = spy.at(0).at(0).value<Project>();
     QVERIFY(!edited.operation->radial_depth_mm);

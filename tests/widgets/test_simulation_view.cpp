@@ -5,6 +5,7 @@
 #include <QSignalSpy>
 #include <QThreadPool>
 #include <cmath>
+#include <qcustomplot.h>
 
 #include "simulation_runner.h"
 #include "simulation_view.h"
@@ -167,6 +168,8 @@ class TestSimulationView : public QObject {
     QVERIFY(view.suggestedSpeedRpm() > 0.0 && view.suggestedSpeedRpm() <= 12000.0);
     QVERIFY(view.spectrumPointCount() > 50);
     QTRY_COMPARE(view.plottedSampleCount(), view.sampleCount());
+    qInfo("samples %d plotted %d", view.sampleCount(), view.plottedSampleCount());
+    for (QCustomPlot* p : view.findChildren<QCustomPlot*>()) { QElapsedTimer c; c.start(); p->replot(); qInfo("replot %lld ms", c.elapsed()); }
     if (qEnvironmentVariableIsSet("MX_SIMVIEW_SCREENSHOT"))  // for a look at 1080p
       view.grab().save(qEnvironmentVariable("MX_SIMVIEW_SCREENSHOT"));
   }

@@ -23,7 +23,9 @@ QJsonArray toolsJson(const std::vector<ToolSpec>& tools) {
   return mx::app::projectToJson(p).value("tools").toArray();
 }
 
-Project rubio() { return mx::app::loadProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"); }
+Project rubio() {
+  return mx::app::loadProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+}
 
 QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
   const QString path = dir.filePath(name);
@@ -110,37 +112,40 @@ class TestToolLibraryCsv : public QObject {
     QTest::addColumn<bool>("replace");
     QTest::addColumn<QString>("message");
     const QByteArray good = "A,2,10,0,,,,x,1000,2,10\n";
-    QTest::newRow("non-number") << kHeader + good + "A,,,,,,,y,abc,2,10\n" << true
-                                << "line 3, column 9 (freq_Hz): 'abc' is not a number (number > 0)";
-    QTest::newRow("out of range") << "# comment\n" + kHeader + good + "A,,,,,,,y,-3,2,10\n" << true
-                                  << "line 4, column 9 (freq_Hz): '-3' must be > 0";
-    QTest::newRow("damping") << kHeader + "A,2,10,0,,,,x,1000,150,10\n" << true
-                             << "line 2, column 10 (damping_pct): '150' must be in (0, 100)";
-    QTest::newRow("stiffness") << kHeader + good + "\nB,2,10,0,,,,y,1000,2,0\n" << true
-                               << "line 4, column 11 (stiffness_N_per_um): '0' must be > 0";
-    QTest::newRow("too few columns") << kHeader + good + "A,,,,,,,y,1000,2\n" << true
-                                     << "line 3, column 11: the row has 10 columns, expected 11";
-    QTest::newRow("too many columns") << kHeader + "A,2,10,0,,,,x,1000,2,10,7\n" << true
-                                      << "line 2, column 12: the row has 12 columns, expected 11";
-    QTest::newRow("unknown axis") << kHeader + good + "A,,,,,,,z,1000,2,10\n" << true
-                                  << "line 3, column 8 (axis): 'z' must be x or y";
-    QTest::newRow("duplicate id") << kHeader + good + "B,2,10,0,,,,x,1000,2,10\nA,2,10,0,,,,y,1000,2,10\n" << true
-                                  << "line 4, column 1 (tool_id): 'A' duplicate tool id (first on line 2)";
-    QTest::newRow("id already in library") << kHeader + "R2,2,10,0,,,,x,1000,2,10\n" << false
-                                           << "line 2, column 1 (tool_id): 'R2' duplicate tool id (already in the library)";
-    QTest::newRow("teeth not integer") << kHeader + "A,2.5,10,0,,,,x,1000,2,10\n" << true
-                                       << "line 2, column 2 (teeth): '2.5' must be an integer >= 1";
-    QTest::newRow("radial depth > D") << kHeader + "A,2,10,0,,,12,x,1000,2,10\n" << true
-                                      << "line 2, column 7 (radial_depth_mm): '12' must be in (0, 10]";
-    QTest::newRow("continuation differs") << kHeader + good + "A,3,,,,,,y,1000,2,10\n" << true
-                                          << "line 3, column 2 (teeth): '3' differs from the tool's first row (line 2";
-    QTest::newRow("missing id") << kHeader + good + ",2,10,0,,,,x,1000,2,10\n" << true
-                                << "line 3, column 1 (tool_id): '' must be a non-empty tool id";
+    QTest::newRow("non-number") << kHeader + good + "A,,,,,,,y,abc,2,10\n"
+                                << true << "line 3, column 9 (freq_Hz): 'abc' is not a number (number > 0)";
+    QTest::newRow("out of range") << "# comment\n" + kHeader + good + "A,,,,,,,y,-3,2,10\n"
+                                  << true << "line 4, column 9 (freq_Hz): '-3' must be > 0";
+    QTest::newRow("damping") << kHeader + "A,2,10,0,,,,x,1000,150,10\n"
+                             << true << "line 2, column 10 (damping_pct): '150' must be in (0, 100)";
+    QTest::newRow("stiffness") << kHeader + good + "\nB,2,10,0,,,,y,1000,2,0\n"
+                               << true << "line 4, column 11 (stiffness_N_per_um): '0' must be > 0";
+    QTest::newRow("too few columns") << kHeader + good + "A,,,,,,,y,1000,2\n"
+                                     << true << "line 3, column 11: the row has 10 columns, expected 11";
+    QTest::newRow("too many columns") << kHeader + "A,2,10,0,,,,x,1000,2,10,7\n"
+                                      << true << "line 2, column 12: the row has 12 columns, expected 11";
+    QTest::newRow("unknown axis") << kHeader + good + "A,,,,,,,z,1000,2,10\n"
+                                  << true << "line 3, column 8 (axis): 'z' must be x or y";
+    QTest::newRow("duplicate id") << kHeader + good + "B,2,10,0,,,,x,1000,2,10\nA,2,10,0,,,,y,1000,2,10\n"
+                                  << true << "line 4, column 1 (tool_id): 'A' duplicate tool id (first on line 2)";
+    QTest::newRow("id already in library")
+        << kHeader + "R2,2,10,0,,,,x,1000,2,10\n"
+        << false << "line 2, column 1 (tool_id): 'R2' duplicate tool id (already in the library)";
+    QTest::newRow("teeth not integer") << kHeader + "A,2.5,10,0,,,,x,1000,2,10\n"
+                                       << true << "line 2, column 2 (teeth): '2.5' must be an integer >= 1";
+    QTest::newRow("radial depth > D") << kHeader + "A,2,10,0,,,12,x,1000,2,10\n"
+                                      << true << "line 2, column 7 (radial_depth_mm): '12' must be in (0, 10]";
+    QTest::newRow("continuation differs")
+        << kHeader + good + "A,3,,,,,,y,1000,2,10\n"
+        << true << "line 3, column 2 (teeth): '3' differs from the tool's first row (line 2";
+    QTest::newRow("missing id") << kHeader + good + ",2,10,0,,,,x,1000,2,10\n"
+                                << true << "line 3, column 1 (tool_id): '' must be a non-empty tool id";
     QTest::newRow("unknown header") << QByteArray("tool_id,teeth,diam\n") << true
                                     << "line 1, column 3: unknown column 'diam'";
-    QTest::newRow("reordered header") << QByteArray("axis,tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,"
-                                                    "radial_depth_mm,freq_Hz,damping_pct,stiffness_N_per_um\n"
-                                                    "q,A,2,10,0,,,,1000,2,10\n")
+    QTest::newRow("reordered header") << QByteArray(
+                                             "axis,tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,"
+                                             "radial_depth_mm,freq_Hz,damping_pct,stiffness_N_per_um\n"
+                                             "q,A,2,10,0,,,,1000,2,10\n")
                                       << true << "line 2, column 1 (axis): 'q' must be x or y";
   }
   void badRowChangesNothing() {
@@ -196,8 +201,7 @@ class TestToolLibraryCsv : public QObject {
     QTest::addColumn<QString>("message");
     QTest::newRow("damping") << QString(MX_TEST_DATA_DIR "/library/bad-damping.json") << QByteArray()
                              << "tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)";
-    QTest::newRow("type") << QString() << QByteArray(R"([{"id":"A","teeth":"two"}])")
-                          << "tools[0].teeth: expected";
+    QTest::newRow("type") << QString() << QByteArray(R"([{"id":"A","teeth":"two"}])") << "tools[0].teeth: expected";
     QTest::newRow("no tools") << QString() << QByteArray(R"({"name":"x"})")
                               << "tools: missing (required array of tools)";
     QTest::newRow("syntax") << QString() << QByteArray("{ \"tools\": [ ") << "JSON syntax error at offset";

@@ -25,8 +25,7 @@ const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
 void wire(ToolLibraryEditor& editor, mx::gui::ProjectDocument& doc) {
   QObject::connect(&editor, &ToolLibraryEditor::editRequested, &doc,
                    [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-  QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &editor,
-                   [&] { editor.setProject(doc.project()); });
+  QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &editor, [&] { editor.setProject(doc.project()); });
   editor.setProject(doc.project());
 }
 
@@ -201,7 +200,8 @@ class TestToolLibraryEditor : public QObject {
     QTest::addColumn<QString>("message");
     QTest::newRow("diameter") << int(ToolTableModel::Diameter) << QVariant(0.0)
                               << "tools[0].diameter_mm = 0: must be > 0";
-    QTest::newRow("teeth") << int(ToolTableModel::Teeth) << QVariant(0) << "tools[0].teeth = 0: must be an integer >= 1";
+    QTest::newRow("teeth") << int(ToolTableModel::Teeth) << QVariant(0)
+                           << "tools[0].teeth = 0: must be an integer >= 1";
     QTest::newRow("helix") << int(ToolTableModel::Helix) << QVariant(90.0)
                            << "tools[0].helix_deg = 90: must be in (-90, 90)";
     QTest::newRow("duplicate id") << int(ToolTableModel::Id) << QVariant("R2")

@@ -1,0 +1,42 @@
+// GUI benchmark (QtTest QBENCHMARK, not a CTest gate): the cost of one drag step on the lobe chart,
+// from the mouse-move event to updated readouts and marker (issue 3 target: 16 ms or less).
+// Run: QT_QPA_PLATFORM=offscreen build/release/bench/millexpert-gui-bench
+#include <QApplication>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include "main_window.h"
+
+class BenchDrag : public QObject {
+  Q_OBJECT
+ private slots:
+  void dragStepUpdatesReadouts() {
+    mx::gui::MainWindow window;
+    window.setQuiet(true);
+    window.resize(1600, 950);
+    window.show();
+    QSignalSpy shown(&window, &mx::gui::MainWindow::lobesShown);
+    QVERIFY(window.openProject(MX_DEFAULT_PROJECT));
+    QVERIFY(shown.wait(20000));
+    QSignalSpy simulated(&window, &mx::gui::MainWindow::simulationFinished);
+    QVERIFY(simulated.wait(20000));  // the first simulation of the initial point is done
+    QWidget* plot = window.lobeChart()->plotWidget();
+    const QPoint a = window.lobeChart()->pixelFor(2000.0, 0.2), b = window.lobeChart()->pixelFor(5000.0, 0.5);
+    QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, a);
+    int i = 0;
+    QBENCHMARK {
+      const QPoint p = (i++ % 2) ? a : b;
+      QTest::mouseMove(plot, p);
+      QCoreApplication::processEvents();  // marker repaint on the overlay layer
+    }
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, a);
+    QVERIFY(!window.readout()->text("blim").isEmpty());
+  }
+};
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  BenchDrag bench;
+  return QTest::qExec(&bench, argc, argv);
+}
+#include "bench_drag.moc"
