@@ -10,8 +10,8 @@ namespace mx::gui {
 
 // The samples of one spindle revolution (a copy of mx::SimulationChunk; owned, valid anywhere).
 struct SimulationChunkData {
-  int revolution = 0;   // revolutions completed (1-based)
-  int revolutions = 0;  // total revolutions to simulate
+  int revolution = 0;         // revolutions completed (1-based)
+  int revolutions = 0;        // total revolutions to simulate
   qsizetype first_index = 0;  // index of time_s[0] in the full trace
   QVector<double> time_s, x_m, y_m, force_n, power_w;
 };

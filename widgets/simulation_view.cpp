@@ -1,5 +1,7 @@
 #include "simulation_view.h"
 
+#include <qcustomplot.h>
+
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -7,7 +9,6 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <qcustomplot.h>
 #include <vector>
 
 #include "indicator_gauge.h"
@@ -33,6 +34,9 @@ QCustomPlot* makePlot(QWidget* parent, const QString& tooltip) {
   plot->legend->setBrush(QColor(255, 255, 255, 210));
   plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
   plot->setToolTip(tooltip);
+  // Dense oscillating traces: antialiased wide polylines take seconds per repaint; these stay ~ms.
+  plot->setPlottingHint(QCP::phFastPolylines, true);
+  plot->setNotAntialiasedElements(QCP::aePlottables);
   return plot;
 }
 
@@ -81,15 +85,16 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
   motion_plot_->yAxis2->setVisible(true);
   motion_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   // The force first, so that the displacements are drawn over it.
-  force_graph_ = addGraph(motion_plot_, motion_plot_->yAxis2, tr("Resultant force |F| [N] (right axis)"),
-                          QPen(kForceColor, 1.0));
-  x_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement x [\u00b5m]"), QPen(kXColor, 1.2));
-  y_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement y [\u00b5m]"), QPen(kYColor, 1.2));
+  force_graph_ =
+      addGraph(motion_plot_, motion_plot_->yAxis2, tr("Resultant force |F| [N] (right axis)"), QPen(kForceColor, 1.0));
+  x_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement x [\u00b5m]"), QPen(kXColor, 1.0));
+  y_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement y [\u00b5m]"), QPen(kYColor, 1.0));
 
   power_plot_->xAxis->setLabel(tr("Time t [s]"));
   power_plot_->yAxis->setLabel(tr("Spindle power P [W]"));
-  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power P [W]"), QPen(kPowerColor, 1.2));
-  limit_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power limit"), QPen(kLimitColor, 2.0, Qt::DashLine));
+  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power P [W]"), QPen(kPowerColor, 1.0));
+  limit_graph_ =
+      addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power limit"), QPen(kLimitColor, 2.0, Qt::DashLine));
   limit_graph_->setAdaptiveSampling(false);
 
   auto* grid = new QGridLayout(this);
@@ -175,8 +180,8 @@ void SimulationView::beginRun(double spindle_power_limit_w, int teeth, double to
 }
 
 void SimulationView::appendChunk(const mx::gui::SimulationChunkData& chunk) {
-  const qsizetype n = std::min({chunk.time_s.size(), chunk.x_m.size(), chunk.y_m.size(), chunk.force_n.size(),
-                                chunk.power_w.size()});
+  const qsizetype n =
+      std::min({chunk.time_s.size(), chunk.x_m.size(), chunk.y_m.size(), chunk.force_n.size(), chunk.power_w.size()});
   // Only the last capacity() samples of a chunk can survive.
   const qsizetype first = std::max<qsizetype>(0, n - static_cast<qsizetype>(capacity()));
   for (qsizetype i = first; i < n; ++i) {
@@ -209,8 +214,9 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
     QStringList by;
     if (s.chatter_by_eta) by << tr("\u03b7 \u2265 %1").arg(s.eta_threshold);
     if (s.chatter_by_chip_ratio) by << tr("chip ratio \u2265 %1").arg(s.chip_ratio_threshold);
-    verdict = s.chatter_frequency_hz ? tr("CHATTER at f_c = %1 Hz (%2)").arg(*s.chatter_frequency_hz, 0, 'f', 1).arg(by.join(", "))
-                                     : tr("CHATTER (%1)").arg(by.join(", "));
+    verdict = s.chatter_frequency_hz
+                  ? tr("CHATTER at f_c = %1 Hz (%2)").arg(*s.chatter_frequency_hz, 0, 'f', 1).arg(by.join(", "))
+                  : tr("CHATTER (%1)").arg(by.join(", "));
   } else {
     verdict = tr("STABLE: no chatter (\u03b7 < %1, chip ratio < %2)").arg(s.eta_threshold).arg(s.chip_ratio_threshold);
   }
@@ -223,7 +229,8 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
                              .arg(s.evaluated_revolutions));
 
   const QString power_limit = s.spindle_power_limit_w > 0.0
-                                  ? tr(" of %1 W limit%2").arg(s.spindle_power_limit_w, 0, 'f', 0)
+                                  ? tr(" of %1 W limit%2")
+                                        .arg(s.spindle_power_limit_w, 0, 'f', 0)
                                         .arg(s.power_limit_exceeded ? tr(": EXCEEDED") : QString())
                                   : QString();
   details_label_->setText(
@@ -241,9 +248,10 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
   move_button_->setEnabled(suggested_rpm_ > 0.0);
   if (suggested_rpm_ > 0.0) {
     move_button_->setText(tr("Move to %1 rpm").arg(suggested_rpm_, 0, 'f', 0));
-    move_button_->setToolTip(tr("Smith-Tlusty: tooth-passing frequency = f_c / %1, i.e. N = 60 f_c / (%2 \u00d7 %1) rpm")
-                                 .arg(s.suggested_k)
-                                 .arg(s.teeth));
+    move_button_->setToolTip(
+        tr("Smith-Tlusty: tooth-passing frequency = f_c / %1, i.e. N = 60 f_c / (%2 \u00d7 %1) rpm")
+            .arg(s.suggested_k)
+            .arg(s.teeth));
   } else {
     move_button_->setText(s.chatter ? tr("No chatter-free speed in range") : tr("Move to suggested speed"));
   }
@@ -259,11 +267,21 @@ void SimulationView::setStatus(const QString& message) {
   status_label_->setText(message);
 }
 
-int SimulationView::plottedSampleCount() const { return x_graph_->dataCount(); }
-int SimulationView::spectrumPointCount() const { return spectrum_->pointCount(); }
-QString SimulationView::verdictText() const { return verdict_label_->text(); }
-QString SimulationView::suggestedSpeedText() const { return suggested_rpm_ > 0.0 ? move_button_->text() : QString(); }
-bool SimulationView::replotPending() const { return replot_timer_->isActive(); }
+int SimulationView::plottedSampleCount() const {
+  return x_graph_->dataCount();
+}
+int SimulationView::spectrumPointCount() const {
+  return spectrum_->pointCount();
+}
+QString SimulationView::verdictText() const {
+  return verdict_label_->text();
+}
+QString SimulationView::suggestedSpeedText() const {
+  return suggested_rpm_ > 0.0 ? move_button_->text() : QString();
+}
+bool SimulationView::replotPending() const {
+  return replot_timer_->isActive();
+}
 
 void SimulationView::scheduleReplot() {
   if (!replot_timer_->isActive()) replot_timer_->start();  // coalesces the chunks of ~33 ms

@@ -1,9 +1,10 @@
 #include "spectrum_plot.h"
 
+#include <qcustomplot.h>
+
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <qcustomplot.h>
 
 #include "simulation/amplitude_spectrum.h"
 
@@ -61,8 +62,9 @@ SpectrumPlot::SpectrumPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
   plot_->legend->setBrush(QColor(255, 255, 255, 210));
   plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-  plot_->setToolTip(tr("Amplitude spectrum of the resultant cutting force. Peaks away from the tooth-passing "
-                       "harmonics (grey) are self-excited vibration (chatter)."));
+  plot_->setToolTip(
+      tr("Amplitude spectrum of the resultant cutting force. Peaks away from the tooth-passing "
+         "harmonics (grey) are self-excited vibration (chatter)."));
 
   amplitude_ = plot_->addGraph();
   amplitude_->setName(tr("Resultant force |F|"));
@@ -79,7 +81,9 @@ SpectrumPlot::SpectrumPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
   plot_->yAxis->setRange(0.0, 1.0);
 }
 
-int SpectrumPlot::pointCount() const { return amplitude_->dataCount(); }
+int SpectrumPlot::pointCount() const {
+  return amplitude_->dataCount();
+}
 
 void SpectrumPlot::setSpectrum(const SpectrumSeries& spectrum, const QString& label) {
   amplitude_->setData(spectrum.hz, spectrum.amplitude, true);
@@ -112,7 +116,9 @@ void SpectrumPlot::clear() {
   rebuildMarkers();
 }
 
-void SpectrumPlot::replotQueued() { plot_->replot(QCustomPlot::rpQueuedReplot); }
+void SpectrumPlot::replotQueued() {
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
 
 void SpectrumPlot::rebuildMarkers() {
   for (QCPAbstractItem* item : markers_) plot_->removeItem(item);
@@ -143,11 +149,12 @@ void SpectrumPlot::rebuildMarkers() {
   if (tooth_passing_hz_ > 0.0) {
     for (int h = 1; h <= kMaxHarmonicMarkers && h * tooth_passing_hz_ <= range_hz; ++h) {
       addLine(h * tooth_passing_hz_, QPen(kHarmonicColor, 1.0, Qt::DashLine));
-      if (h <= kMaxHarmonicLabels) addLabel(h * tooth_passing_hz_, h == 1 ? tr("f_tp") : tr("%1f_tp").arg(h),
-                                            kHarmonicColor, 0.02);
+      if (h <= kMaxHarmonicLabels)
+        addLabel(h * tooth_passing_hz_, h == 1 ? tr("f_tp") : tr("%1f_tp").arg(h), kHarmonicColor, 0.02);
       ++harmonic_count_;
     }
-    harmonic_legend_->setName(tr("Tooth-passing harmonics h\u00b7f_tp (f_tp = %1 Hz)").arg(tooth_passing_hz_, 0, 'f', 1));
+    harmonic_legend_->setName(
+        tr("Tooth-passing harmonics h\u00b7f_tp (f_tp = %1 Hz)").arg(tooth_passing_hz_, 0, 'f', 1));
     harmonic_legend_->addToLegend();
   } else {
     harmonic_legend_->removeFromLegend();

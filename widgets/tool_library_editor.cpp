@@ -152,11 +152,13 @@ void ToolLibraryEditor::setProject(const app::Project& project) {
   const QString keep = pendingSelect_.isEmpty() ? currentToolId() : pendingSelect_;
   const int oldRow = toolView_->currentIndex().row();
   pendingSelect_.clear();
+  refreshing_ = true;  // one toolSelected at the end, none for the transient empty selection of a reset
   tools_->setProject(project);
   modesX_->setProject(project);
   modesY_->setProject(project);
   if (!selectTool(keep) && tools_->rowCount() > 0 && !toolView_->currentIndex().isValid())
     toolView_->setCurrentIndex(tools_->index(std::clamp(oldRow, 0, tools_->rowCount() - 1), 0));
+  refreshing_ = false;
   onSelectionChanged();
 }
 
@@ -179,6 +181,7 @@ bool ToolLibraryEditor::selectTool(const QString& id) {
 }
 
 void ToolLibraryEditor::onSelectionChanged() {
+  if (refreshing_) return;
   const QString id = currentToolId();
   modesX_->setToolId(id);
   modesY_->setToolId(id);

@@ -78,7 +78,8 @@ class ToolLibraryEditor : public QWidget {
   QPushButton* remove_;
   QString error_;
   QString selected_;       // the tool id last announced by toolSelected
-  QString pendingSelect_;  // select this tool once the document shows it (after add / duplicate)
+  QString pendingSelect_;
+  bool refreshing_ = false;  // select this tool once the document shows it (after add / duplicate)
 };
 
 }  // namespace mx::widgets

@@ -8,7 +8,6 @@
 // Exit 2: weights off the simplex or a bad project; exit 1: empty admissible space (message names
 // the constraint that emptied it).
 #include <QJsonArray>
-#include <cmath>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
@@ -21,13 +20,13 @@ namespace mx::app {
 
 namespace {
 
-// Grid values without the noise of the unit conversions (1e-6 rpm, 1e-9 mm).
-double rounded(double value, double unit) { return std::round(value / unit) * unit; }
+// Grid values without the noise of the unit conversions: 12 significant digits.
+double rounded(double value) { return QString::number(value, 'g', 12).toDouble(); }
 
 QJsonObject pointJson(const ExpertPoint& q) {
-  return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s), 1e-6)},
-          {"depth_mm", rounded(q.depth_m * 1e3, 1e-9)},
-          {"feed_mm_per_tooth", rounded(q.feed_per_tooth_m * 1e3, 1e-9)}};
+  return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s))},
+          {"depth_mm", rounded(q.depth_m * 1e3)},
+          {"feed_mm_per_tooth", rounded(q.feed_per_tooth_m * 1e3)}};
 }
 
 }  // namespace

@@ -1,12 +1,21 @@
 // millexpert: the GUI. "millexpert [PROJECT]" opens PROJECT, else the bundled default project.
-// "--screenshot FILE" saves the window once the lobes are shown, then quits (docs, CI).
+// "--point RPM,MM[,MM_PER_TOOTH]" picks the initial operating point; "--screenshot FILE" saves the
+// window once the lobes and the point's simulation are shown, then quits (docs, scripts).
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFile>
+#include <QTextStream>
 #include <QTimer>
 #include <clocale>
 
 #include "main_window.h"
+
+namespace {
+QString defaultProject() {
+  if (QFile::exists(MX_DEFAULT_PROJECT)) return MX_DEFAULT_PROJECT;
+  return "/usr/share/millexpert/projects/rubio2006-tool-selection.mxproj";
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
@@ -18,18 +27,37 @@ int main(int argc, char** argv) {
   parser.setApplicationDescription("MillExpert: milling stability lobes, expert tool selection and control.");
   parser.addHelpOption();
   parser.addPositionalArgument("project", "Project file (.mxproj); default: the bundled example.");
-  parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the first simulation are shown, then quit.",
-                    "FILE"});
+  parser.addOption({"point", "Initial operating point: speed [rpm], depth [mm] and optionally feed [mm/tooth].",
+                    "RPM,MM[,MM_PER_TOOTH]"});
+  parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the point's "
+                                  "simulation are shown, then quit.", "FILE"});
   parser.process(app);
 
-  QString path = parser.positionalArguments().value(0);
-  if (path.isEmpty()) path = QFile::exists(MX_DEFAULT_PROJECT) ? QString(MX_DEFAULT_PROJECT)
-                                                               : QString("/usr/share/millexpert/projects/rubio2006-tool-selection.mxproj");
+  const QString path = parser.positionalArguments().value(0, defaultProject());
   mx::gui::MainWindow window;
   const QString screenshot = parser.value("screenshot");
   window.setQuiet(!screenshot.isEmpty());
   if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
+  if (parser.isSet("point")) {
+    const QStringList parts = parser.value("point").split(',');
+    bool ok_n = false, ok_b = false, ok_f = true;
+    const double n = parts.value(0).toDouble(&ok_n), b = parts.value(1).toDouble(&ok_b);
+    const double f = parts.size() > 2 ? parts[2].toDouble(&ok_f) : 0.0;
+    if (!ok_n || !ok_b || !ok_f || n <= 0 || b < 0 || f < 0 || parts.size() > 3) {
+      QTextStream(stderr) << "millexpert: --point = '" << parser.value("point")
+                          << "': expected RPM,MM[,MM_PER_TOOTH] with RPM > 0, MM >= 0\n";
+      return 2;
+    }
+    QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, [&window, n, b, f] {
+      mx::gui::PickedPoint p = window.document()->point();
+      p.speed_rpm = n;
+      p.depth_mm = b;
+      if (f > 0.0) p.feed_mm_per_tooth = f;
+      window.document()->initPoint(p);
+      window.startSimulation();
+    }, Qt::SingleShotConnection);
+  }
   if (!screenshot.isEmpty()) {
     QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&window, screenshot] {
       QTimer::singleShot(300, &window, [&window, screenshot] {

@@ -188,6 +188,7 @@ void MainWindow::onLobesReady(const LobeJobResult& result) {
 void MainWindow::updatePowerLimit() {
   const int tool = evaluator_.toolIndex(active_tool_);
   const double feed = doc_.point().feed_mm_per_tooth;
+  power_limit_feed_ = feed;
   const app::Project& p = doc_.project();
   const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
   chart_->setPowerLimit(limit, p.machine ? tr("power limit %1 W at s_t = %2 mm/tooth")
@@ -197,6 +198,7 @@ void MainWindow::updatePowerLimit() {
 }
 
 void MainWindow::onPointChanged(const PickedPoint& point) {
+  if (point.feed_mm_per_tooth != power_limit_feed_) updatePowerLimit();  // the curve depends on s_t
   const int tool = evaluator_.toolIndex(active_tool_);
   const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
   readout_->setReadout(r);

@@ -51,6 +51,7 @@ class MainWindow : public QMainWindow {
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
   void setMethod(LobeMethod method);
+  void startSimulation();  // time-domain simulation of the current point on the engine thread
 
  signals:
   void lobesShown();
@@ -80,7 +81,6 @@ class MainWindow : public QMainWindow {
   void onPointChanged(const PickedPoint& point);
   void onPointDragged(double speed_rpm, double depth_mm);
   void onPointReleased(double speed_rpm, double depth_mm);
-  void startSimulation();
   void onSimulationFinished(quint64 generation, const SimulationSummary& summary);
   void setActiveTool(const QString& id);
   void updatePowerLimit();
@@ -112,6 +112,7 @@ class MainWindow : public QMainWindow {
   bool quiet_ = false;
   RecoveryPolicy recovery_ = RecoveryPolicy::Ask;
   quint64 sim_generation_ = 0;
+  double power_limit_feed_ = -1.0;  // feed per tooth the power-limit curve was drawn for
 };
 
 }  // namespace mx::gui

@@ -13,7 +13,9 @@
 namespace mx::gui {
 
 namespace {
-QVector<double> toQVector(std::span<const double> values) { return QVector<double>(values.begin(), values.end()); }
+QVector<double> toQVector(std::span<const double> values) {
+  return QVector<double>(values.begin(), values.end());
+}
 }  // namespace
 
 SimulationChunkData copyChunk(const SimulationChunk& chunk) {
@@ -55,10 +57,10 @@ SimulationSummary summarizeSimulation(const SimulationJobInput& input, const Sim
   s.diverged = result.diverged;
 
   if (ind.chatter && ind.chatter_frequency_hz) {
-    const double max_rev = input.max_spindle_rev_per_s > 0.0 ? input.max_spindle_rev_per_s
-                                                             : std::numeric_limits<double>::infinity();
-    if (const auto choice =
-            smithTlustyChoice(*ind.chatter_frequency_hz, input.setup.teeth, input.point.spindle_rev_per_s, 0.0, max_rev);
+    const double max_rev =
+        input.max_spindle_rev_per_s > 0.0 ? input.max_spindle_rev_per_s : std::numeric_limits<double>::infinity();
+    if (const auto choice = smithTlustyChoice(*ind.chatter_frequency_hz, input.setup.teeth,
+                                              input.point.spindle_rev_per_s, 0.0, max_rev);
         choice && choice->rev_per_s > 0.0) {
       s.suggested_rpm = revPerSToRpm(choice->rev_per_s);
       s.suggested_k = choice->k;
@@ -94,9 +96,9 @@ SimulationSummary runSimulationJob(const SimulationJobInput& input, const std::a
   const SimulationResult result = simulateMilling(input.setup, input.point, options, control);
   if (control.cancelled()) throw Cancelled();
   const std::size_t evaluated = static_cast<std::size_t>(input.options.evaluated_revolutions);
-  const std::size_t window_first =
-      revolution_starts.size() > evaluated ? revolution_starts[revolution_starts.size() - evaluated]
-                                           : (revolution_starts.empty() ? 0 : revolution_starts.front());
+  const std::size_t window_first = revolution_starts.size() > evaluated
+                                       ? revolution_starts[revolution_starts.size() - evaluated]
+                                       : (revolution_starts.empty() ? 0 : revolution_starts.front());
   return summarizeSimulation(input, result, window_first);
 }
 

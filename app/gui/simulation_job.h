@@ -16,7 +16,7 @@ namespace mx::gui {
 struct SimulationJobInput {
   MillingSetup setup;
   OperatingPoint point;
-  SimulationOptions options;  // options.on_chunk is replaced by the job's own
+  SimulationOptions options;           // options.on_chunk is replaced by the job's own
   double spindle_power_limit_w = 0.0;  // <= 0: no limit
   double max_spindle_rev_per_s = std::numeric_limits<double>::infinity();  // <= 0 or inf: unbounded
 };

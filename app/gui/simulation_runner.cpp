@@ -16,8 +16,8 @@ template <class Channel, class Call>
 void post(const std::shared_ptr<Channel>& channel, Call&& call) {
   std::lock_guard lock(channel->mutex);
   if (auto* runner = channel->runner)
-    QMetaObject::invokeMethod(runner, [runner, call = std::forward<Call>(call)]() mutable { call(runner); },
-                              Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        runner, [runner, call = std::forward<Call>(call)]() mutable { call(runner); }, Qt::QueuedConnection);
 }
 }  // namespace
 
@@ -67,7 +67,8 @@ quint64 SimulationRunner::submit(const mx::MillingSetup& setup, const mx::Operat
   QThreadPool* pool = pool_ ? pool_ : QThreadPool::globalInstance();
   pool->start([input = std::move(input), generation, cancel = cancel_, channel = channel_] {
     const ChunkSink sink = [&](SimulationChunkData&& chunk) {
-      post(channel, [generation, chunk = std::move(chunk)](SimulationRunner* r) { r->deliverChunk(generation, chunk); });
+      post(channel,
+           [generation, chunk = std::move(chunk)](SimulationRunner* r) { r->deliverChunk(generation, chunk); });
     };
     try {
       SimulationSummary summary = runSimulationJob(input, *cancel, sink);

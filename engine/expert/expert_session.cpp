@@ -1,4 +1,5 @@
 #include "expert/expert_session.h"
+#include "model/vector_state.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,6 +82,7 @@ std::optional<ToolChoice> bestOfGrid(const AdmissibleGrid& grid, std::size_t too
 
 ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings)
     : settings_(settings), tools_(std::move(tools)), cache_(settings.refinement) {
+  clearUpperVectorState();
   if (tools_.empty()) throw InvalidInput("the expert system needs at least one candidate tool");
   std::vector<std::optional<AdmissibleGrid>> built(tools_.size());
   parallelFor(tools_.size(), settings_.refinement.threads,

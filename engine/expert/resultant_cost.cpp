@@ -8,7 +8,10 @@
 namespace mx {
 
 namespace {
-double ratio(double value, double max) { return max > 0.0 ? value / max : 0.0; }
+// Below this the figures are round-off (a stable cut's R1ch is ~1e-17): a term whose maximum over the
+// set is below it is zero instead of a ratio of noise.
+constexpr double kNoiseFloor = 1e-9;
+double ratio(double value, double max) { return max > kNoiseFloor ? value / max : 0.0; }
 }  // namespace
 
 std::size_t selectByResultantCost(std::vector<RefinementCandidate>& candidates, const CostWeights& w) {

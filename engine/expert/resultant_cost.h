@@ -4,7 +4,7 @@
 //   C_t = c1t t_s / t_s,max + c2t M_p / M_p,max                                    (eq. 18)
 //   C_f = c1f R12h / R12h,max + c2f R1ch / R1ch,max                                (eq. 19, as read)
 // with the maxima taken over the candidates passed in (the points actually simulated for this
-// selection). A maximum of zero makes its term zero.
+// selection). A maximum below 1e-9 (round-off, e.g. R1ch of stable cuts) makes its term zero.
 #include <cstddef>
 #include <vector>
 

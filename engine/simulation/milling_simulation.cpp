@@ -1,4 +1,5 @@
 #include "simulation/milling_simulation.h"
+#include "model/vector_state.h"
 
 #include <cmath>
 #include <sstream>
@@ -82,6 +83,7 @@ void validateSimulationInputs(const MillingSetup& setup, const OperatingPoint& p
 
 SimulationResult simulateMilling(const MillingSetup& setup, const OperatingPoint& point,
                                  const SimulationOptions& options, const JobControl& control) {
+  clearUpperVectorState();
   validateSimulationInputs(setup, point, options);
   TimeDomainSimulator simulator(setup, point, options);
   simulator.run(control);

@@ -1,4 +1,5 @@
 #include "stability/semi_discretization.h"
+#include "model/vector_state.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,6 +67,7 @@ void validate(const MillingSetup& setup, const std::vector<double>& speeds, cons
 
 SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_rev_per_s, double depth_m,
                                     int steps_per_period) {
+  clearUpperVectorState();
   requireTeeth(setup);
   requireSteps(steps_per_period);
   requireSpeed(spindle_rev_per_s);
@@ -89,6 +91,7 @@ double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, do
 // is the previous dominant eigenvector.
 LobeDiagram computeSdmLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,
                             const SdmOptions& options, const JobControl& control) {
+  clearUpperVectorState();
   validate(setup, speeds_rev_per_s, options);
   LobeDiagram out;
   out.delta_per_s = options.delta_per_s;

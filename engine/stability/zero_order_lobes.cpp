@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "model/cutting_force.h"
+#include "model/vector_state.h"
 #include "stability/lobe_envelope.h"
 
 namespace mx {
@@ -175,6 +176,7 @@ void validate(const MillingSetup& setup, const std::vector<double>& speeds, doub
 
 LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds,
                             const ZoaOptions& options, const JobControl& control) {
+  clearUpperVectorState();
   LobeDiagram out;
   out.delta_per_s = options.delta_per_s;
   out.speed_rev_per_s = speeds;

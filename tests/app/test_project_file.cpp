@@ -127,7 +127,7 @@ class TestProjectFile : public QObject {
     QCOMPARE(p.expert->alpha, 0.95);
     QCOMPARE(p.expert->c, (std::vector<double>{0.2, 0.725, 0.075}));
     QCOMPARE(p.expert->cr, (std::vector<double>{0.8, 0.1, 0.1}));
-    QCOMPARE(p.expert->grid->speed_to_rpm, 12000.0);
+    QCOMPARE(p.expert->grid->speed_to_rpm, 6000.0);
     QCOMPARE(p.expert->grid->depth_divisions, 10);
     QCOMPARE(p.expert->grid->feed_step_mm, 0.01);
     QVERIFY(p.findTool("R1") == &p.tools[0]);

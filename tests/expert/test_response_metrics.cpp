@@ -23,24 +23,25 @@ class TestResponseMetrics : public QObject {
   // q* of the example: stable, settles within a few tooth periods, no malfunction.
   void stablePoint() {
     const ResponseMetrics m = run(5800.0, 0.5048, 0.27);
-    QVERIFY(!m.chatter);
-    QVERIFY(!m.malfunction());
-    QVERIFY(m.settling_time_s > 0.0);
-    QVERIFY(m.settling_time_s < 0.05);  // 60 revolutions last 0.62 s; the modes decay at >= 148 1/s
-    QVERIFY(m.overshoot >= 0.0 && m.overshoot < 1.0);
-    QVERIFY(m.r12h > 0.0 && m.r12h < 2.0);
-    QVERIFY(m.r1ch < 0.05);  // the non-harmonic content of a stable cut is a decayed transient
     qInfo("stable: t_s = %.4f s, M_p = %.4f, R12h = %.4f, R1ch = %.2e", m.settling_time_s, m.overshoot, m.r12h,
           m.r1ch);
+    QVERIFY(!m.chatter);
+    QVERIFY(!m.malfunction());
+        QVERIFY(m.settling_time_s <= 2.0 / 290.0);  // within two tooth periods (0 here: within 5 % from the first)
+    QVERIFY(m.overshoot >= 0.0 && m.overshoot < 0.05);
+    QVERIFY(m.r12h > 0.0 && m.r12h < 2.0);
+    QVERIFY(m.r1ch < 0.05);  // the non-harmonic content of a stable cut is a decayed transient
   }
 
   // Above the lobe minimum near 4786 rpm: chatter, the chatter peak dominates the harmonics.
   void chatteringPoint() {
     const ResponseMetrics m = run(4800.0, 1.5, 0.1);
+    qInfo("chatter: t_s = %.4f s, M_p = %.4f, R12h = %.4f, R1ch = %.2e", m.settling_time_s, m.overshoot, m.r12h,
+          m.r1ch);
     QVERIFY(m.chatter);
     QVERIFY(m.malfunction());
     QVERIFY(m.r1ch > 1.0);
-    // the stable cut's settling time is shorter than the chattering one's (which never settles)
+    QVERIFY(m.settling_time_s > 0.5);  // never settles within the 0.75 s run
     QVERIFY(run(5800.0, 0.3, 0.1).r1ch < m.r1ch);
   }
 };

@@ -160,7 +160,10 @@ class TestToolLibraryEditor : public QObject {
     doc.load(kRubio);
     ToolLibraryEditor editor;
     wire(editor, doc);
+    QSignalSpy selected(&editor, &ToolLibraryEditor::toolSelected);
     editor.addTool();
+    QCOMPARE(selected.count(), 1);  // straight to the new tool, no transient "" on the model reset
+    QCOMPARE(selected.at(0).at(0).toString(), QString("T1"));
     QCOMPARE(doc.project().tools.size(), std::size_t{3});
     QCOMPARE(doc.project().tools[2].id, QString("T1"));
     QCOMPARE(editor.currentToolId(), QString("T1"));
