@@ -5,7 +5,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   qt6-base-dev qt6-base-dev-tools libqt6sql6-sqlite libqt6svg6-dev
   libqcustomplot-dev libeigen3-dev libsundials-dev libfftw3-dev
-  libbenchmark-dev xvfb xauth x11-apps fonts-dejavu-core
+  libbenchmark-dev xvfb xauth x11-apps fonts-dejavu-core poppler-utils
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -73,9 +73,38 @@ void LobeChartView::clear() {
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
+QVector<double> LobeChartView::scaled(const QVector<double>& mm) const {
+  QVector<double> out(mm);
+  for (double& v : out) v *= scale_;
+  return out;
+}
+
+void LobeChartView::setLengthUnit(double display_per_mm, const QString& suffix) {
+  if (display_per_mm == scale_ && suffix == unit_) return;
+  const double ratio = display_per_mm / scale_;
+  const QCPRange y = plot_->yAxis->range();
+  scale_ = display_per_mm;
+  unit_ = suffix;
+  plot_->yAxis->setLabel(QString("Axial depth of cut b [%1]").arg(unit_));
+  const QVector<ToolLobeSeries> series = series_;
+  const QVector<double> power = power_mm_;
+  const QString power_label = power_graph_ ? power_graph_->name() : QString();
+  const QCPRange x = plot_->xAxis->range();
+  setSeries(series, delta_, alpha_);
+  setPowerLimit(power, power_label);
+  plot_->xAxis->setRange(x);
+  plot_->yAxis->setRange(y.lower * ratio, y.upper * ratio);
+  for (QCPAbstractItem* item : extra_markers_)
+    if (auto* tracer = qobject_cast<QCPItemTracer*>(item))
+      tracer->position->setCoords(tracer->position->coords().x(), tracer->position->coords().y() * ratio);
+  if (marker_->visible()) setOperatingPoint(point_rpm_, point_mm_, verdict_);
+}
+
 void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha) {
   clear();
   series_ = series;
+  delta_ = delta_per_s;
+  alpha_ = alpha;
   // Region fills first so that the curves are drawn over them.
   unstable_top_ = plot_->addGraph();
   unstable_top_->removeFromLegend();
@@ -95,11 +124,11 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
     QCPGraph* nominal = plot_->addGraph();
     nominal->setName(QString("%1 nominal (\u03b4 = 0, \u03b1 = 1)").arg(s.tool_id));
     nominal->setPen(QPen(toolColor(i), 2.0));
-    nominal->setData(s.speed_rpm, s.nominal_mm, true);
+    nominal->setData(s.speed_rpm, scaled(s.nominal_mm), true);
     QCPGraph* margined = plot_->addGraph();
     margined->setName(QString("%1 margined (\u03b4 = %2 1/s, \u03b1 = %3)").arg(s.tool_id).arg(delta_per_s).arg(alpha));
     margined->setPen(QPen(toolColor(i), 1.5, Qt::DashLine));
-    margined->setData(s.speed_rpm, s.margined_mm, true);
+    margined->setData(s.speed_rpm, scaled(s.margined_mm), true);
     double lowest = std::numeric_limits<double>::infinity();
     for (double b : s.nominal_mm)
       if (std::isfinite(b)) {
@@ -160,15 +189,15 @@ void LobeChartView::updateRegions() {
       admissible.push_back(allowed);
     }
   }
-  unstable_top_->setData(x, top, true);
-  unstable_fill_->setData(x, unstable, true);
-  admissible_fill_->setData(x, admissible, true);
-  if (power_graph_ && active_ >= 0 && power_mm_.size() == x.size()) power_graph_->setData(x, power_mm_, true);
+  unstable_top_->setData(x, scaled(top), true);
+  unstable_fill_->setData(x, scaled(unstable), true);
+  admissible_fill_->setData(x, scaled(admissible), true);
+  if (power_graph_ && active_ >= 0 && power_mm_.size() == x.size()) power_graph_->setData(x, scaled(power_mm_), true);
 }
 
 void LobeChartView::resetView() {
   plot_->xAxis->setRange(home_x0_, home_x1_);
-  plot_->yAxis->setRange(0.0, home_y1_);
+  plot_->yAxis->setRange(0.0, home_y1_ * scale_);
   plot_->replot(QCustomPlot::rpQueuedReplot);
   emit viewReset();
 }
@@ -181,12 +210,14 @@ void LobeChartView::setSnapGrid(double speed_step_rpm, double depth_step_mm) {
 void LobeChartView::setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict) {
   point_rpm_ = speed_rpm;
   point_mm_ = depth_mm;
+  verdict_ = verdict;
   const QColor c = verdictColor(verdict);
-  marker_->position->setCoords(speed_rpm, depth_mm);
+  marker_->position->setCoords(speed_rpm, depth_mm * scale_);
   marker_->setPen(QPen(c.darker(130), 2.0));
   marker_->setBrush(c);
   marker_->setVisible(true);
-  marker_label_->setText(QString("%1 rpm, %2 mm").arg(speed_rpm, 0, 'f', 0).arg(depth_mm, 0, 'f', 3));
+  marker_label_->setText(
+      QString("%1 rpm, %2 %3").arg(speed_rpm, 0, 'f', 0).arg(depth_mm * scale_, 0, 'f', scale_ == 1.0 ? 3 : 4).arg(unit_));
   marker_label_->setColor(c.darker(150));
   marker_label_->setVisible(true);
   replotOverlay();
@@ -198,7 +229,7 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   tracer->setStyle(QCPItemTracer::tsSquare);
   tracer->setSize(10);
   tracer->setPen(QPen(color, 2.0));
-  tracer->position->setCoords(speed_rpm, depth_mm);
+  tracer->position->setCoords(speed_rpm, depth_mm * scale_);
   auto* text = new QCPItemText(plot_);
   text->setLayer("overlay");
   text->position->setParentAnchor(tracer->position);
@@ -224,7 +255,7 @@ void LobeChartView::replotOverlay() {
 }
 
 QPoint LobeChartView::pixelFor(double speed_rpm, double depth_mm) const {
-  return QPoint(qRound(plot_->xAxis->coordToPixel(speed_rpm)), qRound(plot_->yAxis->coordToPixel(depth_mm)));
+  return QPoint(qRound(plot_->xAxis->coordToPixel(speed_rpm)), qRound(plot_->yAxis->coordToPixel(depth_mm * scale_)));
 }
 
 void LobeChartView::movePointTo(double speed_rpm, double depth_mm, bool snap) {
@@ -250,7 +281,7 @@ void LobeChartView::onMousePress(QMouseEvent* event) {
   }
   if (event->button() != Qt::LeftButton || !plot_->axisRect()->rect().contains(p.toPoint())) return;
   dragging_ = true;
-  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()),
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_,
               event->modifiers() & Qt::ShiftModifier);
   emit pointDragged(point_rpm_, point_mm_);
 }
@@ -268,7 +299,7 @@ void LobeChartView::onMouseMove(QMouseEvent* event) {
     return;
   }
   if (!dragging_) return;
-  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()),
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_,
               event->modifiers() & Qt::ShiftModifier);
   emit pointDragged(point_rpm_, point_mm_);
 }
@@ -286,7 +317,7 @@ void LobeChartView::onMouseRelease(QMouseEvent* event) {
 void LobeChartView::keyPressEvent(QKeyEvent* event) {
   const bool snap = event->modifiers() & Qt::ShiftModifier;
   const double step_rpm = snap ? snap_rpm_ : plot_->xAxis->range().size() / 200.0;
-  const double step_mm = snap ? snap_mm_ : plot_->yAxis->range().size() / 200.0;
+  const double step_mm = snap ? snap_mm_ : plot_->yAxis->range().size() / scale_ / 200.0;
   double n = point_rpm_, b = point_mm_;
   switch (event->key()) {
     case Qt::Key_Left: n -= step_rpm; break;

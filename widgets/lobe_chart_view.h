@@ -39,6 +39,9 @@ class LobeChartView : public QWidget {
   void setPowerLimit(const QVector<double>& depth_mm, const QString& label);
   void setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict);
   void setSnapGrid(double speed_step_rpm, double depth_step_mm);
+  // Display unit of the depth axis: value shown per mm (1 for mm, 1/25.4 for inch). Signals and
+  // setters stay in mm.
+  void setLengthUnit(double display_per_mm, const QString& suffix);
   void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color);  // q*, q**
   void clearMarkers();
   void clear();
@@ -83,7 +86,12 @@ class LobeChartView : public QWidget {
   bool dragging_ = false, panning_ = false;
   QPoint pan_start_;
   double pan_x0_ = 0.0, pan_x1_ = 0.0, pan_y0_ = 0.0, pan_y1_ = 0.0;
-  double home_x0_ = 0.0, home_x1_ = 1.0, home_y1_ = 1.0;
+  double home_x0_ = 0.0, home_x1_ = 1.0, home_y1_ = 1.0;  // y in mm
+  double scale_ = 1.0;                                    // display units per mm
+  QString unit_ = "mm";
+  QVector<double> scaled(const QVector<double>& mm) const;
+  double delta_ = 0.0, alpha_ = 1.0;
+  PointVerdict verdict_ = PointVerdict::Unknown;
 };
 
 }  // namespace mx::widgets

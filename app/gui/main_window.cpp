@@ -164,7 +164,12 @@ void MainWindow::onLobesReady(const LobeJobResult& result) {
   chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
   const int tool = std::max(0, evaluator_.toolIndex(active_tool_));
   chart_->setActiveTool(tool);
-  if (p.expert && p.expert->grid) chart_->setSnapGrid(p.expert->grid->speed_step_rpm, 0.0);
+  // Snap grid (Shift): the expert grid's speed step, and depth steps of b_min / depth_divisions.
+  double b_min = std::numeric_limits<double>::infinity();
+  for (double b : snapshot_->tools[static_cast<size_t>(tool)].margined.envelope_depth_m) b_min = std::min(b_min, b);
+  const int divisions = p.expert && p.expert->grid ? p.expert->grid->depth_divisions : 10;
+  chart_->setSnapGrid(p.expert && p.expert->grid ? p.expert->grid->speed_step_rpm : 100.0,
+                      std::isfinite(b_min) ? snapshot_->alpha * b_min * 1e3 / divisions : 0.0);
   if (doc_.point().speed_rpm <= 0.0) {
     // First lobes of this project: start in the middle of the range at half the limit there.
     const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;

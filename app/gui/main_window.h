@@ -41,6 +41,7 @@ class MainWindow : public QMainWindow {
   bool saveProject(const QString& path = {});
   const app::Project* project() const { return &doc_.project(); }
   ProjectDocument* document() { return &doc_; }
+  widgets::DisplayUnits* units() { return &units_; }
   widgets::LobeChartView* lobeChart() const { return chart_; }
   widgets::OperatingPointReadout* readout() const { return readout_; }
   widgets::ToolLibraryEditor* toolEditor() const { return tool_editor_; }

@@ -80,6 +80,8 @@ void MainWindow::buildDocks() {
   });
   connect(&units_, &widgets::DisplayUnits::changed, this, [this] {
     feed_spin_->setSuffix(QString(" %1/tooth").arg(units_.lengthSuffix()));
+    feed_spin_->setDecimals(units_.lengthDecimals());
+    chart_->setLengthUnit(units_.fromMm(1.0), units_.lengthSuffix());
     onPointChanged(doc_.point());
   });
 }

@@ -94,6 +94,25 @@ class TestMainWindow : public QObject {
     QVERIFY(std::abs(window.document()->point().speed_rpm - 4200.0) > 30.0);
   }
 
+  // Inch display: the chart and readouts convert; the document stays in mm.
+  void inchUnitsOnChartAndReadouts() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.resize(1400, 900);
+    window.show();
+    QSignalSpy shown(&window, &gui::MainWindow::lobesShown);
+    QVERIFY(window.openProject(kRubio));
+    QVERIFY(shown.wait(20000));
+    window.units()->setLength(widgets::DisplayUnits::Length::Inch);
+    QWidget* plot = window.lobeChart()->plotWidget();
+    const QPoint at = window.lobeChart()->pixelFor(4000.0, 0.5);
+    QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, at);
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, at);
+    QVERIFY(std::abs(window.document()->point().depth_mm - 0.5) < 0.01);
+    QVERIFY(window.readout()->text("depth").endsWith(" in"));
+    QCOMPARE_LE(std::abs(readoutNumber(window, "depth") - window.document()->point().depth_mm / 25.4), 1e-5);
+  }
+
   void saveThenReopenIsIdentical() {
     QTemporaryDir dir;
     const QString path = copyToTemp(dir, kRubio);
