@@ -1,5 +1,7 @@
 #include "lobe_chart_view.h"
 
+#include "cost_map_layer.h"
+
 #include <QKeyEvent>
 #include <QPainter>
 #include <QSvgGenerator>
@@ -26,7 +28,8 @@ QColor verdictColor(PointVerdict v) {
 }
 }  // namespace
 
-LobeChartView::LobeChartView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)) {
+LobeChartView::LobeChartView(QWidget* parent)
+    : QWidget(parent), plot_(new QCustomPlot(this)), costs_(new CostMapLayer(plot_)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
@@ -57,6 +60,23 @@ LobeChartView::LobeChartView(QWidget* parent) : QWidget(parent), plot_(new QCust
   connect(plot_, &QCustomPlot::mouseRelease, this, &LobeChartView::onMouseRelease);
 }
 
+LobeChartView::~LobeChartView() { delete costs_; }
+
+void LobeChartView::setCostMap(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm,
+                               const QVector<double>& cost) {
+  map_speeds_ = speeds_rpm, map_depths_mm_ = depths_mm, map_cost_ = cost;
+  costs_->setCostMap(speeds_rpm, scaled(depths_mm), cost);
+}
+
+void LobeChartView::setGridPoints(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm) {
+  grid_speeds_ = speeds_rpm, grid_depths_mm_ = depths_mm;
+  costs_->setGridPoints(speeds_rpm, scaled(depths_mm));
+}
+
+void LobeChartView::setCostMapVisible(bool visible) { costs_->setCostMapVisible(visible); }
+void LobeChartView::setGridVisible(bool visible) { costs_->setGridVisible(visible); }
+int LobeChartView::costCellCount() const { return costs_->costCellCount(); }
+
 QColor LobeChartView::toolColor(int index) {
   static const QColor palette[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),
                                    QColor(148, 103, 189), QColor(255, 127, 14), QColor(23, 190, 207)};
@@ -68,6 +88,7 @@ QWidget* LobeChartView::plotWidget() const { return plot_; }
 void LobeChartView::clear() {
   series_.clear();
   power_mm_.clear();
+  costs_->clear();
   plot_->clearGraphs();
   unstable_top_ = unstable_fill_ = admissible_fill_ = power_graph_ = nullptr;
   plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -148,6 +169,8 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
   if (active_ >= series.size()) active_ = series.isEmpty() ? -1 : 0;
   if (active_ < 0 && !series.isEmpty()) active_ = 0;
   updateRegions();
+  if (!map_cost_.isEmpty()) costs_->setCostMap(map_speeds_, scaled(map_depths_mm_), map_cost_);
+  if (!grid_speeds_.isEmpty()) costs_->setGridPoints(grid_speeds_, scaled(grid_depths_mm_));
   resetView();
 }
 

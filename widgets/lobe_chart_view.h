@@ -19,6 +19,8 @@ class QMouseEvent;
 
 namespace mx::widgets {
 
+class CostMapLayer;
+
 struct ToolLobeSeries {
   QString tool_id;
   QVector<double> speed_rpm;
@@ -32,6 +34,7 @@ class LobeChartView : public QWidget {
   Q_OBJECT
  public:
   explicit LobeChartView(QWidget* parent = nullptr);
+  ~LobeChartView() override;
 
   void setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha);
   void setActiveTool(int index);  // whose unstable region is shaded; -1 = none
@@ -44,6 +47,13 @@ class LobeChartView : public QWidget {
   void setLengthUnit(double display_per_mm, const QString& suffix);
   void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color);  // q*, q**
   void clearMarkers();
+  // Expert overlays (issue 4): the cost heat map of the selected tool (cost[i * depths + j], NaN =
+  // not admissible) and the admissible grid points; lengths in mm.
+  void setCostMap(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm, const QVector<double>& cost);
+  void setGridPoints(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm);
+  void setCostMapVisible(bool visible);
+  void setGridVisible(bool visible);
+  int costCellCount() const;
   void clear();
   void resetView();
   bool saveImage(const QString& path, int width = 1600, int height = 900);  // .png, .svg or .pdf
@@ -71,6 +81,8 @@ class LobeChartView : public QWidget {
   void replotOverlay();
 
   QCustomPlot* plot_;
+  CostMapLayer* costs_;
+  QVector<double> map_speeds_, map_depths_mm_, map_cost_, grid_speeds_, grid_depths_mm_;
   QCPGraph* unstable_top_ = nullptr;
   QCPGraph* unstable_fill_ = nullptr;
   QCPGraph* admissible_fill_ = nullptr;

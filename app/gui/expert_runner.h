@@ -1,0 +1,62 @@
+#pragma once
+// The expert system behind the GUI (2006, section 3). On the engine thread: the ExpertSession (lobes
+// and admissible grids of every tool, once per project change) and the Rule 5-6 refinement
+// (time-domain simulations, cached). On the GUI thread: re-ranking after a weight change, which is a
+// pass over the session's cached arrays (milliseconds; nothing recomputed).
+#include <QObject>
+#include <QStringList>
+#include <QThreadPool>
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "expert/expert_session.h"
+
+namespace mx::gui {
+
+struct ExpertOutcome {
+  quint64 generation = 0;
+  std::shared_ptr<ExpertSession> session;  // null on error
+  QStringList tool_ids;
+  QString error;
+};
+
+struct RefinementOutcome {
+  quint64 generation = 0;
+  std::optional<ExpertResult> result;  // Rules 4-6 with simulation
+  QString error;
+};
+
+class ExpertRunner : public QObject {
+  Q_OBJECT
+ public:
+  ExpertRunner(QThreadPool* engine_pool, QObject* parent = nullptr);
+
+  // Builds a session for these tools and settings on the engine thread (cancels nothing: the
+  // session build is not interruptible, but a stale result is dropped).
+  quint64 build(std::vector<MillingSetup> tools, const ExpertSettings& settings, const QStringList& tool_ids);
+  // Rules 4-6 with simulations for the current session and weights, on the engine thread.
+  quint64 refine(const CostWeights& weights);
+
+  const std::shared_ptr<ExpertSession>& session() const { return session_; }
+  const QStringList& toolIds() const { return tool_ids_; }
+  // Rule 4 on the GUI thread from the cached session; nullopt without a session or admissible point.
+  std::optional<Ranking> rank(const std::array<double, 3>& c) const;
+
+ signals:
+  void sessionReady(const QString& error);  // "" on success
+  void refined(const mx::gui::RefinementOutcome& outcome);
+  void busyChanged(bool busy);
+
+ private:
+  QThreadPool* pool_;
+  std::shared_ptr<ExpertSession> session_;
+  QStringList tool_ids_;
+  quint64 build_generation_ = 0;
+  quint64 refine_generation_ = 0;
+  int running_ = 0;
+};
+
+}  // namespace mx::gui
+
+Q_DECLARE_METATYPE(mx::gui::RefinementOutcome)

@@ -1,0 +1,46 @@
+#pragma once
+// The expert report as HTML, built from ReportData: numbered sections, numbered tables with captions
+// and units in the column heads, numbered figures with captions, and a footer line (MillExpert version
+// and date). Two flavours of the same content:
+//   Browser   tables carry a <caption> (for the .html file);
+//   RichText  QTextDocument has no <caption>: each caption is a paragraph right above its table (PDF).
+// Image sources are supplied by the caller (relative file, data: URI or resource name).
+#include <QString>
+#include <QStringList>
+#include <functional>
+
+#include "report_data.h"
+
+namespace mx::gui {
+
+enum class ReportFlavour { Browser, RichText };
+
+class ReportBuilder {
+ public:
+  using ImageSource = std::function<QString(const QString& image_path)>;
+
+  ReportBuilder(const ReportData& data, ReportFlavour flavour, ImageSource source);
+
+  QString html() const;    // a complete document
+  QString footer() const;  // "MillExpert <version> · generated <date> · <project file>"
+
+  // Number formats of the report (C locale; "—" for non-finite values). The test compares against them.
+  static QString formatCost(double cost);                   // 4 decimals
+  static QString formatNumber(double value, int decimals);
+
+ private:
+  QString table(const QString& caption, const QStringList& head, const QList<QStringList>& rows) const;
+  QString figure(const QString& image, const QString& caption) const;
+  QString projectSection() const;
+  QString rankingSection() const;
+  QString selectionSection() const;
+  QString figureSection() const;
+
+  const ReportData& d_;
+  ReportFlavour flavour_;
+  ImageSource source_;
+  mutable int tables_ = 0;
+  mutable int figures_ = 0;
+};
+
+}  // namespace mx::gui
