@@ -56,7 +56,8 @@ void RankingTable::restoreCurrent() {
     return;
   }
   const QModelIndex index = model_->index(row, 0);
-  view_->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+  // select() only: setting the current index would scroll to it and force a relayout.
+  view_->selectionModel()->select(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
 }
 
 QVector<RankingRow> RankingTable::rowsFromRanking(const Ranking& ranking, const QStringList& tool_ids) {

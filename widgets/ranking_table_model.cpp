@@ -41,6 +41,27 @@ void RankingTableModel::setRanking(const QVector<RankingRow>& rows, const QStrin
     if (!rows_.isEmpty()) emit dataChanged(index(0, 0), index(int(rows_.size()) - 1, ColumnCount - 1));
     return;
   }
+  // The same tools in a new order (a re-rank): a layout change that moves the persistent indexes, so
+  // that views keep their selection and current row without a reset.
+  QVector<int> newRow(rows_.size(), -1);
+  bool permutation = rows.size() == rows_.size();
+  for (qsizetype i = 0; permutation && i < rows_.size(); ++i) {
+    for (qsizetype j = 0; j < rows.size(); ++j)
+      if (rows[j].tool == rows_[i].tool) newRow[i] = int(j);
+    permutation = newRow[i] >= 0;
+  }
+  if (permutation) {
+    emit layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
+    const QModelIndexList from = persistentIndexList();
+    QModelIndexList to;
+    to.reserve(from.size());
+    for (const QModelIndex& index : from) to.push_back(this->index(newRow[index.row()], index.column()));
+    rows_ = rows;
+    selected_ = selected_tool;
+    changePersistentIndexList(from, to);
+    emit layoutChanged({}, QAbstractItemModel::VerticalSortHint);
+    return;
+  }
   beginResetModel();
   rows_ = rows;
   selected_ = selected_tool;
@@ -145,7 +166,7 @@ QVariant RankingTableModel::headerData(int section, Qt::Orientation orientation,
       case Depth: return {tr("b* [%1]").arg(u), tr("Axial depth of cut of q*")};
       case Feed: return {tr("s_t* [%1/tooth]").arg(u), tr("Feed per tooth of q*")};
       case Power: return {tr("P [W]"), tr("Peak cutting power at q*")};
-      case Mrr: return {tr("MRR [%1\u00b3/min]").arg(u), tr("Material removal rate at q*")};
+      case Mrr: return {tr("MRR [%1/min]").arg(u + QStringLiteral("\u00b3")), tr("Material removal rate at q*")};
       case Dns: return {tr("\u0394N_s [rpm]"), tr("Spindle speed security change at q*: distance in speed to the lobes")};
       case TimeCost: return {tr("C_t [\u2013]"), tr("Time-response cost at q** (eq. 18); \u2014 until simulated")};
       case FrequencyCost: return {tr("C_f [\u2013]"), tr("Spectrum cost at q** (eq. 19); \u2014 until simulated")};

@@ -1,8 +1,9 @@
 #pragma once
 // Table model of the RankingTable: one row per RankingRow, in the given (rank) order. Display text
 // with units in the headers, raw values under ValueRole, the selected tool bold with a check mark.
-// setRanking() with the same tools in the same order only emits dataChanged (views keep their
-// selection); otherwise the model is reset.
+// setRanking() with the same tools in the same order only emits dataChanged; the same tools in another
+// order are a layout change (persistent indexes follow their tool, so views keep their selection);
+// a different set of tools resets the model.
 #include <QAbstractTableModel>
 #include <QIcon>
 #include <QPointer>

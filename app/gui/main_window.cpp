@@ -2,13 +2,16 @@
 
 #include <QCloseEvent>
 #include <QFile>
+#include <QJsonDocument>
 #include <QSettings>
 #include <limits>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <cmath>
 
+#include "expert_runner.h"
 #include "machine_operation_panel.h"
+#include "weights_panel.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
 #include "stability/lobe_diagram.h"
@@ -34,6 +37,7 @@ MainWindow::MainWindow(QWidget* parent)
   sim_runner_ = new SimulationRunner(engine_->pool(), this);
   readout_->setUnits(&units_);
   buildDocks();
+  buildExpertDocks();
   buildActions();
 
   progress_->setRange(0, 100);
@@ -51,6 +55,7 @@ MainWindow::MainWindow(QWidget* parent)
   recompute_timer_.setSingleShot(true);
   recompute_timer_.setInterval(120);
   connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recomputeLobes);
+  connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::rebuildExpert);
   connect(&doc_, &ProjectDocument::projectChanged, this, &MainWindow::onProjectChanged);
   connect(&doc_, &ProjectDocument::pointChanged, this, &MainWindow::onPointChanged);
   connect(&doc_, &ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
@@ -114,6 +119,21 @@ void MainWindow::onProjectChanged() {
   tool_combo_->setCurrentIndex(index >= 0 ? index : 0);
   tool_combo_->blockSignals(false);
   active_tool_ = tool_combo_->currentText();
+  // A change of the cost weights alone (a committed slider move, its undo) re-ranks from the cached
+  // session and re-runs Rules 5-6; lobes and grids are only recomputed when their inputs change.
+  QJsonObject json = app::projectToJson(p);
+  QJsonObject expert = json.value("expert").toObject();
+  for (const char* key : {"c", "cr", "ct", "cf"}) expert.remove(key);
+  json.insert("expert", expert);
+  const QByteArray inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);
+  if (inputs == engine_inputs_ && expert_->session()) {
+    const CostWeights w = projectWeightsOf(p);
+    weights_panel_->setWeights(w);
+    rerank(w);
+    expert_->refine(w);
+    return;
+  }
+  engine_inputs_ = inputs;
   recompute_timer_.start();
 }
 
@@ -187,6 +207,7 @@ void MainWindow::onLobesReady(const LobeJobResult& result) {
   status_engine_->setText(tr("Lobes: %1, %2 tool(s)")
                               .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))
                               .arg(snapshot_->tools.size()));
+  updateExpertOverlays();  // the chart was rebuilt: markers and heat map again
   emit lobesShown();
 }
 

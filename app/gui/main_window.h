@@ -13,6 +13,7 @@
 #include <QToolButton>
 
 #include "display_units.h"
+#include "expert/expert_session.h"
 #include "engine_runner.h"
 #include "lobe_chart_view.h"
 #include "operating_point_readout.h"
@@ -20,6 +21,8 @@
 #include "project_document.h"
 
 namespace mx::widgets {
+class RankingTable;
+class WeightsPanel;
 class ToolLibraryEditor;
 class MachineOperationPanel;
 class SimulationView;
@@ -28,7 +31,12 @@ class SimulationView;
 namespace mx::gui {
 
 class SimulationRunner;
+class ExpertRunner;
+struct RefinementOutcome;
 struct SimulationSummary;
+
+// The project's cost weights c, c_r, c_t, c_f (defaults where the project has none).
+CostWeights projectWeightsOf(const app::Project& project);
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -48,6 +56,9 @@ class MainWindow : public QMainWindow {
   widgets::SimulationView* simulationView() const { return sim_view_; }
   EngineRunner* engine() const { return engine_; }
   SimulationRunner* simulations() const { return sim_runner_; }
+  ExpertRunner* expert() const { return expert_; }
+  widgets::WeightsPanel* weightsPanel() const { return weights_panel_; }
+  widgets::RankingTable* rankingTable() const { return ranking_table_; }
   const PointEvaluator& evaluator() const { return evaluator_; }
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
@@ -56,6 +67,8 @@ class MainWindow : public QMainWindow {
 
  signals:
   void lobesShown();
+  void rankingShown();  // the ranking table was refreshed (after a weight change or a new session)
+  void refinementShown();  // q** (Rules 5-6) arrived
   void simulationFinished();
 
  protected:
@@ -75,6 +88,14 @@ class MainWindow : public QMainWindow {
   bool maybeSave();
   void onExportChart();
   void updateTitle();
+  // main_window_expert.cpp
+  void buildExpertDocks();
+  void rebuildExpert();
+  void onExpertSessionReady(const QString& error);
+  void rerank(const CostWeights& weights);
+  void onRefined(const RefinementOutcome& outcome);
+  void commitWeights(const CostWeights& weights);
+  void updateExpertOverlays();
   // main_window.cpp
   void onProjectChanged();
   void recomputeLobes();
@@ -94,6 +115,14 @@ class MainWindow : public QMainWindow {
   widgets::ToolLibraryEditor* tool_editor_ = nullptr;
   widgets::MachineOperationPanel* machine_panel_ = nullptr;
   widgets::SimulationView* sim_view_ = nullptr;
+  widgets::WeightsPanel* weights_panel_ = nullptr;
+  widgets::RankingTable* ranking_table_ = nullptr;
+  ExpertRunner* expert_ = nullptr;
+  CostWeights weights_;
+  std::optional<Ranking> ranking_;
+  std::optional<ExpertResult> refinement_;
+  bool show_cost_map_ = false, show_grid_ = false;
+  QByteArray engine_inputs_;  // the project minus the cost weights: a change of it needs new lobes
   EngineRunner* engine_;
   SimulationRunner* sim_runner_ = nullptr;
   PointEvaluator evaluator_;

@@ -130,6 +130,20 @@ void MainWindow::buildActions() {
       [this] { chart_->resetView(); }, true);
   add(view, tr("Simulate the &point"), QKeySequence(tr("F5")), tr("Run the time-domain simulation of the point"),
       [this] { startSimulation(); }, true);
+  QAction* heat = view->addAction(tr("Show tool-cost &heat map"));
+  heat->setCheckable(true);
+  heat->setToolTip(tr("Colour the (N, b) plane by the tool cost C (eq. 13) of the active tool"));
+  connect(heat, &QAction::toggled, this, [this](bool on) {
+    show_cost_map_ = on;
+    updateExpertOverlays();
+  });
+  QAction* grid = view->addAction(tr("Show admissible &grid"));
+  grid->setCheckable(true);
+  grid->setToolTip(tr("Show the admissible (N, b) grid points of the active tool"));
+  connect(grid, &QAction::toggled, this, [this](bool on) {
+    show_grid_ = on;
+    updateExpertOverlays();
+  });
   view->addSeparator();
   auto* units = new QActionGroup(this);
   QAction* mm = view->addAction(tr("Lengths in &mm"));

@@ -53,7 +53,7 @@ LobeFigureInput lobeFigure(const ReportData& d, const MillingSetup& setup) {
   double top_rpm = revPerSToRpm(grid.speed_to_rev_per_s);
   if (d.result.refinement) top_rpm = std::max(top_rpm, revPerSToRpm(d.result.refinement->chosen().q.speed_rev_per_s));
   std::vector<double> speeds;
-  for (double rpm = revPerSToRpm(grid.speed_from_rev_per_s); rpm <= top_rpm * 1.05 + 1e-9; rpm += kLobeStepRpm)
+  for (double rpm = revPerSToRpm(grid.speed_from_rev_per_s); rpm <= top_rpm * 1.15 + 1e-9; rpm += kLobeStepRpm)
     speeds.push_back(rpmToRevPerS(rpm));
   ZoaOptions nominal;
   nominal.max_depth_m = d.settings.stability.max_depth_m;

@@ -45,8 +45,8 @@ struct ReportOptions {
   std::optional<std::array<double, 3>> c;  // overrides the project's c (must lie on the simplex)
   QString image_dir;                        // existing directory for the figures
   double sweep_step = 0.025;
-  int image_width = 1600;
-  int image_height = 900;
+  int image_width = 1200;
+  int image_height = 675;
 };
 
 // Throws app::ProjectError (bad project), app::CliError (code 2: weights off the simplex; code 1: empty

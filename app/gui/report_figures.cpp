@@ -16,8 +16,8 @@ QFont plotFont(int point_size) { return QFont("DejaVu Sans", point_size); }
 
 void styleAxes(QCPAxisRect* rect) {
   for (QCPAxis* axis : rect->axes()) {
-    axis->setLabelFont(plotFont(12));
-    axis->setTickLabelFont(plotFont(11));
+    axis->setLabelFont(plotFont(14));
+    axis->setTickLabelFont(plotFont(13));
   }
 }
 
@@ -30,37 +30,38 @@ QCPGraph* addCurve(QCustomPlot& plot, QCPAxisRect* rect, const QVector<double>& 
   return graph;
 }
 
-QCPLegend* addLegend(QCustomPlot& plot, QCPAxisRect* rect) {
+QCPLegend* addLegend(QCPAxisRect* rect) {
   auto* legend = new QCPLegend;
   rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
   legend->setLayer("legend");
-  legend->setFont(plotFont(10));
+  legend->setFont(plotFont(12));
   legend->setBrush(QColor(255, 255, 255, 220));
-  (void)plot;
   return legend;
 }
 
 }  // namespace
 
 bool ReportFigureRenderer::renderLobes(const LobeFigureInput& in, const QString& path) const {
+  // The chart uses the widget font: render it smaller than the other figures so that its text is legible
+  // once scaled to the page width.
+  const int width = width_ * 4 / 5, height = height_ * 4 / 5;
   widgets::LobeChartView view;
-  view.resize(width_, height_);
+  view.resize(width, height);
   view.setSeries({in.series}, in.delta_per_s, in.alpha);
   view.setActiveTool(0);
+  if (auto* plot = qobject_cast<QCustomPlot*>(view.plotWidget())) plot->replot();  // paint buffers for the overlay
   if (!in.power_limit_mm.isEmpty()) view.setPowerLimit(in.power_limit_mm, in.power_limit_label);
-  view.setMarker(QString("q* (%1 rpm, %2 mm)").arg(in.q_star_rpm, 0, 'f', 0).arg(in.q_star_mm, 0, 'f', 3),
-                 in.q_star_rpm, in.q_star_mm, QColor(0, 90, 200));
+  view.setMarker("q*", in.q_star_rpm, in.q_star_mm, QColor(0, 90, 200));
   if (in.has_q_star_star)
-    view.setMarker(QString("q** (%1 rpm, %2 mm)").arg(in.q_star_star_rpm, 0, 'f', 0).arg(in.q_star_star_mm, 0, 'f', 3),
-                   in.q_star_star_rpm, in.q_star_star_mm, QColor(200, 60, 0));
-  return view.saveImage(path, width_, height_);
+    view.setMarker("q**", in.q_star_star_rpm, in.q_star_star_mm, QColor(200, 60, 0));
+  return view.saveImage(path, width, height);
 }
 
 bool ReportFigureRenderer::renderSimulation(const SimulationTrace& trace, double power_limit_w, const QString& title,
                                             const QString& path) const {
   QCustomPlot plot;
   plot.plotLayout()->clear();
-  auto* heading = new QCPTextElement(&plot, title, plotFont(13));
+  auto* heading = new QCPTextElement(&plot, title, plotFont(15));
   plot.plotLayout()->addElement(0, 0, heading);
   QVector<QCPAxisRect*> rects;
   for (int row = 0; row < 3; ++row) {
@@ -93,7 +94,7 @@ bool ReportFigureRenderer::renderSimulation(const SimulationTrace& trace, double
   for (int row = 0; row < 3; ++row) {
     rects[row]->axis(QCPAxis::atLeft)->setLabel(labels[row]);
     rects[row]->axis(QCPAxis::atBottom)->setLabel(row == 2 ? "Time t [ms]" : "");
-    QCPLegend* legend = addLegend(plot, rects[row]);
+    QCPLegend* legend = addLegend(rects[row]);
     for (int g = 0; g < plot.graphCount(); ++g)
       if (plot.graph(g)->valueAxis() == rects[row]->axis(QCPAxis::atLeft)) legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(g)));
   }
@@ -103,14 +104,14 @@ bool ReportFigureRenderer::renderSimulation(const SimulationTrace& trace, double
     const QCPRange r = value->range();
     value->setRange(r.lower - 0.05 * r.size(), r.upper + 0.25 * r.size());  // room for the legend
   }
-  return plot.savePng(path, width_, static_cast<int>(height_ * 1.25));
+  return plot.savePng(path, width_, static_cast<int>(height_ * 1.4));
 }
 
 bool ReportFigureRenderer::renderSweep(const SweepFigureInput& in, const QString& path) const {
   QCustomPlot plot;
   styleAxes(plot.axisRect());
   plot.legend->setVisible(true);
-  plot.legend->setFont(plotFont(11));
+  plot.legend->setFont(plotFont(13));
   plot.axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
   QVector<double> x(in.c1.begin(), in.c1.end());
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;

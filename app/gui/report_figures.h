@@ -35,7 +35,7 @@ struct SweepFigureInput {
 
 class ReportFigureRenderer {
  public:
-  explicit ReportFigureRenderer(int width = 1600, int height = 900) : width_(width), height_(height) {}
+  explicit ReportFigureRenderer(int width = 1200, int height = 675) : width_(width), height_(height) {}
 
   bool renderLobes(const LobeFigureInput& input, const QString& path) const;
   // Displacement x, y [µm], resultant force [N] and power [W] (with the spindle limit, if finite)

@@ -144,8 +144,8 @@ class TestWeightsPanel : public QObject {
     QVERIFY(std::abs(panel.weights().cr[1] - 0.25) <= 1e-12);
     QVERIFY(std::abs(panel.weights().cr[2] - 0.25) <= 1e-12);
     panel.spinBox(Group::Resultant, 2)->setValue(0.9);
-    QVERIFY(std::abs(panel.weights().cr[0] - 0.05) <= 1e-12);
-    QVERIFY(std::abs(panel.weights().cr[1] - 0.05) <= 1e-12);
+    QVERIFY(std::abs(panel.weights().cr[0] - 0.1 * 2.0 / 3.0) <= 1e-12);  // 0.5 : 0.25 kept
+    QVERIFY(std::abs(panel.weights().cr[1] - 0.1 / 3.0) <= 1e-12);
     panel.slider(Group::Time, 1)->setValue(800);
     QCOMPARE(panel.weights().ct[1], 0.8);
     QVERIFY(std::abs(panel.weights().ct[0] - 0.2) <= 1e-15);

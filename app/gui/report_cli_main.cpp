@@ -1,0 +1,91 @@
+// millexpert-report: the expert report of a project as PDF and/or HTML, without the GUI.
+//   millexpert-report PROJECT [--pdf OUT.pdf] [--html OUT.html] [--embed-images] [--c c1,c2,c3]
+// Runs the expert system with simulation (Rules 4-6), the figure 4 sweep at the c3 in use, renders
+// the figures offscreen and writes the report (ReportWriter). Exit codes as millexpert-cli:
+// 0 ok; 1 computation failed (e.g. empty admissible space) or a file cannot be written;
+// 2 bad input (arguments, weights off the simplex, bad project).
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <clocale>
+
+#include "cli/cli_application.h"
+#include "cli/cli_support.h"
+#include "cli/expert_request.h"
+#include "model/job_control.h"
+#include "project/project.h"
+#include "report_data.h"
+#include "report_writer.h"
+
+namespace {
+
+int fail(const QString& message, int code) {
+  QTextStream(stderr) << "millexpert-report: " << message << Qt::endl;
+  return code;
+}
+
+int run(const QApplication& app) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Write the expert report (ranking, q*, q**, cost terms, figures) of a project.");
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument("project", "The .mxproj project file.");
+  parser.addOptions({
+      {"pdf", "Write the report as PDF (A4).", "OUT.pdf"},
+      {"html", "Write the report as HTML; figures in the sibling folder OUT_files/.", "OUT.html"},
+      {"embed-images", "HTML: embed the figures as data: URIs instead of the sibling folder."},
+      {"c", "Tool-cost weights c1,c2,c3 (power, MRR, Delta N_s); sum 1. Default: the project's.", "C1,C2,C3"},
+  });
+  if (!parser.parse(app.arguments())) return fail(parser.errorText(), mx::app::kExitBadInput);
+  if (parser.isSet("help")) {
+    QTextStream(stdout) << parser.helpText();
+    return mx::app::kExitOk;
+  }
+  if (parser.isSet("version")) {
+    QTextStream(stdout) << "millexpert-report " << QCoreApplication::applicationVersion() << Qt::endl;
+    return mx::app::kExitOk;
+  }
+  const QStringList positional = parser.positionalArguments();
+  if (positional.size() != 1) return fail("expected exactly one PROJECT argument", mx::app::kExitBadInput);
+  if (!parser.isSet("pdf") && !parser.isSet("html")) return fail("nothing to write: give --pdf and/or --html", mx::app::kExitBadInput);
+
+  mx::gui::ReportOptions options;
+  if (parser.isSet("c")) {
+    const std::vector<double> c = mx::app::parseWeightList("c", parser.value("c"), 3);
+    options.c = std::array<double, 3>{c[0], c[1], c[2]};
+  }
+  QTemporaryDir work;
+  if (!work.isValid()) return fail("cannot create a temporary folder for the figures", mx::app::kExitComputationFailed);
+  options.image_dir = work.path();
+  const mx::gui::ReportData data = mx::gui::collectReportData(positional.front(), options);
+  const mx::gui::ReportWriter writer(data);
+  if (parser.isSet("html"))
+    writer.writeHtml(parser.value("html"),
+                     parser.isSet("embed-images") ? mx::gui::HtmlImages::Embedded : mx::gui::HtmlImages::SiblingFolder);
+  if (parser.isSet("pdf")) writer.writePdf(parser.value("pdf"));
+  return mx::app::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");  // batch tool
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("millexpert-report");
+#ifdef MX_VERSION
+  QApplication::setApplicationVersion(MX_VERSION);
+#endif
+  std::setlocale(LC_NUMERIC, "C");
+  try {
+    return run(app);
+  } catch (const mx::app::CliError& e) {
+    return fail(QString::fromStdString(e.what()), e.code);
+  } catch (const mx::app::ProjectError& e) {
+    return fail(QString::fromStdString(e.what()), e.exitCode());
+  } catch (const mx::InvalidInput& e) {
+    return fail(QString::fromStdString(e.what()), mx::app::kExitBadInput);
+  } catch (const std::exception& e) {
+    return fail(QString::fromStdString(e.what()), mx::app::kExitComputationFailed);
+  }
+}

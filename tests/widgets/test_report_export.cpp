@@ -1,0 +1,151 @@
+// The expert report (issue 4, "Report export"): built for the Rubio 2006 project, the HTML has real
+// tables with captions and the three figures as PNG files; the PDF, turned into text by pdftotext
+// (poppler-utils), names the project, the tools, q* with units, the sections and captions, and the
+// minimum cost of R1 as the engine computes it. millexpert-report refuses bad weights with exit 2.
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <memory>
+
+#include "cli/expert_request.h"
+#include "expert/expert_session.h"
+#include "project/project.h"
+#include "report_builder.h"
+#include "report_data.h"
+#include "report_writer.h"
+#include "test_main.h"
+
+using namespace mx::gui;
+
+namespace {
+
+const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+
+QString readText(const QString& path) {
+  QFile file(path);
+  return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+}
+
+bool isPng(const QString& path) {
+  QFile file(path);
+  return file.open(QIODevice::ReadOnly) && file.size() > 100 && file.read(8) == QByteArray("\x89PNG\r\n\x1a\n", 8);
+}
+
+QString reportExecutable() { return QFileInfo(MX_CLI_PATH).absoluteDir().filePath("gui/millexpert-report"); }
+
+}  // namespace
+
+class TestReportExport : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QVERIFY(dir_.isValid());
+    QVERIFY(QDir(dir_.path()).mkpath("work"));
+    ReportOptions options;
+    options.image_dir = dir_.filePath("work");
+    data_ = std::make_unique<ReportData>(collectReportData(kRubio, options));
+    html_ = dir_.filePath("report.html");
+    pdf_ = dir_.filePath("report.pdf");
+    const ReportWriter writer(*data_);
+    writer.writeHtml(html_);
+    writer.writePdf(pdf_);
+    QVERIFY(QFileInfo(pdf_).size() > 1000);
+  }
+
+  void htmlHasTablesCaptionsAndFigures() {
+    const QString html = readText(html_);
+    QVERIFY(html.contains("<table"));
+    QVERIFY(html.count("<caption>") >= 5);
+    QVERIFY(html.contains("<caption>Table 4. Ranking"));
+    QVERIFY(html.contains("[rpm]") && html.contains("[mm/tooth]") && html.contains("[W]"));
+    QVERIFY(html.contains("MillExpert " + data_->version));
+    const QRegularExpression img("<img src=\"([^\"]+)\"");
+    QStringList sources;
+    for (auto it = img.globalMatch(html); it.hasNext();) sources << it.next().captured(1);
+    QCOMPARE(sources.size(), 3);
+    for (const QString& src : sources) {
+      const QString file = QFileInfo(html_).dir().filePath(src);
+      QVERIFY2(QFileInfo(file).isRelative() == false && isPng(file), qPrintable(file + ": missing or not a PNG"));
+      QVERIFY2(file.startsWith(ReportWriter::imageFolder(html_)), qPrintable(file));
+    }
+    for (const char* figure : {"Figure 1.", "Figure 2.", "Figure 3."}) QVERIFY(html.contains(figure));
+  }
+
+  void embeddedHtmlIsSelfContained() {
+    const QString path = dir_.filePath("embedded.html");
+    ReportWriter(*data_).writeHtml(path, HtmlImages::Embedded);
+    const QString html = readText(path);
+    QCOMPARE(html.count("<img src=\"data:image/png;base64,"), 3);
+    QVERIFY(!QFileInfo::exists(ReportWriter::imageFolder(path)));
+  }
+
+  void pdfTextHasTheContent() {
+    const QString pdftotext = QStandardPaths::findExecutable("pdftotext");
+    if (pdftotext.isEmpty())
+      QSKIP("pdftotext not found: install poppler-utils (packaging/bootstrap.sh does) to check the PDF text");
+    QProcess process;
+    process.start(pdftotext, {"-layout", pdf_, "-"});
+    QVERIFY(process.waitForFinished(30000));
+    QCOMPARE(process.exitCode(), 0);
+    const QString text = QString::fromUtf8(process.readAllStandardOutput());
+
+    // Expected values straight from the engine.
+    const mx::app::Project project = mx::app::loadProject(kRubio);
+    const mx::app::ExpertRequest request = mx::app::expertRequestFromProject(project);
+    const mx::ExpertSession session(request.tools, request.settings);
+    const mx::Ranking ranking = session.rank(request.weights.c);
+    const QString selected = request.tool_ids[static_cast<qsizetype>(ranking.selected().tool)];
+    double r1_cost = -1.0;
+    for (const mx::ToolChoice& t : ranking.tools)
+      if (request.tool_ids[static_cast<qsizetype>(t.tool)] == "R1") r1_cost = t.min_cost;
+    QVERIFY(r1_cost > 0.0);
+    QCOMPARE(selected, QString("R1"));
+    QCOMPARE(mx::revPerSToRpm(ranking.selected().q.speed_rev_per_s), 5800.0);
+
+    const QStringList expected{project.name, "R1", "R2", "5800", "rpm", "mm/tooth", "N/mm²", "Ranking",
+                               "Table 4. Ranking", "Figure 1.", "Figure 2.", "Figure 3.", "q**",
+                               "Rule 6", ReportBuilder::formatCost(r1_cost), "MillExpert " + data_->version, "page 1 /"};
+    for (const QString& s : expected) QVERIFY2(text.contains(s), qPrintable("PDF text lacks '" + s + "'"));
+    // The ranking row of R1: rank, tool, min cost, ..., q* speed.
+    const QRegularExpression row("\\b1\\s+R1\\s+" + QRegularExpression::escape(ReportBuilder::formatCost(r1_cost)) +
+                                 "\\s.*\\s5800\\s");
+    QVERIFY2(row.match(text).hasMatch(), qPrintable(text.left(4000)));
+  }
+
+  void cliWritesTheReportAndRefusesBadWeights() {
+    const QString exe = reportExecutable();
+    QVERIFY2(QFileInfo::exists(exe), qPrintable(exe + " not built: build the target millexpert-report"));
+    QProcess bad;
+    bad.start(exe, {kRubio, "--pdf", dir_.filePath("bad.pdf"), "--c", "0.5,0.5,0.5"});
+    QVERIFY(bad.waitForFinished(30000));
+    QCOMPARE(bad.exitCode(), 2);
+    const QString message = QString::fromUtf8(bad.readAllStandardError());
+    QVERIFY2(message.contains("--c") && message.contains("sum"), qPrintable(message));
+    QVERIFY(!QFileInfo::exists(dir_.filePath("bad.pdf")));
+
+    QProcess none;
+    none.start(exe, {kRubio});
+    QVERIFY(none.waitForFinished(30000));
+    QCOMPARE(none.exitCode(), 2);
+
+    QProcess good;
+    const QString html = dir_.filePath("cli.html");
+    good.start(exe, {kRubio, "--html", html, "--embed-images", "--c", "0.3,0.625,0.075"});
+    QVERIFY(good.waitForFinished(60000));
+    QVERIFY2(good.exitCode() == 0, good.readAllStandardError().constData());
+    QVERIFY(readText(html).contains("(0.3, 0.625, 0.075)"));
+  }
+
+ private:
+  QTemporaryDir dir_;
+  std::unique_ptr<ReportData> data_;
+  QString html_, pdf_;
+};
+
+MX_TEST_MAIN_WITH_APP(TestReportExport, QApplication)
+#include "test_report_export.moc"
