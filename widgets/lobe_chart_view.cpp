@@ -256,8 +256,8 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   auto* text = new QCPItemText(plot_);
   text->setLayer("overlay");
   text->position->setParentAnchor(tracer->position);
-  text->position->setCoords(8, 8);
-  text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+  text->position->setCoords(-8, 8);  // left of the marker: q* often sits at the range's right end
+  text->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
   text->setText(name);
   text->setColor(color);
   extra_markers_.push_back(tracer);

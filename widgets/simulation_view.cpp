@@ -28,7 +28,7 @@ const QColor kLimitColor(214, 39, 40);
 
 QCustomPlot* makePlot(QWidget* parent, const QString& tooltip) {
   auto* plot = new QCustomPlot(parent);
-  plot->setMinimumSize(320, 200);
+  plot->setMinimumSize(320, 140);
   plot->legend->setVisible(true);
   plot->legend->setFont(QFont(parent->font().family(), 9));
   plot->legend->setBrush(QColor(255, 255, 255, 210));
@@ -100,14 +100,16 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(kSpacing, kSpacing, kSpacing, kSpacing);
   grid->setSpacing(kSpacing);
+  // Time plots stacked on the left, the spectrum and the indicators beside them at full height.
   grid->addWidget(motion_plot_, 0, 0);
-  grid->addWidget(spectrum_, 0, 1);
   grid->addWidget(power_plot_, 1, 0);
-  grid->addWidget(buildIndicatorPanel(), 1, 1);
-  grid->setColumnStretch(0, 3);
-  grid->setColumnStretch(1, 2);
-  grid->setRowStretch(0, 3);
-  grid->setRowStretch(1, 2);
+  grid->addWidget(spectrum_, 0, 1, 2, 1);
+  grid->addWidget(buildIndicatorPanel(), 0, 2, 2, 1);
+  grid->setColumnStretch(0, 4);
+  grid->setColumnStretch(1, 3);
+  grid->setColumnStretch(2, 2);
+  grid->setRowStretch(0, 1);
+  grid->setRowStretch(1, 1);
 
   replot_timer_->setSingleShot(true);
   replot_timer_->setInterval(kReplotIntervalMs);

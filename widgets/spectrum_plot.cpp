@@ -91,7 +91,16 @@ void SpectrumPlot::setSpectrum(const SpectrumSeries& spectrum, const QString& la
   double top = 0.0;
   // The mean (f = 0) is removed; scale to the largest bin.
   for (double v : spectrum.amplitude) top = std::max(top, v);
-  max_hz_ = spectrum.hz.isEmpty() ? 0.0 : spectrum.hz.back();
+  // Show where the content is: up to 1.25 times the highest bin above 1 % of the largest, and at
+  // least four tooth-passing harmonics (not the whole Nyquist range).
+  max_hz_ = 0.0;
+  for (qsizetype i = spectrum.hz.size() - 1; i >= 0; --i)
+    if (spectrum.amplitude[i] > 0.01 * top) {
+      max_hz_ = 1.25 * spectrum.hz[i];
+      break;
+    }
+  max_hz_ = std::max(max_hz_, 4.5 * tooth_passing_hz_);
+  if (!spectrum.hz.isEmpty()) max_hz_ = std::min(max_hz_, spectrum.hz.back());
   if (max_hz_ > 0.0) plot_->xAxis->setRange(0.0, max_hz_);
   plot_->yAxis->setRange(0.0, top > 0.0 ? 1.12 * top : 1.0);
   rebuildMarkers();

@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QMenuBar>
+#include <QScrollArea>
 #include <QSettings>
 #include <QToolBar>
 #include <QUndoStack>
@@ -17,6 +18,15 @@
 namespace mx::gui {
 
 namespace {
+// Dock contents scroll instead of forcing the window taller than the screen (1080p).
+QWidget* scrollable(QWidget* content) {
+  auto* area = new QScrollArea;
+  area->setWidget(content);
+  area->setWidgetResizable(true);
+  area->setFrameShape(QFrame::NoFrame);
+  return area;
+}
+
 QDockWidget* addDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content,
                      Qt::DockWidgetArea area) {
   auto* dock = new QDockWidget(title, window);
@@ -54,8 +64,9 @@ void MainWindow::buildDocks() {
   point_panel->setMinimumWidth(300);
 
   addDock(this, tr("Operating point"), "pointDock", point_panel, Qt::RightDockWidgetArea);
-  QDockWidget* tools = addDock(this, tr("Tool library"), "toolsDock", tool_editor_, Qt::LeftDockWidgetArea);
-  QDockWidget* machine = addDock(this, tr("Machine and operation"), "machineDock", machine_panel_, Qt::LeftDockWidgetArea);
+  QDockWidget* tools = addDock(this, tr("Tool library"), "toolsDock", scrollable(tool_editor_), Qt::LeftDockWidgetArea);
+  QDockWidget* machine =
+      addDock(this, tr("Machine and operation"), "machineDock", scrollable(machine_panel_), Qt::LeftDockWidgetArea);
   tabifyDockWidget(tools, machine);
   tools->raise();
   addDock(this, tr("Live simulation"), "simulationDock", sim_view_, Qt::BottomDockWidgetArea);

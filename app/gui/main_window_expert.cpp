@@ -3,6 +3,7 @@
 // from the session's caches (milliseconds); a committed weight change is an undoable project edit
 // and re-runs Rules 5-6 (cached simulations) on the engine thread for q**.
 #include <QDockWidget>
+#include <QScrollArea>
 #include <QStatusBar>
 
 #include "cli/expert_request.h"
@@ -32,13 +33,26 @@ void MainWindow::buildExpertDocks() {
   weights_panel_ = new widgets::WeightsPanel(this);
   ranking_table_ = new widgets::RankingTable(this);
   ranking_table_->setUnits(&units_);
-  for (auto [title, name, widget] : {std::tuple{tr("Cost weights"), "weightsDock", static_cast<QWidget*>(weights_panel_)},
-                                     std::tuple{tr("Tool ranking"), "rankingDock", static_cast<QWidget*>(ranking_table_)}}) {
-    auto* dock = new QDockWidget(title, this);
-    dock->setObjectName(name);
-    dock->setWidget(widget);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
+  // Weights share the right area with the operating point; the ranking shares the bottom with the
+  // live simulation (tabs), so that the window fits 1920x1080.
+  auto* weights = new QDockWidget(tr("Cost weights"), this);
+  weights->setObjectName("weightsDock");
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(weights_panel_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  weights->setWidget(scroll);
+  auto* ranking = new QDockWidget(tr("Tool ranking"), this);
+  ranking->setObjectName("rankingDock");
+  ranking->setWidget(ranking_table_);
+  addDockWidget(Qt::RightDockWidgetArea, weights);
+  addDockWidget(Qt::BottomDockWidgetArea, ranking);
+  if (auto* point = findChild<QDockWidget*>("pointDock")) tabifyDockWidget(point, weights);
+  if (auto* simulation = findChild<QDockWidget*>("simulationDock")) {
+    tabifyDockWidget(simulation, ranking);
+    simulation->raise();
   }
+  if (auto* point = findChild<QDockWidget*>("pointDock")) point->raise();
   connect(weights_panel_, &widgets::WeightsPanel::weightsChanged, this, &MainWindow::rerank);
   connect(weights_panel_, &widgets::WeightsPanel::weightsCommitted, this, &MainWindow::commitWeights);
   connect(weights_panel_, &widgets::WeightsPanel::resetRequested, this, [this] {
