@@ -46,6 +46,23 @@ QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments
   return positional.front();
 }
 
+QList<QCommandLineOption> cutPointOptions() {
+  return {{"tool", "Tool id.", "ID"},
+          {"speed", "Spindle speed [rpm].", "RPM"},
+          {"depth", "Axial depth of cut [mm].", "MM"},
+          {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"}};
+}
+
+CutPointFlags readCutPoint(const QCommandLineParser& parser) {
+  CutPointFlags p;
+  p.tool = requiredOption(parser, "tool");
+  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
+  p.speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
+  p.depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
+  p.feed_mm_per_tooth = *numberOption(parser, "feed", 1e-6, 100.0);
+  return p;
+}
+
 void printJson(const QJsonObject& object) {
   QTextStream out(stdout);
   out << QJsonDocument(object).toJson(QJsonDocument::Compact) << Qt::endl;

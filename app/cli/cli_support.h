@@ -27,6 +27,17 @@ QString requiredOption(const QCommandLineParser& parser, const QString& name);
 // Parses the subcommand's arguments; throws CliError(2) on unknown flags or a missing PROJECT.
 QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments);
 
+// The operating point flags shared by simulate and point: --tool, --speed [rpm], --depth [mm],
+// --feed [mm/tooth], all required and range-checked.
+struct CutPointFlags {
+  QString tool;
+  double speed_rpm = 0.0;
+  double depth_mm = 0.0;
+  double feed_mm_per_tooth = 0.0;
+};
+QList<QCommandLineOption> cutPointOptions();
+CutPointFlags readCutPoint(const QCommandLineParser& parser);
+
 void printJson(const QJsonObject& object);
 
 // JSON number, or null for a non-finite value (never NaN in output).

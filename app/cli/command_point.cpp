@@ -22,22 +22,17 @@ int runPointCommand(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Stability margin, power and MRR of one operating point.");
   parser.addHelpOption();
+  parser.addOptions(cutPointOptions());
   parser.addOptions({
-      {"tool", "Tool id.", "ID"},
-      {"speed", "Spindle speed [rpm].", "RPM"},
-      {"depth", "Axial depth of cut [mm].", "MM"},
-      {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"},
       {"method", "zoa or sdm (default zoa).", "METHOD", "zoa"},
       {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
       {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
   });
   const QString path = parseSubcommand(parser, arguments);
-  const QString tool = requiredOption(parser, "tool");
-  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
-  const double speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
-  const double depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
-  const double feed_mm = *numberOption(parser, "feed", 1e-6, 100.0);
+  const CutPointFlags cut = readCutPoint(parser);
+  const QString& tool = cut.tool;
+  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   const QString method = parser.value("method");
   if (method != "zoa" && method != "sdm")
     throw CliError(QString("--method = '%1': must be zoa or sdm").arg(method), kExitBadInput);

@@ -37,11 +37,8 @@ int runSimulateCommand(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Time-domain chatter simulation of one cutting point.");
   parser.addHelpOption();
+  parser.addOptions(cutPointOptions());
   parser.addOptions({
-      {"tool", "Tool id.", "ID"},
-      {"speed", "Spindle speed [rpm].", "RPM"},
-      {"depth", "Axial depth of cut [mm].", "MM"},
-      {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"},
       {"revolutions", "Simulated revolutions (default 60; indicators over the last 20).", "N"},
       {"csv", "Write time, displacements, forces and power to this CSV file.", "FILE"},
       {"ssv-amplitude", "Spindle speed variation amplitude ratio a (eq. 12), default 0.", "A"},
@@ -49,11 +46,9 @@ int runSimulateCommand(const QStringList& arguments) {
       {"passes", "Regenerative passes remembered by the chip model (1 = seed eq. 7, default).", "K"},
   });
   const QString path = parseSubcommand(parser, arguments);
-  const QString tool = requiredOption(parser, "tool");
-  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
-  const double speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
-  const double depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
-  const double feed_mm = *numberOption(parser, "feed", 1e-6, 100.0);
+  const CutPointFlags cut = readCutPoint(parser);
+  const QString& tool = cut.tool;
+  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   SimulationOptions options;
   options.revolutions = integerOption(parser, "revolutions", 21, 100000).value_or(60);
   options.ssv.amplitude_ratio = numberOption(parser, "ssv-amplitude", 0.0, 0.9).value_or(0.0);

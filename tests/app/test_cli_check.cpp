@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include "support/json_mutation.h"
 #include "test_main.h"
 
 namespace {
@@ -38,41 +39,7 @@ QJsonObject readJson(const QString& path) {
   return QJsonDocument::fromJson(f.readAll()).object();
 }
 
-// "a/0/b=JSON" sets a value, "-a/0/b" removes it (same notation as test_project_file.cpp).
-QJsonValue setAt(const QJsonValue& node, QStringList path, const std::optional<QJsonValue>& value) {
-  const QString head = path.takeFirst();
-  if (node.isArray()) {
-    QJsonArray a = node.toArray();
-    const int i = head.toInt();
-    if (path.isEmpty() && !value) {
-      a.removeAt(i);
-    } else {
-      a[i] = path.isEmpty() ? *value : setAt(a.at(i), path, value);
-    }
-    return a;
-  }
-  QJsonObject o = node.toObject();
-  if (path.isEmpty() && !value) {
-    o.remove(head);
-  } else {
-    o[head] = path.isEmpty() ? *value : setAt(o.value(head), path, value);
-  }
-  return o;
-}
-
-QJsonObject mutated(QJsonObject root, const QStringList& mutations) {
-  for (const QString& m : mutations) {
-    if (m.startsWith('-')) {
-      root = setAt(root, m.mid(1).split('/'), std::nullopt).toObject();
-      continue;
-    }
-    const qsizetype eq = m.indexOf('=');
-    const QJsonDocument value = QJsonDocument::fromJson("[" + m.mid(eq + 1).toUtf8() + "]");
-    if (!value.isArray()) qFatal("bad mutation %s", qPrintable(m));
-    root = setAt(root, m.left(eq).split('/'), value.array().at(0)).toObject();
-  }
-  return root;
-}
+using mx::test::mutated;
 
 }  // namespace
 

@@ -7,28 +7,15 @@
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "support/cli_runner.h"
 #include "test_main.h"
 
 namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
 const QString kInsperger = QStringLiteral(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj");
 
-struct Run {
-  int code = -1;
-  QJsonObject json;
-  QString err;
-};
-
-Run cli(const QStringList& args) {
-  QProcess p;
-  p.start(MX_CLI_PATH, args);
-  p.waitForFinished(120000);
-  Run r;
-  r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-  r.json = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
-  r.err = QString::fromUtf8(p.readAllStandardError());
-  return r;
-}
+using Run = mx::test::CliRun;
+Run cli(const QStringList& args) { return mx::test::runCli(args); }
 }  // namespace
 
 class TestCliCommands : public QObject {

@@ -12,6 +12,7 @@
 
 #include "project/project.h"
 #include "project/project_validation.h"
+#include "support/json_mutation.h"
 #include "test_main.h"
 
 using namespace mx;
@@ -42,49 +43,7 @@ QString errorOf(const std::function<void()>& f) {
   return {};
 }
 
-// One mutation: "a/0/b=JSON" sets, "-a/0/b" removes; JSON may also be inf, -inf or nan (in memory only).
-QJsonValue parseValue(const QString& text) {
-  if (text == "inf") return std::numeric_limits<double>::infinity();
-  if (text == "-inf") return -std::numeric_limits<double>::infinity();
-  if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
-  QJsonParseError error;
-  const QJsonDocument d = QJsonDocument::fromJson("[" + text.toUtf8() + "]", &error);
-  if (error.error != QJsonParseError::NoError) qFatal("bad mutation value %s", qPrintable(text));
-  return d.array().at(0);
-}
-
-QJsonValue setAt(const QJsonValue& node, QStringList path, const std::optional<QJsonValue>& value) {
-  const QString head = path.takeFirst();
-  if (node.isArray()) {
-    QJsonArray a = node.toArray();
-    const int i = head.toInt();
-    if (path.isEmpty() && !value) {
-      a.removeAt(i);
-    } else {
-      a[i] = path.isEmpty() ? *value : setAt(a.at(i), path, value);
-    }
-    return a;
-  }
-  QJsonObject o = node.toObject();
-  if (path.isEmpty() && !value) {
-    o.remove(head);
-  } else {
-    o[head] = path.isEmpty() ? *value : setAt(o.value(head), path, value);
-  }
-  return o;
-}
-
-QJsonObject mutated(QJsonObject root, const QStringList& mutations) {
-  for (const QString& m : mutations) {
-    if (m.startsWith('-')) {
-      root = setAt(root, m.mid(1).split('/'), std::nullopt).toObject();
-    } else {
-      const qsizetype eq = m.indexOf('=');
-      root = setAt(root, m.left(eq).split('/'), parseValue(m.mid(eq + 1))).toObject();
-    }
-  }
-  return root;
-}
+using mx::test::mutated;
 
 void expectContains(const QString& message, const QStringList& fragments) {
   QVERIFY2(!message.isNull(), "no ProjectError thrown");

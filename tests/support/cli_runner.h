@@ -1,0 +1,27 @@
+#pragma once
+// Test helper: runs the real millexpert-cli and collects its exit code, JSON output and stderr.
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStringList>
+
+namespace mx::test {
+
+struct CliRun {
+  int code = -1;  // -1 when the process crashed or timed out
+  QJsonObject json;
+  QString err;
+};
+
+inline CliRun runCli(const QStringList& args, int timeout_ms = 120000) {
+  QProcess p;
+  p.start(MX_CLI_PATH, args);
+  p.waitForFinished(timeout_ms);
+  CliRun r;
+  r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+  r.json = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+  r.err = QString::fromUtf8(p.readAllStandardError());
+  return r;
+}
+
+}  // namespace mx::test
