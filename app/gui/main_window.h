@@ -87,6 +87,7 @@ class MainWindow : public QMainWindow {
   bool onSaveAs();
   bool maybeSave();
   void onExportChart();
+  void onExportReport();  // runs millexpert-report in a separate process (never blocks the GUI)
   void updateTitle();
   // main_window_expert.cpp
   void buildExpertDocks();

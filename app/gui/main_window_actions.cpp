@@ -120,6 +120,9 @@ void MainWindow::buildActions() {
   file->addSeparator();
   add(file, tr("&Export chart..."), QKeySequence(tr("Ctrl+E")), tr("Save the lobe chart as PNG, SVG or PDF"),
       [this] { onExportChart(); }, true);
+  add(file, tr("Export &report..."), QKeySequence(tr("Ctrl+R")),
+      tr("Write the expert report (project, ranking, q* and q**, cost terms, figures) as PDF or HTML"),
+      [this] { onExportReport(); });
   file->addSeparator();
   add(file, tr("&Quit"), QKeySequence::Quit, tr("Quit MillExpert"), [this] { close(); });
 

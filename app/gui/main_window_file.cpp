@@ -1,7 +1,11 @@
 // MainWindow: new, open (with autosave recovery), save, save as, export, title and dirty marker.
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QCoreApplication>
+#include <QDir>
 #include <QMessageBox>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QStatusBar>
 
 #include "main_window.h"
@@ -85,6 +89,34 @@ void MainWindow::onExportChart() {
   const QString path = QFileDialog::getSaveFileName(this, tr("Export chart"), "lobes.png",
                                                     tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
   if (!path.isEmpty() && !chart_->saveImage(path)) showError(tr("Export failed"), path);
+}
+
+void MainWindow::onExportReport() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export report"), "millexpert-report.pdf",
+                                                    tr("PDF (*.pdf);;HTML (*.html)"));
+  if (path.isEmpty()) return;
+  // The report tool reads a project file: hand it the current (possibly unsaved) snapshot.
+  const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
+  const QString snapshot = QDir(dir).filePath(QString("millexpert-report-%1.mxproj").arg(QCoreApplication::applicationPid()));
+  try {
+    app::saveProject(doc_.project(), snapshot);
+  } catch (const app::ProjectError& e) {
+    showError(tr("Export report"), QString::fromStdString(e.what()));
+    return;
+  }
+  const auto& c = weights_.c;
+  QStringList args{snapshot, path.endsWith(".html", Qt::CaseInsensitive) ? "--html" : "--pdf", path, "--c",
+                   QString("%1,%2,%3").arg(c[0], 0, 'g', 17).arg(c[1], 0, 'g', 17).arg(c[2], 0, 'g', 17)};
+  auto* process = new QProcess(this);
+  connect(process, &QProcess::finished, this, [this, process, path, snapshot](int code, QProcess::ExitStatus status) {
+    QFile::remove(snapshot);
+    const QString err = QString::fromUtf8(process->readAllStandardError()).trimmed();
+    process->deleteLater();
+    if (status == QProcess::NormalExit && code == 0) statusBar()->showMessage(tr("Report written to %1").arg(path), 8000);
+    else showError(tr("Export report"), err.isEmpty() ? tr("millexpert-report failed (exit %1)").arg(code) : err);
+  });
+  statusBar()->showMessage(tr("Writing the report (expert system, simulations, figures)..."));
+  process->start(QCoreApplication::applicationDirPath() + "/millexpert-report", args);
 }
 
 void MainWindow::updateTitle() {
