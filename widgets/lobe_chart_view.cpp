@@ -87,6 +87,7 @@ QWidget* LobeChartView::plotWidget() const { return plot_; }
 
 void LobeChartView::clear() {
   series_.clear();
+  tool_graphs_.clear();
   power_mm_.clear();
   costs_->clear();
   plot_->clearGraphs();
@@ -150,6 +151,12 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
     margined->setName(QString("%1 margined (\u03b4 = %2 1/s, \u03b1 = %3)").arg(s.tool_id).arg(delta_per_s).arg(alpha));
     margined->setPen(QPen(toolColor(i), 1.5, Qt::DashLine));
     margined->setData(s.speed_rpm, scaled(s.margined_mm), true);
+    tool_graphs_.push_back({nominal, margined});
+    const bool visible = !hidden_.contains(s.tool_id);
+    for (QCPGraph* g : {nominal, margined}) {
+      g->setVisible(visible);
+      if (!visible) g->removeFromLegend();
+    }
     double lowest = std::numeric_limits<double>::infinity();
     for (double b : s.nominal_mm)
       if (std::isfinite(b)) {
@@ -177,6 +184,20 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
 void LobeChartView::setActiveTool(int index) {
   active_ = (index >= 0 && index < series_.size()) ? index : -1;
   updateRegions();
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void LobeChartView::setToolVisible(const QString& tool_id, bool visible) {
+  if (visible) hidden_.remove(tool_id);
+  else hidden_.insert(tool_id);
+  for (int i = 0; i < series_.size() && i < tool_graphs_.size(); ++i) {
+    if (series_[i].tool_id != tool_id) continue;
+    for (QCPGraph* g : {tool_graphs_[i].first, tool_graphs_[i].second}) {
+      g->setVisible(visible);
+      if (visible) g->addToLegend();
+      else g->removeFromLegend();
+    }
+  }
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

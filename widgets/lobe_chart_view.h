@@ -5,7 +5,9 @@
 // drags with the left button (live signals), nudges with the arrow keys (Shift snaps to the
 // admissible grid), zooms with the wheel and pans with the right button.
 #include <QColor>
+#include <QPair>
 #include <QPoint>
+#include <QSet>
 #include <QString>
 #include <QVector>
 #include <QWidget>
@@ -38,6 +40,8 @@ class LobeChartView : public QWidget {
 
   void setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha);
   void setActiveTool(int index);  // whose unstable region is shaded; -1 = none
+  void setToolVisible(const QString& tool_id, bool visible);  // hide or show a tool's lobes
+  bool isToolVisible(const QString& tool_id) const { return !hidden_.contains(tool_id); }
   // Depth [mm] where peak power reaches the spindle limit, on the active tool's speeds; empty = none.
   void setPowerLimit(const QVector<double>& depth_mm, const QString& label);
   void setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict);
@@ -91,6 +95,8 @@ class LobeChartView : public QWidget {
   QCPItemText* marker_label_ = nullptr;
   QVector<QCPAbstractItem*> extra_markers_;  // q*, q** tracers and their labels
   QVector<ToolLobeSeries> series_;
+  QVector<QPair<QCPGraph*, QCPGraph*>> tool_graphs_;  // nominal, margined per series
+  QSet<QString> hidden_;
   QVector<double> power_mm_;
   int active_ = -1;
   double point_rpm_ = 0.0, point_mm_ = 0.0;

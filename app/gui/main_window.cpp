@@ -3,6 +3,7 @@
 #include <QCloseEvent>
 #include <QFile>
 #include <QJsonDocument>
+#include <QMenu>
 #include <QSettings>
 #include <limits>
 #include <QMessageBox>
@@ -119,6 +120,15 @@ void MainWindow::onProjectChanged() {
   tool_combo_->setCurrentIndex(index >= 0 ? index : 0);
   tool_combo_->blockSignals(false);
   active_tool_ = tool_combo_->currentText();
+  if (tools_menu_) {
+    tools_menu_->clear();
+    for (const app::ToolSpec& t : p.tools) {
+      QAction* a = tools_menu_->addAction(t.id);
+      a->setCheckable(true);
+      a->setChecked(chart_->isToolVisible(t.id));
+      connect(a, &QAction::toggled, this, [this, id = t.id](bool on) { chart_->setToolVisible(id, on); });
+    }
+  }
   // A change of the cost weights alone (a committed slider move, its undo) re-ranks from the cached
   // session and re-runs Rules 5-6; lobes and grids are only recomputed when their inputs change.
   QJsonObject json = app::projectToJson(p);

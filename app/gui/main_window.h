@@ -136,6 +136,7 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_;
   QToolButton* cancel_button_;
   QMenu* recent_menu_ = nullptr;
+  QMenu* tools_menu_ = nullptr;  // View > Tools on the chart (checkable)
   QTimer recompute_timer_;
   QString active_tool_;
   LobeMethod method_ = LobeMethod::ZeroOrder;

@@ -158,6 +158,8 @@ void MainWindow::buildActions() {
     show_grid_ = on;
     updateExpertOverlays();
   });
+  tools_menu_ = view->addMenu(tr("&Tools on the chart"));
+  tools_menu_->setToolTip(tr("Choose which tools' lobes the chart shows"));
   view->addSeparator();
   auto* units = new QActionGroup(this);
   QAction* mm = view->addAction(tr("Lengths in &mm"));

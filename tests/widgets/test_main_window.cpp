@@ -48,6 +48,11 @@ class TestMainWindow : public QObject {
     QVERIFY(shown.wait(20000));
     QCOMPARE(window.project()->tools.size(), size_t{2});
     QVERIFY(window.windowTitle().contains("rubio2006"));
+    // View > Tools on the chart hides and shows a tool's lobes.
+    window.lobeChart()->setToolVisible("R2", false);
+    QVERIFY(!window.lobeChart()->isToolVisible("R2"));
+    window.lobeChart()->setToolVisible("R2", true);
+    QVERIFY(window.lobeChart()->isToolVisible("R2"));
   }
 
   // A press / move / release drag on the chart moves the point; the readouts equal an independent

@@ -1,0 +1,86 @@
+#include "pareto/objective_table.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "model/cutting_force.h"
+
+namespace mx {
+
+namespace {
+ParetoPoint makePoint(const MillingSetup& setup, const ParetoModels& m, double n, double b, double s, double power,
+                      double mrr, double ros) {
+  ParetoPoint p;
+  p.speed_rev_per_s = n;
+  p.depth_m = b;
+  p.feed_per_tooth_m = s;
+  p.power_w = power;
+  const double v = cuttingSpeedMPerMin(setup.diameter_m, n);
+  p.objectives[index(Objective::ToolLife)] = m.tool_life.evaluate(v, b * 1e3, s * 1e3);
+  p.objectives[index(Objective::Mrr)] = mrr;
+  p.objectives[index(Objective::Roughness)] = m.roughness.evaluate(v, b * 1e3, s * 1e3);
+  p.objectives[index(Objective::Robustness)] = ros;
+  return p;
+}
+}  // namespace
+
+ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& models)
+    : grid_(&grid), models_(models) {
+  models_.tool_life.validate("taylor");
+  models_.roughness.validate("roughness");
+  const std::vector<GridCell>& cells = grid.cells();
+  if (cells.empty()) return;
+  double n_lo = std::numeric_limits<double>::infinity(), n_hi = -n_lo, b_lo = n_lo, b_hi = -n_lo;
+  std::size_t count = 0;
+  for (const GridCell& c : cells) {
+    n_lo = std::min(n_lo, c.speed_rev_per_s);
+    n_hi = std::max(n_hi, c.speed_rev_per_s);
+    b_lo = std::min(b_lo, c.depth_m);
+    b_hi = std::max(b_hi, c.depth_m);
+    count += static_cast<std::size_t>(c.feed_count);
+  }
+  // A degenerate span (one speed or one depth in Q) falls back to the value itself.
+  spans_.speed_rev_per_s = n_hi > n_lo ? n_hi - n_lo : n_hi;
+  spans_.depth_m = b_hi > b_lo ? b_hi - b_lo : b_hi;
+
+  points_.reserve(count);
+  for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+    const GridCell& c = cells[ci];
+    const double ros = grid.boundary().robustness(c.speed_rev_per_s, c.depth_m, spans_);
+    for (int f = 1; f <= c.feed_count; ++f) {
+      const ExpertPoint q = grid.point(ci, f);
+      points_.push_back(makePoint(grid.setup(), models_, q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m, q.power_w,
+                                  q.mrr_m3_per_s, ros));
+    }
+  }
+  range_.min.fill(std::numeric_limits<double>::infinity());
+  range_.max.fill(-std::numeric_limits<double>::infinity());
+  for (const ParetoPoint& p : points_)
+    for (std::size_t i = 0; i < kObjectiveCount; ++i) {
+      range_.min[i] = std::min(range_.min[i], p.objectives[i]);
+      range_.max[i] = std::max(range_.max[i], p.objectives[i]);
+    }
+  scores_.reserve(points_.size());
+  for (const ParetoPoint& p : points_) scores_.push_back(normalise(p.objectives));
+}
+
+ParetoPoint ObjectiveTable::evaluate(double n, double b, double s) const {
+  const CutPerformance perf = evaluateCut(grid_->setup(), {n, b, s});
+  const double ros = grid_->boundary().robustness(n, b, spans_);
+  return makePoint(grid_->setup(), models_, n, b, s, perf.peak_power_w, perf.mrr_m3_per_s, ros);
+}
+
+ObjectiveVector ObjectiveTable::normalise(const ObjectiveVector& raw) const {
+  ObjectiveVector out{};
+  for (std::size_t i = 0; i < kObjectiveCount; ++i) {
+    const double span = range_.max[i] - range_.min[i];
+    if (!(span > 0.0)) {
+      out[i] = 1.0;
+      continue;
+    }
+    out[i] = isMinimised(i) ? (range_.max[i] - raw[i]) / span : (raw[i] - range_.min[i]) / span;
+  }
+  return out;
+}
+
+}  // namespace mx
