@@ -20,6 +20,8 @@ const char* kUsage =
     "  point     stability margin, Delta N_s, ROS, power and MRR of one operating point\n"
     "  rank      expert system: tool ranking, q* and q** ([--c c1,c2,c3] [--cr ...] [--no-simulation])\n"
     "  weights-sweep  minimum tool cost against the weights (--c3 V | --simplex STEP)\n"
+    "  history   Rule 14 learning database, newest first ([--tool ID] [--db FILE] [--add-json JSON])\n"
+    "  pareto    Pareto expert system ([--w tol,mrr,surf,ros] [--fine] [--require mrr_cm3_s=LO:HI] [--auto-weights])\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 
 void printError(const QString& message) { QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl; }

@@ -5,13 +5,15 @@
 namespace mx::app {
 
 const CliCommand* findCommand(const QString& name) {
-  static const std::array<CliCommand, 6> commands{{
+  static const std::array<CliCommand, 8> commands{{
       {"check", "validate a project file", &runCheckCommand},
       {"lobes", "stability lobes of one tool", &runLobesCommand},
       {"simulate", "time-domain simulation of one cutting point", &runSimulateCommand},
       {"point", "stability margin, power and MRR of one operating point", &runPointCommand},
       {"rank", "expert system: rank the tools, select q* and q**", &runRankCommand},
       {"weights-sweep", "minimum tool cost against the weights (figures 4, 5)", &runWeightsSweepCommand},
+      {"history", "Rule 14 learning database: programmed points, newest first", &runHistoryCommand},
+      {"pareto", "Pareto expert system: TOL, MRR, SURF, ROS objective and non-dominated set", &runParetoCommand},
   }};
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

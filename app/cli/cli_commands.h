@@ -19,5 +19,7 @@ int runSimulateCommand(const QStringList& arguments);
 int runPointCommand(const QStringList& arguments);
 int runRankCommand(const QStringList& arguments);
 int runWeightsSweepCommand(const QStringList& arguments);
+int runHistoryCommand(const QStringList& arguments);
+int runParetoCommand(const QStringList& arguments);
 
 }  // namespace mx::app

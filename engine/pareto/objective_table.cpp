@@ -64,10 +64,10 @@ ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& m
   for (const ParetoPoint& p : points_) scores_.push_back(normalise(p.objectives));
 }
 
-ParetoPoint ObjectiveTable::evaluate(double n, double b, double s) const {
+ParetoPoint ObjectiveTable::evaluate(double n, double b, double s, std::optional<double> ros) const {
   const CutPerformance perf = evaluateCut(grid_->setup(), {n, b, s});
-  const double ros = grid_->boundary().robustness(n, b, spans_);
-  return makePoint(grid_->setup(), models_, n, b, s, perf.peak_power_w, perf.mrr_m3_per_s, ros);
+  if (!ros) ros = grid_->boundary().robustness(n, b, spans_);
+  return makePoint(grid_->setup(), models_, n, b, s, perf.peak_power_w, perf.mrr_m3_per_s, *ros);
 }
 
 ObjectiveVector ObjectiveTable::normalise(const ObjectiveVector& raw) const {

@@ -8,6 +8,7 @@
 // point of the margined boundary alpha * b_lim(N), with N divided by the span of Q's speeds and b by
 // the span of Q's depths (robustnessSpans()). It does not depend on the feed.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "expert/admissible_grid.h"
@@ -37,7 +38,9 @@ class ObjectiveTable {
 
   // Objectives of an arbitrary point (fine search): the same models and ROS spans. Does not check
   // admissibility (AdmissibleGrid::isAdmissible does).
-  ParetoPoint evaluate(double speed_rev_per_s, double depth_m, double feed_per_tooth_m) const;
+  // `ros` reuses a known ROS of (N, b).
+  ParetoPoint evaluate(double speed_rev_per_s, double depth_m, double feed_per_tooth_m,
+                       std::optional<double> ros = {}) const;
   // Rule 9 scores with Q's ranges (may leave [0, 1] for points outside Q's extremes).
   ObjectiveVector normalise(const ObjectiveVector& raw) const;
 

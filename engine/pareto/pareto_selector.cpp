@@ -67,11 +67,17 @@ ParetoSelection ParetoSelector::fine(const ParetoSelection& coarse, const Pareto
                            : q.speed_rev_per_s + (right - q.speed_rev_per_s) * i / d;
     for (int k = -d; k <= d; ++k) {
       const double b = q.depth_m + g.depthStep() * k / d;
+      // Stay inside Q's extent: the first grid depth and feed are its lower ends (the power laws of
+      // TOL and SURF are singular at b, s_t -> 0, and Rule 9's ranges are Q's).
+      if (b < g.depthStep() * (1.0 - 1e-9)) continue;
+      std::optional<double> ros;  // depends on (N, b) only
       for (int l = -d; l <= d; ++l) {
         if (i == 0 && k == 0 && l == 0) continue;
         const double s = q.feed_per_tooth_m + g.feedStep() * l / d;
+        if (s < g.feedStep() * (1.0 - 1e-9)) continue;
         if (!g.isAdmissible(n, b, s)) continue;
-        const ParetoPoint p = t.evaluate(n, b, s);
+        ParetoPoint p = t.evaluate(n, b, s, ros);
+        ros = p.ros();
         if (filter && coarse.filtered && !filter->satisfiedBy(p)) continue;
         ++scored;
         const ObjectiveVector sc = t.normalise(p.objectives);

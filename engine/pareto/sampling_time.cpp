@@ -1,5 +1,6 @@
 #include "pareto/sampling_time.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "pareto/weight_modulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
