@@ -1,6 +1,7 @@
 #pragma once
 // The Pareto case study (projects/rubio-pareto-case.mxproj) as engine inputs, on a coarser grid
 // (100 rpm) to keep the tests fast.
+#include "pareto/objective_table.h"
 #include "expert/admissible_grid.h"
 #include "pareto/empirical_models.h"
 #include "support/fixtures.h"
@@ -25,6 +26,12 @@ inline ExpertSettings paretoCaseSettings(double speed_step_rpm = 100.0) {
 inline const AdmissibleGrid& paretoCaseGrid() {
   static const AdmissibleGrid grid(rubioR1(), paretoCaseSettings());
   return grid;
+}
+
+// The case study's objective table with the default models, built once per test binary.
+inline const ObjectiveTable& paretoCaseTable() {
+  static const ObjectiveTable table(paretoCaseGrid(), ParetoModels{});
+  return table;
 }
 
 }  // namespace mx::test

@@ -10,10 +10,7 @@
 using namespace mx;
 
 namespace {
-const ObjectiveTable& table() {
-  static const ObjectiveTable t(test::paretoCaseGrid(), ParetoModels{});
-  return t;
-}
+const ObjectiveTable& table() { return test::paretoCaseTable(); }
 }  // namespace
 
 class TestParetoSelector : public QObject {

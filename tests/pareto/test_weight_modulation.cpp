@@ -9,10 +9,7 @@
 using namespace mx;
 
 namespace {
-const ObjectiveTable& table() {
-  static const ObjectiveTable t(test::paretoCaseGrid(), ParetoModels{});
-  return t;
-}
+const ObjectiveTable& table() { return test::paretoCaseTable(); }
 }  // namespace
 
 class TestWeightModulation : public QObject {

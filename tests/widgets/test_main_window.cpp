@@ -27,6 +27,15 @@ QString copyToTemp(const QTemporaryDir& dir, const QString& source) {
   return target;
 }
 
+// Shows the window (offscreen), opens `path` and waits for its lobes.
+bool openAndShow(gui::MainWindow& window, const QString& path) {
+  window.setQuiet(true);
+  window.resize(1400, 900);
+  window.show();
+  QSignalSpy shown(&window, &gui::MainWindow::lobesShown);
+  return window.openProject(path) && shown.wait(20000);
+}
+
 double readoutNumber(const gui::MainWindow& w, const QString& field) {
   return w.readout()->text(field).section(' ', 0, 0).toDouble();
 }
@@ -59,12 +68,7 @@ class TestMainWindow : public QObject {
   // engine evaluation (ZOA lobes of the project's tool, StabilityBoundary, evaluateCut).
   void dragMovesPointAndReadoutsMatchEngine() {
     gui::MainWindow window;
-    window.setQuiet(true);
-    window.resize(1400, 900);
-    window.show();
-    QSignalSpy shown(&window, &gui::MainWindow::lobesShown);
-    QVERIFY(window.openProject(kRubio));
-    QVERIFY(shown.wait(20000));
+    QVERIFY(openAndShow(window, kRubio));
     widgets::LobeChartView* chart = window.lobeChart();
     QWidget* plot = chart->plotWidget();
     const QPoint from = chart->pixelFor(2500.0, 0.30), to = chart->pixelFor(4200.0, 0.45);
@@ -102,12 +106,7 @@ class TestMainWindow : public QObject {
   // Inch display: the chart and readouts convert; the document stays in mm.
   void inchUnitsOnChartAndReadouts() {
     gui::MainWindow window;
-    window.setQuiet(true);
-    window.resize(1400, 900);
-    window.show();
-    QSignalSpy shown(&window, &gui::MainWindow::lobesShown);
-    QVERIFY(window.openProject(kRubio));
-    QVERIFY(shown.wait(20000));
+    QVERIFY(openAndShow(window, kRubio));
     window.units()->setLength(widgets::DisplayUnits::Length::Inch);
     QWidget* plot = window.lobeChart()->plotWidget();
     const QPoint at = window.lobeChart()->pixelFor(4000.0, 0.5);
