@@ -7,14 +7,34 @@
 //   "pareto_set": [{"q", "tol", "mrr_cm3_s", "surf", "ros"}...]} plus "j", "coarse_j", "points",
 //   "requirement" ({"key","lo","hi","satisfied"}, with --require) and "ascent" (with --auto-weights).
 // eta: time-domain simulation of q (expert.simulated revolutions of the refinement settings).
-// Exit 2: bad project/pareto section/flags; exit 1: empty admissible space.
+// Added (issue 5, modules VI and VII):
+//   "rules" (when the project has "operator_rules"): Rule 18, pareto_rules.h. Order of the weights:
+//     --w or pareto.weights -> weight.* rules (projection onto the simplex within the bounds)
+//     -> Rule 11 (--require) -> Rule 12 (--auto-weights) -> weight.* rules again (final weights obey
+//     them). Point constraints filter the coarse selection; with --fine, the fine optimum is kept only
+//     when it obeys them (else the coarse one, "fine_rejected_by_rules": true). Rules 11/12 modulate the
+//     weights without the point rules.
+//   --feedback: module VI. Rule 15 on q's simulation (chip_ratio >= 1.25); on chatter, the Rule 16
+//     Smith-Tlusty speed nearest q's inside the grid's speed range, then a coarse re-selection restricted
+//     to the points of Q whose speed lies within +-2 % of it (the grid speed nearest it when none does),
+//     and the operator rules. "feedback": {"chatter", "chip_ratio", "chatter_frequency_Hz",
+//     "suggested_speed_rpm", "k", "reselected": {"q", "mrr_cm3_s", "tol", "surf", "ros", "j", "eta",
+//     "chip_ratio", "chatter"} or null}.
+//   --db FILE: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
+//     added key "recorded") in the
+//     Rule 14 learning database; without --db nothing is recorded.
+// Exit 2: bad project/pareto section/flags/operator rules (parse error or contradiction); exit 1: empty
+// admissible space, or the operator rules exclude every point of it.
 #include <QJsonArray>
+#include <cmath>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "cli/expert_request.h"
 #include "cli/pareto_request.h"
+#include "cli/pareto_rules.h"
+#include "learning/learning_database.h"
 #include "expert/admissible_grid.h"
 #include "pareto/objective_table.h"
 #include "pareto/pareto_front.h"
@@ -22,6 +42,7 @@
 #include "pareto/weight_modulation.h"
 #include "project/project.h"
 #include "simulation/simulation.h"
+#include "simulation/smith_tlusty.h"
 
 namespace mx::app {
 
@@ -37,6 +58,26 @@ QJsonObject qJson(const ParetoPoint& p) {
 
 QJsonArray weightsJson(const ParetoWeights& w) { return {w[0], w[1], w[2], w[3]}; }
 
+LearningRecord learningRecord(const Project& project, const ToolSpec& tool, const ParetoWeights& w,
+                              const ParetoPoint& p, double eta, int teeth, LearningSource source) {
+  LearningRecord r;
+  r.weights.assign(w.begin(), w.end());
+  r.tool = {tool.id, tool.diameter_mm, tool.teeth};
+  r.material = project.material ? project.material->name : QString("unknown");
+  const MachineSpec& machine = project.requireMachine();
+  r.machine = {machine.spindle_power_W, machine.max_spindle_rpm};
+  r.q = {revPerSToRpm(p.speed_rev_per_s), p.depth_m * 1e3, p.feed_per_tooth_m * 1e3};
+  r.objectives = QJsonObject{{"tol", p.tol()},
+                             {"mrr_cm3_s", p.mrr() * 1e6},
+                             {"surf", p.surf()},
+                             {"ros", jsonNumberOrNull(p.ros())},
+                             {"eta", eta},
+                             {"power_W", p.power_w},
+                             {"feed_velocity_mm_s", p.feed_per_tooth_m * teeth * p.speed_rev_per_s * 1e3}};
+  r.source = source;
+  return r;
+}
+
 }  // namespace
 
 int runParetoCommand(const QStringList& arguments) {
@@ -48,6 +89,8 @@ int runParetoCommand(const QStringList& arguments) {
       {"fine", "Rule 10.2: refine around the coarse optimum."},
       {"require", "Rule 11 requirement KEY=LO:HI (KEY mrr_cm3_s, tol, surf or ros).", "KEY=LO:HI"},
       {"auto-weights", "Rule 12: gradient ascent on the weights (pareto.auto_weights step/tolerance)."},
+      {"feedback", "Module VI: Rule 15 chatter check of q; on chatter, Rule 16 speed and a re-selection."},
+      {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
   });
   const QString path = parseSubcommand(parser, arguments);
   std::optional<ParetoWeights> w_flag;
@@ -60,6 +103,13 @@ int runParetoCommand(const QStringList& arguments) {
   const ParetoRequest request = paretoRequestFromProject(project);
   ParetoWeights weights = w_flag.value_or(request.weights);
   const MillingSetup setup = project.setupFor(request.tool);
+  const ToolSpec& tool = *project.findTool(request.tool);
+  std::optional<ParetoRules> rules;
+  if (!request.operator_rules.isEmpty()) {
+    rules = evaluateParetoRules(request.operator_rules, project, tool);
+    weights = applyWeightRules(rules->outcome, weights);
+  }
+  auto ruleAdmits = [&](const ParetoPoint& p) { return !rules || rules->admits(p, setup.teeth); };
 
   const AdmissibleGrid grid(setup, expert.settings);
   if (grid.empty())
@@ -86,9 +136,33 @@ int runParetoCommand(const QStringList& arguments) {
     weights = a.weights;
     out.insert("ascent", QJsonObject{{"iterations", a.iterations}, {"converged", a.converged}});
   }
-  ParetoSelection chosen = selector.coarse(weights, requirement);
+  if (rules) weights = applyWeightRules(rules->outcome, weights);
+  const bool ruleFilter = rules && rules->restrictsPoint();
+  ParetoSelection chosen;
+  if (!ruleFilter) {
+    chosen = selector.coarse(weights, requirement);
+  } else {
+    std::optional<ParetoSelection> s = selectWhere(
+        table, weights, [&](const ParetoPoint& p) { return ruleAdmits(p) && (!requirement || requirement->satisfiedBy(p)); });
+    if (!s && requirement) {
+      s = selectWhere(table, weights, ruleAdmits);
+      if (s) s->filtered = false;
+    }
+    if (!s)
+      throw CliError(QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
+                         .arg(request.tool)
+                         .arg(table.size()),
+                     kExitComputationFailed);
+    chosen = *s;
+  }
   const double coarse_j = chosen.j;
-  if (parser.isSet("fine")) chosen = selector.fine(chosen, weights, request.fine, requirement);
+  if (parser.isSet("fine")) {
+    const ParetoSelection f = selector.fine(chosen, weights, request.fine, requirement);
+    if (ruleAdmits(f.point))
+      chosen = f;
+    else
+      out.insert("fine_rejected_by_rules", true);
+  }
   if (requirement && out.contains("requirement")) {
     QJsonObject req = out.value("requirement").toObject();
     req.insert("satisfied", requirement->satisfiedBy(chosen.point));
@@ -102,6 +176,82 @@ int runParetoCommand(const QStringList& arguments) {
   const ParetoPoint& q = chosen.point;
   const SimulationResult sim =
       simulateMilling(setup, {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}, options);
+
+  if (rules) out.insert("rules", rulesJson(*rules, q, setup.teeth));
+
+  // Module VI feedback.
+  std::optional<ParetoPoint> reselectedPoint;
+  double reselectedEta = 0.0;
+  if (parser.isSet("feedback")) {
+    const ChatterIndicators& ind = sim.indicators;
+    const bool chatter = ind.chatter_by_chip_ratio;
+    QJsonObject fb{{"chatter", chatter},
+                   {"chip_ratio", ind.chip_ratio},
+                   {"chatter_frequency_Hz",
+                    chatter && ind.chatter_frequency_hz ? QJsonValue(*ind.chatter_frequency_hz) : QJsonValue()},
+                   {"suggested_speed_rpm", QJsonValue()},
+                   {"k", QJsonValue()},
+                   {"reselected", QJsonValue()}};
+    if (chatter && ind.chatter_frequency_hz) {
+      const std::vector<double>& speeds = grid.speeds();
+      const auto choice = smithTlustyChoice(*ind.chatter_frequency_hz, setup.teeth, q.speed_rev_per_s,
+                                            speeds.front(), speeds.back());
+      if (choice) {
+        const double ns = choice->rev_per_s;
+        fb.insert("suggested_speed_rpm", revPerSToRpm(ns));
+        fb.insert("k", choice->k);
+        // Admissible speeds within +-2 % of N_s, else the speed of Q nearest N_s.
+        auto near = [&](const ParetoPoint& p) { return std::abs(p.speed_rev_per_s - ns) <= 0.02 * ns; };
+        bool any_near = false;
+        double nearest = table.points().front().speed_rev_per_s;
+        for (const ParetoPoint& p : table.points()) {
+          any_near = any_near || near(p);
+          if (std::abs(p.speed_rev_per_s - ns) < std::abs(nearest - ns)) nearest = p.speed_rev_per_s;
+        }
+        auto speedOk = [&](const ParetoPoint& p) {
+          return any_near ? near(p) : std::abs(p.speed_rev_per_s - nearest) <= 1e-9 * nearest;
+        };
+        std::optional<ParetoSelection> r = selectWhere(table, weights, [&](const ParetoPoint& p) {
+          return speedOk(p) && ruleAdmits(p) && (!requirement || requirement->satisfiedBy(p));
+        });
+        if (!r && requirement)
+          r = selectWhere(table, weights, [&](const ParetoPoint& p) { return speedOk(p) && ruleAdmits(p); });
+        fb.insert("speed_window", any_near ? "within 2 %" : "nearest grid speed");
+        if (r) {
+          const ParetoPoint& p = r->point;
+          const SimulationResult rsim =
+              simulateMilling(setup, {p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m}, options);
+          reselectedPoint = p;
+          reselectedEta = rsim.indicators.eta;
+          fb.insert("reselected", QJsonObject{{"q", qJson(p)},
+                                              {"mrr_cm3_s", p.mrr() * 1e6},
+                                              {"tol", p.tol()},
+                                              {"surf", p.surf()},
+                                              {"ros", jsonNumberOrNull(p.ros())},
+                                              {"power_W", p.power_w},
+                                              {"j", r->j},
+                                              {"eta", rsim.indicators.eta},
+                                              {"chip_ratio", rsim.indicators.chip_ratio},
+                                              {"chatter", rsim.indicators.chatter_by_chip_ratio}});
+        }
+      }
+    }
+    out.insert("feedback", fb);
+  }
+  if (parser.isSet("db")) {
+    try {
+      LearningDatabase db(parser.value("db"));
+      QJsonArray ids;
+      ids.append(db.insert(learningRecord(project, tool, weights, q, sim.indicators.eta, setup.teeth,
+                                          LearningSource::Automatic)));
+      if (reselectedPoint)
+        ids.append(db.insert(learningRecord(project, tool, weights, *reselectedPoint, reselectedEta, setup.teeth,
+                                            LearningSource::Feedback)));
+      out.insert("recorded", ids);
+    } catch (const LearningDatabaseError& e) {
+      throw CliError(QString::fromStdString(e.what()), kExitBadInput);
+    }
+  }
 
   QJsonArray front;
   for (std::size_t i : nonDominated(table.scores())) {

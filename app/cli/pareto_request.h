@@ -11,7 +11,10 @@
 //     "fine": {"divisions": 5},                       [1, 100] (Rule 10.2)
 //     "auto_weights": {"step": 0.05, "tolerance": 1e-4, "max_iterations": 200}   (Rule 12)
 //   }
+//   "operator_rules": ["if tool.diameter_mm < 10 then speed_rpm <= 8000", ...]
+//       optional top-level array of strings, element i = rule line i + 1 (Rule 18; pareto_rules.h)
 #include <QString>
+#include <QStringList>
 #include <optional>
 
 #include "pareto/empirical_models.h"
@@ -28,6 +31,7 @@ struct ParetoRequest {
   ParetoWeights weights{0.25, 0.25, 0.25, 0.25};
   FineSearchSettings fine;
   GradientAscentSettings ascent;
+  QStringList operator_rules;  // the project's "operator_rules", as written
 };
 
 ParetoRequest paretoRequestFromProject(const Project& project);

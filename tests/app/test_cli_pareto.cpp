@@ -1,5 +1,7 @@
 // millexpert-cli pareto: the fixed JSON interface on projects/rubio-pareto-case.mxproj, the flags
 // (--w, --fine, --require, --auto-weights) and the exit-2 messages for a bad "pareto" section or flag.
+// Issue 5 modules VI/VII: the project's operator_rules (Rule 18) in the selection and the "rules" key;
+// --feedback (Rules 15/16 and a re-selection) and --db recording a "feedback" entry.
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -106,6 +108,114 @@ class TestCliPareto : public QObject {
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+
+  // Rule 18: a fired speed constraint restricts q and is named in rules.fired; advice is listed.
+  void operatorRulesRestrictSpeed() {
+    QTemporaryDir dir, free_dir;
+    const QStringList weights{"--w", "0.1,0.6,0.1,0.2"};
+    QJsonArray rules_json{"# shop rules", "# (speed rule)", "if material.name == \"Aluminium\" then advise \"use coolant\"",
+                          "if machine.max_spindle_rpm < 3000 then depth_mm <= 0.1", "weight.ros >= 0.3"};
+    auto rulesMutation = [&] {
+      return "operator_rules=" + QString::fromUtf8(QJsonDocument(rules_json).toJson(QJsonDocument::Compact));
+    };
+    // The same rules without the speed constraint: the speed it would choose.
+    const mx::test::CliRun unrestricted =
+        mx::test::runCli(QStringList{"pareto", caseWith(free_dir, {rulesMutation()})} + weights);
+    QVERIFY2(unrestricted.code == 0, qPrintable(unrestricted.err));
+    const double limit = unrestricted.json["q"].toObject()["speed_rpm"].toDouble() - 500.0;
+    QVERIFY2(limit >= 1000.0, qPrintable(QString::number(limit)));
+    rules_json[1] = QString("if tool.diameter_mm > 10 then speed_rpm <= %1 because \"spindle wear\"").arg(limit);
+    const QString path = caseWith(dir, {rulesMutation()});
+    for (const QStringList& flags : {QStringList{}, QStringList{"--fine"}}) {
+      const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + weights + flags);
+      QVERIFY2(r.code == 0, qPrintable(r.err));
+      const double speed = r.json["q"].toObject()["speed_rpm"].toDouble();
+      QVERIFY2(speed <= limit * (1 + 1e-9), qPrintable(QString::number(speed)));
+      QVERIFY(r.json["j"].toDouble() >= r.json["coarse_j"].toDouble());
+      const QJsonObject rules = r.json["rules"].toObject();
+      const QJsonArray fired = rules["fired"].toArray();
+      bool named = false, coolant = false;
+      for (const auto& v : fired) {
+        const QJsonObject f = v.toObject();
+        if (f["line"].toInt() == 2 && f["kind"].toString() == "constraint" &&
+            f["text"].toString().contains("speed_rpm <=") && f["reason"].toString().contains("spindle wear"))
+          named = true;
+        if (f["line"].toInt() == 3 && f["kind"].toString() == "advice") coolant = true;
+      }
+      QVERIFY2(named, qPrintable(QJsonDocument(rules).toJson()));
+      QVERIFY(coolant);
+      QCOMPARE(rules["advice"].toArray().size(), 1);
+      QCOMPARE(rules["advice"].toArray()[0].toObject()["message"].toString(), QString("use coolant"));
+      // machine.max_spindle_rpm is absent from the case: the rule on line 4 is undetermined.
+      QCOMPARE(rules["undetermined"].toArray().size(), 1);
+      QCOMPARE(rules["undetermined"].toArray()[0].toObject()["line"].toInt(), 4);
+      // weight.ros >= 0.3 clamps the project's 0.2, the weights stay on the simplex.
+      const QJsonArray w = r.json["weights"].toArray();
+      QVERIFY(w[3].toDouble() >= 0.3 - 1e-12);
+      QVERIFY(std::abs(sum(w) - 1.0) < 1e-9);
+      for (const auto& v : w) QVERIFY(v.toDouble() >= 0.0);
+    }
+  }
+
+  void operatorRuleErrors_data() {
+    QTest::addColumn<QString>("rules");
+    QTest::addColumn<QStringList>("messages");
+    QTest::newRow("syntax") << R"(["speed_rpm <= 9000", "if tool.diameter_mm < 10 speed_rpm <= 8000"])"
+                            << QStringList{"operator_rules[1]: line 2, column 26: expected 'then'"};
+    QTest::newRow("contradiction") << R"(["speed_rpm <= 3000", "if tool.teeth >= 3 then speed_rpm >= 4000"])"
+                                   << QStringList{"operator_rules[0] (line 1) 'speed_rpm <= 3000'",
+                                                  "operator_rules[1] (line 2) 'if tool.teeth >= 3 then speed_rpm >= 4000'",
+                                                  "no speed_rpm satisfies both"};
+    QTest::newRow("not an array") << R"("speed_rpm <= 9000")" << QStringList{"operator_rules: must be an array"};
+  }
+  void operatorRuleErrors() {
+    QFETCH(QString, rules);
+    QFETCH(QStringList, messages);
+    QTemporaryDir dir;
+    const mx::test::CliRun r = mx::test::runCli({"pareto", caseWith(dir, {"operator_rules=" + rules})});
+    QCOMPARE(r.code, 2);
+    for (const QString& m : messages) QVERIFY2(r.err.contains(m), qPrintable(r.err));
+  }
+
+  // Module VI: a light-damped, 10 % immersion variant at alpha = 1 chatters at the MRR optimum
+  // (chip ratio ~1.45); the Smith-Tlusty speed is 60 f_c / (n_t k) and the re-selection is recorded.
+  void feedbackOnChatter() {
+    QTemporaryDir dir;
+    const QString path = caseWith(dir, {"tools/0/modes_x/0/damping_pct=1.0", "tools/0/modes_y/0/damping_pct=1.0",
+                                        "expert/alpha=1.0", "expert/delta_per_s=0.0",
+                                        "operation/radial_immersion=0.1"});
+    const QString db = dir.filePath("learning.sqlite");
+    const mx::test::CliRun r =
+        mx::test::runCli({"pareto", path, "--w", "0,1,0,0", "--feedback", "--db", db}, 600000);
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    const QJsonObject fb = r.json["feedback"].toObject();
+    QVERIFY2(fb["chatter"].toBool(), qPrintable(QJsonDocument(fb).toJson()));
+    QVERIFY(fb["chip_ratio"].toDouble() >= 1.25);
+    const double fc = fb["chatter_frequency_Hz"].toDouble();
+    const double ns = fb["suggested_speed_rpm"].toDouble();
+    QVERIFY(fc > 0.0 && ns > 0.0);
+    const double k = 60.0 * fc / (3.0 * ns);
+    QVERIFY2(std::abs(k - std::round(k)) < 1e-6 && std::round(k) >= 1.0, qPrintable(QString::number(k)));
+    QCOMPARE(fb["k"].toInt(), static_cast<int>(std::round(k)));
+    QVERIFY(fb["reselected"].isObject());
+    const double speed = fb["reselected"].toObject()["q"].toObject()["speed_rpm"].toDouble();
+    QVERIFY2(std::abs(speed - ns) <= 0.02 * ns || fb["speed_window"].toString() == "nearest grid speed",
+             qPrintable(QString::number(speed)));
+    QCOMPARE(r.json["recorded"].toArray().size(), 2);
+
+    const mx::test::CliRun h = mx::test::runCli({"history", path, "--db", db});
+    QVERIFY2(h.code == 0, qPrintable(h.err));
+    QStringList sources;
+    for (const auto& e : h.json["entries"].toArray()) sources << e.toObject()["source"].toString();
+    QVERIFY2(sources.contains("feedback") && sources.contains("automatic"), qPrintable(sources.join(',')));
+
+    // Without chatter the feedback is reported, nothing re-selected; without --db nothing is recorded.
+    const mx::test::CliRun s = mx::test::runCli({"pareto", kCase, "--feedback"});
+    QVERIFY2(s.code == 0, qPrintable(s.err));
+    QVERIFY(!s.json["feedback"].toObject()["chatter"].toBool());
+    QVERIFY(s.json["feedback"].toObject()["reselected"].isNull());
+    QVERIFY(!s.json.contains("recorded"));
   }
 
   // Unknown sections survive: the pareto section is preserved by the project loader (check passes).
