@@ -3,7 +3,7 @@
 set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
-  qt6-base-dev qt6-base-dev-tools libqt6sql6-sqlite libqt6svg6-dev
+  qt6-base-dev qt6-base-dev-tools libqt6sql6-sqlite qt6-svg-dev
   libqcustomplot-dev libeigen3-dev libsundials-dev libfftw3-dev
   libbenchmark-dev xvfb xauth x11-apps fonts-dejavu-core poppler-utils
 )
