@@ -9,8 +9,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "project/project.h"
-#include "stability/semi_discretization.h"
-#include "stability/zero_order_lobes.h"
+#include "stability/lobe_computation.h"
 
 namespace mx::app {
 
@@ -86,19 +85,8 @@ int runLobesCommand(const QStringList& arguments) {
   std::vector<double> rpm_values;
   for (size_t i = 0; i < speeds.size(); ++i) rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
 
-  LobeDiagram diagram;
-  if (request.method == "zoa") {
-    ZoaOptions options;
-    options.delta_per_s = request.delta_per_s;
-    options.max_depth_m = request.max_depth_m;
-    diagram = computeZoaLobes(setup, speeds, options);
-  } else {
-    SdmOptions options;
-    options.delta_per_s = request.delta_per_s;
-    options.max_depth_m = request.max_depth_m;
-    options.steps_per_period = request.steps;
-    diagram = computeSdmLobes(setup, speeds, options);
-  }
+  const StabilityMethod method = request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  const LobeDiagram diagram = computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps});
 
   QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
   for (size_t i = 0; i < speeds.size(); ++i) {

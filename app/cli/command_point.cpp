@@ -12,9 +12,8 @@
 #include "cli/cli_support.h"
 #include "model/cutting_force.h"
 #include "project/project.h"
-#include "stability/semi_discretization.h"
+#include "stability/lobe_computation.h"
 #include "stability/stability_boundary.h"
-#include "stability/zero_order_lobes.h"
 
 namespace mx::app {
 
@@ -52,23 +51,14 @@ int runPointCommand(const QStringList& arguments) {
     to = std::max(project.expert->grid->speed_to_rpm, speed_rpm);
   }
   const std::vector<double> speeds = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(10.0)}.values();
-  LobeDiagram diagram;
-  if (method == "zoa") {
-    ZoaOptions o;
-    o.delta_per_s = delta;
-    diagram = computeZoaLobes(setup, speeds, o);
-  } else {
-    SdmOptions o;
-    o.delta_per_s = delta;
-    o.steps_per_period = steps;
-    diagram = computeSdmLobes(setup, speeds, o);
-  }
+  LobeSettings lobe_settings;
+  lobe_settings.method = method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  lobe_settings.delta_per_s = delta;
+  lobe_settings.sdm_steps_per_period = steps;
+  const LobeDiagram diagram = computeLobes(setup, speeds, lobe_settings);
   const StabilityBoundary boundary(diagram, alpha);
   const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;
-  double depth_span = 0.0;
-  for (double d : diagram.envelope_depth_m)
-    if (std::isfinite(d)) depth_span = std::max(depth_span, alpha * d);
-  const NormalisationSpans spans{speeds.back() - speeds.front(), depth_span > 0.0 ? depth_span : 1.0};
+  const NormalisationSpans spans = boundary.envelopeSpans();
   const CutPerformance perf = evaluateCut(setup, {n, b, feed_mm * 1e-3});
   const double blim = boundary.depthLimit(n);
   const bool stable = boundary.isStable(n, b);

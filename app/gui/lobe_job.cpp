@@ -4,8 +4,6 @@
 #include <limits>
 
 #include "model/job_control.h"
-#include "stability/semi_discretization.h"
-#include "stability/zero_order_lobes.h"
 
 namespace mx::gui {
 
@@ -15,20 +13,6 @@ QVector<double> toMillimetres(const std::vector<double>& depth_m, double factor)
   out.reserve(static_cast<qsizetype>(depth_m.size()));
   for (double b : depth_m) out.push_back(std::isfinite(b) ? b * factor * 1e3 : std::numeric_limits<double>::quiet_NaN());
   return out;
-}
-
-LobeDiagram computeLobes(const LobeJobInput& in, const MillingSetup& setup, double delta, const JobControl& control) {
-  if (in.method == LobeMethod::ZeroOrder) {
-    ZoaOptions o;
-    o.delta_per_s = delta;
-    o.max_depth_m = in.max_depth_m;
-    return computeZoaLobes(setup, in.speeds_rev_per_s, o, control);
-  }
-  SdmOptions o;
-  o.delta_per_s = delta;
-  o.max_depth_m = in.max_depth_m;
-  o.steps_per_period = in.sdm_steps;
-  return computeSdmLobes(setup, in.speeds_rev_per_s, o, control);
 }
 }  // namespace
 
@@ -64,7 +48,9 @@ LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const st
         const double done = static_cast<double>(2 * i + pass);
         if (progress) control.progress = [&](double f) { progress((done + f) / jobs); };
         if (control.cancelled()) throw Cancelled();
-        (pass == 0 ? t.nominal : t.margined) = computeLobes(input, t.setup, pass == 0 ? 0.0 : input.delta_per_s, control);
+        const LobeSettings settings{input.method, pass == 0 ? 0.0 : input.delta_per_s, input.max_depth_m,
+                                    input.sdm_steps};
+        (pass == 0 ? t.nominal : t.margined) = computeLobes(t.setup, input.speeds_rev_per_s, settings, control);
       }
       snapshot->tools.push_back(std::move(t));
     }

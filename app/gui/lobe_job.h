@@ -11,11 +11,12 @@
 
 #include "lobe_chart_view.h"
 #include "model/milling_setup.h"
+#include "stability/lobe_computation.h"
 #include "stability/lobe_diagram.h"
 
 namespace mx::gui {
 
-enum class LobeMethod { ZeroOrder, SemiDiscretization };
+using LobeMethod = StabilityMethod;  // the engine's ZOA / semi-discretization switch
 
 struct LobeJobInput {
   std::vector<MillingSetup> tools;

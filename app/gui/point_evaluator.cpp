@@ -14,11 +14,6 @@ PointEvaluator::PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, dou
   for (const ToolLobes& t : snapshot_->tools) {
     if (t.margined.speed_rev_per_s.size() < 2) return;
     boundaries_.emplace_back(t.margined, snapshot_->alpha);
-    double depth_span = 0.0;
-    for (double b : t.margined.envelope_depth_m)
-      if (std::isfinite(b)) depth_span = std::max(depth_span, snapshot_->alpha * b);
-    const auto& n = t.margined.speed_rev_per_s;
-    spans_.push_back({n.back() - n.front(), depth_span > 0.0 ? depth_span : 1.0});
     // Peak power is proportional to N b s_t at fixed immersion (Pareto eq. 8).
     power_per_depth_feed_speed_.push_back(peakPowerPerDepthFeed(t.setup, 1.0));
   }
@@ -58,7 +53,7 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   r.blim_mm = boundary.depthLimit(n) * 1e3;
   r.stable = boundary.isStable(n, b);
   r.delta_ns_rpm = revPerSToRpm(boundary.speedSecurity(n, b));
-  r.ros = boundary.robustness(n, b, spans_[static_cast<size_t>(tool)]);
+  r.ros = boundary.robustness(n, b, boundary.envelopeSpans());
   r.valid = true;
   return r;
 }

@@ -28,7 +28,6 @@ class PointEvaluator {
  private:
   std::shared_ptr<const LobeSnapshot> snapshot_;
   std::vector<StabilityBoundary> boundaries_;
-  std::vector<NormalisationSpans> spans_;
   std::vector<double> power_per_depth_feed_speed_;  // peak power / (b s_t N) [W s / m^2]
   double spindle_power_w_ = 0.0;
 };

@@ -8,8 +8,6 @@
 #include "expert/candidate_speeds.h"
 #include "model/cutting_force.h"
 #include "model/job_control.h"
-#include "stability/semi_discretization.h"
-#include "stability/zero_order_lobes.h"
 
 namespace mx {
 
@@ -71,18 +69,9 @@ std::vector<double> AdmissibleGrid::lobeSpeeds(const ExpertSettings& s) {
 }
 
 LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s) {
-  const std::vector<double> speeds = lobeSpeeds(s);
-  if (s.stability.method == StabilityMethod::ZeroOrder) {
-    ZoaOptions o;
-    o.delta_per_s = s.stability.delta_per_s;
-    o.max_depth_m = s.stability.max_depth_m;
-    return computeZoaLobes(setup, speeds, o);
-  }
-  SdmOptions o;
-  o.delta_per_s = s.stability.delta_per_s;
-  o.max_depth_m = s.stability.max_depth_m;
-  o.steps_per_period = s.stability.sdm_steps_per_period;
-  return computeSdmLobes(setup, speeds, o);
+  return mx::computeLobes(setup, lobeSpeeds(s),
+                         {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m,
+                          s.stability.sdm_steps_per_period});
 }
 
 AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings)

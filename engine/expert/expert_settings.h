@@ -4,9 +4,9 @@
 // stability method and margins (Rule 1), and the time-domain refinement (Rule 5). SI units.
 #include <limits>
 
-namespace mx {
+#include "stability/lobe_computation.h"  // StabilityMethod
 
-enum class StabilityMethod { ZeroOrder, SemiDiscretization };
+namespace mx {
 
 // Q = (N, b, s_t) on a grid: speeds from..to by step (plus, optionally, the Rule 7.2 speeds
 // 60 f_n / (n_t k) of every mode), depths b_min/k, 2 b_min/k, ... (b_min: the minimum of the margined

@@ -103,6 +103,13 @@ double StabilityBoundary::speedSecurity(double speed, double depth) const {
   return std::isfinite(result) ? result : 0.0;
 }
 
+NormalisationSpans StabilityBoundary::envelopeSpans() const {
+  double depth_span = 0.0;
+  for (double b : depth_)
+    if (std::isfinite(b)) depth_span = std::max(depth_span, b);
+  return {speed_.back() - speed_.front(), depth_span > 0.0 ? depth_span : 1.0};
+}
+
 double StabilityBoundary::robustness(double speed, double depth, const NormalisationSpans& spans) const {
   double best = kInf;
   const double px = speed / spans.speed_rev_per_s, py = depth / spans.depth_m;

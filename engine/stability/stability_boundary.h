@@ -36,6 +36,10 @@ class StabilityBoundary {
   // negative (minus the distance) for an unstable point.
   double robustness(double speed_rev_per_s, double depth_m, const NormalisationSpans& spans) const;
 
+  // The spans the GUI and CLI normalise ROS with: the computed speed range and the largest finite
+  // alpha * b_lim (1 m when the envelope has no finite value).
+  NormalisationSpans envelopeSpans() const;
+
   // Local minima of alpha * envelope (speed, depth), ascending in speed.
   const std::vector<LobeMinimum>& minima() const { return minima_; }
 

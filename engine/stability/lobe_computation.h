@@ -1,0 +1,24 @@
+#pragma once
+// One entry point for the stability lobes of either method (Rule 1): the zeroth-order approximation
+// (Rubio et al. 2006, eq. 8-10) or first-order semi-discretization, with the delta margin.
+#include <vector>
+
+#include "model/job_control.h"
+#include "model/milling_setup.h"
+#include "stability/lobe_diagram.h"
+
+namespace mx {
+
+enum class StabilityMethod { ZeroOrder, SemiDiscretization };
+
+struct LobeSettings {
+  StabilityMethod method = StabilityMethod::ZeroOrder;
+  double delta_per_s = 0.0;      // Rule 1.1
+  double max_depth_m = 0.02;     // envelope = kNone where no lobe lies below
+  int sdm_steps_per_period = 40; // semi-discretization only
+};
+
+LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,
+                         const LobeSettings& settings, const JobControl& control = {});
+
+}  // namespace mx
