@@ -5,14 +5,21 @@
 //   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
 //    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
 //    "c" (the weights after Rule 6), "method", "excluded": [{"tool","reason"}...]}.
-// Exit 2: weights off the simplex or a bad project; exit 1: empty admissible space (message names
-// the constraint that emptied it).
+// Module VII operator rules (Rule 18, docs/operator-rules.md), when the project has "operator_rules":
+//   each tool's rules are evaluated in its own context; fired constraints on the point variables
+//   restrict that tool's points (a tool left without points is "excluded" with the reason "operator
+//   rules"), fired weight.c1/c2/c3 bounds (over all tools) bound c before Rule 4; added key "rules":
+//   the fired rules and advice at the selected tool's q* (as in `pareto`).
+// Exit 2: weights off the simplex, a bad project or operator rules; exit 1: empty admissible space
+// (message names the constraint that emptied it) or the operator rules exclude every point.
 #include <QJsonArray>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "cli/expert_request.h"
+#include "cli/pareto_request.h"
+#include "cli/pareto_rules.h"
 #include "expert/expert_session.h"
 #include "project/project.h"
 
@@ -27,6 +34,17 @@ QJsonObject pointJson(const ExpertPoint& q) {
   return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s))},
           {"depth_mm", rounded(q.depth_m * 1e3)},
           {"feed_mm_per_tooth", rounded(q.feed_per_tooth_m * 1e3)}};
+}
+
+// The rules' point variables of an expert point (MRR in the objective slot).
+ParetoPoint paretoPointOf(const ExpertPoint& q) {
+  ParetoPoint p;
+  p.speed_rev_per_s = q.speed_rev_per_s;
+  p.depth_m = q.depth_m;
+  p.feed_per_tooth_m = q.feed_per_tooth_m;
+  p.power_w = q.power_w;
+  p.objectives[index(Objective::Mrr)] = q.mrr_m3_per_s;
+  return p;
 }
 
 }  // namespace
@@ -52,8 +70,31 @@ int runRankCommand(const QStringList& arguments) {
   if (cr) std::copy(cr->begin(), cr->end(), request.weights.cr.begin());
   const bool simulate = !parser.isSet("no-simulation");
 
+  // Operator rules: one evaluation per tool (its own context).
+  const QStringList ruleTexts = operatorRulesFromProject(project);
+  std::vector<ParetoRules> toolRules;
+  if (!ruleTexts.isEmpty()) {
+    std::vector<const RuleOutcome*> outcomes;
+    for (const QString& id : request.tool_ids) {
+      toolRules.push_back(evaluateParetoRules(ruleTexts, project, *project.findTool(id)));
+    }
+    for (const ParetoRules& r : toolRules) outcomes.push_back(&r.outcome);
+    const std::vector<double> c = applyWeightBounds(outcomes, {"weight.c1", "weight.c2", "weight.c3"},
+                                                    {request.weights.c.begin(), request.weights.c.end()});
+    std::copy(c.begin(), c.end(), request.weights.c.begin());
+  }
+
   ExpertSession session(request.tools, request.settings);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
+  if (!toolRules.empty()) {
+    session.setPointFilter([&](std::size_t tool, const ExpertPoint& q) {
+      return toolRules[tool].admits(paretoPointOf(q), request.tools[tool].teeth);
+    });
+    bool any = false;
+    for (std::size_t t = 0; t < session.toolCount(); ++t) any = any || (!session.grid(t).empty() && !session.filteredOut(t));
+    if (!any)
+      throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
+  }
   const ExpertResult result = session.run(request.weights, simulate);
 
   QJsonArray ranking;
@@ -68,7 +109,9 @@ int runRankCommand(const QStringList& arguments) {
   for (std::size_t t : result.ranking.excluded)
     excluded.append(QJsonObject{
         {"tool", request.tool_ids[static_cast<qsizetype>(t)]},
-        {"reason", QString::fromStdString(describeConstraint(session.grid(t).funnel().emptiedBy(), request.settings))}});
+        {"reason", session.filteredOut(t) ? QString("operator rules: no admissible point satisfies the fired constraints")
+                                          : QString::fromStdString(describeConstraint(
+                                                session.grid(t).funnel().emptiedBy(), request.settings))}});
   const ToolChoice& selected = result.ranking.selected();
   QJsonObject out{{"selected", request.tool_ids[static_cast<qsizetype>(selected.tool)]},
                   {"ranking", ranking},
@@ -78,6 +121,11 @@ int runRankCommand(const QStringList& arguments) {
                   {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
                   {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
                   {"excluded", excluded}};
+  if (!toolRules.empty()) {
+    QJsonObject rules = rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);
+    rules.insert("tool", out.value("selected"));
+    out.insert("rules", rules);
+  }
   printJson(out);
   return kExitOk;
 }

@@ -98,17 +98,22 @@ ParetoRequest paretoRequestFromProject(const Project& project) {
   if (std::floor(iters) != iters)
     fail("pareto.auto_weights.max_iterations", QString::number(iters), "an integer in [1, 100000]");
   r.ascent.max_iterations = static_cast<int>(iters);
-  if (project.document.contains("operator_rules")) {
-    const QJsonValue rv = project.document.value("operator_rules");
-    if (!rv.isArray()) throw CliError("operator_rules: must be an array of strings (one rule each)", kExitBadInput);
-    const QJsonArray rules = rv.toArray();
-    for (qsizetype i = 0; i < rules.size(); ++i) {
-      if (!rules[i].isString() || rules[i].toString().contains('\n'))
-        throw CliError(QString("operator_rules[%1]: must be a string holding one rule").arg(i), kExitBadInput);
-      r.operator_rules << rules[i].toString();
-    }
-  }
+  r.operator_rules = operatorRulesFromProject(project);
   return r;
+}
+
+QStringList operatorRulesFromProject(const Project& project) {
+  QStringList out;
+  if (!project.document.contains("operator_rules")) return out;
+  const QJsonValue rv = project.document.value("operator_rules");
+  if (!rv.isArray()) throw CliError("operator_rules: must be an array of strings (one rule each)", kExitBadInput);
+  const QJsonArray rules = rv.toArray();
+  for (qsizetype i = 0; i < rules.size(); ++i) {
+    if (!rules[i].isString() || rules[i].toString().contains('\n'))
+      throw CliError(QString("operator_rules[%1]: must be a string holding one rule").arg(i), kExitBadInput);
+    out << rules[i].toString();
+  }
+  return out;
 }
 
 ParetoWeights parseParetoWeights(const QString& text) {

@@ -36,6 +36,10 @@ struct ParetoRequest {
 
 ParetoRequest paretoRequestFromProject(const Project& project);
 
+// The project's top-level "operator_rules" (empty when absent); CliError(2) unless an array of
+// one-line strings.
+QStringList operatorRulesFromProject(const Project& project);
+
 // "--w a,b,c,d": four weights on the simplex.
 ParetoWeights parseParetoWeights(const QString& text);
 

@@ -119,35 +119,38 @@ std::map<std::string, double> pointVariables(const ParetoPoint& p, int teeth) {
           {"power_W", p.power_w}};
 }
 
-ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& w) {
-  std::array<double, kObjectiveCount> lo{}, hi{};
+std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& outcomes,
+                                      const std::vector<std::string>& names, const std::vector<double>& w) {
+  const std::size_t n = names.size();
+  std::vector<double> lo(n, 0.0), hi(n, 1.0);
   double sum_lo = 0.0, sum_hi = 0.0;
   bool any = false;
-  for (std::size_t i = 0; i < kObjectiveCount; ++i) {
-    lo[i] = 0.0;
-    hi[i] = 1.0;
-    if (const VariableBounds* b = outcome.boundsOf(kWeightVariables[i])) {
-      any = true;
-      lo[i] = std::max(0.0, b->lower);
-      hi[i] = std::min(1.0, b->upper);
-    }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const RuleOutcome* outcome : outcomes)
+      if (const VariableBounds* b = outcome->boundsOf(names[i])) {
+        any = true;
+        lo[i] = std::max(lo[i], b->lower);
+        hi[i] = std::min(hi[i], b->upper);
+      }
+    if (lo[i] > hi[i])
+      throw CliError(QString("operator_rules: %1 has no admissible value in [0, 1] (bounds [%2, %3])")
+                         .arg(qs(names[i]))
+                         .arg(lo[i])
+                         .arg(hi[i]),
+                     kExitBadInput);
     sum_lo += lo[i];
     sum_hi += hi[i];
   }
   if (!any) return w;
   if (sum_lo > 1.0 + 1e-12 || sum_hi < 1.0 - 1e-12)
-    throw CliError(QString("operator_rules: the weight.* bounds leave no weights on the simplex (sum of lower "
+    throw CliError(QString("operator_rules: the weight bounds leave no weights on the simplex (sum of lower "
                            "bounds %1, sum of upper bounds %2)")
                        .arg(sum_lo)
                        .arg(sum_hi),
                    kExitBadInput);
-  for (std::size_t i = 0; i < kObjectiveCount; ++i)
-    if (lo[i] > hi[i])
-      throw CliError(QString("operator_rules: %1 has no admissible value in [0, 1]").arg(kWeightVariables[i]),
-                     kExitBadInput);
   auto total = [&](double lambda) {
     double s = 0.0;
-    for (std::size_t i = 0; i < kObjectiveCount; ++i) s += std::clamp(w[i] + lambda, lo[i], hi[i]);
+    for (std::size_t i = 0; i < n; ++i) s += std::clamp(w[i] + lambda, lo[i], hi[i]);
     return s;
   };
   double a = -2.0, b = 2.0;  // total(a) = sum lo <= 1 <= sum hi = total(b)
@@ -155,11 +158,11 @@ ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& 
     const double m = 0.5 * (a + b);
     (total(m) < 1.0 ? a : b) = m;
   }
-  ParetoWeights out{};
+  std::vector<double> out(n);
   double s = 0.0;
-  for (std::size_t i = 0; i < kObjectiveCount; ++i) s += out[i] = std::clamp(w[i] + 0.5 * (a + b), lo[i], hi[i]);
+  for (std::size_t i = 0; i < n; ++i) s += out[i] = std::clamp(w[i] + 0.5 * (a + b), lo[i], hi[i]);
   // Remove the bisection residue (~1e-16) on a weight strictly inside its bounds.
-  for (std::size_t i = 0; i < kObjectiveCount; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const double v = out[i] + (1.0 - s);
     if (v >= lo[i] && v <= hi[i]) {
       out[i] = v;
@@ -167,6 +170,12 @@ ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& 
     }
   }
   return out;
+}
+
+ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& w) {
+  const std::vector<double> out = applyWeightBounds({&outcome}, {kWeightVariables.begin(), kWeightVariables.end()},
+                                                    {w.begin(), w.end()});
+  return {out[0], out[1], out[2], out[3]};
 }
 
 std::optional<ParetoSelection> selectWhere(const ObjectiveTable& table, const ParetoWeights& w,

@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "pareto/objective_table.h"
 #include "pareto/pareto_selector.h"
@@ -44,7 +45,13 @@ ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project
 // The decision variables of a point, in the rules' units.
 std::map<std::string, double> pointVariables(const ParetoPoint& p, int teeth);
 
-// Projects w onto the simplex within the fired weight.* bounds; CliError(2) when they leave no weights.
+// Projects w onto the simplex within the bounds that the `outcomes` fired on the variables `names`
+// (w_i between the largest lower and the smallest upper bound of names[i] over all outcomes): clamp
+// w_i + lambda, one lambda for all, chosen so that the sum is 1 (the Euclidean projection).
+// CliError(2) when the bounds leave no weights on the simplex.
+std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& outcomes,
+                                      const std::vector<std::string>& names, const std::vector<double>& w);
+// The Pareto weights under the fired weight.tol/mrr/surf/ros bounds.
 ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& w);
 
 // Coarse selection (Rule 10.1) over the table points passing `admit`; nullopt when none passes.

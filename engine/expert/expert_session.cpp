@@ -17,10 +17,13 @@ RankKey keyOf(const ToolChoice& t, double cost) {
   return {cost, t.q.mrr_m3_per_s, t.q.power_w, t.q.speed_rev_per_s, t.q.depth_m};
 }
 
-// Visits every admissible point of a grid with its cost; visit(cell, feed_index, cost) returns nothing.
+using Admit = std::function<bool(const ExpertPoint&)>;
+
+// Visits every admissible point of a grid (passing `admit`, when given) with its cost;
+// visit(cell, feed_index, cost) returns nothing.
 template <class Visit>
 void forEachPoint(const AdmissibleGrid& grid, const std::array<double, 3>& c, const CostNormalisation& nf,
-                  const Visit& visit) {
+                  const Admit& admit, const Visit& visit) {
   const double fs = grid.feedStep();
   const double power_weight = std::isfinite(nf.available_power_w) ? c[0] / nf.available_power_w : 0.0;
   const double mrr_weight = c[1] * nf.max_mrr_m3_per_s;
@@ -33,6 +36,7 @@ void forEachPoint(const AdmissibleGrid& grid, const std::array<double, 3>& c, co
     const double k = dns_weight / cell.speed_security;
     for (int f = 1; f <= cell.feed_count; ++f) {
       const double s = fs * f;
+      if (admit && !admit(grid.point(i, f))) continue;
       visit(i, f, a * s + b / s + k);
     }
   }
@@ -52,12 +56,12 @@ ToolChoice makeChoice(const AdmissibleGrid& grid, std::size_t tool, std::size_t 
 
 // The minimum-cost point of one grid (ties by rankBefore). nullopt for an empty grid.
 std::optional<ToolChoice> bestOfGrid(const AdmissibleGrid& grid, std::size_t tool, const std::array<double, 3>& c,
-                                     const CostNormalisation& nf) {
+                                     const CostNormalisation& nf, const Admit& admit) {
   bool have = false;
   double best_cost = 0.0;
   std::size_t best_cell = 0;
   int best_feed = 0;
-  forEachPoint(grid, c, nf, [&](std::size_t cell, int feed, double cost) {
+  forEachPoint(grid, c, nf, admit, [&](std::size_t cell, int feed, double cost) {
     if (!have) {
       have = true;
     } else {
@@ -96,6 +100,19 @@ ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettin
   }
 }
 
+std::function<bool(const ExpertPoint&)> ExpertSession::admitFor(std::size_t tool) const {
+  if (!filter_) return {};
+  return [this, tool](const ExpertPoint& p) { return filter_(tool, p); };
+}
+
+bool ExpertSession::filteredOut(std::size_t tool) const {
+  const AdmissibleGrid& grid = grids_.at(tool);
+  if (grid.empty() || !filter_) return false;
+  bool any = false;
+  forEachPoint(grid, {1.0, 0.0, 0.0}, nf_, admitFor(tool), [&](std::size_t, int, double) { any = true; });
+  return !any;
+}
+
 bool ExpertSession::empty() const {
   return std::all_of(grids_.begin(), grids_.end(), [](const AdmissibleGrid& g) { return g.empty(); });
 }
@@ -115,7 +132,7 @@ Ranking ExpertSession::rank(const std::array<double, 3>& c) const {
   Ranking r;
   r.c = c;
   for (std::size_t t = 0; t < grids_.size(); ++t) {
-    if (auto best = bestOfGrid(grids_[t], t, c, nf_))
+    if (auto best = bestOfGrid(grids_[t], t, c, nf_, admitFor(t)))
       r.tools.push_back(*best);
     else
       r.excluded.push_back(t);
@@ -130,7 +147,7 @@ std::vector<double> ExpertSession::minimumCosts(const std::array<double, 3>& c) 
   validateSimplexWeights("c", {c.begin(), c.end()}, 3);
   std::vector<double> out;
   for (std::size_t t = 0; t < grids_.size(); ++t) {
-    const auto best = bestOfGrid(grids_[t], t, c, nf_);
+    const auto best = bestOfGrid(grids_[t], t, c, nf_, admitFor(t));
     out.push_back(best ? best->min_cost : std::numeric_limits<double>::quiet_NaN());
   }
   return out;
@@ -141,7 +158,7 @@ std::vector<ToolChoice> ExpertSession::bestPoints(std::size_t tool, const std::a
   const AdmissibleGrid& grid = grids_.at(tool);
   std::vector<ToolChoice> best;
   if (count == 0) return best;
-  forEachPoint(grid, c, nf_, [&](std::size_t cell, int feed, double cost) {
+  forEachPoint(grid, c, nf_, admitFor(tool), [&](std::size_t cell, int feed, double cost) {
     if (best.size() == count) {
       const ExpertPoint p = grid.point(cell, feed);
       if (!rankBefore({cost, p.mrr_m3_per_s, p.power_w, p.speed_rev_per_s, p.depth_m}, keyOf(best.back(), best.back().min_cost)))

@@ -11,6 +11,7 @@
 // concurrently; refine/run mutate the simulation cache (internally locked).
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,12 @@ class ExpertSession {
   bool empty() const;
   std::string emptyReason() const;
 
+  // Module VII (Pareto paper, Rule 18) operator constraints: when set, rank, minimumCosts, bestPoints
+  // and refine consider only the points of each tool that pass `filter(tool, point)`; a tool left with
+  // no point is excluded from the ranking (filteredOut() tells it apart from an empty Q).
+  using PointFilter = std::function<bool(std::size_t tool, const ExpertPoint& point)>;
+  void setPointFilter(PointFilter filter) { filter_ = std::move(filter); }
+  bool filteredOut(std::size_t tool) const;  // Q non-empty, but no point passes the filter
   // Rule 4. c must lie on the simplex (InvalidInput otherwise).
   Ranking rank(const std::array<double, 3>& c) const;
   // Minimum cost of every tool (NaN for an empty Q), in tool order: the figure 4/5 sweeps.
@@ -86,11 +93,14 @@ class ExpertSession {
   const SimulationCache& simulations() const { return cache_; }
 
  private:
+  std::function<bool(const ExpertPoint&)> admitFor(std::size_t tool) const;
+
   ExpertSettings settings_;
   std::vector<MillingSetup> tools_;
   std::vector<AdmissibleGrid> grids_;
   CostNormalisation nf_;
   SimulationCache cache_;
+  PointFilter filter_;
 };
 
 }  // namespace mx

@@ -30,6 +30,19 @@ QString rubioWith(const QTemporaryDir& dir, const QString& key, double value) {
   out.write(QJsonDocument(root).toJson());
   return path;
 }
+
+// The Rubio project with these operator_rules, written to dir.
+QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
+  QFile in(kRubio);
+  in.open(QIODevice::ReadOnly);
+  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+  root["operator_rules"] = QJsonArray::fromStringList(rules);
+  const QString path = dir.filePath("rules.mxproj");
+  QFile out(path);
+  out.open(QIODevice::WriteOnly);
+  out.write(QJsonDocument(root).toJson());
+  return path;
+}
 }  // namespace
 
 class TestCliRank : public QObject {
@@ -137,6 +150,43 @@ class TestCliRank : public QObject {
     QCOMPARE(cli({"weights-sweep", kRubio}).code, 2);
     QCOMPARE(cli({"weights-sweep", kRubio, "--c3", "0.1", "--simplex", "0.1"}).code, 2);
     QCOMPARE(cli({"weights-sweep", kRubio, "--c3", "1.5"}).code, 2);
+  }
+
+  // Module VII in `rank`: a speed constraint on R1 moves its q* below the bound, a weight rule bounds
+  // c3, advice is reported with whether q* follows it, and a rule excluding a tool's every point
+  // excludes the tool with the reason.
+  void operatorRulesInRank() {
+    QTemporaryDir dir;
+    const QString path = rubioWithRules(dir, {"if tool.id == \"R1\" then speed_rpm <= 3000",
+                                              "if material.name != \"none\" then weight.c3 >= 0.5",
+                                              "if tool.teeth >= 2 then advise depth_mm <= 0.3 because \"light cuts\""});
+    const Run r = cli({"rank", path, "--no-simulation"});
+    QCOMPARE(r.code, 0);
+    const QJsonArray c = r.json["c"].toArray();
+    QVERIFY(c[2].toDouble() >= 0.5 - 1e-12);
+    QCOMPARE_LE(std::abs(c[0].toDouble() + c[1].toDouble() + c[2].toDouble() - 1.0), 1e-12);
+    for (const QJsonValue& t : r.json["ranking"].toArray()) {
+      const QJsonObject tool = t.toObject();
+      if (tool["tool"].toString() == "R1") QVERIFY(tool["q"].toObject()["speed_rpm"].toDouble() <= 3000.0);
+    }
+    const QJsonObject rules = r.json["rules"].toObject();
+    QCOMPARE(rules["fired"].toArray().size(), 3);
+    const QJsonObject advice = rules["advice"].toArray()[0].toObject();
+    const double depth = r.json["q_star"].toObject()["depth_mm"].toDouble();
+    QCOMPARE(advice["followed"].toBool(), depth <= 0.3);
+
+    const Run excluded = cli({"rank", rubioWithRules(dir, {"if tool.teeth == 2 then speed_rpm <= 10"}), "--no-simulation"});
+    QCOMPARE(excluded.code, 0);
+    QCOMPARE(excluded.json["ranking"].toArray().size(), 1);
+    QCOMPARE(excluded.json["excluded"].toArray()[0].toObject()["tool"].toString(), QString("R2"));
+    QVERIFY(excluded.json["excluded"].toArray()[0].toObject()["reason"].toString().startsWith("operator rules"));
+
+    const Run none = cli({"rank", rubioWithRules(dir, {"speed_rpm <= 10"}), "--no-simulation"});
+    QCOMPARE(none.code, 1);
+    QVERIFY(none.err.contains("operator rules exclude every admissible point"));
+    const Run bad = cli({"rank", rubioWithRules(dir, {"if tool.teeth >= then speed_rpm <= 10"})});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("operator_rules[0]: line 1, column"));
   }
 };
 
