@@ -20,12 +20,15 @@
 //     and the operator rules. "feedback": {"chatter", "chip_ratio", "chatter_frequency_Hz",
 //     "suggested_speed_rpm", "k", "reselected": {"q", "mrr_cm3_s", "tol", "surf", "ros", "j", "eta",
 //     "chip_ratio", "chatter"} or null}.
+//   --front-limit N: at most N points in "pareto_set" (default 2000, 0: all), the best J first; added
+//     keys "pareto_set_size" (the whole set) and "pareto_set_truncated".
 //   --db FILE: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
 //     added key "recorded") in the
 //     Rule 14 learning database; without --db nothing is recorded.
 // Exit 2: bad project/pareto section/flags/operator rules (parse error or contradiction); exit 1: empty
 // admissible space, or the operator rules exclude every point of it.
 #include <QJsonArray>
+#include <algorithm>
 #include <cmath>
 
 #include "cli/cli_application.h"
@@ -34,6 +37,7 @@
 #include "cli/expert_request.h"
 #include "cli/pareto_request.h"
 #include "cli/pareto_rules.h"
+#include "cli/pareto_study.h"
 #include "learning/learning_database.h"
 #include "expert/admissible_grid.h"
 #include "pareto/objective_table.h"
@@ -78,6 +82,16 @@ LearningRecord learningRecord(const Project& project, const ToolSpec& tool, cons
   return r;
 }
 
+std::size_t frontLimit(const QCommandLineParser& parser) {
+  if (!parser.isSet("front-limit")) return 2000;
+  bool ok = false;
+  const int n = parser.value("front-limit").toInt(&ok);
+  if (!ok || n < 0)
+    throw CliError(QString("--front-limit = %1: must be an integer >= 0 (0: no limit)").arg(parser.value("front-limit")),
+                   kExitBadInput);
+  return static_cast<std::size_t>(n);
+}
+
 }  // namespace
 
 int runParetoCommand(const QStringList& arguments) {
@@ -91,6 +105,7 @@ int runParetoCommand(const QStringList& arguments) {
       {"auto-weights", "Rule 12: gradient ascent on the weights (pareto.auto_weights step/tolerance)."},
       {"feedback", "Module VI: Rule 15 chatter check of q; on chatter, Rule 16 speed and a re-selection."},
       {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
+      {"front-limit", "At most N points in pareto_set, the best J first (default 2000; 0: all).", "N"},
   });
   const QString path = parseSubcommand(parser, arguments);
   std::optional<ParetoWeights> w_flag;
@@ -98,76 +113,34 @@ int runParetoCommand(const QStringList& arguments) {
   std::optional<ObjectiveRequirement> requirement;
   if (parser.isSet("require")) requirement = parseRequirement(parser.value("require"));
 
-  const Project project = loadProject(path);
-  const ExpertRequest expert = expertRequestFromProject(project);
-  const ParetoRequest request = paretoRequestFromProject(project);
-  ParetoWeights weights = w_flag.value_or(request.weights);
-  const MillingSetup setup = project.setupFor(request.tool);
-  const ToolSpec& tool = *project.findTool(request.tool);
-  std::optional<ParetoRules> rules;
-  if (!request.operator_rules.isEmpty()) {
-    rules = evaluateParetoRules(request.operator_rules, project, tool);
-    weights = applyWeightRules(rules->outcome, weights);
-  }
-  auto ruleAdmits = [&](const ParetoPoint& p) { return !rules || rules->admits(p, setup.teeth); };
+  const ParetoStudy study(loadProject(path));
+  const Project& project = study.project();
+  const ExpertRequest& expert = study.expert();
+  const ParetoRequest& request = study.request();
+  const MillingSetup& setup = study.setup();
+  const ToolSpec& tool = study.tool();
+  const std::optional<ParetoRules>& rules = study.rules();
+  auto ruleAdmits = [&](const ParetoPoint& p) { return study.ruleAdmits(p); };
+  const AdmissibleGrid& grid = study.grid();
+  const ObjectiveTable& table = study.table();
 
-  const AdmissibleGrid grid(setup, expert.settings);
-  if (grid.empty())
-    throw CliError(QString("the admissible space of tool '%1' is empty: %2")
-                       .arg(request.tool,
-                            QString::fromStdString(describeConstraint(grid.funnel().emptiedBy(), expert.settings))),
-                   kExitComputationFailed);
-  const ObjectiveTable table(grid, request.models);
-  const ParetoSelector selector(table);
-
+  const ParetoChoice choice =
+      study.choose({w_flag, requirement, parser.isSet("fine"), parser.isSet("auto-weights")});
+  const ParetoWeights weights = choice.weights;
+  const ParetoSelection& chosen = choice.selection;
+  const double coarse_j = choice.coarse_j;
   QJsonObject out;
   if (requirement) {
-    const RequirementResult r = applyRequirement(selector, weights, *requirement);
-    weights = r.weights;
     const double scale = requirement->objective == Objective::Mrr ? 1e6 : 1.0;
     out.insert("requirement", QJsonObject{{"key", parser.value("require").section('=', 0, 0)},
                                           {"lo", requirement->lo * scale},
                                           {"hi", requirement->hi * scale},
-                                          {"satisfied", r.satisfied},
-                                          {"weights_changed", r.changed}});
+                                          {"satisfied", choice.requirement_satisfied},
+                                          {"weights_changed", choice.requirement_changed}});
   }
-  if (parser.isSet("auto-weights")) {
-    const GradientAscentResult a = ascendWeights(selector, weights, request.ascent, requirement);
-    weights = a.weights;
-    out.insert("ascent", QJsonObject{{"iterations", a.iterations}, {"converged", a.converged}});
-  }
-  if (rules) weights = applyWeightRules(rules->outcome, weights);
-  const bool ruleFilter = rules && rules->restrictsPoint();
-  ParetoSelection chosen;
-  if (!ruleFilter) {
-    chosen = selector.coarse(weights, requirement);
-  } else {
-    std::optional<ParetoSelection> s = selectWhere(
-        table, weights, [&](const ParetoPoint& p) { return ruleAdmits(p) && (!requirement || requirement->satisfiedBy(p)); });
-    if (!s && requirement) {
-      s = selectWhere(table, weights, ruleAdmits);
-      if (s) s->filtered = false;
-    }
-    if (!s)
-      throw CliError(QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
-                         .arg(request.tool)
-                         .arg(table.size()),
-                     kExitComputationFailed);
-    chosen = *s;
-  }
-  const double coarse_j = chosen.j;
-  if (parser.isSet("fine")) {
-    const ParetoSelection f = selector.fine(chosen, weights, request.fine, requirement);
-    if (ruleAdmits(f.point))
-      chosen = f;
-    else
-      out.insert("fine_rejected_by_rules", true);
-  }
-  if (requirement && out.contains("requirement")) {
-    QJsonObject req = out.value("requirement").toObject();
-    req.insert("satisfied", requirement->satisfiedBy(chosen.point));
-    out.insert("requirement", req);
-  }
+  if (choice.ascent)
+    out.insert("ascent", QJsonObject{{"iterations", choice.ascent->iterations}, {"converged", choice.ascent->converged}});
+  if (choice.fine_rejected_by_rules) out.insert("fine_rejected_by_rules", true);
 
   // eta of q from the time-domain simulation (Rule 15's chip ratio is reported beside it).
   SimulationOptions options;
@@ -253,8 +226,19 @@ int runParetoCommand(const QStringList& arguments) {
     }
   }
 
+  // The non-dominated set, best J first when it is longer than --front-limit.
+  std::vector<std::size_t> shown = study.front();
+  const std::size_t limit = frontLimit(parser);
+  if (limit > 0 && shown.size() > limit) {
+    std::partial_sort(shown.begin(), shown.begin() + static_cast<std::ptrdiff_t>(limit), shown.end(),
+                      [&](std::size_t a, std::size_t b) {
+                        return objectiveJ(weights, table.scores()[a]) > objectiveJ(weights, table.scores()[b]);
+                      });
+    shown.resize(limit);
+    std::sort(shown.begin(), shown.end());
+  }
   QJsonArray front;
-  for (std::size_t i : nonDominated(table.scores())) {
+  for (std::size_t i : shown) {
     const ParetoPoint& p = table.points()[i];
     front.append(QJsonObject{{"q", qJson(p)},
                              {"tol", p.tol()},
@@ -262,6 +246,8 @@ int runParetoCommand(const QStringList& arguments) {
                              {"surf", p.surf()},
                              {"ros", p.ros()}});
   }
+  out.insert("pareto_set_size", static_cast<qint64>(study.front().size()));
+  out.insert("pareto_set_truncated", shown.size() < study.front().size());
   out.insert("q", qJson(q));
   out.insert("feed_velocity_mm_s", q.feed_per_tooth_m * setup.teeth * q.speed_rev_per_s * 1e3);
   out.insert("mrr_cm3_s", q.mrr() * 1e6);

@@ -98,6 +98,8 @@ class TestCliPareto : public QObject {
     QTest::newRow("--require key") << QStringList{} << QStringList{"--require", "speed=1:2"}
                                    << "--require key = 'speed': must be one of mrr_cm3_s, tol, surf, ros";
     QTest::newRow("--require order") << QStringList{} << QStringList{"--require", "mrr_cm3_s=2:1"} << "LO <= HI";
+    QTest::newRow("--front-limit") << QStringList{} << QStringList{"--front-limit", "-3"}
+                                   << "--front-limit = -3: must be an integer >= 0";
   }
   void errors() {
     QFETCH(QStringList, mutations);
@@ -108,6 +110,24 @@ class TestCliPareto : public QObject {
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+
+  // --front-limit keeps the N points of the whole set with the best J; 0 lists the whole set.
+  void frontLimit() {
+    const mx::test::CliRun all = mx::test::runCli({"pareto", kCase, "--front-limit", "0"});
+    QCOMPARE(all.code, 0);
+    const qint64 size = all.json["pareto_set_size"].toInteger();
+    QCOMPARE(all.json["pareto_set"].toArray().size(), size);
+    QCOMPARE(all.json["pareto_set_truncated"].toBool(), false);
+    const mx::test::CliRun few = mx::test::runCli({"pareto", kCase, "--front-limit", "10"});
+    QCOMPARE(few.code, 0);
+    QCOMPARE(few.json["pareto_set_size"].toInteger(), size);
+    QCOMPARE(few.json["pareto_set"].toArray().size(), 10);
+    QVERIFY(few.json["pareto_set_truncated"].toBool());
+    // The chosen q (the best J of Q, a front point) is among the 10 kept.
+    bool found = false;
+    for (const QJsonValue& p : few.json["pareto_set"].toArray()) found = found || p.toObject()["q"] == few.json["q"];
+    QVERIFY(found);
   }
 
   // Rule 18: a fired speed constraint restricts q and is named in rules.fired; advice is listed.

@@ -1,0 +1,105 @@
+#include "cli/pareto_study.h"
+
+#include <limits>
+
+#include "cli/cli_application.h"
+#include "cli/cli_support.h"
+#include "pareto/pareto_front.h"
+
+namespace mx::app {
+
+ParetoStudy::ParetoStudy(Project project)
+    : project_(std::move(project)),
+      expert_(expertRequestFromProject(project_)),
+      request_(paretoRequestFromProject(project_)),
+      setup_(project_.setupFor(request_.tool)) {
+  if (!request_.operator_rules.isEmpty()) rules_ = evaluateParetoRules(request_.operator_rules, project_, tool());
+  grid_ = std::make_unique<AdmissibleGrid>(setup_, expert_.settings);
+  if (grid_->empty())
+    throw CliError(QString("the admissible space of tool '%1' is empty: %2")
+                       .arg(request_.tool, QString::fromStdString(
+                                               describeConstraint(grid_->funnel().emptiedBy(), expert_.settings))),
+                   kExitComputationFailed);
+  table_ = std::make_unique<ObjectiveTable>(*grid_, request_.models);
+  front_ = nonDominated(table_->scores());
+}
+
+ParetoChoice ParetoStudy::choose(const ParetoChoiceOptions& options) const {
+  ParetoChoice out;
+  ParetoWeights w = options.weights.value_or(request_.weights);
+  if (rules_) w = applyWeightRules(rules_->outcome, w);
+  const ParetoSelector sel(*table_);
+  const std::optional<ObjectiveRequirement>& requirement = options.requirement;
+  if (requirement) {
+    const RequirementResult r = applyRequirement(sel, w, *requirement);
+    w = r.weights;
+    out.requirement_changed = r.changed;
+  }
+  if (options.auto_weights) {
+    out.ascent = ascendWeights(sel, w, request_.ascent, requirement);
+    w = out.ascent->weights;
+  }
+  if (rules_) w = applyWeightRules(rules_->outcome, w);
+  out.weights = w;
+
+  auto admits = [&](const ParetoPoint& p) { return ruleAdmits(p); };
+  if (!rules_ || !rules_->restrictsPoint()) {
+    out.selection = sel.coarse(w, requirement);
+  } else {
+    std::optional<ParetoSelection> s =
+        selectWhere(*table_, w, [&](const ParetoPoint& p) { return admits(p) && (!requirement || requirement->satisfiedBy(p)); });
+    if (!s && requirement) {
+      s = selectWhere(*table_, w, admits);
+      if (s) s->filtered = false;
+    }
+    if (!s)
+      throw CliError(QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
+                         .arg(request_.tool)
+                         .arg(table_->size()),
+                     kExitComputationFailed);
+    out.selection = *s;
+  }
+  out.coarse_j = out.selection.j;
+  if (options.fine) {
+    const ParetoSelection f = sel.fine(out.selection, w, request_.fine, requirement);
+    if (admits(f.point))
+      out.selection = f;
+    else
+      out.fine_rejected_by_rules = true;
+  }
+  out.requirement_satisfied = requirement && requirement->satisfiedBy(out.selection.point);
+  return out;
+}
+
+std::vector<std::optional<ParetoWeights>> ParetoStudy::supportingWeights(int divisions) const {
+  const std::size_t m = front_.size();
+  std::vector<ParetoWeights> sums(m, ParetoWeights{});
+  std::vector<int> counts(m, 0);
+  const double step = 1.0 / divisions;
+  for (int a = 0; a <= divisions; ++a)
+    for (int b = 0; a + b <= divisions; ++b)
+      for (int c = 0; a + b + c <= divisions; ++c) {
+        const ParetoWeights w{a * step, b * step, c * step, (divisions - a - b - c) * step};
+        double best = -std::numeric_limits<double>::infinity();
+        std::size_t arg = 0;
+        for (std::size_t k = 0; k < m; ++k) {
+          const double j = objectiveJ(w, table_->scores()[front_[k]]);
+          if (j > best) {
+            best = j;
+            arg = k;
+          }
+        }
+        for (std::size_t i = 0; i < kObjectiveCount; ++i) sums[arg][i] += w[i];
+        ++counts[arg];
+      }
+  std::vector<std::optional<ParetoWeights>> out(m);
+  for (std::size_t k = 0; k < m; ++k)
+    if (counts[k] > 0) {
+      ParetoWeights w{};
+      for (std::size_t i = 0; i < kObjectiveCount; ++i) w[i] = sums[k][i] / counts[k];
+      out[k] = renormaliseBySum(w);
+    }
+  return out;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,84 @@
+#pragma once
+// The Pareto expert system (Pareto paper, module V with the operator rules of module VII) for one
+// project, shared by `millexpert-cli pareto` and the GUI's Pareto docks. Construction does the work
+// that does not depend on the weights (the admissible grid of the project's pareto.tool, the
+// objective table, the non-dominated set and the operator rules); choose() then runs the weight
+// pipeline and the selection in milliseconds:
+//   weights (given or pareto.weights) -> weight.* rules (projection onto the simplex within the
+//   bounds) -> Rule 11 (requirement) -> Rule 12 (auto weights) -> weight.* rules again -> Rule 10.1
+//   coarse selection among the points obeying the point rules (and the requirement, unless no point
+//   meets it) -> Rule 10.2 fine search, kept only when it obeys the point rules.
+// Errors: CliError (2: bad project, pareto section or operator rules; 1: empty admissible space).
+// The study owns copies of its inputs: build it on any thread, then use it read-only from any thread.
+#include <QString>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "cli/expert_request.h"
+#include "cli/pareto_request.h"
+#include "cli/pareto_rules.h"
+#include "expert/admissible_grid.h"
+#include "pareto/objective_table.h"
+#include "pareto/pareto_selector.h"
+#include "pareto/weight_modulation.h"
+#include "project/project.h"
+
+namespace mx::app {
+
+struct ParetoChoiceOptions {
+  std::optional<ParetoWeights> weights;            // default: pareto.weights of the project
+  std::optional<ObjectiveRequirement> requirement;  // Rule 11
+  bool fine = false;                                // Rule 10.2
+  bool auto_weights = false;                        // Rule 12
+};
+
+struct ParetoChoice {
+  ParetoWeights weights{};   // final weights (after rules, Rule 11 and Rule 12)
+  ParetoSelection selection;
+  double coarse_j = 0.0;
+  bool requirement_changed = false;    // Rule 11 moved the weights
+  bool requirement_satisfied = false;  // the chosen point meets the requirement
+  std::optional<GradientAscentResult> ascent;
+  bool fine_rejected_by_rules = false;
+  const ParetoPoint& point() const { return selection.point; }
+};
+
+class ParetoStudy {
+ public:
+  explicit ParetoStudy(Project project);
+  ParetoStudy(const ParetoStudy&) = delete;
+  ParetoStudy& operator=(const ParetoStudy&) = delete;
+
+  const Project& project() const { return project_; }
+  const ExpertRequest& expert() const { return expert_; }
+  const ParetoRequest& request() const { return request_; }
+  const ToolSpec& tool() const { return *project_.findTool(request_.tool); }
+  const MillingSetup& setup() const { return setup_; }
+  const std::optional<ParetoRules>& rules() const { return rules_; }
+  const AdmissibleGrid& grid() const { return *grid_; }
+  const ObjectiveTable& table() const { return *table_; }
+  ParetoSelector selector() const { return ParetoSelector(*table_); }
+  const std::vector<std::size_t>& front() const { return front_; }  // indices into table().points()
+
+  bool ruleAdmits(const ParetoPoint& p) const { return !rules_ || rules_->admits(p, setup_.teeth); }
+  ParetoChoice choose(const ParetoChoiceOptions& options) const;
+
+  // For each front point (aligned with front()), weights that select it by Rule 10.1 among the front,
+  // found on the simplex lattice with `divisions` steps per unit: the mean of the lattice weights
+  // whose optimum it is (the set of such weights is convex, so the mean selects it too); nullopt for
+  // points no lattice weight selects (unsupported points in a non-convex part of the front).
+  std::vector<std::optional<ParetoWeights>> supportingWeights(int divisions = 20) const;
+
+ private:
+  Project project_;
+  ExpertRequest expert_;
+  ParetoRequest request_;
+  MillingSetup setup_;
+  std::optional<ParetoRules> rules_;
+  std::unique_ptr<AdmissibleGrid> grid_;
+  std::unique_ptr<ObjectiveTable> table_;
+  std::vector<std::size_t> front_;
+};
+
+}  // namespace mx::app
