@@ -9,4 +9,6 @@ shot() { xvfb-run -a -s "-screen 0 1920x1080x24" "$bin" "$@" 2> >(grep -v XDG_RU
 shot projects/rubio2006-tool-selection.mxproj --screenshot docs/screenshots/main-window.png
 shot projects/rubio2006-tool-selection.mxproj --point 5100,1.2,0.1 --screenshot docs/screenshots/chatter.png
 shot projects/benchmark-insperger-1dof.mxproj --screenshot docs/screenshots/insperger-benchmark.png
+shot projects/rubio-pareto-case.mxproj --pareto --docks paretoFrontDock,paretoWeightsDock --screenshot docs/screenshots/pareto-front.png
+shot projects/rubio-pareto-case.mxproj --pareto --docks monitoringDock,operatorRulesDock --screenshot docs/screenshots/pareto-monitoring.png
 echo "screenshots written to docs/screenshots/"

@@ -54,6 +54,13 @@ OperatorRulesEditor::OperatorRulesEditor(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(edit_, 1);
   layout->addWidget(status_);
+  notes_ = new QLabel(this);
+  notes_->setObjectName("operator_rules_notes");
+  notes_->setWordWrap(true);
+  notes_->setTextFormat(Qt::PlainText);
+  notes_->setToolTip(tr("The rules evaluated at the current operating point: contradictions, violated constraints and advice"));
+  notes_->setVisible(false);
+  layout->addWidget(notes_);
   layout->addWidget(errors_);
   check();
 }
@@ -115,6 +122,12 @@ bool OperatorRulesEditor::check() {
     emit rulesChanged(lines);
   }
   return ok;
+}
+
+void OperatorRulesEditor::setNotes(const QStringList& notes) {
+  notes_list_ = notes;
+  notes_->setText(notes.join('\n'));
+  notes_->setVisible(!notes.isEmpty());
 }
 
 QStringList OperatorRulesEditor::errorMessages() const {

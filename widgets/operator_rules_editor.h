@@ -38,6 +38,11 @@ class OperatorRulesEditor : public QWidget {
   // Parses now (cancels a pending debounced check). Returns true when there is no error.
   bool check();
 
+  // Evaluation notes for the current point, under the status line: contradictions, violated fired
+  // constraints, advice (plain text, one per line; empty hides the label).
+  void setNotes(const QStringList& notes);
+  QStringList notes() const { return notes_list_; }
+
   QList<int> errorLines() const { return error_lines_; }  // 1-based, ascending
   QStringList errorMessages() const;                    // as listed
   QPlainTextEdit* textEdit() const { return edit_; }
@@ -54,6 +59,8 @@ class OperatorRulesEditor : public QWidget {
   QPlainTextEdit* edit_ = nullptr;
   QListWidget* errors_ = nullptr;
   QLabel* status_ = nullptr;
+  QLabel* notes_ = nullptr;
+  QStringList notes_list_;
   QTimer* timer_ = nullptr;
   QList<int> error_lines_;
   QList<int> error_columns_;

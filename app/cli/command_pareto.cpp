@@ -62,26 +62,6 @@ QJsonObject qJson(const ParetoPoint& p) {
 
 QJsonArray weightsJson(const ParetoWeights& w) { return {w[0], w[1], w[2], w[3]}; }
 
-LearningRecord learningRecord(const Project& project, const ToolSpec& tool, const ParetoWeights& w,
-                              const ParetoPoint& p, double eta, int teeth, LearningSource source) {
-  LearningRecord r;
-  r.weights.assign(w.begin(), w.end());
-  r.tool = {tool.id, tool.diameter_mm, tool.teeth};
-  r.material = project.material ? project.material->name : QString("unknown");
-  const MachineSpec& machine = project.requireMachine();
-  r.machine = {machine.spindle_power_W, machine.max_spindle_rpm};
-  r.q = {revPerSToRpm(p.speed_rev_per_s), p.depth_m * 1e3, p.feed_per_tooth_m * 1e3};
-  r.objectives = QJsonObject{{"tol", p.tol()},
-                             {"mrr_cm3_s", p.mrr() * 1e6},
-                             {"surf", p.surf()},
-                             {"ros", jsonNumberOrNull(p.ros())},
-                             {"eta", eta},
-                             {"power_W", p.power_w},
-                             {"feed_velocity_mm_s", p.feed_per_tooth_m * teeth * p.speed_rev_per_s * 1e3}};
-  r.source = source;
-  return r;
-}
-
 std::size_t frontLimit(const QCommandLineParser& parser) {
   if (!parser.isSet("front-limit")) return 2000;
   bool ok = false;
@@ -114,11 +94,9 @@ int runParetoCommand(const QStringList& arguments) {
   if (parser.isSet("require")) requirement = parseRequirement(parser.value("require"));
 
   const ParetoStudy study(loadProject(path));
-  const Project& project = study.project();
   const ExpertRequest& expert = study.expert();
   const ParetoRequest& request = study.request();
   const MillingSetup& setup = study.setup();
-  const ToolSpec& tool = study.tool();
   const std::optional<ParetoRules>& rules = study.rules();
   auto ruleAdmits = [&](const ParetoPoint& p) { return study.ruleAdmits(p); };
   const AdmissibleGrid& grid = study.grid();
@@ -215,11 +193,9 @@ int runParetoCommand(const QStringList& arguments) {
     try {
       LearningDatabase db(parser.value("db"));
       QJsonArray ids;
-      ids.append(db.insert(learningRecord(project, tool, weights, q, sim.indicators.eta, setup.teeth,
-                                          LearningSource::Automatic)));
+      ids.append(db.insert(study.learningRecord(weights, q, sim.indicators.eta, LearningSource::Automatic)));
       if (reselectedPoint)
-        ids.append(db.insert(learningRecord(project, tool, weights, *reselectedPoint, reselectedEta, setup.teeth,
-                                            LearningSource::Feedback)));
+        ids.append(db.insert(study.learningRecord(weights, *reselectedPoint, reselectedEta, LearningSource::Feedback)));
       out.insert("recorded", ids);
     } catch (const LearningDatabaseError& e) {
       throw CliError(QString::fromStdString(e.what()), kExitBadInput);

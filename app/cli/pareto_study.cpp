@@ -102,4 +102,25 @@ std::vector<std::optional<ParetoWeights>> ParetoStudy::supportingWeights(int div
   return out;
 }
 
+LearningRecord ParetoStudy::learningRecord(const ParetoWeights& w, const ParetoPoint& p, double eta,
+                                           LearningSource source) const {
+  const ToolSpec& t = tool();
+  LearningRecord r;
+  r.weights.assign(w.begin(), w.end());
+  r.tool = {t.id, t.diameter_mm, t.teeth};
+  r.material = project_.material ? project_.material->name : QString("unknown");
+  const MachineSpec& machine = project_.requireMachine();
+  r.machine = {machine.spindle_power_W, machine.max_spindle_rpm};
+  r.q = {revPerSToRpm(p.speed_rev_per_s), p.depth_m * 1e3, p.feed_per_tooth_m * 1e3};
+  r.objectives = QJsonObject{{"tol", p.tol()},
+                             {"mrr_cm3_s", p.mrr() * 1e6},
+                             {"surf", p.surf()},
+                             {"ros", jsonNumberOrNull(p.ros())},
+                             {"eta", eta},
+                             {"power_W", p.power_w},
+                             {"feed_velocity_mm_s", p.feed_per_tooth_m * setup_.teeth * p.speed_rev_per_s * 1e3}};
+  r.source = source;
+  return r;
+}
+
 }  // namespace mx::app

@@ -19,6 +19,7 @@
 #include "cli/pareto_request.h"
 #include "cli/pareto_rules.h"
 #include "expert/admissible_grid.h"
+#include "learning/learning_record.h"
 #include "pareto/objective_table.h"
 #include "pareto/pareto_selector.h"
 #include "pareto/weight_modulation.h"
@@ -69,6 +70,10 @@ class ParetoStudy {
   // whose optimum it is (the set of such weights is convex, so the mean selects it too); nullopt for
   // points no lattice weight selects (unsupported points in a non-convex part of the front).
   std::vector<std::optional<ParetoWeights>> supportingWeights(int divisions = 20) const;
+
+  // The Rule 14 record of a programmed point of this study's tool (objectives, eta, power, feed
+  // velocity), time left invalid (the database stamps it).
+  LearningRecord learningRecord(const ParetoWeights& w, const ParetoPoint& p, double eta, LearningSource source) const;
 
  private:
   Project project_;

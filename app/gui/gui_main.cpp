@@ -2,6 +2,7 @@
 // "--point RPM,MM[,MM_PER_TOOTH]" picks the initial operating point; "--screenshot FILE" saves the
 // window once the lobes and the point's simulation are shown, then quits (docs, scripts).
 #include <QApplication>
+#include <QDockWidget>
 #include <QCommandLineParser>
 #include <QFile>
 #include <QTextStream>
@@ -31,6 +32,9 @@ int main(int argc, char** argv) {
                     "RPM,MM[,MM_PER_TOOTH]"});
   parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the point's "
                                   "simulation are shown, then quit.", "FILE"});
+  parser.addOption({"docks", "Raise these docks (object names, e.g. paretoFrontDock,paretoWeightsDock).", "NAMES"});
+  parser.addOption({"pareto", "Once the Pareto study is ready, move the operating point to the Pareto choice "
+                              "and simulate it."});
   parser.process(app);
 
   const QString path = parser.positionalArguments().value(0, defaultProject());
@@ -58,8 +62,26 @@ int main(int argc, char** argv) {
       window.startSimulation();
     }, Qt::SingleShotConnection);
   }
+  for (const QString& name : parser.value("docks").split(',', Qt::SkipEmptyParts))
+    if (auto* dock = window.findChild<QDockWidget*>(name)) dock->raise();
+  const bool pareto = parser.isSet("pareto");
+  bool moved_to_pareto = false;
+  if (pareto) {
+    // Needs both the study (paretoShown) and the lobes of the tool (lobesShown), in either order.
+    auto move = [&window, &moved_to_pareto] {
+      if (moved_to_pareto || !window.paretoChoice() || window.document()->point().speed_rpm <= 0.0) return;
+      moved_to_pareto = true;
+      QTimer::singleShot(0, &window, [&window] {
+        window.moveToParetoChoice();
+        window.startSimulation();
+      });
+    };
+    QObject::connect(&window, &mx::gui::MainWindow::paretoShown, &window, move);
+    QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, move);
+  }
   if (!screenshot.isEmpty()) {
-    QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&window, screenshot] {
+    QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
+      if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
       QTimer::singleShot(300, &window, [&window, screenshot] {
         window.grab().save(screenshot);
         QApplication::quit();

@@ -11,6 +11,8 @@
 #include <cmath>
 
 #include "expert_runner.h"
+#include "pareto_runner.h"
+#include "pareto_weights_panel.h"
 #include "machine_operation_panel.h"
 #include "weights_panel.h"
 #include "simulation_runner.h"
@@ -39,6 +41,7 @@ MainWindow::MainWindow(QWidget* parent)
   readout_->setUnits(&units_);
   buildDocks();
   buildExpertDocks();
+  buildParetoDocks();
   buildActions();
 
   progress_->setRange(0, 100);
@@ -131,10 +134,28 @@ void MainWindow::onProjectChanged() {
   }
   // A change of the cost weights alone (a committed slider move, its undo) re-ranks from the cached
   // session and re-runs Rules 5-6; lobes and grids are only recomputed when their inputs change.
+  // The Pareto study (issue 5) depends on the project without any weights; the lobes and the 2006
+  // expert session also ignore the pareto section and the operator rules.
   QJsonObject json = app::projectToJson(p);
   QJsonObject expert = json.value("expert").toObject();
   for (const char* key : {"c", "cr", "ct", "cf"}) expert.remove(key);
   json.insert("expert", expert);
+  if (json.contains("pareto")) {
+    QJsonObject pareto = json.value("pareto").toObject();
+    pareto.remove("weights");
+    json.insert("pareto", pareto);
+  }
+  const QByteArray pareto_inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);
+  if (pareto_inputs != pareto_inputs_) {
+    pareto_inputs_ = pareto_inputs;
+    pareto_timer_.start();
+  } else if (pareto_->study()) {
+    pareto_weights_->setWeights(projectParetoWeightsOf(p));
+    showParetoChoice(pareto_weights_->weights());
+  }
+  updateFiredRules();
+  json.remove("pareto");
+  json.remove("operator_rules");
   const QByteArray inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);
   if (inputs == engine_inputs_ && expert_->session()) {
     const CostWeights w = projectWeightsOf(p);
@@ -243,6 +264,8 @@ void MainWindow::onPointChanged(const PickedPoint& point) {
                          : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
                                         : widgets::PointVerdict::Stable;
   chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
+  updateFiredRules();
+  updateMonitoring();
   feed_spin_->blockSignals(true);
   feed_spin_->setValue(units_.fromMm(point.feed_mm_per_tooth));
   feed_spin_->blockSignals(false);
@@ -288,6 +311,7 @@ void MainWindow::startSimulation() {
 void MainWindow::onSimulationFinished(quint64 generation, const SimulationSummary& summary) {
   if (generation != sim_generation_) return;
   sim_view_->setSummary(summary);
+  updateMonitoring(&summary);
   emit simulationFinished();
 }
 

@@ -9,10 +9,12 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QTimer>
 #include <QToolButton>
 
 #include "display_units.h"
+#include "cli/pareto_study.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
 #include "lobe_chart_view.h"
@@ -21,6 +23,13 @@
 #include "project_document.h"
 
 namespace mx::widgets {
+class HistoryView;
+class MonitoringPanel;
+class OperatorRulesEditor;
+class ParetoFrontView;
+class ParetoWeightsPanel;
+class RequirementsPanel;
+struct ParetoPointView;
 class RankingTable;
 class WeightsPanel;
 class ToolLibraryEditor;
@@ -32,11 +41,14 @@ namespace mx::gui {
 
 class SimulationRunner;
 class ExpertRunner;
+class ParetoRunner;
 struct RefinementOutcome;
 struct SimulationSummary;
 
 // The project's cost weights c, c_r, c_t, c_f (defaults where the project has none).
 CostWeights projectWeightsOf(const app::Project& project);
+// The project's pareto.weights (equal weights when absent).
+ParetoWeights projectParetoWeightsOf(const app::Project& project);
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -60,16 +72,32 @@ class MainWindow : public QMainWindow {
   widgets::WeightsPanel* weightsPanel() const { return weights_panel_; }
   widgets::RankingTable* rankingTable() const { return ranking_table_; }
   const PointEvaluator& evaluator() const { return evaluator_; }
+  // Issue 5: the Pareto expert system, learning database, monitoring and operator rules.
+  ParetoRunner* pareto() const { return pareto_; }
+  widgets::ParetoWeightsPanel* paretoWeightsPanel() const { return pareto_weights_; }
+  widgets::ParetoFrontView* paretoFrontView() const { return front_view_; }
+  widgets::RequirementsPanel* requirementsPanel() const { return requirements_; }
+  widgets::MonitoringPanel* monitoringPanel() const { return monitoring_; }
+  widgets::HistoryView* historyView() const { return history_; }
+  widgets::OperatorRulesEditor* rulesEditor() const { return rules_editor_; }
+  const std::optional<app::ParetoChoice>& paretoChoice() const { return pareto_choice_; }
+  QString learningDatabasePath() const;            // default: LearningDatabase::defaultPath()
+  void setLearningDatabasePath(const QString& path);
+  void recordOperatingPoint();                     // Rule 14, source operator or automatic
+  void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
   void setMethod(LobeMethod method);
-  void startSimulation();  // time-domain simulation of the current point on the engine thread
+  void startSimulation();
+  void setActiveTool(const QString& id);  // the tool of the readouts, shading and markers  // time-domain simulation of the current point on the engine thread
 
  signals:
   void lobesShown();
   void rankingShown();  // the ranking table was refreshed (after a weight change or a new session)
   void refinementShown();  // q** (Rules 5-6) arrived
   void simulationFinished();
+  void paretoShown();   // the Pareto choice was recomputed (study ready, weights or requirement changed)
+  void historyShown();  // the history view was refreshed from the database
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -97,6 +125,23 @@ class MainWindow : public QMainWindow {
   void onRefined(const RefinementOutcome& outcome);
   void commitWeights(const CostWeights& weights);
   void updateExpertOverlays();
+  // main_window_pareto.cpp
+  void buildParetoDocks();
+  void rebuildPareto();
+  void onParetoReady(const QString& error);
+  std::optional<app::ParetoChoice> chooseWith(const ParetoWeights& w, bool auto_weights);
+  void showParetoChoice(const ParetoWeights& w);
+  void commitParetoWeights(const ParetoWeights& w, const QString& description,
+                           const std::optional<ParetoPoint>& target = std::nullopt);
+  void onFrontPointActivated(const widgets::ParetoPointView& point);
+  void onRequirementChanged();
+  void onAutoWeights();
+  // main_window_monitoring.cpp
+  std::optional<ParetoPoint> currentParetoPoint() const;
+  void refreshHistory();
+  void onRulesEdited(const QStringList& rules);
+  void updateFiredRules();
+  void updateMonitoring(const SimulationSummary* summary = nullptr);
   // main_window.cpp
   void onProjectChanged();
   void recomputeLobes();
@@ -105,7 +150,6 @@ class MainWindow : public QMainWindow {
   void onPointDragged(double speed_rpm, double depth_mm);
   void onPointReleased(double speed_rpm, double depth_mm);
   void onSimulationFinished(quint64 generation, const SimulationSummary& summary);
-  void setActiveTool(const QString& id);
   void updatePowerLimit();
   void showError(const QString& title, const QString& message);
 
@@ -119,6 +163,19 @@ class MainWindow : public QMainWindow {
   widgets::WeightsPanel* weights_panel_ = nullptr;
   widgets::RankingTable* ranking_table_ = nullptr;
   ExpertRunner* expert_ = nullptr;
+  ParetoRunner* pareto_ = nullptr;
+  widgets::ParetoWeightsPanel* pareto_weights_ = nullptr;
+  widgets::RequirementsPanel* requirements_ = nullptr;
+  widgets::ParetoFrontView* front_view_ = nullptr;
+  widgets::MonitoringPanel* monitoring_ = nullptr;
+  widgets::HistoryView* history_ = nullptr;
+  widgets::OperatorRulesEditor* rules_editor_ = nullptr;
+  QPushButton* record_button_ = nullptr;
+  std::optional<app::ParetoChoice> pareto_choice_;
+  std::optional<double> last_summary_eta_;
+  QString learning_db_path_;
+  QByteArray pareto_inputs_;  // the project minus all weights: a change of it needs a new Pareto study
+  QTimer pareto_timer_;
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;

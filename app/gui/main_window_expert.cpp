@@ -9,6 +9,7 @@
 #include "cli/expert_request.h"
 #include "expert_overlays.h"
 #include "expert_runner.h"
+#include "pareto_runner.h"
 #include "main_window.h"
 #include "ranking_table.h"
 #include "weights_panel.h"
@@ -143,6 +144,11 @@ void MainWindow::onRefined(const RefinementOutcome& outcome) {
 
 void MainWindow::updateExpertOverlays() {
   chart_->clearMarkers();
+  if (pareto_choice_ && pareto_->study() && pareto_->study()->request().tool == active_tool_) {
+    const ParetoPoint& q = pareto_choice_->point();
+    chart_->setMarker(tr("Pareto q (%1)").arg(active_tool_), revPerSToRpm(q.speed_rev_per_s), q.depth_m * 1e3,
+                      QColor(0, 130, 90));
+  }
   const auto& session = expert_->session();
   if (!ranking_ || !session) {
     chart_->setCostMap({}, {}, {});

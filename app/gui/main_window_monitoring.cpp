@@ -1,0 +1,218 @@
+// MainWindow: Pareto modules VI-VII beside the chart (issue 5): the Rule 14 learning database (record
+// the operating point, the history view and its filters), the Rule 17 monitoring signals and the
+// Rule 18 operator rules of the project.
+#include <QJsonArray>
+#include <QStatusBar>
+#include <cmath>
+
+#include "cli/cli_support.h"
+#include "cli/pareto_rules.h"
+#include "history_view.h"
+#include "learning/learning_database.h"
+#include "main_window.h"
+#include "monitoring_panel.h"
+#include "operator_rules_editor.h"
+#include "pareto_runner.h"
+#include "pareto_weights_panel.h"
+#include "simulation/frequency_peaks.h"
+#include "simulation_data.h"
+
+namespace mx::gui {
+
+namespace {
+
+QStringList rulesOf(const app::Project& p) {
+  QStringList out;
+  for (const QJsonValue& v : p.document.value("operator_rules").toArray()) out << v.toString();
+  return out;
+}
+
+std::optional<double> finiteOrNone(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+
+widgets::HistoryRow historyRow(const app::LearningRecord& r) {
+  widgets::HistoryRow row;
+  row.id = r.id;
+  row.time = app::learningTimeText(r.time);
+  row.tool = r.tool.id;
+  row.material = r.material;
+  row.source = app::learningSourceName(r.source);
+  for (double w : r.weights) row.weights.append(w);
+  row.speed_rpm = r.q.speed_rpm;
+  row.depth_mm = r.q.depth_mm;
+  row.feed_mm_per_tooth = r.q.feed_mm_per_tooth;
+  auto objective = [&](const char* key) -> std::optional<double> {
+    const QJsonValue v = r.objectives.value(key);
+    return v.isDouble() ? finiteOrNone(v.toDouble()) : std::nullopt;
+  };
+  row.mrr_cm3_s = objective("mrr_cm3_s").value_or(0.0);
+  row.tol = objective("tol");
+  row.surf = objective("surf");
+  row.ros = objective("ros");
+  return row;
+}
+
+}  // namespace
+
+// The current operating point in engine form, with the Pareto objectives when the active tool is the
+// study's tool.
+std::optional<ParetoPoint> MainWindow::currentParetoPoint() const {
+  const auto& study = pareto_->study();
+  const PickedPoint& pt = doc_.point();
+  if (!study || active_tool_ != study->request().tool || pt.speed_rpm <= 0.0) return std::nullopt;
+  return study->table().evaluate(rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3);
+}
+
+void MainWindow::recordOperatingPoint() {
+  const auto& study = pareto_->study();
+  const auto q = currentParetoPoint();
+  if (!study || !q) {
+    showError(tr("Learning database"), tr("Pick an operating point of the Pareto tool '%1' first")
+                                           .arg(study ? study->request().tool : QString()));
+    return;
+  }
+  // Automatic when the point is the system's Pareto choice, operator otherwise.
+  const bool automatic = pareto_choice_ && std::abs(pareto_choice_->point().speed_rev_per_s - q->speed_rev_per_s) < 1e-9 &&
+                         std::abs(pareto_choice_->point().depth_m - q->depth_m) < 1e-12 &&
+                         std::abs(pareto_choice_->point().feed_per_tooth_m - q->feed_per_tooth_m) < 1e-12;
+  try {
+    app::LearningDatabase db(learningDatabasePath());
+    const double eta = last_summary_eta_.value_or(std::numeric_limits<double>::quiet_NaN());
+    const qint64 id = db.insert(study->learningRecord(pareto_weights_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
+                                                      automatic ? app::LearningSource::Automatic
+                                                                : app::LearningSource::Operator));
+    statusBar()->showMessage(tr("Recorded point %1 in %2").arg(id).arg(db.path()), 8000);
+  } catch (const std::exception& e) {
+    showError(tr("Learning database"), QString::fromStdString(e.what()));
+    return;
+  }
+  refreshHistory();
+}
+
+void MainWindow::refreshHistory() {
+  const widgets::HistoryFilter f = history_->filter();
+  try {
+    app::LearningDatabase db(learningDatabasePath());
+    std::vector<app::LearningRecord> records;
+    if (f.mrr_lo && f.mrr_hi) {
+      records = db.withMrrIn(*f.mrr_lo, *f.mrr_hi, 500);
+    } else {
+      app::LearningHistoryQuery query;
+      if (!f.tool.isEmpty()) query.tool = f.tool;
+      if (!f.material.isEmpty()) query.material = f.material;
+      query.limit = 500;
+      records = db.history(query);
+    }
+    QVector<widgets::HistoryRow> rows;
+    QStringList tools, materials;
+    for (const app::LearningRecord& r : records) {
+      if (!f.tool.isEmpty() && r.tool.id != f.tool) continue;
+      if (!f.material.isEmpty() && r.material != f.material) continue;
+      if (!f.source.isEmpty() && app::learningSourceName(r.source) != f.source) continue;
+      rows.append(historyRow(r));
+    }
+    for (const app::LearningRecord& r : db.history({std::nullopt, std::nullopt, 0})) {
+      if (!tools.contains(r.tool.id)) tools << r.tool.id;
+      if (!materials.contains(r.material)) materials << r.material;
+    }
+    tools.sort();
+    materials.sort();
+    history_->setToolChoices(tools);
+    history_->setMaterialChoices(materials);
+    history_->setRows(rows);
+    history_->setStatus(tr("%1 of %2 entries - %3").arg(rows.size()).arg(db.count()).arg(db.path()));
+  } catch (const std::exception& e) {
+    history_->setRows({});
+    history_->setStatus(tr("Learning database unavailable: %1").arg(e.what()));
+  }
+  emit historyShown();
+}
+
+void MainWindow::onRulesEdited(const QStringList& rules) {
+  app::Project edited = doc_.project();
+  if (rules.isEmpty())
+    edited.document.remove("operator_rules");
+  else
+    edited.document.insert("operator_rules", QJsonArray::fromStringList(rules));
+  const QString error = doc_.applyEdit(edited, tr("Edit operator rules"));
+  if (!error.isEmpty()) showError(tr("Operator rules refused"), error);
+}
+
+// Rule 18 at the current point: the rules that fire for the active tool (highlighted), the
+// contradictions, the fired constraints the point breaks and the advice.
+void MainWindow::updateFiredRules() {
+  const app::Project& p = doc_.project();
+  const QStringList rules = rulesOf(p);
+  if (rules_editor_->rules() != rules) rules_editor_->setRules(rules);
+  const app::ToolSpec* tool = p.findTool(active_tool_);
+  if (rules.isEmpty() || !tool) {
+    rules_editor_->setFiredRules({});
+    rules_editor_->setNotes({});
+    return;
+  }
+  QStringList notes;
+  try {
+    const app::ParetoRules r = app::evaluateParetoRules(rules, p, *tool);
+    QList<int> fired;
+    for (const RuleRef& ref : r.outcome.fired) fired << ref.line;
+    rules_editor_->setFiredRules(fired);
+    const PickedPoint& pt = doc_.point();
+    ParetoPoint q;
+    if (auto pq = currentParetoPoint()) {
+      q = *pq;
+    } else {
+      q.speed_rev_per_s = rpmToRevPerS(pt.speed_rpm);
+      q.depth_m = pt.depth_mm * 1e-3;
+      q.feed_per_tooth_m = pt.feed_mm_per_tooth * 1e-3;
+      q.objectives[index(Objective::Mrr)] = readout_->readout().mrr_mm3_per_s * 1e-9;
+      q.power_w = readout_->readout().peak_power_w;
+    }
+    for (const BoundReason& v : r.outcome.violations(app::pointVariables(q, tool->teeth)))
+      notes << tr("Line %1 violated at this point: %2").arg(v.rule.line).arg(QString::fromStdString(v.rule.text));
+    for (const RuleAdvice& a : r.outcome.advice)
+      notes << tr("Advice (line %1): %2").arg(a.rule.line).arg(QString::fromStdString(a.message));
+  } catch (const app::CliError& e) {
+    rules_editor_->setFiredRules({});
+    notes << QString::fromStdString(e.what());
+  }
+  rules_editor_->setNotes(notes);
+}
+
+// Rule 17: the signals of the current point (Pareto objectives, readouts) and of its last simulation.
+void MainWindow::updateMonitoring(const SimulationSummary* summary) {
+  widgets::MonitoringValues v;
+  const widgets::PointReadout& r = readout_->readout();
+  if (r.valid) {
+    v.peak_power_w = r.peak_power_w;
+    v.mrr_cm3_s = r.mrr_mm3_per_s * 1e-3;
+    if (const app::ToolSpec* t = doc_.project().findTool(active_tool_))
+      v.feed_velocity_mm_s = r.feed_mm_per_tooth * t->teeth * r.speed_rpm / 60.0;
+  }
+  if (doc_.project().machine) v.power_limit_w = doc_.project().machine->spindle_power_W;
+  if (const auto q = currentParetoPoint()) {
+    v.tol_min = finiteOrNone(q->tol());
+    v.surf_um = finiteOrNone(q->surf());
+    v.ros = finiteOrNone(q->ros());
+  }
+  if (summary) {
+    v.peak_force_n = summary->peak_force_n;
+    v.peak_power_w = summary->peak_power_w;
+    v.eta = summary->eta;
+    v.chip_ratio = summary->chip_ratio;
+    v.tooth_passing_hz = summary->tooth_passing_hz;
+    v.chatter = summary->chatter;
+    v.chatter_frequency_hz = summary->chatter_frequency_hz;
+    QVector<widgets::MonitoringPeak> peaks;
+    try {
+      for (const FrequencyPeak& p : identifyPeaks(summary->spectrum_hz, summary->spectrum_n,
+                                                  summary->spindle_rpm / 60.0, std::max(1, summary->teeth)))
+        peaks.append({p.frequency_hz, p.amplitude, QString::fromStdString(describe(p.kind)), p.harmonic});
+    } catch (const std::exception&) {
+      // no spectrum (too short a run): no peaks
+    }
+    monitoring_->setPeaks(peaks);
+    last_summary_eta_ = summary->eta;
+  }
+  monitoring_->setValues(v);
+}
+
+}  // namespace mx::gui

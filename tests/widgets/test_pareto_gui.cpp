@@ -1,0 +1,179 @@
+// The Pareto expert system in the main window (issue 5): the front view shows the study's
+// non-dominated set and a click moves the operating point and the weights to the clicked point in one
+// undoable step; Rule 11 requirements and Rule 12 automatic weights commit weights that keep the
+// simplex; the operator-rules editor edits the project, restricts the choice and shows fired rules and
+// violations; the history view lists what "Record point" stored; the monitoring dock shows the
+// simulation's signals and identified frequencies (Rule 17).
+#include <QApplication>
+#include <QJsonArray>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "history_view.h"
+#include "main_window.h"
+#include "monitoring_panel.h"
+#include "operator_rules_editor.h"
+#include "pareto_front_view.h"
+#include "pareto_runner.h"
+#include "pareto_weights_panel.h"
+#include "requirements_panel.h"
+#include "test_main.h"
+
+using namespace mx;
+
+namespace {
+const char* kCase = MX_PROJECTS_DIR "/rubio-pareto-case.mxproj";
+
+bool openCase(gui::MainWindow& window) {
+  window.setQuiet(true);
+  window.resize(1600, 950);
+  window.show();
+  QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
+  if (!window.openProject(kCase)) return false;
+  for (int i = 0; i < 120 && !window.pareto()->study(); ++i) shown.wait(1000);
+  return window.pareto()->study() != nullptr && window.paretoChoice().has_value();
+}
+
+double weightAt(const gui::MainWindow& w, int i) {
+  return w.project()->document.value("pareto").toObject().value("weights").toArray().at(i).toDouble();
+}
+}  // namespace
+
+class TestParetoGui : public QObject {
+  Q_OBJECT
+ private slots:
+  void init() {
+    QCoreApplication::setOrganizationName("MillExpertTest");
+    QCoreApplication::setApplicationName("millexpert-test");
+  }
+
+  void frontClickMovesPointAndWeights() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    const auto& study = *window.pareto()->study();
+    widgets::ParetoFrontView* view = window.paretoFrontView();
+    QCOMPARE(static_cast<std::size_t>(view->points().size()), study.front().size());
+    // The selection of the project's weights is marked in the view.
+    QVERIFY(view->selectedIndex() >= 0);
+    // A supported point other than the current choice, far from it on the plot.
+    int target = -1;
+    for (int i = 0; i < view->points().size(); ++i)
+      if (view->points()[i].weights && i != view->selectedIndex() &&
+          (target < 0 || std::abs(view->points()[i].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s) >
+                             std::abs(view->points()[target].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s)))
+        target = i;
+    QVERIFY(target >= 0);
+    const auto before = window.document()->point();
+    const double w0 = weightAt(window, 0);
+    const widgets::ParetoPointView p = view->points()[target];
+    emit view->pointActivated(p);  // what a click on it emits
+    QCOMPARE_LE(std::abs(window.document()->point().speed_rpm - p.speed_rpm), 1e-6);
+    QCOMPARE_LE(std::abs(window.document()->point().depth_mm - p.depth_mm), 1e-9);
+    QCOMPARE_LE(std::abs(window.document()->point().feed_mm_per_tooth - p.feed_mm_per_tooth), 1e-9);
+    for (int i = 0; i < 4; ++i) {
+      QCOMPARE_LE(std::abs(weightAt(window, i) - (*p.weights)[static_cast<std::size_t>(i)]), 1e-12);
+      QCOMPARE_LE(std::abs(window.paretoWeightsPanel()->weights()[static_cast<std::size_t>(i)] -
+                           (*p.weights)[static_cast<std::size_t>(i)]), 1e-12);
+    }
+    // The weights select a point with the clicked point's J (Rule 10.1 on the front).
+    const auto& choice = *window.paretoChoice();
+    double j = 0.0;
+    const ObjectiveVector s = study.table().normalise(study.table().evaluate(
+        rpmToRevPerS(p.speed_rpm), p.depth_mm * 1e-3, p.feed_mm_per_tooth * 1e-3).objectives);
+    for (std::size_t i = 0; i < 4; ++i) j += (*p.weights)[i] * s[i];
+    QCOMPARE_LE(std::abs(choice.selection.j - j), 1e-9);
+    QCOMPARE(view->selectedIndex(), target);
+    // One undo restores weights and point together.
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->point(), before);
+    QCOMPARE_LE(std::abs(weightAt(window, 0) - w0), 1e-15);
+  }
+
+  void requirementAndAutoWeights() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    const double mrr = window.paretoChoice()->point().mrr() * 1e6;
+    // Require at least twice the current MRR (Rule 11): the weights move and the choice meets it.
+    widgets::RequirementsPanel* panel = window.requirementsPanel();
+    panel->setRequirement(widgets::RequirementView{1, 2.0 * mrr, 1e3});
+    emit panel->requirementChanged();
+    const auto& c = *window.paretoChoice();
+    QVERIFY(c.requirement_satisfied);
+    QVERIFY(c.point().mrr() * 1e6 >= 2.0 * mrr);
+    QVERIFY(onSimplex(window.paretoWeightsPanel()->weights(), 1e-9));
+    QVERIFY(window.paretoWeightsPanel()->weights()[1] > 0.1);  // the MRR weight rose from 0.1
+    QCOMPARE_LE(std::abs(weightAt(window, 1) - window.paretoWeightsPanel()->weights()[1]), 1e-12);
+    // Rule 12 keeps the weights on the simplex and the requirement.
+    emit panel->autoWeightsRequested();
+    QVERIFY(onSimplex(window.paretoWeightsPanel()->weights(), 1e-9));
+    QVERIFY(window.paretoChoice()->requirement_satisfied);
+  }
+
+  void operatorRulesRestrictAndFire() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
+    widgets::OperatorRulesEditor* editor = window.rulesEditor();
+    editor->textEdit()->setPlainText("speed_rpm <= 1500\nif tool.teeth >= 2 then advise depth_mm <= 0.01");
+    QVERIFY(editor->check());
+    QCOMPARE(window.project()->document.value("operator_rules").toArray().size(), 2);
+    for (int i = 0; i < 60 && !(window.paretoChoice() && revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9); ++i)
+      shown.wait(1000);
+    QVERIFY(revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
+    window.setActiveTool(window.pareto()->study()->request().tool);
+    QCOMPARE(editor->firedRules(), (QList<int>{1, 2}));
+    // A point above 1500 rpm breaks line 1: the editor says so.
+    auto pt = window.document()->point();
+    pt.speed_rpm = 2500.0;
+    window.document()->setPoint(pt);
+    QVERIFY(editor->notes().join('\n').contains("Line 1 violated"));
+    // A syntax error changes nothing in the project.
+    editor->textEdit()->setPlainText("speed_rpm <=");
+    QVERIFY(!editor->check());
+    QCOMPARE(window.project()->document.value("operator_rules").toArray().size(), 2);
+  }
+
+  void historyRecordsAndAppliesWeights() {
+    QTemporaryDir dir;
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    window.setLearningDatabasePath(dir.filePath("learning.sqlite"));
+    QCOMPARE(window.historyView()->rows().size(), 0);
+    // Move to the Pareto choice (commit the current weights), record it: source automatic.
+    const ParetoWeights w = window.paretoWeightsPanel()->weights();
+    window.paretoWeightsPanel()->setWeights(w);
+    emit window.paretoWeightsPanel()->weightsCommitted(w);
+    window.recordOperatingPoint();
+    QCOMPARE(window.historyView()->rows().size(), 1);
+    const widgets::HistoryRow row = window.historyView()->rows().front();
+    QCOMPARE(row.source, QString("automatic"));
+    QCOMPARE(row.tool, window.pareto()->study()->request().tool);
+    QCOMPARE_LE(std::abs(row.speed_rpm - window.document()->point().speed_rpm), 1e-6);
+    // Change the weights, then "apply these weights" from the history row.
+    emit window.paretoWeightsPanel()->weightsCommitted({0.7, 0.1, 0.1, 0.1});
+    window.historyView()->selectRow(0);
+    QVERIFY(window.historyView()->applyButton()->isEnabled());
+    window.historyView()->applyButton()->click();
+    for (int i = 0; i < 4; ++i) QCOMPARE_LE(std::abs(weightAt(window, i) - row.weights[i]), 1e-12);
+  }
+
+  void monitoringShowsSimulationSignals() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    QSignalSpy finished(&window, &gui::MainWindow::simulationFinished);
+    window.startSimulation();
+    QVERIFY(finished.wait(60000));
+    widgets::MonitoringPanel* m = window.monitoringPanel();
+    for (const char* key : {"eta", "chip_ratio", "peak_force_n", "tooth_passing_hz", "tol_min", "mrr_cm3_s"})
+      QVERIFY2(m->valueText(key) != QString::fromUtf8("\u2013"), key);
+    QVERIFY(m->peakTable()->rowCount() >= 1);
+    QVERIFY(m->peakTable()->item(0, 2)->text().contains("tooth passing"));
+  }
+};
+
+MX_TEST_MAIN_WITH_APP(TestParetoGui, QApplication)
+#include "test_pareto_gui.moc"
