@@ -1,0 +1,58 @@
+// Part-program overrides (issue 7): a 100k-block G-code program parsed, run through the model-based
+// force controller block by block, written back and exported as the feed-override CSV. Target: <= 2 s.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "control/part_program_override.h"
+#include "io/gcode_reader.h"
+
+namespace {
+
+// Zig-zag passes at alternating depths with arcs, comments and an unknown word now and then.
+std::string program(std::size_t blocks) {
+  std::string s = "%\n(bench program)\nG21 G90 G17\nG0 Z5 S1500 M3\nG0 X0 Y0\n";
+  std::size_t n = 5;
+  int pass = 0;
+  while (n < blocks) {
+    const double z = (pass % 3 == 0) ? -2.0 : (pass % 3 == 1 ? -1.0 : 0.5);
+    s += "G1 Z" + std::to_string(z) + " F150\n";
+    s += "G1 X100 Y" + std::to_string(pass) + " F600 (pass " + std::to_string(pass) + ")\n";
+    s += "G2 X110 Y" + std::to_string(pass + 10) + " I0 J10 ; arc\n";
+    s += "G1 X0 M8\n";
+    s += "G0 Z5\n";
+    n += 5;
+    ++pass;
+  }
+  s += "M30\n%\n";
+  return s;
+}
+
+void BM_GcodeOverride(benchmark::State& state) {
+  const std::string text = program(static_cast<std::size_t>(state.range(0)));
+  mx::ModelBasedForceSettings ms;
+  ms.reference_force_N = 400.0;
+  const mx::PartProgramOverrider overrider(mx::modelBasedFeedController(mx::ModelBasedForceController(ms)), {});
+  const mx::GcodeHeader header{"bench", "model-based", "2024-01-01"};
+  std::size_t bytes = 0, changed = 0;
+  for (auto _ : state) {
+    auto r = overrider.run(std::string_view(text));
+    const std::string out = r.writeProgram(header);
+    const std::string csv = r.csv();
+    bytes = out.size() + csv.size();
+    changed = r.changed_blocks;
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["blocks"] = static_cast<double>(state.range(0));
+  state.counters["changed"] = static_cast<double>(changed);
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * text.size()));
+}
+BENCHMARK(BM_GcodeOverride)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_GcodeParse(benchmark::State& state) {
+  const std::string text = program(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(mx::GcodeReader::parse(text).blocks.size());
+}
+BENCHMARK(BM_GcodeParse)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
