@@ -20,6 +20,8 @@
 //     and the operator rules. "feedback": {"chatter", "chip_ratio", "chatter_frequency_Hz",
 //     "suggested_speed_rpm", "k", "reselected": {"q", "mrr_cm3_s", "tol", "surf", "ros", "j", "eta",
 //     "chip_ratio", "chatter"} or null}.
+//   --chatter-hz F: the operator reports chatter at F Hz (Module VI "reported by the operator"): Rule 16
+//     and the re-selection as above without the Rule 15 check; "feedback" adds "reported_by": "operator".
 //   --front-limit N: at most N points in "pareto_set" (default 2000, 0: all), the best J first; added
 //     keys "pareto_set_size" (the whole set) and "pareto_set_truncated".
 //   --db FILE: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
@@ -62,6 +64,11 @@ QJsonObject qJson(const ParetoPoint& p) {
 
 QJsonArray weightsJson(const ParetoWeights& w) { return {w[0], w[1], w[2], w[3]}; }
 
+double operatorChatter(const QCommandLineParser& parser) {
+  const std::optional<double> f = numberOption(parser, "chatter-hz", 1e-3, 1e6);
+  return *f;
+}
+
 std::size_t frontLimit(const QCommandLineParser& parser) {
   if (!parser.isSet("front-limit")) return 2000;
   bool ok = false;
@@ -85,6 +92,7 @@ int runParetoCommand(const QStringList& arguments) {
       {"auto-weights", "Rule 12: gradient ascent on the weights (pareto.auto_weights step/tolerance)."},
       {"feedback", "Module VI: Rule 15 chatter check of q; on chatter, Rule 16 speed and a re-selection."},
       {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
+      {"chatter-hz", "Module VI: the operator reports chatter at F Hz at q (implies --feedback; Rule 16).", "F"},
       {"front-limit", "At most N points in pareto_set, the best J first (default 2000; 0: all).", "N"},
   });
   const QString path = parseSubcommand(parser, arguments);
@@ -98,8 +106,6 @@ int runParetoCommand(const QStringList& arguments) {
   const ParetoRequest& request = study.request();
   const MillingSetup& setup = study.setup();
   const std::optional<ParetoRules>& rules = study.rules();
-  auto ruleAdmits = [&](const ParetoPoint& p) { return study.ruleAdmits(p); };
-  const AdmissibleGrid& grid = study.grid();
   const ObjectiveTable& table = study.table();
 
   const ParetoChoice choice =
@@ -133,7 +139,7 @@ int runParetoCommand(const QStringList& arguments) {
   // Module VI feedback.
   std::optional<ParetoPoint> reselectedPoint;
   double reselectedEta = 0.0;
-  if (parser.isSet("feedback")) {
+  if (parser.isSet("feedback") || parser.isSet("chatter-hz")) {
     const ChatterIndicators& ind = sim.indicators;
     const bool chatter = ind.chatter_by_chip_ratio;
     QJsonObject fb{{"chatter", chatter},
@@ -143,48 +149,36 @@ int runParetoCommand(const QStringList& arguments) {
                    {"suggested_speed_rpm", QJsonValue()},
                    {"k", QJsonValue()},
                    {"reselected", QJsonValue()}};
-    if (chatter && ind.chatter_frequency_hz) {
-      const std::vector<double>& speeds = grid.speeds();
-      const auto choice = smithTlustyChoice(*ind.chatter_frequency_hz, setup.teeth, q.speed_rev_per_s,
-                                            speeds.front(), speeds.back());
-      if (choice) {
-        const double ns = choice->rev_per_s;
-        fb.insert("suggested_speed_rpm", revPerSToRpm(ns));
-        fb.insert("k", choice->k);
-        // Admissible speeds within +-2 % of N_s, else the speed of Q nearest N_s.
-        auto near = [&](const ParetoPoint& p) { return std::abs(p.speed_rev_per_s - ns) <= 0.02 * ns; };
-        bool any_near = false;
-        double nearest = table.points().front().speed_rev_per_s;
-        for (const ParetoPoint& p : table.points()) {
-          any_near = any_near || near(p);
-          if (std::abs(p.speed_rev_per_s - ns) < std::abs(nearest - ns)) nearest = p.speed_rev_per_s;
-        }
-        auto speedOk = [&](const ParetoPoint& p) {
-          return any_near ? near(p) : std::abs(p.speed_rev_per_s - nearest) <= 1e-9 * nearest;
-        };
-        std::optional<ParetoSelection> r = selectWhere(table, weights, [&](const ParetoPoint& p) {
-          return speedOk(p) && ruleAdmits(p) && (!requirement || requirement->satisfiedBy(p));
-        });
-        if (!r && requirement)
-          r = selectWhere(table, weights, [&](const ParetoPoint& p) { return speedOk(p) && ruleAdmits(p); });
-        fb.insert("speed_window", any_near ? "within 2 %" : "nearest grid speed");
-        if (r) {
-          const ParetoPoint& p = r->point;
-          const SimulationResult rsim =
-              simulateMilling(setup, {p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m}, options);
-          reselectedPoint = p;
-          reselectedEta = rsim.indicators.eta;
-          fb.insert("reselected", QJsonObject{{"q", qJson(p)},
-                                              {"mrr_cm3_s", p.mrr() * 1e6},
-                                              {"tol", p.tol()},
-                                              {"surf", p.surf()},
-                                              {"ros", jsonNumberOrNull(p.ros())},
-                                              {"power_W", p.power_w},
-                                              {"j", r->j},
-                                              {"eta", rsim.indicators.eta},
-                                              {"chip_ratio", rsim.indicators.chip_ratio},
-                                              {"chatter", rsim.indicators.chatter_by_chip_ratio}});
-        }
+    double chatter_hz = 0.0;  // 0: no chatter to act on
+    if (parser.isSet("chatter-hz"))
+      chatter_hz = operatorChatter(parser);
+    else if (chatter && ind.chatter_frequency_hz)
+      chatter_hz = *ind.chatter_frequency_hz;
+    if (parser.isSet("chatter-hz")) {
+      fb.insert("reported_by", "operator");
+      fb.insert("chatter", true);
+      fb.insert("chatter_frequency_Hz", chatter_hz);
+    }
+    if (const auto r = chatter_hz > 0.0 ? study.reselectAfterChatter(weights, requirement, chatter_hz, q) : std::nullopt) {
+      fb.insert("suggested_speed_rpm", revPerSToRpm(r->suggested_rev_per_s));
+      fb.insert("k", r->k);
+      fb.insert("speed_window", r->within_window ? "within 2 %" : "nearest grid speed");
+      if (r->selection) {
+        const ParetoPoint& p = r->selection->point;
+        const SimulationResult rsim =
+            simulateMilling(setup, {p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m}, options);
+        reselectedPoint = p;
+        reselectedEta = rsim.indicators.eta;
+        fb.insert("reselected", QJsonObject{{"q", qJson(p)},
+                                            {"mrr_cm3_s", p.mrr() * 1e6},
+                                            {"tol", p.tol()},
+                                            {"surf", p.surf()},
+                                            {"ros", jsonNumberOrNull(p.ros())},
+                                            {"power_W", p.power_w},
+                                            {"j", r->selection->j},
+                                            {"eta", rsim.indicators.eta},
+                                            {"chip_ratio", rsim.indicators.chip_ratio},
+                                            {"chatter", rsim.indicators.chatter_by_chip_ratio}});
       }
     }
     out.insert("feedback", fb);

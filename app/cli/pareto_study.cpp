@@ -1,10 +1,12 @@
 #include "cli/pareto_study.h"
 
+#include <cmath>
 #include <limits>
 
 #include "cli/cli_application.h"
 #include "cli/cli_support.h"
 #include "pareto/pareto_front.h"
+#include "simulation/smith_tlusty.h"
 
 namespace mx::app {
 
@@ -99,6 +101,32 @@ std::vector<std::optional<ParetoWeights>> ParetoStudy::supportingWeights(int div
       for (std::size_t i = 0; i < kObjectiveCount; ++i) w[i] = sums[k][i] / counts[k];
       out[k] = renormaliseBySum(w);
     }
+  return out;
+}
+
+std::optional<ChatterReselection> ParetoStudy::reselectAfterChatter(
+    const ParetoWeights& w, const std::optional<ObjectiveRequirement>& requirement, double chatter_hz,
+    const ParetoPoint& q) const {
+  const std::vector<double>& speeds = grid_->speeds();
+  const auto st = smithTlustyChoice(chatter_hz, setup_.teeth, q.speed_rev_per_s, speeds.front(), speeds.back());
+  if (!st) return std::nullopt;
+  ChatterReselection out;
+  const double ns = out.suggested_rev_per_s = st->rev_per_s;
+  out.k = st->k;
+  auto near = [&](const ParetoPoint& p) { return std::abs(p.speed_rev_per_s - ns) <= 0.02 * ns; };
+  double nearest = table_->points().front().speed_rev_per_s;
+  for (const ParetoPoint& p : table_->points()) {
+    out.within_window = out.within_window || near(p);
+    if (std::abs(p.speed_rev_per_s - ns) < std::abs(nearest - ns)) nearest = p.speed_rev_per_s;
+  }
+  auto speedOk = [&](const ParetoPoint& p) {
+    return out.within_window ? near(p) : std::abs(p.speed_rev_per_s - nearest) <= 1e-9 * nearest;
+  };
+  out.selection = selectWhere(*table_, w, [&](const ParetoPoint& p) {
+    return speedOk(p) && ruleAdmits(p) && (!requirement || requirement->satisfiedBy(p));
+  });
+  if (!out.selection && requirement)
+    out.selection = selectWhere(*table_, w, [&](const ParetoPoint& p) { return speedOk(p) && ruleAdmits(p); });
   return out;
 }
 

@@ -45,6 +45,17 @@ struct ParetoChoice {
   const ParetoPoint& point() const { return selection.point; }
 };
 
+// Module VI (Rules 15-16): after chatter at `chatter_hz` at q, the Smith-Tlusty speed N_s nearest q's
+// inside the grid's speed range, then a Rule 10.1 re-selection restricted to the points of Q within
+// +-2 % of N_s (the grid speed nearest N_s when none is), the operator rules and the requirement
+// (dropped when no such point meets it).
+struct ChatterReselection {
+  double suggested_rev_per_s = 0.0;
+  int k = 0;                    // lobe number of N_s = f_c / (n_t k)
+  bool within_window = false;   // false: the nearest grid speed was used
+  std::optional<ParetoSelection> selection;  // nullopt when no admissible point is left
+};
+
 class ParetoStudy {
  public:
   explicit ParetoStudy(Project project);
@@ -70,6 +81,11 @@ class ParetoStudy {
   // whose optimum it is (the set of such weights is convex, so the mean selects it too); nullopt for
   // points no lattice weight selects (unsupported points in a non-convex part of the front).
   std::vector<std::optional<ParetoWeights>> supportingWeights(int divisions = 20) const;
+
+  // nullopt when no Smith-Tlusty speed lies in the grid's speed range.
+  std::optional<ChatterReselection> reselectAfterChatter(const ParetoWeights& w,
+                                                         const std::optional<ObjectiveRequirement>& requirement,
+                                                         double chatter_hz, const ParetoPoint& q) const;
 
   // The Rule 14 record of a programmed point of this study's tool (objectives, eta, power, feed
   // velocity), time left invalid (the database stamps it).

@@ -85,6 +85,7 @@ class MainWindow : public QMainWindow {
   void setLearningDatabasePath(const QString& path);
   void recordOperatingPoint();                     // Rule 14, source operator or automatic
   void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
+  void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
   void setMethod(LobeMethod method);
@@ -171,6 +172,8 @@ class MainWindow : public QMainWindow {
   widgets::HistoryView* history_ = nullptr;
   widgets::OperatorRulesEditor* rules_editor_ = nullptr;
   QPushButton* record_button_ = nullptr;
+  QPushButton* report_chatter_ = nullptr;
+  QDoubleSpinBox* chatter_hz_ = nullptr;
   std::optional<app::ParetoChoice> pareto_choice_;
   std::optional<double> last_summary_eta_;
   QString learning_db_path_;

@@ -9,6 +9,9 @@
 // - Rule 18: the operator-rules editor edits the project's operator_rules; the rules that fire for
 //   the active tool are highlighted, with the constraints the current point violates.
 #include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QJsonArray>
 #include <QPushButton>
 #include <QScrollArea>
@@ -85,11 +88,28 @@ void MainWindow::buildParetoDocks() {
   record_button_->setObjectName("record_point_button");
   record_button_->setToolTip(tr("Rule 14: store the operating point with the Pareto weights, tool, material, "
                                 "machine and objectives in the learning database"));
+  chatter_hz_ = new QDoubleSpinBox;
+  chatter_hz_->setObjectName("reported_chatter_hz");
+  chatter_hz_->setRange(1.0, 20000.0);
+  chatter_hz_->setDecimals(1);
+  chatter_hz_->setValue(600.0);
+  chatter_hz_->setSuffix(tr(" Hz"));
+  chatter_hz_->setToolTip(tr("Chatter frequency heard or measured at the machine [Hz]"));
+  report_chatter_ = new QPushButton(tr("Report chatter (Rule 16)"));
+  report_chatter_->setObjectName("report_chatter_button");
+  report_chatter_->setToolTip(tr("Module VI: chatter at this frequency at the operating point. The Smith-Tlusty "
+                                 "speed N = 60 f_c / (n_t k) nearest it is computed, the point is re-selected "
+                                 "within +-2 % of N, moved there and recorded (source feedback)"));
+  auto* chatter_row = new QHBoxLayout;
+  chatter_row->addWidget(new QLabel(tr("Chatter frequency [Hz]")));
+  chatter_row->addWidget(chatter_hz_);
+  chatter_row->addWidget(report_chatter_);
   auto* panel = new QWidget;
   auto* layout = new QVBoxLayout(panel);
   layout->addWidget(pareto_weights_);
   layout->addWidget(requirements_);
   layout->addWidget(record_button_);
+  layout->addLayout(chatter_row);
   layout->addStretch(1);
   front_view_ = new widgets::ParetoFrontView;
   monitoring_ = new widgets::MonitoringPanel;
@@ -131,6 +151,7 @@ void MainWindow::buildParetoDocks() {
   connect(requirements_, &widgets::RequirementsPanel::autoWeightsRequested, this, &MainWindow::onAutoWeights);
   connect(front_view_, &widgets::ParetoFrontView::pointActivated, this, &MainWindow::onFrontPointActivated);
   connect(record_button_, &QPushButton::clicked, this, [this] { recordOperatingPoint(); });
+  connect(report_chatter_, &QPushButton::clicked, this, [this] { reportChatter(chatter_hz_->value()); });
   connect(rules_editor_, &widgets::OperatorRulesEditor::rulesChanged, this, &MainWindow::onRulesEdited);
   connect(history_, &widgets::HistoryView::filterChanged, this, [this] { refreshHistory(); });
   connect(history_, &widgets::HistoryView::refreshRequested, this, [this] { refreshHistory(); });
@@ -158,6 +179,7 @@ void MainWindow::rebuildPareto() {
     pareto_weights_->setEnabled(false);
     requirements_->setEnabled(false);
     record_button_->setEnabled(false);
+    report_chatter_->setEnabled(false);
     pareto_weights_->setToolTip(tr("This project has no \"pareto\" section (docs/project-file.md)"));
     return;
   }
@@ -167,7 +189,8 @@ void MainWindow::rebuildPareto() {
 void MainWindow::onParetoReady(const QString& error) {
   const auto& study = pareto_->study();
   const bool ok = error.isEmpty() && study;
-  for (QWidget* w : std::initializer_list<QWidget*>{front_view_, pareto_weights_, requirements_, record_button_})
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{front_view_, pareto_weights_, requirements_, record_button_, report_chatter_})
     w->setEnabled(ok);
   if (!ok) {
     front_view_->setPoints({});
@@ -284,6 +307,42 @@ void MainWindow::onFrontPointActivated(const widgets::ParetoPointView& view) {
   }
   commitParetoWeights(w, tr("Move to a Pareto point"), q);
   front_view_->setSelectedIndex(index);
+}
+
+// Module VI, chatter reported by the operator (or found by the simulation): Rule 16 and a re-selection
+// near the Smith-Tlusty speed; the point moves there (undoable), is recorded (source feedback) and
+// simulated.
+void MainWindow::reportChatter(double chatter_hz) {
+  const auto& study = pareto_->study();
+  const auto q = currentParetoPoint();
+  if (!study || !q) {
+    showError(tr("Chatter feedback"), tr("Pick an operating point of the Pareto tool first"));
+    return;
+  }
+  const auto r = study->reselectAfterChatter(pareto_weights_->weights(),
+                                             engineRequirement(requirements_->requirement()), chatter_hz, *q);
+  if (!r || !r->selection) {
+    showError(tr("Chatter feedback"),
+              tr("No admissible point near a Smith-Tlusty speed for %1 Hz in the grid's speed range").arg(chatter_hz));
+    return;
+  }
+  const ParetoPoint& p = r->selection->point;
+  doc_.setPoint({revPerSToRpm(p.speed_rev_per_s), p.depth_m * 1e3, p.feed_per_tooth_m * 1e3});
+  statusBar()->showMessage(tr("Rule 16: chatter at %1 Hz -> N = %2 rpm (k = %3); re-selected %4 rpm, %5 mm")
+                               .arg(chatter_hz, 0, 'f', 1)
+                               .arg(revPerSToRpm(r->suggested_rev_per_s), 0, 'f', 0)
+                               .arg(r->k)
+                               .arg(revPerSToRpm(p.speed_rev_per_s), 0, 'f', 0)
+                               .arg(p.depth_m * 1e3, 0, 'f', 3),
+                           15000);
+  try {
+    app::LearningDatabase db(learningDatabasePath());
+    db.insert(study->learningRecord(pareto_weights_->weights(), p, 0.0, app::LearningSource::Feedback));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(tr("Learning database: %1").arg(e.what()), 10000);
+  }
+  refreshHistory();
+  startSimulation();
 }
 
 void MainWindow::onRequirementChanged() {

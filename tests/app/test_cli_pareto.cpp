@@ -98,6 +98,7 @@ class TestCliPareto : public QObject {
     QTest::newRow("--require key") << QStringList{} << QStringList{"--require", "speed=1:2"}
                                    << "--require key = 'speed': must be one of mrr_cm3_s, tol, surf, ros";
     QTest::newRow("--require order") << QStringList{} << QStringList{"--require", "mrr_cm3_s=2:1"} << "LO <= HI";
+    QTest::newRow("--chatter-hz") << QStringList{} << QStringList{"--chatter-hz", "-5"} << "--chatter-hz";
     QTest::newRow("--front-limit") << QStringList{} << QStringList{"--front-limit", "-3"}
                                    << "--front-limit = -3: must be an integer >= 0";
   }
@@ -110,6 +111,24 @@ class TestCliPareto : public QObject {
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+
+  // Module VI, reported by the operator: Rule 16 speed N_s = 60 f_c / (n_t k) nearest q, and a
+  // re-selection within +-2 % of it.
+  void operatorReportedChatter() {
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--chatter-hz", "668", "--front-limit", "1"});
+    QCOMPARE(r.code, 0);
+    const QJsonObject fb = r.json["feedback"].toObject();
+    QCOMPARE(fb["reported_by"].toString(), QString("operator"));
+    QVERIFY(fb["chatter"].toBool());
+    const int k = fb["k"].toInt();
+    const double ns = fb["suggested_speed_rpm"].toDouble();
+    QCOMPARE_LE(std::abs(ns - 60.0 * 668.0 / (3.0 * k)), 1e-9 * ns);
+    // nearest to q's speed among the lobe speeds
+    const double n = r.json["q"].toObject()["speed_rpm"].toDouble();
+    QVERIFY(std::abs(ns - n) <= std::abs(60.0 * 668.0 / (3.0 * (k + 1)) - n) + 1e-9);
+    const double reselected = fb["reselected"].toObject()["q"].toObject()["speed_rpm"].toDouble();
+    QCOMPARE_LE(std::abs(reselected - ns), 0.02 * ns);
   }
 
   // --front-limit keeps the N points of the whole set with the best J; 0 lists the whole set.

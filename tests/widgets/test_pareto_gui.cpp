@@ -161,6 +161,28 @@ class TestParetoGui : public QObject {
     for (int i = 0; i < 4; ++i) QCOMPARE_LE(std::abs(weightAt(window, i) - row.weights[i]), 1e-12);
   }
 
+  // Module VI reported by the operator: the point moves within 2 % of the Smith-Tlusty speed and the
+  // re-selected point is recorded with source "feedback".
+  void reportedChatterMovesToSmithTlustySpeed() {
+    QTemporaryDir dir;
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    window.setLearningDatabasePath(dir.filePath("learning.sqlite"));
+    window.moveToParetoChoice();
+    const double n0 = window.document()->point().speed_rpm;
+    window.reportChatter(668.0);
+    const double n1 = window.document()->point().speed_rpm;
+    // N_s = 60 f / (n_t k) for the k nearest n0 (3 teeth)
+    const double k = std::round(60.0 * 668.0 / (3.0 * n0));
+    double best = 0.0;
+    for (double kk : {k - 1, k, k + 1})
+      if (kk >= 1 && (best == 0.0 || std::abs(60.0 * 668.0 / (3.0 * kk) - n0) < std::abs(best - n0)))
+        best = 60.0 * 668.0 / (3.0 * kk);
+    QCOMPARE_LE(std::abs(n1 - best), 0.02 * best + 1e-9);
+    QCOMPARE(window.historyView()->rows().size(), 1);
+    QCOMPARE(window.historyView()->rows().front().source, QString("feedback"));
+  }
+
   void monitoringShowsSimulationSignals() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
