@@ -40,6 +40,13 @@ CutPointFlags readCutPoint(const QCommandLineParser& parser);
 
 void printJson(const QJsonObject& object);
 
+// Project sections: "<field> = <value>: must be <range>" as CliError(2).
+[[noreturn]] void failField(const QString& field, const QString& value, const QString& range);
+// o[key] as a finite number in [lo, hi] ("path.key" in messages); `fallback` when absent, else an
+// error naming the missing field.
+double sectionNumber(const QJsonObject& o, const QString& path, const QString& key, double lo, double hi,
+                     const QString& range, std::optional<double> fallback = {});
+
 // JSON number, or null for a non-finite value (never NaN in output).
 QJsonValue jsonNumberOrNull(double value);
 

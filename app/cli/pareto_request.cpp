@@ -14,22 +14,13 @@ namespace mx::app {
 
 namespace {
 
-[[noreturn]] void fail(const QString& field, const QString& value, const QString& range) {
-  throw CliError(QString("%1 = %2: must be %3").arg(field, value, range), kExitBadInput);
-}
-
 double numberField(const QJsonObject& o, const QString& path, const QString& key, double lo, double hi,
                    const QString& range, std::optional<double> fallback = {}) {
-  const QString field = path + "." + key;
-  if (!o.contains(key)) {
-    if (fallback) return *fallback;
-    throw CliError(QString("%1 is missing: must be %2").arg(field, range), kExitBadInput);
-  }
-  const QJsonValue v = o.value(key);
-  if (!v.isDouble()) fail(field, QJsonValue(v).toVariant().toString().isEmpty() ? "(not a number)" : v.toVariant().toString(), range);
-  const double x = v.toDouble();
-  if (!(std::isfinite(x) && x >= lo && x <= hi)) fail(field, QString::number(x, 'g', 10), range);
-  return x;
+  return sectionNumber(o, path, key, lo, hi, range, fallback);
+}
+
+[[noreturn]] void fail(const QString& field, const QString& value, const QString& range) {
+  failField(field, value, range);
 }
 
 PowerLawModel readModel(const QJsonObject& pareto, const QString& key) {

@@ -3,6 +3,8 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <cstdlib>
@@ -38,6 +40,8 @@ struct CvodeIntegrator::Impl {
   N_Vector abstol = nullptr;
   void* memory = nullptr;
   SUNNonlinearSolver solver = nullptr;
+  SUNMatrix matrix = nullptr;          // BDF only
+  SUNLinearSolver linear = nullptr;    // BDF only
   double t = 0.0;
   std::exception_ptr rhs_error;
   std::string last_message;
@@ -49,6 +53,8 @@ struct CvodeIntegrator::Impl {
   ~Impl() {
     if (memory) CVodeFree(&memory);
     if (solver) SUNNonlinSolFree(solver);
+    if (linear) SUNLinSolFree(linear);
+    if (matrix) SUNMatDestroy(matrix);
     if (abstol) N_VDestroy(abstol);
     if (y) N_VDestroy(y);
     if (context) SUNContext_Free(&context);
@@ -73,7 +79,7 @@ struct CvodeIntegrator::Impl {
 };
 
 CvodeIntegrator::CvodeIntegrator(Rhs rhs, double t0, const std::vector<double>& y0, double rtol,
-                                 const std::vector<double>& atol, long max_steps_per_call)
+                                 const std::vector<double>& atol, long max_steps_per_call, Method method)
     : impl_(std::make_unique<Impl>()) {
   if (y0.empty() || atol.size() != y0.size())
     throw CvodeError("CVODE: the state must be non-empty with one atol per component");
@@ -88,13 +94,20 @@ CvodeIntegrator::CvodeIntegrator(Rhs rhs, double t0, const std::vector<double>& 
     NV_Ith_S(s.y, i) = y0[static_cast<std::size_t>(i)];
     NV_Ith_S(s.abstol, i) = atol[static_cast<std::size_t>(i)];
   }
-  s.memory = require(CVodeCreate(CV_ADAMS, s.context), "CVodeCreate");
+  s.memory = require(CVodeCreate(method == Method::Bdf ? CV_BDF : CV_ADAMS, s.context), "CVodeCreate");
   s.check(CVodeSetErrHandlerFn(s.memory, &Impl::errorCallback, &s), "CVodeSetErrHandlerFn");
   s.check(CVodeInit(s.memory, &Impl::rhsCallback, t0, s.y), "CVodeInit");
   s.check(CVodeSetUserData(s.memory, &s), "CVodeSetUserData");
   s.check(CVodeSVtolerances(s.memory, rtol, s.abstol), "CVodeSVtolerances");
-  s.solver = require(SUNNonlinSol_FixedPoint(s.y, 0, s.context), "SUNNonlinSol_FixedPoint");
-  s.check(CVodeSetNonlinearSolver(s.memory, s.solver), "CVodeSetNonlinearSolver");
+  if (method == Method::Bdf) {
+    // CVODE's default nonlinear solver is Newton; it needs a linear solver (Jacobian by difference quotients).
+    s.matrix = require(SUNDenseMatrix(n, n, s.context), "SUNDenseMatrix");
+    s.linear = require(SUNLinSol_Dense(s.y, s.matrix, s.context), "SUNLinSol_Dense");
+    s.check(CVodeSetLinearSolver(s.memory, s.linear, s.matrix), "CVodeSetLinearSolver");
+  } else {
+    s.solver = require(SUNNonlinSol_FixedPoint(s.y, 0, s.context), "SUNNonlinSol_FixedPoint");
+    s.check(CVodeSetNonlinearSolver(s.memory, s.solver), "CVodeSetNonlinearSolver");
+  }
   s.check(CVodeSetMaxNumSteps(s.memory, max_steps_per_call), "CVodeSetMaxNumSteps");
 }
 
