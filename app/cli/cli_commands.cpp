@@ -5,7 +5,7 @@
 namespace mx::app {
 
 const CliCommand* findCommand(const QString& name) {
-  static const std::array<CliCommand, 8> commands{{
+  static const CliCommand commands[] = {
       {"check", "validate a project file", &runCheckCommand},
       {"lobes", "stability lobes of one tool", &runLobesCommand},
       {"simulate", "time-domain simulation of one cutting point", &runSimulateCommand},
@@ -14,7 +14,8 @@ const CliCommand* findCommand(const QString& name) {
       {"weights-sweep", "minimum tool cost against the weights (figures 4, 5)", &runWeightsSweepCommand},
       {"history", "Rule 14 learning database: programmed points, newest first", &runHistoryCommand},
       {"pareto", "Pareto expert system: TOL, MRR, SURF, ROS objective and non-dominated set", &runParetoCommand},
-  }};
+      {"control", "Adaptive force control under beta-FROH: closed loop over the workpiece, or a beta sweep", &runControlCommand},
+  };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;
   return nullptr;

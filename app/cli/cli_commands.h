@@ -21,5 +21,6 @@ int runRankCommand(const QStringList& arguments);
 int runWeightsSweepCommand(const QStringList& arguments);
 int runHistoryCommand(const QStringList& arguments);
 int runParetoCommand(const QStringList& arguments);
+int runControlCommand(const QStringList& arguments);
 
 }  // namespace mx::app

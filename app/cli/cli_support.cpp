@@ -1,6 +1,7 @@
 #include "cli/cli_support.h"
 
 #include <QJsonDocument>
+#include <QSaveFile>
 #include <QTextStream>
 #include <cmath>
 
@@ -69,6 +70,17 @@ void printJson(const QJsonObject& object) {
 }
 
 QJsonValue jsonNumberOrNull(double value) { return std::isfinite(value) ? QJsonValue(value) : QJsonValue(); }
+
+void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write) {
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+    throw CliError(QString("%1 = '%2': cannot write (%3)").arg(flag, path, file.errorString()), kExitBadInput);
+  QTextStream out(&file);
+  out.setRealNumberPrecision(10);
+  write(out);
+  out.flush();
+  if (!file.commit()) throw CliError(QString("%1 = '%2': write failed").arg(flag, path), kExitComputationFailed);
+}
 
 void failField(const QString& field, const QString& value, const QString& range) {
   throw CliError(QString("%1 = %2: must be %3").arg(field, value, range), kExitBadInput);

@@ -4,6 +4,8 @@
 #include <QCommandLineParser>
 #include <QJsonObject>
 #include <QString>
+#include <QTextStream>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -39,6 +41,10 @@ QList<QCommandLineOption> cutPointOptions();
 CutPointFlags readCutPoint(const QCommandLineParser& parser);
 
 void printJson(const QJsonObject& object);
+
+// Writes `lines` (CSV or other text) atomically to `path` (QSaveFile); `flag` names the option in
+// errors: cannot open -> CliError(2), write failed -> CliError(1).
+void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
 
 // Project sections: "<field> = <value>: must be <range>" as CliError(2).
 [[noreturn]] void failField(const QString& field, const QString& value, const QString& range);

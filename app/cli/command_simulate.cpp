@@ -18,17 +18,12 @@ namespace mx::app {
 namespace {
 
 void writeCsv(const QString& path, const SimulationTrace& trace) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-    throw CliError(QString("--csv = '%1': cannot write (%2)").arg(path, file.errorString()), kExitBadInput);
-  QTextStream out(&file);
-  out.setRealNumberPrecision(10);
-  out << "time_s,x_mm,y_mm,Fx_N,Fy_N,F_N,P_W\n";
-  for (size_t i = 0; i < trace.time_s.size(); ++i)
-    out << trace.time_s[i] << ',' << trace.x_m[i] * 1e3 << ',' << trace.y_m[i] * 1e3 << ',' << trace.fx_n[i] << ','
-        << trace.fy_n[i] << ',' << trace.force_n[i] << ',' << trace.power_w[i] << '\n';
-  out.flush();
-  if (!file.commit()) throw CliError(QString("--csv = '%1': write failed").arg(path), kExitComputationFailed);
+  writeTextFileAtomically("--csv", path, [&](QTextStream& out) {
+    out << "time_s,x_mm,y_mm,Fx_N,Fy_N,F_N,P_W\n";
+    for (size_t i = 0; i < trace.time_s.size(); ++i)
+      out << trace.time_s[i] << ',' << trace.x_m[i] * 1e3 << ',' << trace.y_m[i] * 1e3 << ',' << trace.fx_n[i] << ','
+          << trace.fy_n[i] << ',' << trace.force_n[i] << ',' << trace.power_w[i] << '\n';
+  });
 }
 
 }  // namespace

@@ -55,3 +55,17 @@ inline QJsonObject mutated(QJsonObject root, const QStringList& mutations) {
 }
 
 }  // namespace mx::test
+
+// The project at `source` with `mutations` applied, written to `target`; returns target.
+#include <QFile>
+namespace mx::test {
+inline QString writeMutatedProject(const QString& source, const QStringList& mutations, const QString& target) {
+  QFile in(source);
+  if (!in.open(QIODevice::ReadOnly)) qFatal("cannot read %s", qPrintable(source));
+  const QJsonObject root = mutated(QJsonDocument::fromJson(in.readAll()).object(), mutations);
+  QFile out(target);
+  if (!out.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(target));
+  out.write(QJsonDocument(root).toJson());
+  return target;
+}
+}  // namespace mx::test

@@ -1,0 +1,163 @@
+// millexpert-cli control PROJECT --beta B [--csv FILE] [--csv-continuous FILE]
+// millexpert-cli control PROJECT --sweep-beta FROM:TO:STEP
+// Adaptive force control under beta-FROH (2006 paper, section 4; the project's "control" section,
+// control_request.h): the closed loop over the workpiece depth profile, simulated with the continuous
+// plant integrated between samples (CVODE).
+//   --beta prints {"beta", "overshoot_pct": [...], "settling_time_s", "Jc", "unstable_zero",
+//     "max_force_N", "min_feed_mm_s", "max_feed_mm_s"} plus "force_reference_N", "reference_binding",
+//     "sampling_period_s", "tau_c_ms", "threshold_beta", "completed", "duration_s", "samples",
+//     "rls_resets", "poles", "zeros" ([re, im] of H_beta of the true plant at the first depth).
+//     Without --beta: the project's control.beta.
+//   --csv FILE: one row per sample (t, reference, model, sampled force, error, feed, depth, estimates);
+//   --csv-continuous FILE: the continuous output between samples (force, its interpolation, feeds).
+//   --sweep-beta prints {"beta": [...], "Jc": [...], "best_beta"} plus "unstable_zero": [...],
+//     "threshold_beta", "found" (false: no beta with stable zeros completed the workpiece).
+// Exit 2: bad project, section or flags; exit 1: the simulation failed.
+#include <QJsonArray>
+
+#include "cli/cli_application.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "cli/control_request.h"
+#include "control/beta_sweep.h"
+#include "control/force_plant.h"
+#include "control/zero_threshold.h"
+#include "model/job_control.h"
+
+namespace mx::app {
+
+namespace {
+
+QJsonArray complexJson(const Roots& roots) {
+  QJsonArray out;
+  for (const std::complex<double>& z : roots) out.append(QJsonArray{z.real(), z.imag()});
+  return out;
+}
+
+// The beta where a zero of H_beta of the true plant (first depth) leaves the unit circle.
+double zeroThreshold(const AdaptiveControlSettings& s) {
+  const double depth = s.workpiece.steps.front().depth_m > 0.0 ? s.workpiece.steps.front().depth_m : 1e-3;
+  const ForcePlant plant = makeForcePlant(s.process, depth);
+  return unstableZeroThreshold(plant.stateSpace(), 1.0 / s.process.spindle_rev_s).threshold_beta;
+}
+
+BetaSweepSettings parseSweep(const QString& text) {
+  const QStringList parts = text.split(':');
+  bool ok[3] = {false, false, false};
+  BetaSweepSettings s;
+  if (parts.size() == 3) {
+    s.from = parts[0].toDouble(&ok[0]);
+    s.to = parts[1].toDouble(&ok[1]);
+    s.step = parts[2].toDouble(&ok[2]);
+  }
+  if (!ok[0] || !ok[1] || !ok[2] || !(s.from >= -1.0 && s.from <= s.to && s.to <= 1.0 && s.step > 0.0) ||
+      (s.to - s.from) / s.step > 10000.0)
+    throw CliError(QString("--sweep-beta = '%1': expected FROM:TO:STEP with -1 <= FROM <= TO <= 1, STEP > 0 and at "
+                           "most 10000 steps")
+                       .arg(text),
+                   kExitBadInput);
+  return s;
+}
+
+void writeSamples(const QString& path, const ClosedLoopResult& r) {
+  writeTextFileAtomically("--csv", path, [&](QTextStream& out) {
+    const std::size_t n_theta = r.samples.empty() ? 0 : r.samples.front().theta.size();
+    out << "t_s,reference_N,model_N,force_N,error_N,feed_mm_s,depth_mm,rls_reset,model_zeros_followed";
+    for (std::size_t k = 0; k < n_theta; ++k) out << ",theta" << k + 1;
+    out << '\n';
+    for (const ClosedLoopSample& s : r.samples) {
+      out << s.t << ',' << s.reference_N << ',' << s.model_N << ',' << s.force_N << ',' << s.error_N << ','
+          << s.feed_m_s * 1e3 << ',' << s.depth_m * 1e3 << ',' << int(s.rls_reset) << ',' << int(s.model_zeros_followed);
+      for (std::size_t k = 0; k < n_theta; ++k) out << ',' << (k < s.theta.size() ? s.theta[k] : 0.0);
+      out << '\n';
+    }
+  });
+}
+
+void writeContinuous(const QString& path, const ClosedLoopResult& r) {
+  writeTextFileAtomically("--csv-continuous", path, [&](QTextStream& out) {
+    out << "t_s,force_N,force_interpolated_N,feed_command_mm_s,feed_actual_mm_s,position_mm,depth_mm\n";
+    for (const ClosedLoopDensePoint& d : r.dense)
+      out << d.t << ',' << d.force_N << ',' << d.interpolated_N << ',' << d.feed_command_m_s * 1e3 << ','
+          << d.feed_actual_m_s * 1e3 << ',' << d.position_m * 1e3 << ',' << d.depth_m * 1e3 << '\n';
+  });
+}
+
+}  // namespace
+
+int runControlCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Adaptive force control under beta-FROH (2006 paper, section 4).");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"beta", "FROH gain beta in [-1, 1]. Default: the project's control.beta.", "B"},
+      {"csv", "Write the sampled signals (one row per spindle period) to FILE.", "FILE"},
+      {"csv-continuous", "Write the continuous output between samples to FILE.", "FILE"},
+      {"sweep-beta", "J_c(beta) over FROM:TO:STEP instead of one run.", "FROM:TO:STEP"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const std::optional<double> beta = numberOption(parser, "beta", -1.0, 1.0);
+  std::optional<BetaSweepSettings> sweep;
+  if (parser.isSet("sweep-beta")) sweep = parseSweep(parser.value("sweep-beta"));
+  const Project project = loadProject(path);
+  ControlRequest request = controlRequestFromProject(project);
+  AdaptiveControlSettings& s = request.settings;
+  if (beta) s.beta = *beta;
+  const double threshold = zeroThreshold(s);
+
+  QJsonObject out;
+  try {
+    if (sweep) {
+      const BetaSweepResult r = sweepBeta(s, *sweep);
+      QJsonArray betas, jc, unstable;
+      for (std::size_t i = 0; i < r.beta.size(); ++i) {
+        betas.append(r.beta[i]);
+        jc.append(jsonNumberOrNull(r.Jc_N_s[i]));
+        unstable.append(static_cast<bool>(r.unstable_zero[i]));
+      }
+      out = {{"beta", betas},
+             {"Jc", jc},
+             {"best_beta", r.found ? QJsonValue(r.best_beta) : QJsonValue()},
+             {"best_Jc", r.found ? QJsonValue(r.best_Jc_N_s) : QJsonValue()},
+             {"found", r.found},
+             {"unstable_zero", unstable},
+             {"threshold_beta", threshold}};
+    } else {
+      const ClosedLoopResult r = simulateAdaptiveForceControl(s);
+      const ClosedLoopMetrics& m = r.metrics;
+      QJsonArray overshoot;
+      for (const DepthStepMetrics& step : m.steps) overshoot.append(step.overshoot_pct);
+      out = {{"beta", s.beta},
+             {"overshoot_pct", overshoot},
+             {"settling_time_s", m.settling_time_s},
+             {"Jc", m.Jc_N_s},
+             {"unstable_zero", m.unstable_zero},
+             {"max_force_N", m.max_force_N},
+             {"min_feed_mm_s", m.min_feed_m_s * 1e3},
+             {"max_feed_mm_s", m.max_feed_m_s * 1e3},
+             {"force_reference_N", s.force_reference_N},
+             {"reference_binding", QString::fromStdString(request.reference.binding)},
+             {"sampling_period_s", r.sampling_period_s},
+             {"tau_c_ms", r.tau_c_s * 1e3},
+             {"threshold_beta", threshold},
+             {"completed", m.completed},
+             {"duration_s", m.duration_s},
+             {"samples", m.samples},
+             {"rls_resets", m.rls_resets},
+             {"poles", complexJson(r.plant.poles())},
+             {"zeros", complexJson(r.plant.zeros())}};
+      if (parser.isSet("csv")) writeSamples(parser.value("csv"), r);
+      if (parser.isSet("csv-continuous")) writeContinuous(parser.value("csv-continuous"), r);
+    }
+  } catch (const InvalidInput& e) {
+    throw CliError(QString("control: %1").arg(e.what()), kExitBadInput);
+  } catch (const CliError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw CliError(QString("control: the simulation failed: %1").arg(e.what()), kExitComputationFailed);
+  }
+  printJson(out);
+  return kExitOk;
+}
+
+}  // namespace mx::app

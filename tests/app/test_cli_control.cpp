@@ -1,0 +1,124 @@
+// millexpert-cli control (issue 6): the fixed JSON keys; the paper's four betas keep the feed within
+// [0, f_max] and the force bounded; the unstable-zero threshold agrees with the first-order formula
+// of the reading notes; the sweep flags exactly the betas below the threshold and its best beta is
+// the argmin of J_c over the others; --csv has one row per sample; bad input exits 2 naming the field.
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "support/cli_runner.h"
+#include "support/json_mutation.h"
+#include "test_main.h"
+
+namespace {
+const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
+}
+
+class TestCliControl : public QObject {
+  Q_OBJECT
+ private slots:
+  void closedLoop_data() {
+    QTest::addColumn<double>("beta");
+    for (double b : {-0.3, 0.0, 0.3, 1.0}) QTest::newRow(qPrintable(QString("beta %1").arg(b))) << b;
+  }
+  void closedLoop() {
+    QFETCH(double, beta);
+    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--beta", QString::number(beta)});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"beta", "overshoot_pct", "settling_time_s", "Jc", "unstable_zero", "max_force_N",
+                            "min_feed_mm_s", "max_feed_mm_s"})
+      QVERIFY2(r.json.contains(key), key);
+    QCOMPARE(r.json["beta"].toDouble(), beta);
+    QCOMPARE(r.json["overshoot_pct"].toArray().size(), 3);  // three depth steps (figure 7)
+    QVERIFY(r.json["min_feed_mm_s"].toDouble() >= 0.0);
+    QVERIFY(r.json["max_feed_mm_s"].toDouble() <= 30.0 + 1e-9);  // feed_max_mm_s of the project
+    // The force stays below K_p(5 mm) f_max = K_c b a f_max / (n_t N) with a = 4/pi (full immersion).
+    const double kp5 = 1200e6 * 5e-3 * (4.0 / M_PI) / (4.0 * 715.0 / 60.0);
+    QVERIFY(r.json["max_force_N"].toDouble() <= kp5 * 0.030);
+    QVERIFY(!r.json["unstable_zero"].toBool());
+    QVERIFY(r.json["completed"].toBool());
+    QVERIFY(r.json["Jc"].toDouble() > 0.0);
+    // Poles of H_beta at exp(-T/tau): tau_c (10.49 ms) and the drive (0, underflow).
+    const double T = r.json["sampling_period_s"].toDouble();
+    QCOMPARE_LE(std::abs(T - 60.0 / 715.0), 1e-12);
+    const double tau_c = r.json["tau_c_ms"].toDouble() * 1e-3;
+    bool found = false;
+    for (const QJsonValue& p : r.json["poles"].toArray())
+      found = found || std::abs(p.toArray()[0].toDouble() - std::exp(-T / tau_c)) < 1e-12;
+    QVERIFY(found);
+  }
+
+  // First-order formula of the reading notes: beta* = -(1 - a) / (2 (1 - c)), a = e^{-T/tau_c},
+  // c = tau_c (1 - a) / T; the 0.1 ms drive moves it by less than 1e-3.
+  void thresholdAgreesWithFirstOrderFormula() {
+    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--beta", "0"});
+    const double T = r.json["sampling_period_s"].toDouble(), tau = r.json["tau_c_ms"].toDouble() * 1e-3;
+    const double a = std::exp(-T / tau), c = tau * (1 - a) / T;
+    QCOMPARE_LE(std::abs(r.json["threshold_beta"].toDouble() + (1 - a) / (2 * (1 - c))), 1e-3);
+  }
+
+  void sweep() {
+    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--sweep-beta=-1:1:0.1"});
+    QCOMPARE(r.code, 0);
+    const QJsonArray beta = r.json["beta"].toArray(), jc = r.json["Jc"].toArray(), unstable = r.json["unstable_zero"].toArray();
+    QCOMPARE(beta.size(), 21);
+    QCOMPARE(jc.size(), 21);
+    const double threshold = r.json["threshold_beta"].toDouble();
+    double best = INFINITY, best_beta = 0;
+    for (qsizetype i = 0; i < beta.size(); ++i) {
+      QCOMPARE(unstable[i].toBool(), beta[i].toDouble() < threshold);
+      if (!unstable[i].toBool() && jc[i].toDouble() < best) {
+        best = jc[i].toDouble();
+        best_beta = beta[i].toDouble();
+      }
+    }
+    QCOMPARE(r.json["best_beta"].toDouble(), best_beta);
+  }
+
+  void csvHasOneRowPerSample() {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("s.csv"), dense = dir.filePath("d.csv");
+    const mx::test::CliRun r =
+        mx::test::runCli({"control", kProject, "--beta", "0.3", "--csv", csv, "--csv-continuous", dense});
+    QCOMPARE(r.code, 0);
+    QFile f(csv), g(dense);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QVERIFY(g.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines.size() - 1, r.json["samples"].toInt());
+    QVERIFY(lines[0].startsWith("t_s,reference_N,model_N,force_N,error_N,feed_mm_s,depth_mm"));
+    QVERIFY(g.readAll().count('\n') > 32 * (lines.size() - 2));  // 32 continuous points per period
+  }
+
+  void badInput_data() {
+    QTest::addColumn<QStringList>("mutations");
+    QTest::addColumn<QStringList>("flags");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("beta range") << QStringList{} << QStringList{"--beta", "1.5"} << "--beta";
+    QTest::newRow("sweep form") << QStringList{} << QStringList{"--sweep-beta", "0:1"} << "--sweep-beta = '0:1'";
+    QTest::newRow("sweep order") << QStringList{} << QStringList{"--sweep-beta", "0.5:0:0.1"} << "FROM <= TO";
+    QTest::newRow("no section") << QStringList{"-control"} << QStringList{} << "section 'control' is missing";
+    QTest::newRow("negative depth") << QStringList{"control/workpiece/1/depth_mm=-1"} << QStringList{}
+                                    << "control.workpiece[1].depth_mm = -1: must be in [0, 1000]";
+    QTest::newRow("lambda") << QStringList{"control/rls/lambda=1.5"} << QStringList{}
+                            << "control.rls.lambda = 1.5: must be in [0.5, 1]";
+    QTest::newRow("reset rule") << QStringList{"control/rls/reset=\"sometimes\""} << QStringList{}
+                                << "control.rls.reset = 'sometimes': must be one of error, trace, none";
+    QTest::newRow("unknown tool") << QStringList{"control/tool=\"X\""} << QStringList{} << "control.tool = 'X'";
+    QTest::newRow("angles") << QStringList{"control/exit_angle_deg=0"} << QStringList{} << "control.exit_angle_deg";
+  }
+  void badInput() {
+    QFETCH(QStringList, mutations);
+    QFETCH(QStringList, flags);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const QString path = mx::test::writeMutatedProject(kProject, mutations, dir.filePath("p.mxproj"));
+    const mx::test::CliRun r = mx::test::runCli(QStringList{"control", path} + flags);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+};
+
+MX_TEST_MAIN(TestCliControl)
+#include "test_cli_control.moc"
