@@ -22,6 +22,8 @@ const char* kUsage =
     "  weights-sweep  minimum tool cost against the weights (--c3 V | --simplex STEP)\n"
     "  history   Rule 14 learning database, newest first ([--tool ID] [--db FILE] [--add-json JSON])\n"
     "  pareto    Pareto expert system ([--w tol,mrr,surf,ros] [--fine] [--require mrr_cm3_s=LO:HI] [--auto-weights])\n"
+    "  sdnrp     Cus & Zuperl force/roughness control (--ra UM [--seconds 15] [--csv FILE])\n"
+    "  override  optimise a G-code program: override PROGRAM.nc PROJECT --out OUT.nc [--csv FILE]\n"
     "  control   adaptive force control under beta-FROH (--beta B [--csv FILE] | --sweep-beta FROM:TO:STEP)\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 

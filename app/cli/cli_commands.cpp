@@ -15,6 +15,8 @@ const CliCommand* findCommand(const QString& name) {
       {"history", "Rule 14 learning database: programmed points, newest first", &runHistoryCommand},
       {"pareto", "Pareto expert system: TOL, MRR, SURF, ROS objective and non-dominated set", &runParetoCommand},
       {"control", "Adaptive force control under beta-FROH: closed loop over the workpiece, or a beta sweep", &runControlCommand},
+      {"sdnrp", "Cus & Zuperl surface-roughness control loop (SDNRP)", &runSdnrpCommand},
+      {"override", "optimise the feeds of a G-code program with a force controller", &runOverrideCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

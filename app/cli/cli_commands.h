@@ -22,5 +22,7 @@ int runWeightsSweepCommand(const QStringList& arguments);
 int runHistoryCommand(const QStringList& arguments);
 int runParetoCommand(const QStringList& arguments);
 int runControlCommand(const QStringList& arguments);
+int runSdnrpCommand(const QStringList& arguments);
+int runOverrideCommand(const QStringList& arguments);
 
 }  // namespace mx::app

@@ -1,0 +1,73 @@
+// millexpert-cli sdnrp PROJECT --ra UM [--seconds 15] [--csv FILE] [--no-disturbance] [--seed N]
+// Cus & Zuperl (2008): the SDNRP loop that holds the cutting force at F_d = K1(Ra) so that the produced
+// roughness meets the desired Ra (engine/sdnrp; the project's "sdnrp" section, sdnrp_request.h).
+// Prints {"Ra_desired","Fd_N","F_final_N","feed_final_mm_min","speed_final_rpm","Ra_produced"} (um, N,
+// mm/min, rpm) plus "feed_saturated" (F_d not reachable within the feed limits), "disturbance",
+// "seed" and "seconds". --csv: the six console signals of the paper's section 5 every 10 ms.
+// Exit 2: bad project or flags (Ra outside 0.25..2.5 um); exit 1: the simulation failed.
+#include "cli/cli_application.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "cli/sdnrp_request.h"
+#include "model/job_control.h"
+
+namespace mx::app {
+
+namespace {
+
+void writeSignals(const QString& path, const SdnrpResult& r) {
+  writeTextFileAtomically("--csv", path, [&](QTextStream& out) {
+    out << "t_s,Ra_um,Ra_dynamic_um,F_N,F_dynamic_N,feed_mm_min,speed_rpm,feed_command_mm_min,speed_command_rpm\n";
+    for (const SdnrpSample& s : r.samples)
+      out << s.t_s << ',' << s.ra_m * 1e6 << ',' << s.ra_dynamic_m * 1e6 << ',' << s.force_N << ','
+          << s.force_dynamic_N << ',' << s.feed_m_per_s * 60e3 << ',' << s.speed_rev_per_s * 60.0 << ','
+          << s.feed_command_m_per_s * 60e3 << ',' << s.speed_command_rev_per_s * 60.0 << '\n';
+  });
+}
+
+}  // namespace
+
+int runSdnrpCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Cus & Zuperl SDNRP: force and surface-roughness control.");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"ra", "Desired surface roughness Ra [um], 0.25..2.5. Default: the project's sdnrp.ra_um.", "UM"},
+      {"seconds", "Simulated time [s] (default 15, the paper's Table 2).", "S"},
+      {"csv", "Write the six signals (every 10 ms) to FILE.", "FILE"},
+      {"no-disturbance", "Switch the unmodelled-dynamics disturbance off."},
+      {"seed", "Seed of the disturbance generator.", "N"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const std::optional<double> ra = numberOption(parser, "ra", 0.25, 2.5);
+  const std::optional<double> seconds = numberOption(parser, "seconds", 0.1, 600.0);
+  const std::optional<int> seed = integerOption(parser, "seed", 0, 2147483647);
+  const Project project = loadProject(path);
+  SdnrpSettings s = sdnrpSettingsFromProject(project);
+  if (ra) s.ra_desired_m = *ra * 1e-6;
+  if (seconds) s.duration_s = *seconds;
+  if (seed) s.disturbance.seed = static_cast<std::uint64_t>(*seed);
+  if (parser.isSet("no-disturbance")) s.disturbance.enabled = false;
+  SdnrpResult r;
+  try {
+    r = SdnrpSimulator(s).run();
+  } catch (const InvalidInput& e) {
+    throw CliError(QString("sdnrp: %1").arg(e.what()), kExitBadInput);
+  } catch (const std::exception& e) {
+    throw CliError(QString("sdnrp: the simulation failed: %1").arg(e.what()), kExitComputationFailed);
+  }
+  if (parser.isSet("csv")) writeSignals(parser.value("csv"), r);
+  printJson({{"Ra_desired", r.ra_desired_m * 1e6},
+             {"Fd_N", r.fd_N},
+             {"F_final_N", r.f_final_N},
+             {"feed_final_mm_min", r.feed_final_m_per_s * 60e3},
+             {"speed_final_rpm", r.speed_final_rev_per_s * 60.0},
+             {"Ra_produced", r.ra_produced_m * 1e6},
+             {"feed_saturated", r.feed_saturated},
+             {"disturbance", s.disturbance.enabled},
+             {"seed", static_cast<qint64>(s.disturbance.seed)},
+             {"seconds", s.duration_s}});
+  return kExitOk;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,20 @@
+#pragma once
+// The project's "sdnrp" section (issue 7: Cus & Zuperl's surface-roughness control loop) in engine
+// form; shop units in the file. Every key is optional:
+//   "sdnrp": {
+//     "ra_um": 0.81,                          desired Ra [um], 0.25..2.5 (default of --ra)
+//     "seconds": 15,                          simulated time [s], (0, 600]
+//     "disturbance": {"enabled": true, "seed": 2008, "sigma_N": 3, "hold_ms": 10},
+//     "initial": {"feed_mm_min": 430.41, "speed_rpm": 1571},   initial cutting conditions
+//     "drives": {"feed_natural_frequency_rad_s": 30, "feed_damping": 0.7, "spindle_time_constant_s": 0.3},
+//     "integral_rate_per_s": 2                the feed loop's pole (lambda)
+//   }
+// Errors: CliError(2) naming the field, the value and the range.
+#include "project/project.h"
+#include "sdnrp/sdnrp_simulator.h"
+
+namespace mx::app {
+
+SdnrpSettings sdnrpSettingsFromProject(const Project& project);
+
+}  // namespace mx::app

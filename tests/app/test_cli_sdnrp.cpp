@@ -1,0 +1,130 @@
+// millexpert-cli sdnrp and override (issue 7): the fixed JSON keys; the SDNRP loop holds F at F_d
+// (2 %) and Ra at the desired value (10 %) with the disturbance, exactly without it; the override
+// writes a program that differs from the input only in F/S words and comments, with a header, and the
+// CSV table; the adaptive controller is used when the project has a control section; bad input exits 2.
+#include <QFile>
+#include <QRegularExpression>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "support/cli_runner.h"
+#include "support/json_mutation.h"
+#include "test_main.h"
+
+namespace {
+const QString kSdnrp = QStringLiteral(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj");
+const QString kAdaptive = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
+const QString kPocket = QStringLiteral(MX_TEST_DATA_DIR "/gcode/pocket_mm.nc");
+const QString kInch = QStringLiteral(MX_TEST_DATA_DIR "/gcode/inch.nc");
+
+QStringList lines(const QString& path) {
+  QFile f(path);
+  f.open(QIODevice::ReadOnly);
+  return QString::fromUtf8(f.readAll()).split('\n');
+}
+
+// A block with its F/S words and "(MX: ...)" comment removed: what must stay identical.
+QString stripped(QString line) {
+  line.remove(QRegularExpression(R"( \(MX: .*\)$)"));
+  line.remove(QRegularExpression(R"([FfSs][-+]?[0-9.]+)"));
+  return line.simplified();
+}
+}  // namespace
+
+class TestCliSdnrp : public QObject {
+  Q_OBJECT
+ private slots:
+  void sdnrp_data() {
+    QTest::addColumn<double>("ra");
+    QTest::addColumn<bool>("disturbance");
+    for (double ra : {0.38, 0.81, 1.52}) {
+      QTest::newRow(qPrintable(QString("Ra %1 with disturbance").arg(ra))) << ra << true;
+      QTest::newRow(qPrintable(QString("Ra %1 without").arg(ra))) << ra << false;
+    }
+  }
+  void sdnrp() {
+    QFETCH(double, ra);
+    QFETCH(bool, disturbance);
+    QStringList args{"sdnrp", kSdnrp, "--ra", QString::number(ra)};
+    if (!disturbance) args << "--no-disturbance";
+    const mx::test::CliRun r = mx::test::runCli(args);
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"Ra_desired", "Fd_N", "F_final_N", "feed_final_mm_min", "speed_final_rpm", "Ra_produced"})
+      QVERIFY2(r.json.contains(key), key);
+    QCOMPARE_LE(std::abs(r.json["Ra_desired"].toDouble() - ra), 1e-12);
+    const double fd = r.json["Fd_N"].toDouble(), f = r.json["F_final_N"].toDouble();
+    const double tol_f = disturbance ? 0.02 * fd : 1e-6 * fd;
+    QCOMPARE_LE(std::abs(f - fd), tol_f);
+    // Without the disturbance only K5(K1(Ra)) != Ra remains (the printed GP models are not exact
+    // inverses: about 2e-6 relative).
+    QCOMPARE_LE(std::abs(r.json["Ra_produced"].toDouble() - ra), (disturbance ? 0.10 : 1e-4) * ra);
+  }
+  void sdnrpCsvAndErrors() {
+    QTemporaryDir dir;
+    const mx::test::CliRun r = mx::test::runCli({"sdnrp", kSdnrp, "--ra", "0.81", "--seconds", "2", "--csv", dir.filePath("s.csv")});
+    QCOMPARE(r.code, 0);
+    const QStringList rows = lines(dir.filePath("s.csv"));
+    QVERIFY(rows[0].startsWith("t_s,Ra_um,Ra_dynamic_um,F_N,F_dynamic_N,feed_mm_min,speed_rpm"));
+    QCOMPARE_GE(rows.size(), 200);  // every 10 ms over 2 s
+    const mx::test::CliRun bad = mx::test::runCli({"sdnrp", kSdnrp, "--ra", "3"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("--ra"));
+    const QString p = mx::test::writeMutatedProject(kSdnrp, {"sdnrp/disturbance/sigma_N=-1"}, dir.filePath("p.mxproj"));
+    const mx::test::CliRun badSection = mx::test::runCli({"sdnrp", p});
+    QCOMPARE(badSection.code, 2);
+    QVERIFY(badSection.err.contains("sdnrp.disturbance.sigma_N = -1: must be in [0, 1e4]"));
+  }
+
+  void overrideChangesOnlyFeedsAndComments_data() {
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("project");
+    QTest::newRow("mm, model-based") << kPocket << kSdnrp;
+    QTest::newRow("inch, model-based") << kInch << kSdnrp;
+    QTest::newRow("mm, adaptive") << kPocket << kAdaptive;
+  }
+  void overrideChangesOnlyFeedsAndComments() {
+    QFETCH(QString, program);
+    QFETCH(QString, project);
+    QTemporaryDir dir;
+    const QString out = dir.filePath("out.nc"), csv = dir.filePath("out.csv");
+    const mx::test::CliRun r = mx::test::runCli({"override", program, project, "--out", out, "--csv", csv});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"controller", "blocks", "changed_blocks", "warnings", "feed_moves"}) QVERIFY2(r.json.contains(key), key);
+    QVERIFY(r.json["changed_blocks"].toInt() >= 1);
+    QCOMPARE(r.json.contains("closed_loop"), project == kAdaptive);
+    const QStringList in = lines(program), res = lines(out);
+    // Header: four comment lines after a leading '%' line.
+    const int header = 4;
+    QVERIFY(res.join('\n').contains("(MillExpert optimised part program)"));
+    QCOMPARE(res.size(), in.size() + header);
+    const int first = in.value(0).trimmed() == "%" ? 1 : 0;
+    for (int i = 0; i < in.size(); ++i) {
+      const QString a = in[i], b = res[i < first ? i : i + header];
+      QCOMPARE(stripped(b), stripped(a));
+    }
+    QCOMPARE(lines(csv).value(0), QString("block,line,original_F_mm_min,new_F_mm_min,S_rpm,reason,predicted_force_N"));
+  }
+  void overrideErrors_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no --out") << QStringList{"override", kPocket, kSdnrp} << "--out";
+    QTest::newRow("one positional") << QStringList{"override", kSdnrp, "--out", "/tmp/x.nc"} << "expected PROGRAM.nc and PROJECT";
+    QTest::newRow("controller") << QStringList{"override", kPocket, kSdnrp, "--out", "/tmp/x.nc", "--controller", "pid"}
+                                << "--controller = 'pid': must be adaptive or model-based";
+    QTest::newRow("missing program") << QStringList{"override", "/nonexistent.nc", kSdnrp, "--out", "/tmp/x.nc"}
+                                     << "/nonexistent.nc";
+    QTest::newRow("adaptive without control") << QStringList{"override", kPocket, kSdnrp, "--out", "/tmp/x.nc", "--controller", "adaptive"}
+                                              << "section 'control' is missing";
+  }
+  void overrideErrors() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    const mx::test::CliRun r = mx::test::runCli(args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+};
+
+MX_TEST_MAIN(TestCliSdnrp)
+#include "test_cli_sdnrp.moc"
