@@ -14,9 +14,8 @@ std::vector<CutBlock> cuttingBlocks(const GcodeRun& run, const std::vector<doubl
   for (std::size_t i = 0; i < run.motions.size() && i < depths_m.size(); ++i) {
     const GcodeMotion& m = run.motions[i];
     if (!m.isFeedMove() || !(depths_m[i] > 0.0) || !(m.length_m > 0.0)) continue;
-    const bool plunge = m.end_m[2] < m.start_m[2] &&
-                        std::hypot(m.end_m[0] - m.start_m[0], m.end_m[1] - m.start_m[1]) < 1e-9;
-    if (exclude_plunges && plunge) continue;
+    const bool pure_z = std::hypot(m.end_m[0] - m.start_m[0], m.end_m[1] - m.start_m[1]) < 1e-9;
+    if (pure_z && (m.end_m[2] > m.start_m[2] || exclude_plunges)) continue;  // retract, or plunge
     out.push_back({i, m.length_m, depths_m[i]});
   }
   return out;

@@ -36,8 +36,8 @@ class AdaptivePathFeeds {
   std::map<std::size_t, FeedDecision> decisions_;
 };
 
-// The cutting blocks of an override run: feed moves with depth > 0 and length > 0 (plunges excluded
-// when keep_plunge_feed).
+// The cutting blocks of an override run: feed moves with depth > 0 and length > 0, except pure +Z
+// retracts and (when exclude_plunges, i.e. keep_plunge_feed) pure -Z plunges.
 std::vector<CutBlock> cuttingBlocks(const GcodeRun& run, const std::vector<double>& depths_m, bool exclude_plunges);
 
 // A BlockFeedController answering from `feeds` (which must outlive it); blocks it does not know get
