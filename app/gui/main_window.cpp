@@ -10,6 +10,7 @@
 #include <QStatusBar>
 #include <cmath>
 
+#include "control_runner.h"
 #include "expert_runner.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
@@ -42,6 +43,8 @@ MainWindow::MainWindow(QWidget* parent)
   buildDocks();
   buildExpertDocks();
   buildParetoDocks();
+  buildControlDock();
+  buildMachiningDocks();
   buildActions();
 
   progress_->setRange(0, 100);
@@ -97,6 +100,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  control_runner_->cancel();
   sim_runner_->cancel();
   engine_->cancelAll();
 }
@@ -140,6 +144,8 @@ void MainWindow::onProjectChanged() {
   QJsonObject expert = json.value("expert").toObject();
   for (const char* key : {"c", "cr", "ct", "cf"}) expert.remove(key);
   json.insert("expert", expert);
+  // The controllers' sections (issues 6 and 7) feed neither the lobes, the expert nor the Pareto study.
+  for (const char* section : {"control", "sdnrp", "force_control", "part_program"}) json.remove(section);
   if (json.contains("pareto")) {
     QJsonObject pareto = json.value("pareto").toObject();
     pareto.remove("weights");
@@ -154,6 +160,8 @@ void MainWindow::onProjectChanged() {
     showParetoChoice(pareto_weights_->weights());
   }
   updateFiredRules();
+  refreshControl();
+  refreshMachining();
   json.remove("pareto");
   json.remove("operator_rules");
   const QByteArray inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);

@@ -4,6 +4,7 @@
 // and the live simulation, and the engine thread behind them. Later issues add docks (weights and
 // ranking, control, supervisor) next to these.
 #include <QAction>
+#include <functional>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -14,6 +15,8 @@
 #include <QToolButton>
 
 #include "display_units.h"
+#include "cli/control_request.h"
+#include "cli/part_program_request.h"
 #include "cli/pareto_study.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
@@ -29,6 +32,9 @@ class OperatorRulesEditor;
 class ParetoFrontView;
 class ParetoWeightsPanel;
 class RequirementsPanel;
+class ControlView;
+class SurfaceFinishPanel;
+class PartProgramPanel;
 struct ParetoPointView;
 class RankingTable;
 class WeightsPanel;
@@ -42,6 +48,7 @@ namespace mx::gui {
 class SimulationRunner;
 class ExpertRunner;
 class ParetoRunner;
+class ControlRunner;
 struct RefinementOutcome;
 struct SimulationSummary;
 
@@ -84,6 +91,14 @@ class MainWindow : public QMainWindow {
   QString learningDatabasePath() const;            // default: LearningDatabase::defaultPath()
   void setLearningDatabasePath(const QString& path);
   void recordOperatingPoint();                     // Rule 14, source operator or automatic
+  ControlRunner* controlRunner() const { return control_runner_; }
+  widgets::ControlView* controlView() const { return control_view_; }
+  widgets::SurfaceFinishPanel* surfaceFinishPanel() const { return surface_panel_; }
+  widgets::PartProgramPanel* partProgramPanel() const { return program_panel_; }
+  void runSurfaceFinish();                           // SDNRP with the panel's Ra, disturbance, duration
+  void openPartProgram(const QString& path);         // override with the project's controller (engine thread)
+  bool exportPartProgram(const QString& path);       // the optimised program (atomic)
+  bool exportPartProgramCsv(const QString& path);    // the per-block feed-override table (atomic)
   void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
@@ -99,6 +114,10 @@ class MainWindow : public QMainWindow {
   void simulationFinished();
   void paretoShown();   // the Pareto choice was recomputed (study ready, weights or requirement changed)
   void historyShown();  // the history view was refreshed from the database
+  void controlShown();       // a closed-loop run of the control view arrived
+  void controlSweepShown();  // the J_c(beta) sweep arrived
+  void surfaceFinishShown(); // an SDNRP run arrived
+  void partProgramShown();   // an override of the opened program arrived
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -143,6 +162,14 @@ class MainWindow : public QMainWindow {
   void onRulesEdited(const QStringList& rules);
   void updateFiredRules();
   void updateMonitoring(const SimulationSummary* summary = nullptr);
+  // main_window_control.cpp
+  void buildControlDock();
+  void refreshControl();
+  void startControlSweep();
+  void editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what);
+  // main_window_machining.cpp
+  void buildMachiningDocks();
+  void refreshMachining();
   // main_window.cpp
   void onProjectChanged();
   void recomputeLobes();
@@ -179,6 +206,17 @@ class MainWindow : public QMainWindow {
   QString learning_db_path_;
   QByteArray pareto_inputs_;  // the project minus all weights: a change of it needs a new Pareto study
   QTimer pareto_timer_;
+  ControlRunner* control_runner_ = nullptr;
+  widgets::ControlView* control_view_ = nullptr;
+  std::optional<app::ControlRequest> control_request_;
+  QByteArray control_inputs_;      // the control section minus beta, tools, material: a change re-runs the sweep
+  QByteArray control_run_inputs_;  // the same with beta: a change re-runs the closed loop
+  widgets::SurfaceFinishPanel* surface_panel_ = nullptr;
+  widgets::PartProgramPanel* program_panel_ = nullptr;
+  quint64 sdnrp_generation_ = 0, override_generation_ = 0;
+  std::shared_ptr<const app::OverrideOutcome> override_;
+  QString override_path_;
+  QByteArray machining_inputs_;
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;

@@ -1,6 +1,8 @@
 // millexpert-plot: renders lobe curves printed by "millexpert-cli lobes" into a PNG or PDF chart, so
 // that scripts and reports get the same plots as the GUI (QCustomPlot, offscreen).
 //   millexpert-plot OUT.png [--title T] [--max-depth MM] FILE.json[=LABEL] ...
+//   millexpert-plot OUT.png --control PROJECT --beta B          figures 9-12 (2006 paper) for one beta
+//   millexpert-plot OUT.png --control PROJECT --jc FROM:TO:STEP figure 13, J_c(beta)
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFile>
@@ -13,6 +15,7 @@
 #include <limits>
 #include <qcustomplot.h>
 
+#include "control_figures.h"
 #include "lobe_chart_view.h"
 
 namespace {
@@ -57,8 +60,33 @@ int main(int argc, char** argv) {
   parser.addPositionalArgument("curves", "FILE.json[=LABEL] ...; curves 2k and 2k+1 share a colour (solid, dashed).");
   parser.addOption({"title", "Chart title.", "TEXT"});
   parser.addOption({"max-depth", "Upper end of the depth axis [mm].", "MM"});
+  parser.addOption({"control", "Adaptive force control figures of this project's control section.", "PROJECT"});
+  parser.addOption({"beta", "With --control: the closed loop for this beta (figures 9-12).", "B"});
+  parser.addOption({"jc", "With --control: J_c against beta over FROM:TO:STEP (figure 13).", "FROM:TO:STEP"});
   parser.process(app);
   const QStringList args = parser.positionalArguments();
+  if (parser.isSet("control")) {
+    if (args.size() != 1) {
+      QTextStream(stderr) << "millexpert-plot: --control needs exactly one OUT.png\n";
+      return 2;
+    }
+    QString error;
+    if (parser.isSet("jc")) {
+      const QStringList p = parser.value("jc").split(':');
+      if (p.size() != 3) {
+        QTextStream(stderr) << "millexpert-plot: --jc = '" << parser.value("jc") << "': expected FROM:TO:STEP\n";
+        return 2;
+      }
+      error = mx::gui::renderControlJc(parser.value("control"), p[0].toDouble(), p[1].toDouble(), p[2].toDouble(), args[0]);
+    } else {
+      error = mx::gui::renderControlResponse(parser.value("control"), parser.value("beta").toDouble(), args[0]);
+    }
+    if (!error.isEmpty()) {
+      QTextStream(stderr) << "millexpert-plot: " << error << "\n";
+      return 1;
+    }
+    return 0;
+  }
   if (args.size() < 2) {
     QTextStream(stderr) << "millexpert-plot: need OUT and at least one curve file\n";
     return 2;

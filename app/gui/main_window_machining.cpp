@@ -1,0 +1,217 @@
+// MainWindow: surface-finish control and part-program overrides (issue 7). The SDNRP loop (Cus &
+// Zuperl) and the override of a G-code program by a force controller run on the engine thread; the
+// panels only show their results. Exports are atomic (QSaveFile).
+#include <QDateTime>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QStatusBar>
+#include <cmath>
+
+#include "cli/part_program_request.h"
+#include "cli/sdnrp_request.h"
+#include "engine_task.h"
+#include "io/gcode_reader.h"
+#include "main_window.h"
+#include "part_program_panel.h"
+#include "surface_finish_panel.h"
+
+namespace mx::gui {
+
+namespace {
+
+std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+
+// One display row per block: F in the program's units per minute, S in rpm.
+QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult& r) {
+  QVector<widgets::PartProgramRow> rows;
+  rows.reserve(static_cast<qsizetype>(r.program.blocks.size()));
+  std::vector<const FeedOverrideRow*> by_block(r.program.blocks.size(), nullptr);
+  for (const FeedOverrideRow& f : r.rows)
+    if (f.block >= 1 && f.block <= by_block.size()) by_block[f.block - 1] = &f;
+  for (std::size_t i = 0; i < r.program.blocks.size(); ++i) {
+    const GcodeBlock& b = r.program.blocks[i];
+    const GcodeMotion& m = r.run.motions[i];
+    const GcodeBlockEdit& e = r.edits[i];
+    const double unit = m.inch ? 0.0254 : 1e-3;
+    widgets::PartProgramRow row;
+    row.line = b.line;
+    row.text = QString::fromStdString(b.text);
+    if (m.isFeedMove() || m.feed_word) row.original_feed = finiteOr(m.feed_m_per_s * 60.0 / unit);
+    row.new_feed = finiteOr(e.feed);
+    if (m.isFeedMove() || m.speed_word) row.speed_rpm = finiteOr(m.speed_rev_per_s * 60.0);
+    row.new_speed_rpm = finiteOr(e.speed_rpm);
+    if (m.isFeedMove()) row.depth_mm = r.depths_m[i] * 1e3;
+    if (const FeedOverrideRow* f = by_block[i]) {
+      row.predicted_force_n = finiteOr(f->predicted_force_N);
+      row.reason = QString::fromStdString(f->reason);
+    }
+    if (row.reason.isEmpty() && !e.comment.empty()) row.reason = QString::fromStdString(e.comment).remove("MX: ");
+    row.changed = !e.empty();
+    rows.append(row);
+  }
+  return rows;
+}
+
+bool writeAtomically(const QString& path, const QByteArray& bytes, QString* error) {
+  QSaveFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
+    *error = f.errorString();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void MainWindow::buildMachiningDocks() {
+  surface_panel_ = new widgets::SurfaceFinishPanel;
+  program_panel_ = new widgets::PartProgramPanel;
+  auto* surface = new QDockWidget(tr("Surface finish (SDNRP)"), this);
+  surface->setObjectName("surfaceFinishDock");
+  surface->setWidget(surface_panel_);
+  auto* program = new QDockWidget(tr("Part program"), this);
+  program->setObjectName("partProgramDock");
+  program->setWidget(program_panel_);
+  addDockWidget(Qt::BottomDockWidgetArea, surface);
+  addDockWidget(Qt::BottomDockWidgetArea, program);
+  if (auto* control = findChild<QDockWidget*>("controlDock")) {
+    tabifyDockWidget(control, surface);
+    tabifyDockWidget(surface, program);
+  }
+  if (auto* simulation = findChild<QDockWidget*>("simulationDock")) simulation->raise();
+  connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MainWindow::runSurfaceFinish);
+  connect(program_panel_, &widgets::PartProgramPanel::openRequested, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open part program"), QString(),
+                                                      tr("G-code (*.nc *.ngc *.tap *.gcode);;All files (*)"));
+    if (!path.isEmpty()) openPartProgram(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::exportProgramRequested, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export optimised program"), QString(),
+                                                      tr("G-code (*.nc);;All files (*)"));
+    if (!path.isEmpty()) exportPartProgram(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::exportCsvRequested, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export feed overrides"), QString(), tr("CSV (*.csv)"));
+    if (!path.isEmpty()) exportPartProgramCsv(path);
+  });
+}
+
+// The project changed: the panel takes sdnrp.ra_um, disturbance and duration; an open program is
+// overridden again when the controllers' sections changed.
+void MainWindow::refreshMachining() {
+  const app::Project& p = doc_.project();
+  try {
+    const SdnrpSettings s = app::sdnrpSettingsFromProject(p);
+    surface_panel_->setDesiredRaUm(s.ra_desired_m * 1e6);
+    surface_panel_->setDisturbanceOn(s.disturbance.enabled);
+    surface_panel_->setDurationS(s.duration_s);
+  } catch (const std::exception&) {
+    // an invalid sdnrp section is reported when the loop is run
+  }
+  QByteArray inputs;
+  for (const char* section : {"control", "force_control", "part_program", "tools", "machine", "operation"})
+    inputs += QJsonDocument(QJsonObject{{section, p.document.value(section)}}).toJson(QJsonDocument::Compact);
+  if (inputs == machining_inputs_) return;
+  machining_inputs_ = inputs;
+  if (!override_path_.isEmpty()) openPartProgram(override_path_);
+}
+
+void MainWindow::runSurfaceFinish() {
+  SdnrpSettings s;
+  try {
+    s = app::sdnrpSettingsFromProject(doc_.project());
+  } catch (const std::exception& e) {
+    showError(tr("Surface finish"), e.what());
+    return;
+  }
+  s.ra_desired_m = surface_panel_->desiredRaUm() * 1e-6;
+  s.disturbance.enabled = surface_panel_->disturbanceOn();
+  s.duration_s = surface_panel_->durationS();
+  const quint64 generation = ++sdnrp_generation_;
+  surface_panel_->setBusy(true);
+  runEngineTask<SdnrpResult>(engine_->pool(), this, [s] { return SdnrpSimulator(s).run(); },
+                             [this, generation](TaskResult<SdnrpResult> r) {
+                               if (generation != sdnrp_generation_) return;
+                               surface_panel_->setBusy(false);
+                               if (!r.value) {
+                                 showError(tr("Surface finish"), r.error);
+                                 return;
+                               }
+                               surface_panel_->clear();
+                               QVector<widgets::SurfaceFinishSample> samples;
+                               for (const SdnrpSample& x : r.value->samples)
+                                 samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N,
+                                                 x.feed_m_per_s * 60e3, x.speed_rev_per_s * 60.0});
+                               surface_panel_->appendSamples(samples);
+                               const SdnrpResult& v = *r.value;
+                               surface_panel_->setSummary({v.ra_desired_m * 1e6, v.fd_N, v.f_final_N,
+                                                           v.feed_final_m_per_s * 60e3, v.speed_final_rev_per_s * 60.0,
+                                                           v.ra_produced_m * 1e6, v.feed_saturated});
+                               emit surfaceFinishShown();
+                             });
+}
+
+void MainWindow::openPartProgram(const QString& path) {
+  app::OverrideRequest request;
+  GcodeProgram program;
+  try {
+    request = app::overrideRequestFromProject(doc_.project());
+    program = GcodeReader::readFile(path.toStdString());
+  } catch (const std::exception& e) {
+    showError(tr("Part program"), e.what());
+    return;
+  }
+  const quint64 generation = ++override_generation_;
+  program_panel_->setStatus(tr("Running the %1 controller along %2...").arg(request.controllerName(), path));
+  runEngineTask<app::OverrideOutcome>(
+      engine_->pool(), this, [request, program] { return app::runOverride(request, program); },
+      [this, generation, path](TaskResult<app::OverrideOutcome> r) {
+        if (generation != override_generation_) return;
+        if (!r.value) {
+          program_panel_->setStatus(tr("Override failed: %1").arg(r.error));
+          showError(tr("Part program"), r.error);
+          return;
+        }
+        override_ = std::make_shared<app::OverrideOutcome>(std::move(*r.value));
+        override_path_ = path;
+        QVector<widgets::PartProgramWarningView> warnings;
+        for (const GcodeWarning& w : override_->result.warnings)
+          warnings.append({w.line, static_cast<int>(w.column), QString::fromStdString(w.text),
+                           QString::fromStdString(w.message)});
+        const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
+        program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
+                                   override_->controller);
+        emit partProgramShown();
+      });
+}
+
+bool MainWindow::exportPartProgram(const QString& path) {
+  if (!override_) return false;
+  const GcodeHeader header{QFileInfo(doc_.filePath()).fileName().toStdString(), override_->controller.toStdString(),
+                           QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString()};
+  const std::string text = override_->result.writeProgram(header);
+  QString error;
+  if (!writeAtomically(path, QByteArray::fromStdString(text), &error)) {
+    showError(tr("Export program"), tr("%1: %2").arg(path, error));
+    return false;
+  }
+  statusBar()->showMessage(tr("Optimised program written to %1").arg(path), 8000);
+  return true;
+}
+
+bool MainWindow::exportPartProgramCsv(const QString& path) {
+  if (!override_) return false;
+  QString error;
+  if (!writeAtomically(path, QByteArray::fromStdString(override_->result.csv()), &error)) {
+    showError(tr("Export CSV"), tr("%1: %2").arg(path, error));
+    return false;
+  }
+  statusBar()->showMessage(tr("Feed-override table written to %1").arg(path), 8000);
+  return true;
+}
+
+}  // namespace mx::gui

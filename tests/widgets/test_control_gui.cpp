@@ -1,0 +1,111 @@
+// The control and machining docks of the main window (issues 6 and 7): the project's control section
+// drives the closed loop on the engine thread and its result reaches the view (traces, metrics equal
+// to an independent engine run, pole-zero map, J_c sweep); a beta change is one undoable edit of
+// control.beta; an invalid workpiece is refused with the project unchanged; the surface-finish panel
+// runs the SDNRP loop; a part program is overridden and exported (only F/S words and comments change).
+#include <QApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "cli/control_request.h"
+#include "control/closed_loop.h"
+#include "control_view.h"
+#include "main_window.h"
+#include "part_program_panel.h"
+#include "surface_finish_panel.h"
+#include "test_main.h"
+
+using namespace mx;
+
+namespace {
+bool open(gui::MainWindow& w, const char* project) {
+  w.setQuiet(true);
+  w.resize(1600, 950);
+  w.show();
+  return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
+}
+}  // namespace
+
+class TestControlGui : public QObject {
+  Q_OBJECT
+ private slots:
+  void init() {
+    QCoreApplication::setOrganizationName("MillExpertTest");
+    QCoreApplication::setApplicationName("millexpert-test");
+  }
+
+  void closedLoopReachesTheView() {
+    gui::MainWindow window;
+    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QSignalSpy swept(&window, &gui::MainWindow::controlSweepShown);
+    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(shown.count() > 0 || shown.wait(30000));
+    widgets::ControlView* view = window.controlView();
+    QVERIFY(view->isEnabled());
+    QCOMPARE(view->beta(), -0.3);
+    // An independent engine run of the same project section gives the same samples.
+    const app::ControlRequest request = app::controlRequestFromProject(*window.project());
+    const ClosedLoopResult direct = simulateAdaptiveForceControl(request.settings);
+    QCOMPARE(view->graphPointCount("force sampled"), static_cast<int>(direct.samples.size()));
+    QCOMPARE(view->graphPointCount("force continuous"), static_cast<int>(direct.dense.size()));
+    QVERIFY(view->graphPointCount("poles") >= 2);
+    QVERIFY(swept.count() > 0 || swept.wait(60000));
+    QCOMPARE(view->graphPointCount("Jc"), 41);  // -1:1:0.05
+
+    // A beta change: one undoable edit of control.beta, and a new run.
+    shown.clear();
+    emit view->betaChanged(0.3);
+    QCOMPARE(window.project()->document.value("control").toObject().value("beta").toDouble(), 0.3);
+    QVERIFY(shown.wait(30000));
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.project()->document.value("control").toObject().value("beta").toDouble(), -0.3);
+    QCOMPARE(view->beta(), -0.3);
+
+    // A workpiece with a negative depth is refused: the project is unchanged.
+    const QJsonValue before = window.project()->document.value("control");
+    emit view->workpieceEdited({{5.0, 2.0}, {5.0, -1.0}});
+    QCOMPARE(window.project()->document.value("control"), before);
+  }
+
+  void surfaceFinishRunsTheLoop() {
+    gui::MainWindow window;
+    QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
+    widgets::SurfaceFinishPanel* panel = window.surfaceFinishPanel();
+    QCOMPARE(panel->desiredRaUm(), 0.81);  // sdnrp.ra_um of the project
+    QSignalSpy shown(&window, &gui::MainWindow::surfaceFinishShown);
+    window.runSurfaceFinish();
+    QVERIFY(shown.wait(30000));
+    QCOMPARE(panel->sampleCount(), 1501);  // 15 s every 10 ms, t = 0 included
+    QVERIFY(!panel->summaryText("f_final_n").isEmpty());
+  }
+
+  void partProgramOverrideAndExport() {
+    gui::MainWindow window;
+    QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
+    QSignalSpy shown(&window, &gui::MainWindow::partProgramShown);
+    const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
+    window.openPartProgram(program);
+    QVERIFY(shown.wait(30000));
+    widgets::PartProgramPanel* panel = window.partProgramPanel();
+    QVERIFY(panel->changedCount() >= 1);
+    QFile in(program);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    const QList<QByteArray> input = in.readAll().split('\n');
+    QCOMPARE(panel->rows().size(), input.size() - (input.last().isEmpty() ? 1 : 0));
+    QTemporaryDir dir;
+    QVERIFY(window.exportPartProgram(dir.filePath("out.nc")));
+    QVERIFY(window.exportPartProgramCsv(dir.filePath("out.csv")));
+    QFile out(dir.filePath("out.nc"));
+    QVERIFY(out.open(QIODevice::ReadOnly));
+    const QByteArray text = out.readAll();
+    QVERIFY(text.contains("(MillExpert optimised part program)"));
+    QVERIFY(text.contains("(project: cus-zuperl-sdnrp.mxproj)"));
+    QCOMPARE(text.count('\n'), input.size() - 1 + 4);  // four header lines
+  }
+};
+
+MX_TEST_MAIN_WITH_APP(TestControlGui, QApplication)
+#include "test_control_gui.moc"

@@ -1,0 +1,164 @@
+// JcCurvePlot: the J_c(beta) sweep (non-finite values left out), the unstable-zero region shaded below
+// the threshold, the minimum starred, the current beta marked with J_c interpolated between sweep
+// points, labelled axes and legend entries.
+#include <QApplication>
+#include <QImage>
+#include <QTemporaryDir>
+#include <cmath>
+#include <limits>
+
+#include "jc_curve_plot.h"
+#include "test_main.h"
+
+using mx::widgets::JcCurvePlot;
+using mx::widgets::JcCurveView;
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// J_c = 2 + 5 (beta + 0.3)^2 on beta = -1, -0.9, ..., 1.
+JcCurveView parabola() {
+  JcCurveView c;
+  for (int i = 0; i <= 20; ++i) {
+    const double b = -1.0 + 0.1 * i;
+    c.beta << b;
+    c.jc_n_s << 2.0 + 5.0 * (b + 0.3) * (b + 0.3);
+  }
+  c.best_beta = -0.3;
+  c.threshold_beta = -0.62;
+  return c;
+}
+}  // namespace
+
+class TestJcCurvePlot : public QObject {
+  Q_OBJECT
+ private slots:
+  void axesAndEmptyState() {
+    JcCurvePlot plot;
+    QCOMPARE(plot.xAxisLabel(), QString("FROH gain \u03b2 [\u2013]"));
+    QCOMPARE(plot.yAxisLabel(), QString("Cost J_c [N\u00b7s]"));
+    QCOMPARE(plot.pointCount(), 0);
+    QVERIFY(!plot.regionShaded());
+    QVERIFY(!plot.bestBeta());
+    QVERIFY(!plot.currentJc());
+  }
+
+  void curveRegionAndMarkers() {
+    JcCurvePlot plot;
+    plot.setCurve(parabola());
+    plot.setCurrentBeta(0.3);
+    QCOMPARE(plot.pointCount(), 21);
+    QVERIFY(plot.regionShaded());
+    QCOMPARE(plot.shadedRange(), qMakePair(-1.0, -0.62));
+    QVERIFY(plot.bestBeta());
+    QCOMPARE(*plot.bestBeta(), -0.3);
+    QVERIFY(plot.currentJc());
+    QVERIFY(std::abs(*plot.currentJc() - 3.8) < 1e-9);  // 2 + 5 * 0.6^2
+    const QStringList legend = plot.legendNames();
+    QCOMPARE(legend.size(), 4);
+    QCOMPARE(legend[0], QString("J_c(\u03b2) [N\u00b7s]"));
+    QCOMPARE(legend[1], QString("Unstable zero of H_\u03b2: \u03b2 < \u22120.62"));
+    QCOMPARE(legend[2], QString("Minimum: \u03b2 = \u22120.30, J_c = 2 N\u00b7s"));
+    QCOMPARE(legend[3], QString("Current \u03b2 = 0.30, J_c = 3.8 N\u00b7s"));
+  }
+
+  void currentJcInterpolates_data() {
+    QTest::addColumn<double>("beta");
+    QTest::addColumn<bool>("has");
+    QTest::addColumn<double>("jc");
+    QTest::newRow("on a sweep point") << -0.3 << true << 2.0;
+    QTest::newRow("between points") << -0.25 << true << 2.0 + 0.5 * 0.05;  // linear between 2.0 and 2.05
+    QTest::newRow("lower end") << -1.0 << true << 2.0 + 5.0 * 0.49;
+    QTest::newRow("upper end") << 1.0 << true << 2.0 + 5.0 * 1.69;
+    QTest::newRow("clamped above 1") << 2.0 << true << 2.0 + 5.0 * 1.69;
+  }
+  void currentJcInterpolates() {
+    QFETCH(double, beta);
+    QFETCH(bool, has);
+    QFETCH(double, jc);
+    JcCurvePlot plot;
+    plot.setCurve(parabola());
+    plot.setCurrentBeta(beta);
+    QCOMPARE(plot.currentJc().has_value(), has);
+    if (has) QVERIFY2(std::abs(*plot.currentJc() - jc) < 1e-9, qPrintable(QString::number(*plot.currentJc())));
+  }
+
+  void currentBetaOutsideTheSweep() {
+    JcCurveView c = parabola();
+    c.beta = c.beta.mid(5);  // beta from -0.5
+    c.jc_n_s = c.jc_n_s.mid(5);
+    JcCurvePlot plot;
+    plot.setCurve(c);
+    plot.setCurrentBeta(-0.8);
+    QVERIFY(!plot.currentJc());
+    QCOMPARE(plot.legendNames().last(), QString("Current \u03b2 = \u22120.80 (unstable zero)"));
+  }
+
+  void nonFinitePointsLeftOut_data() {
+    QTest::addColumn<int>("bad_index");
+    QTest::addColumn<double>("bad_value");
+    QTest::addColumn<bool>("in_beta");
+    QTest::newRow("NaN J_c") << 3 << kNaN << false;
+    QTest::newRow("inf J_c (unstable run)") << 7 << std::numeric_limits<double>::infinity() << false;
+    QTest::newRow("NaN beta") << 0 << kNaN << true;
+  }
+  void nonFinitePointsLeftOut() {
+    QFETCH(int, bad_index);
+    QFETCH(double, bad_value);
+    QFETCH(bool, in_beta);
+    JcCurveView c = parabola();
+    (in_beta ? c.beta : c.jc_n_s)[bad_index] = bad_value;
+    JcCurvePlot plot;
+    plot.setCurve(c);
+    QCOMPARE(plot.pointCount(), 20);
+  }
+
+  void thresholdEdges_data() {
+    QTest::addColumn<double>("threshold");
+    QTest::addColumn<bool>("shaded");
+    QTest::addColumn<double>("upper");
+    QTest::newRow("default -1: none") << -1.0 << false << 0.0;
+    QTest::newRow("below -1: none") << -1.5 << false << 0.0;
+    QTest::newRow("NaN: none") << kNaN << false << 0.0;
+    QTest::newRow("paper -0.6") << -0.6 << true << -0.6;
+    QTest::newRow("above 1: all") << 1.5 << true << 1.0;
+  }
+  void thresholdEdges() {
+    QFETCH(double, threshold);
+    QFETCH(bool, shaded);
+    QFETCH(double, upper);
+    JcCurveView c = parabola();
+    c.threshold_beta = threshold;
+    JcCurvePlot plot;
+    plot.setCurve(c);
+    QCOMPARE(plot.regionShaded(), shaded);
+    if (shaded) QCOMPARE(plot.shadedRange().second, upper);
+    QCOMPARE(plot.legendNames().size(), shaded ? 4 : 3);
+  }
+
+  void bestBetaOptional() {
+    JcCurveView c = parabola();
+    c.best_beta.reset();
+    JcCurvePlot plot;
+    plot.setCurve(c);
+    QVERIFY(!plot.bestBeta());
+    c.best_beta = kNaN;
+    plot.setCurve(c);
+    QVERIFY(!plot.bestBeta());
+    c.best_beta = 0.42;  // between sweep points: starred at the nearest point's J_c
+    plot.setCurve(c);
+    QCOMPARE(*plot.bestBeta(), 0.42);
+  }
+
+  void savesPng() {
+    QTemporaryDir dir;
+    JcCurvePlot plot;
+    plot.setCurve(parabola());
+    QVERIFY(plot.savePng(dir.filePath("jc.png"), 900, 500));
+    QCOMPARE(QImage(dir.filePath("jc.png")).size(), QSize(900, 500));
+    QVERIFY(!plot.savePng(dir.filePath("jc.png"), 0, 500));
+  }
+};
+
+MX_TEST_MAIN_WITH_APP(TestJcCurvePlot, QApplication)
+#include "test_jc_curve_plot.moc"

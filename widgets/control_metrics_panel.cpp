@@ -1,0 +1,128 @@
+#include "control_metrics_panel.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "indicator_gauge.h"
+#include "monitoring_panel.h"
+
+namespace mx::widgets {
+
+namespace {
+const QString kMissing = QStringLiteral("\u2013");
+
+QString num(double v) {
+  return MonitoringPanel::formatNumber(v);
+}
+}  // namespace
+
+ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), warning_(new QLabel(this)) {
+  struct Row {
+    const char* key;
+    const char* label;
+    const char* tip;
+  };
+  const Row rows[] = {
+      {"overshoot", "Overshoot per depth step [%]:",
+       "Peak force after each depth step above the reference, in % of the reference; for a downward step the "
+       "undershoot"},
+      {"settling_time", "Settling time [s]:", "Time for the force to stay within the band around the reference"},
+      {"jc", "Cost J_c [N\u00b7s]:",
+       "Eq. 34: area between the continuous plant output and the linear interpolation of its samples"},
+      {"max_force", "Max. force [N]:", "Largest continuous plant force over the run"},
+      {"feed_range", "Feed range [mm/s]:", "Smallest and largest feed commanded (clamped to [0, f_max])"},
+  };
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  auto* form = new QFormLayout;
+  form->setLabelAlignment(Qt::AlignRight);
+  outer->addLayout(form);
+  for (const Row& r : rows) {
+    auto* value = new QLabel(this);
+    value->setObjectName(QStringLiteral("control_metric_") + QLatin1String(r.key));
+    value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    value->setToolTip(tr(r.tip));
+    auto* label = new QLabel(tr(r.label), this);
+    label->setToolTip(tr(r.tip));
+    form->addRow(label, value);
+    values_.insert(QString::fromLatin1(r.key), value);
+  }
+  warning_->setObjectName(QStringLiteral("control_metric_warning"));
+  warning_->setWordWrap(true);
+  warning_->setStyleSheet(QString("QLabel { background: %1; color: white; padding: 4px; border-radius: 4px; "
+                                  "font-weight: bold; }")
+                              .arg(IndicatorGauge::alarmColor().name()));
+  outer->addWidget(warning_);
+  clear();
+}
+
+QVector<QPair<double, double>> ControlMetricsPanel::depthSteps(const QVector<double>& depth_mm) {
+  QVector<QPair<double, double>> steps;
+  for (qsizetype i = 1; i < depth_mm.size(); ++i)
+    if (std::isfinite(depth_mm[i]) && std::isfinite(depth_mm[i - 1]) && depth_mm[i] != depth_mm[i - 1])
+      steps.push_back({depth_mm[i - 1], depth_mm[i]});
+  return steps;
+}
+
+void ControlMetricsPanel::clear() {
+  for (QLabel* label : std::as_const(values_)) label->setText(kMissing);
+  overshoot_pct_.clear();
+  has_metrics_ = false;
+  warning_->clear();
+  warning_->setVisible(false);
+}
+
+void ControlMetricsPanel::setDepthSteps(const QVector<QPair<double, double>>& from_to_mm) {
+  steps_ = from_to_mm;
+  showOvershoots();
+}
+
+void ControlMetricsPanel::setMetrics(const ControlMetricsView& m) {
+  has_metrics_ = true;
+  overshoot_pct_ = m.overshoot_pct;
+  showOvershoots();
+  values_["settling_time"]->setText(num(m.settling_time_s));
+  values_["jc"]->setText(num(m.jc_n_s));
+  values_["max_force"]->setText(num(m.max_force_n));
+  values_["feed_range"]->setText(
+      std::isfinite(m.min_feed_mm_s) || std::isfinite(m.max_feed_mm_s)
+          ? tr("%1 to %2").arg(num(m.min_feed_mm_s), num(m.max_feed_mm_s))
+          : kMissing);
+  warning_->setText(tr("Unstable zero: H_\u03b2 has a zero outside the unit circle, so the controller does not "
+                       "cancel it (slower tracking). Raise \u03b2 above the shaded region."));
+  warning_->setVisible(m.unstable_zero);
+}
+
+void ControlMetricsPanel::showOvershoots() {
+  QLabel* label = values_["overshoot"];
+  if (!has_metrics_) return;
+  if (overshoot_pct_.isEmpty()) {
+    label->setText(kMissing);
+    return;
+  }
+  QStringList lines;
+  for (qsizetype i = 0; i < overshoot_pct_.size(); ++i) {
+    QString line = tr("step %1: %2").arg(i + 1).arg(num(overshoot_pct_[i]));
+    if (i < steps_.size()) {
+      const auto [from, to] = steps_[i];
+      line += tr(" (%1 \u2192 %2 mm, %3)")
+                  .arg(num(from), num(to), to < from ? tr("undershoot") : tr("overshoot"));
+    }
+    lines << line;
+  }
+  label->setText(lines.join('\n'));
+}
+
+QString ControlMetricsPanel::valueText(const QString& key) const {
+  if (key == QLatin1String("warning")) return warningShown() ? warning_->text() : QString();
+  const QLabel* label = values_.value(key, nullptr);
+  return label ? label->text() : QString();
+}
+
+bool ControlMetricsPanel::warningShown() const {
+  return !warning_->isHidden();
+}
+
+}  // namespace mx::widgets

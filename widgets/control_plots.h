@@ -1,0 +1,74 @@
+#pragma once
+// The closed-loop plots of the adaptive force controller (issue 6; the paper's figures 9-12), stacked
+// on a shared time axis t [s] (dragging or zooming one row moves all; a double click fits the data):
+//   (1) force F [N]: reference (steps), model output, plant output at the samples (markers) and between
+//       them (thin line), with the depth of cut b [mm] on the right axis;
+//   (2) tracking error e = F_p - F_m [N];
+//   (3) feed, the control law [mm/s], at the samples and between them, with the feed limit;
+//   (4) parameter estimates theta [-] (Rows::All only).
+// Each row has its legend above it. QCustomPlot stays behind this class.
+#include <QHash>
+#include <QStringList>
+#include <QVector>
+#include <QWidget>
+
+#include "control_data.h"
+
+class QCustomPlot;
+class QCPAxis;
+class QCPAxisRect;
+class QCPGraph;
+class QCPLegend;
+class QCPMarginGroup;
+class QCPTextElement;
+
+namespace mx::widgets {
+
+class ControlPlots : public QWidget {
+  Q_OBJECT
+ public:
+  enum class Rows { All, Responses };  // Responses: force, error and feed (figures 9-12)
+
+  explicit ControlPlots(Rows rows = Rows::All, QWidget* parent = nullptr);
+
+  void setTraces(const ControlTraces& traces);
+  void setFeedLimit(double feed_max_mm_s);  // <= 0 or non-finite: no limit line
+  void setTitle(const QString& title);      // empty: no title row
+  void clear();
+
+  // Points of a named graph: "reference", "model", "force sampled", "force continuous", "depth",
+  // "error", "feed", "feed continuous", "feed limit", "theta <name>"; -1 for an unknown name.
+  int graphPointCount(const QString& name) const;
+  QStringList graphNames() const;
+  int rowCount() const { return static_cast<int>(rects_.size()); }
+  QString valueAxisLabel(int row) const;  // left axis label of a row; empty when out of range
+  QString timeAxisLabel() const;
+  QStringList legendNames(int row) const;
+  QPair<double, double> timeRange() const;
+  QPair<double, double> valueRange(int row) const;
+
+  bool savePng(const QString& path, int width, int height);
+  // Figures 9-12 style export of `traces` (force, error and feed) with an optional title.
+  static bool saveResponses(const ControlTraces& traces, double feed_max_mm_s, const QString& path, int width,
+                            int height, const QString& title = {});
+
+ private:
+  QCPAxisRect* addRow(const QString& value_label, int legend_wrap);
+  QCPGraph* addGraph(int row, QCPAxis* value_axis, const QString& key, const QString& legend_name, const QPen& pen);
+  void rebuildThetaGraphs(const QStringList& names);
+  void fitRanges();
+  void syncTime(const QCPAxisRect* source);
+
+  Rows rows_;
+  QCustomPlot* plot_;
+  QCPMarginGroup* margin_group_;
+  QVector<QCPAxisRect*> rects_;
+  QVector<QCPLegend*> legends_;
+  QHash<QString, QCPGraph*> graphs_;
+  QVector<QCPGraph*> theta_graphs_;
+  QCPTextElement* title_ = nullptr;
+  double feed_max_mm_s_ = 0.0;
+  bool syncing_ = false;
+};
+
+}  // namespace mx::widgets
