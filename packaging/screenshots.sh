@@ -11,4 +11,7 @@ shot projects/rubio2006-tool-selection.mxproj --point 5100,1.2,0.1 --screenshot 
 shot projects/benchmark-insperger-1dof.mxproj --screenshot docs/screenshots/insperger-benchmark.png
 shot projects/rubio-pareto-case.mxproj --pareto --docks paretoFrontDock,paretoWeightsDock --screenshot docs/screenshots/pareto-front.png
 shot projects/rubio-pareto-case.mxproj --pareto --docks monitoringDock,operatorRulesDock --screenshot docs/screenshots/pareto-monitoring.png
+shot projects/rubio2006-adaptive-control.mxproj --docks controlDock --screenshot docs/screenshots/force-control.png
+shot projects/cus-zuperl-sdnrp.mxproj --sdnrp --docks surfaceFinishDock --screenshot docs/screenshots/surface-finish.png
+shot projects/cus-zuperl-sdnrp.mxproj --program projects/programs/pocket_mm.nc --docks partProgramDock --screenshot docs/screenshots/part-program.png
 echo "screenshots written to docs/screenshots/"

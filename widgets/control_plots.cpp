@@ -71,7 +71,7 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   sampled->setLineStyle(QCPGraph::lsNone);
   sampled->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
 
-  QCPAxisRect* error = addRow(tr("Tracking error e = F_p \u2212 F_m [N]"), 0);
+  QCPAxisRect* error = addRow(tr("Error e [N]"), 0);
   QCPGraph* e = addGraph(1, error->axis(QCPAxis::atLeft), "error", tr("Tracking error e [N]"), QPen(kErrorColor, 1.2));
   e->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 3));
   error->axis(QCPAxis::atLeft)->grid()->setZeroLinePen(QPen(QColor(90, 90, 90), 1.0));

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the point's "
                                   "simulation are shown, then quit.", "FILE"});
   parser.addOption({"docks", "Raise these docks (object names, e.g. paretoFrontDock,paretoWeightsDock).", "NAMES"});
+  parser.addOption({"sdnrp", "Run the surface-finish (SDNRP) loop of the project once it is open."});
+  parser.addOption({"program", "Open this G-code part program in the part-program panel.", "FILE"});
   parser.addOption({"pareto", "Once the Pareto study is ready, move the operating point to the Pareto choice "
                               "and simulate it."});
   parser.process(app);
@@ -63,7 +65,12 @@ int main(int argc, char** argv) {
     }, Qt::SingleShotConnection);
   }
   for (const QString& name : parser.value("docks").split(',', Qt::SkipEmptyParts))
-    if (auto* dock = window.findChild<QDockWidget*>(name)) dock->raise();
+    if (auto* dock = window.findChild<QDockWidget*>(name)) {
+      dock->raise();
+      // A raised bottom dock gets 55 % of the height (plots need it); a right dock keeps its width.
+      if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
+        window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
+    }
   const bool pareto = parser.isSet("pareto");
   bool moved_to_pareto = false;
   if (pareto) {
@@ -90,5 +97,7 @@ int main(int argc, char** argv) {
     QTimer::singleShot(60000, &app, [] { QApplication::exit(1); });
   }
   if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
+  if (parser.isSet("sdnrp")) window.runSurfaceFinish();
+  if (parser.isSet("program")) window.openPartProgram(parser.value("program"));
   return app.exec();
 }

@@ -185,6 +185,14 @@ void MainWindow::openPartProgram(const QString& path) {
         const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
         program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
                                    override_->controller);
+        double peak = 0.0;
+        for (const FeedOverrideRow& f : override_->result.rows)
+          if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
+        program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4 N")
+                                      .arg(override_->result.program.blocks.size())
+                                      .arg(override_->result.changed_blocks)
+                                      .arg(override_->result.warnings.size())
+                                      .arg(peak, 0, 'f', 1));
         emit partProgramShown();
       });
 }

@@ -199,7 +199,7 @@ class TestControlView : public QObject {
     ControlPlots all;
     QCOMPARE(all.rowCount(), 4);
     QCOMPARE(all.valueAxisLabel(0), QString("Force F [N]"));
-    QCOMPARE(all.valueAxisLabel(1), QString("Tracking error e = F_p \u2212 F_m [N]"));
+    QCOMPARE(all.valueAxisLabel(1), QString("Error e [N]"));
     QCOMPARE(all.valueAxisLabel(2), QString("Feed f [mm/s]"));
     QCOMPARE(all.valueAxisLabel(3), QString("Estimates \u03b8 [\u2013]"));
     QCOMPARE(all.valueAxisLabel(4), QString());
