@@ -36,26 +36,29 @@ double ControlRunner::zeroThreshold(const AdaptiveControlSettings& s) {
       .threshold_beta;
 }
 
-quint64 ControlRunner::run(const AdaptiveControlSettings& settings) {
-  if (run_cancel_) run_cancel_->store(true);
-  run_cancel_ = std::make_shared<std::atomic<bool>>(false);
-  const quint64 generation = ++run_generation_;
-  auto* watcher = new QFutureWatcher<ControlOutcome>(this);
-  connect(watcher, &QFutureWatcher<ControlOutcome>::finished, this, [this, watcher] {
-    const ControlOutcome outcome = watcher->result();
+// Runs `work(job)` on the engine pool with a fresh cancel flag (the previous one of the same kind is
+// set), then delivers the outcome on the GUI thread when it is still the newest of its kind.
+template <class Outcome, class Work, class Deliver>
+quint64 ControlRunner::launch(std::shared_ptr<std::atomic<bool>>& cancel, quint64& generation_counter, Work work,
+                              Deliver deliver) {
+  if (cancel) cancel->store(true);
+  cancel = std::make_shared<std::atomic<bool>>(false);
+  const quint64 generation = ++generation_counter;
+  auto* watcher = new QFutureWatcher<Outcome>(this);
+  connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, &generation_counter, deliver] {
+    const Outcome outcome = watcher->result();
     watcher->deleteLater();
     stopped();
-    if (outcome.generation == run_generation_) emit finished(outcome);
+    if (outcome.generation == generation_counter) deliver(outcome);
   });
   started();
-  watcher->setFuture(QtConcurrent::run(pool_, [settings, generation, cancel = run_cancel_] {
-    ControlOutcome out;
+  watcher->setFuture(QtConcurrent::run(pool_, [work, generation, flag = cancel] {
+    Outcome out;
     out.generation = generation;
     JobControl job;
-    job.cancel = cancel.get();
+    job.cancel = flag.get();
     try {
-      out.threshold_beta = zeroThreshold(settings);
-      out.result = std::make_shared<const ClosedLoopResult>(simulateAdaptiveForceControl(settings, job));
+      work(job, out);
     } catch (const Cancelled&) {
       out.error = "cancelled";
     } catch (const std::exception& e) {
@@ -66,37 +69,27 @@ quint64 ControlRunner::run(const AdaptiveControlSettings& settings) {
   return generation;
 }
 
+quint64 ControlRunner::run(const AdaptiveControlSettings& settings) {
+  return launch<ControlOutcome>(
+      run_cancel_, run_generation_,
+      [settings](const JobControl& job, ControlOutcome& out) {
+        out.threshold_beta = zeroThreshold(settings);
+        out.result = std::make_shared<const ClosedLoopResult>(simulateAdaptiveForceControl(settings, job));
+      },
+      [this](const ControlOutcome& o) { emit finished(o); });
+}
+
 quint64 ControlRunner::sweep(const AdaptiveControlSettings& settings, const BetaSweepSettings& sweep) {
-  if (sweep_cancel_) sweep_cancel_->store(true);
-  sweep_cancel_ = std::make_shared<std::atomic<bool>>(false);
-  const quint64 generation = ++sweep_generation_;
-  auto* watcher = new QFutureWatcher<SweepOutcome>(this);
-  connect(watcher, &QFutureWatcher<SweepOutcome>::finished, this, [this, watcher] {
-    const SweepOutcome outcome = watcher->result();
-    watcher->deleteLater();
-    stopped();
-    if (outcome.generation == sweep_generation_) emit sweepFinished(outcome);
-  });
-  started();
-  // One engine thread: the sweep itself runs single-threaded so that the GUI's pool stays one thread.
+  // One engine thread: the sweep runs single-threaded so that the GUI's pool stays one thread.
   BetaSweepSettings s = sweep;
   s.threads = 1;
-  watcher->setFuture(QtConcurrent::run(pool_, [settings, s, generation, cancel = sweep_cancel_] {
-    SweepOutcome out;
-    out.generation = generation;
-    JobControl job;
-    job.cancel = cancel.get();
-    try {
-      out.threshold_beta = zeroThreshold(settings);
-      out.result = std::make_shared<const BetaSweepResult>(sweepBeta(settings, s, job));
-    } catch (const Cancelled&) {
-      out.error = "cancelled";
-    } catch (const std::exception& e) {
-      out.error = QString::fromStdString(e.what());
-    }
-    return out;
-  }));
-  return generation;
+  return launch<SweepOutcome>(
+      sweep_cancel_, sweep_generation_,
+      [settings, s](const JobControl& job, SweepOutcome& out) {
+        out.threshold_beta = zeroThreshold(settings);
+        out.result = std::make_shared<const BetaSweepResult>(sweepBeta(settings, s, job));
+      },
+      [this](const SweepOutcome& o) { emit sweepFinished(o); });
 }
 
 }  // namespace mx::gui

@@ -49,6 +49,8 @@ class ControlRunner : public QObject {
  private:
   void started();
   void stopped();
+  template <class Outcome, class Work, class Deliver>
+  quint64 launch(std::shared_ptr<std::atomic<bool>>& cancel, quint64& generation_counter, Work work, Deliver deliver);
 
   QThreadPool* pool_;
   std::shared_ptr<std::atomic<bool>> run_cancel_, sweep_cancel_;

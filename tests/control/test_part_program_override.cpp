@@ -7,17 +7,13 @@
 #include "control/part_program_override.h"
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
+#include "support/gcode_samples.h"
 #include "test_main.h"
 
 using namespace mx;
 
 namespace {
-std::string slurp(const std::string& name) {
-  std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using mx::test::gcodeSample;
 const GcodeHeader kHeader{"tests", "model-based (Landers & Ulsoy)", "2024-05-01"};
 
 ModelBasedForceController landers(double f_ref) {
@@ -89,7 +85,7 @@ class TestPartProgramOverride : public QObject {
   }
   void roundTripWithoutChanges() {
     QFETCH(QString, file);
-    const std::string text = slurp(file.toStdString());
+    const std::string text = gcodeSample(file.toStdString());
     const auto r = PartProgramOverrider(identity, stockTopZero()).run(std::string_view(text));
     QCOMPARE(r.changed_blocks, std::size_t(0));
     const std::string out = r.writeProgram(kHeader);
@@ -113,7 +109,7 @@ class TestPartProgramOverride : public QObject {
   void modelBasedChangesOnlyFeedSpeedAndComments() {
     QFETCH(QString, file);
     QFETCH(int, changed);
-    const std::string text = slurp(file.toStdString());
+    const std::string text = gcodeSample(file.toStdString());
     const auto controller = landers(400.0);
     const auto r = PartProgramOverrider(modelBasedFeedController(controller), stockTopZero()).run(std::string_view(text));
     const std::string out = r.writeProgram(kHeader);
@@ -166,7 +162,7 @@ class TestPartProgramOverride : public QObject {
     QCOMPARE(change.edits[1].feed, 1059.5);  // (400/(760*2^0.65))^(1/0.63) mm * 4 * 1500 rpm
   }
   void missingFeedGetsControllerFeed() {
-    const std::string text = slurp("missing_f.nc");
+    const std::string text = gcodeSample("missing_f.nc");
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(text));
     QCOMPARE(r.rows.size(), std::size_t(4));
     QVERIFY(std::isnan(r.rows[0].original_feed_m_per_s));
@@ -180,7 +176,7 @@ class TestPartProgramOverride : public QObject {
   }
   void truncatedLastLineStaysTruncated() {
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
-                       .run(std::string_view(slurp("truncated.nc")));
+                       .run(std::string_view(gcodeSample("truncated.nc")));
     const std::string out = r.writeProgram(kHeader);
     QVERIFY(out.size() > 6 && out.compare(out.size() - 7, 7, "\nG1 Y15") == 0);  // unchanged, no line end added
     // and when the truncated line itself changes
@@ -190,14 +186,14 @@ class TestPartProgramOverride : public QObject {
     QCOMPARE(out2.substr(out2.rfind('\n') + 1), std::string("G1 Y15 F900 (MX: F 900 mm/min, restore programmed feed [air move])"));
   }
   void nonAsciiCommentsAndCrlfPreserved() {
-    const std::string utf8 = slurp("utf8_comments.nc");
+    const std::string utf8 = gcodeSample("utf8_comments.nc");
     const std::string out = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
                                 .run(std::string_view(utf8))
                                 .writeProgram(kHeader);
     QVERIFY(out.find("(Tasche fr\xC3\xA4sen \xE2\x80\x93 Werkst\xC3\xBC" "ck \xC3\x98 80 mm, Spannung pr\xC3\xBC" "fen)\n") != std::string::npos);
     QVERIFY(out.find("(\xE5\x88\x87\xE5\x89\x8A cutting)") != std::string::npos);
     QVERIFY(out.find("; Schnittgeschwindigkeit \xE2\x89\x88 80 m/min") != std::string::npos);
-    const std::string crlf = slurp("crlf.nc");
+    const std::string crlf = gcodeSample("crlf.nc");
     const std::string out2 = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
                                  .run(std::string_view(crlf))
                                  .writeProgram(kHeader);
@@ -213,7 +209,7 @@ class TestPartProgramOverride : public QObject {
   void inchProgram() {
     const auto controller = landers(400.0);
     const auto r = PartProgramOverrider(modelBasedFeedController(controller), stockTopZero())
-                       .run(std::string_view(slurp("inch.nc")));
+                       .run(std::string_view(gcodeSample("inch.nc")));
     // G1 X2.0 F30. cuts 0.05 in = 1.27 mm deep at 3000 rpm
     const auto& row = r.rows[1];
     QVERIFY(std::abs(row.depth_m - 1.27e-3) < 1e-15);
@@ -231,7 +227,7 @@ class TestPartProgramOverride : public QObject {
   void speedOverride() {
     auto s = stockTopZero();
     s.speed_rev_per_s = 2134.0 / 60.0;
-    const std::string text = slurp("pocket_mm.nc");
+    const std::string text = gcodeSample("pocket_mm.nc");
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), s).run(std::string_view(text));
     QCOMPARE(r.edits[3].speed_rpm, 2134.0);  // N20 G0 Z5. S1500 M3
     for (const auto& row : r.rows) QVERIFY(std::abs(row.speed_rev_per_s * 60.0 - 2134.0) < 1e-9);
@@ -246,7 +242,7 @@ class TestPartProgramOverride : public QObject {
   }
   void csvTable() {
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
-                       .run(std::string_view(slurp("crlf.nc")));
+                       .run(std::string_view(gcodeSample("crlf.nc")));
     const std::string csv = r.csv();
     QCOMPARE(std::count(csv.begin(), csv.end(), '\n'), std::ptrdiff_t(1 + 3));
     QVERIFY(csv.find("\n3,3,200,") != std::string::npos);

@@ -4,17 +4,13 @@
 
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
+#include "support/gcode_samples.h"
 #include "test_main.h"
 
 using namespace mx;
 
 namespace {
-std::string slurp(const std::string& name) {
-  std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using mx::test::gcodeSample;
 }  // namespace
 
 class TestGcodeReader : public QObject {
@@ -22,13 +18,11 @@ class TestGcodeReader : public QObject {
  private slots:
   void reassemblesEveryFileByteForByte_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"pocket_mm.nc", "crlf.nc", "inch.nc", "unknown_words.nc", "missing_f.nc", "truncated.nc",
-                          "utf8_comments.nc", "empty.nc"})
-      QTest::newRow(f) << QString(f);
+    for (const char* f : mx::test::kGcodeSamples) QTest::newRow(f) << QString(f);
   }
   void reassemblesEveryFileByteForByte() {
     QFETCH(QString, file);
-    const std::string text = slurp(file.toStdString());
+    const std::string text = gcodeSample(file.toStdString());
     const auto p = GcodeReader::readFile(std::string(MX_TEST_DATA_DIR) + "/gcode/" + file.toStdString());
     QCOMPARE(p.text(), text);
     QCOMPARE(static_cast<qsizetype>(p.blocks.size()),

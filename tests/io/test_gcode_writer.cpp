@@ -5,17 +5,13 @@
 #include "io/gcode_reader.h"
 #include "io/gcode_writer.h"
 #include "model/job_control.h"
+#include "support/gcode_samples.h"
 #include "test_main.h"
 
 using namespace mx;
 
 namespace {
-std::string slurp(const std::string& name) {
-  std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using mx::test::gcodeSample;
 std::string edited(const std::string& line, GcodeBlockEdit e) {
   const auto p = GcodeReader::parse(line);
   return GcodeWriter::applyEdit(p.blocks.at(0), e);
@@ -32,19 +28,17 @@ class TestGcodeWriter : public QObject {
  private slots:
   void noEditsIsByteIdentical_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"pocket_mm.nc", "crlf.nc", "inch.nc", "unknown_words.nc", "missing_f.nc", "truncated.nc",
-                          "utf8_comments.nc", "empty.nc"})
-      QTest::newRow(f) << QString(f);
+    for (const char* f : mx::test::kGcodeSamples) QTest::newRow(f) << QString(f);
   }
   void noEditsIsByteIdentical() {
     QFETCH(QString, file);
-    const std::string text = slurp(file.toStdString());
+    const std::string text = gcodeSample(file.toStdString());
     const auto p = GcodeReader::parse(text);
     QCOMPARE(GcodeWriter::write(p, {}), text);
     QCOMPARE(GcodeWriter::write(p, std::vector<GcodeBlockEdit>(p.blocks.size())), text);
   }
   void headerAfterTapeMarker() {
-    const std::string text = slurp("pocket_mm.nc");
+    const std::string text = gcodeSample("pocket_mm.nc");
     const auto p = GcodeReader::parse(text);
     const GcodeHeader h{"demo (1)", "model-based", "2024-05-01"};
     const std::string out = GcodeWriter::write(p, {}, &h);
@@ -58,7 +52,7 @@ class TestGcodeWriter : public QObject {
     QVERIFY(header.find("(date: 2024-05-01)\n") != std::string::npos);
   }
   void headerUsesProgramLineEnd() {
-    const std::string text = slurp("crlf.nc");
+    const std::string text = gcodeSample("crlf.nc");
     const GcodeHeader h{"p", "c", "d"};
     const std::string out = GcodeWriter::write(GcodeReader::parse(text), {}, &h);
     std::string expected = GcodeWriter::headerText(h, "\r\n");
