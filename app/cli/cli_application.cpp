@@ -24,6 +24,7 @@ const char* kUsage =
     "  pareto    Pareto expert system ([--w tol,mrr,surf,ros] [--fine] [--require mrr_cm3_s=LO:HI] [--auto-weights])\n"
     "  sdnrp     Cus & Zuperl force/roughness control (--ra UM [--seconds 15] [--csv FILE])\n"
     "  override  optimise a G-code program: override PROGRAM.nc PROJECT --out OUT.nc [--csv FILE]\n"
+    "  supervise supervisory control of face milling (--controller none|smc1|smc2 [--csv FILE])\n"
     "  control   adaptive force control under beta-FROH (--beta B [--csv FILE] | --sweep-beta FROM:TO:STEP)\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 

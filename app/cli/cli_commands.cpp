@@ -16,6 +16,7 @@ const CliCommand* findCommand(const QString& name) {
       {"pareto", "Pareto expert system: TOL, MRR, SURF, ROS objective and non-dominated set", &runParetoCommand},
       {"control", "Adaptive force control under beta-FROH: closed loop over the workpiece, or a beta sweep", &runControlCommand},
       {"sdnrp", "Cus & Zuperl surface-roughness control loop (SDNRP)", &runSdnrpCommand},
+      {"supervise", "supervisory machining control of a face-milling operation (none, SMC I, SMC II)", &runSuperviseCommand},
       {"override", "optimise the feeds of a G-code program with a force controller", &runOverrideCommand},
   };
   for (const CliCommand& c : commands)

@@ -24,5 +24,6 @@ int runParetoCommand(const QStringList& arguments);
 int runControlCommand(const QStringList& arguments);
 int runSdnrpCommand(const QStringList& arguments);
 int runOverrideCommand(const QStringList& arguments);
+int runSuperviseCommand(const QStringList& arguments);
 
 }  // namespace mx::app

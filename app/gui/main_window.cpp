@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "control_runner.h"
+#include "supervision_runner.h"
 #include "expert_runner.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
@@ -45,6 +46,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildParetoDocks();
   buildControlDock();
   buildMachiningDocks();
+  buildSupervisorDock();
   buildActions();
 
   progress_->setRange(0, 100);
@@ -100,6 +102,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  supervision_->stop();
   control_runner_->cancel();
   sim_runner_->cancel();
   engine_->cancelAll();
@@ -145,7 +148,7 @@ void MainWindow::onProjectChanged() {
   for (const char* key : {"c", "cr", "ct", "cf"}) expert.remove(key);
   json.insert("expert", expert);
   // The controllers' sections (issues 6 and 7) feed neither the lobes, the expert nor the Pareto study.
-  for (const char* section : {"control", "sdnrp", "force_control", "part_program"}) json.remove(section);
+  for (const char* section : {"control", "sdnrp", "force_control", "part_program", "supervisor"}) json.remove(section);
   if (json.contains("pareto")) {
     QJsonObject pareto = json.value("pareto").toObject();
     pareto.remove("weights");
@@ -162,6 +165,7 @@ void MainWindow::onProjectChanged() {
   updateFiredRules();
   refreshControl();
   refreshMachining();
+  refreshSupervisor();
   json.remove("pareto");
   json.remove("operator_rules");
   const QByteArray inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);

@@ -18,6 +18,7 @@
 #include "cli/control_request.h"
 #include "cli/part_program_request.h"
 #include "cli/pareto_study.h"
+#include "cli/supervisor_request.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
 #include "lobe_chart_view.h"
@@ -35,6 +36,7 @@ class RequirementsPanel;
 class ControlView;
 class SurfaceFinishPanel;
 class PartProgramPanel;
+class SupervisorView;
 struct ParetoPointView;
 class RankingTable;
 class WeightsPanel;
@@ -49,6 +51,7 @@ class SimulationRunner;
 class ExpertRunner;
 class ParetoRunner;
 class ControlRunner;
+class SupervisionRunner;
 struct RefinementOutcome;
 struct SimulationSummary;
 
@@ -99,6 +102,10 @@ class MainWindow : public QMainWindow {
   void openPartProgram(const QString& path);         // override with the project's controller (engine thread)
   bool exportPartProgram(const QString& path);       // the optimised program (atomic)
   bool exportPartProgramCsv(const QString& path);    // the per-block feed-override table (atomic)
+  widgets::SupervisorView* supervisorView() const { return supervisor_view_; }
+  SupervisionRunner* supervision() const { return supervision_; }
+  void startSupervision();    // live run of the view's controller (paced, operator buttons active)
+  void compareSupervision();  // none, SMC I and SMC II side by side
   void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
@@ -118,6 +125,8 @@ class MainWindow : public QMainWindow {
   void controlSweepShown();  // the J_c(beta) sweep arrived
   void surfaceFinishShown(); // an SDNRP run arrived
   void partProgramShown();   // an override of the opened program arrived
+  void supervisionFinished();                      // a live supervised run ended
+  void comparisonResult(const QString& controller);  // one controller of a comparison arrived
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -170,6 +179,9 @@ class MainWindow : public QMainWindow {
   // main_window_machining.cpp
   void buildMachiningDocks();
   void refreshMachining();
+  // main_window_supervisor.cpp
+  void buildSupervisorDock();
+  void refreshSupervisor();
   // main_window.cpp
   void onProjectChanged();
   void recomputeLobes();
@@ -217,6 +229,10 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const app::OverrideOutcome> override_;
   QString override_path_;
   QByteArray machining_inputs_;
+  SupervisionRunner* supervision_ = nullptr;
+  widgets::SupervisorView* supervisor_view_ = nullptr;
+  std::optional<app::SupervisorRequest> supervisor_request_;
+  std::vector<ModuleActivityRecord> live_modules_;
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;

@@ -1,0 +1,80 @@
+// millexpert-cli supervise PROJECT --controller none|smc1|smc2 [--csv FILE]
+// Landers & Ulsoy's supervisory machining control of a face-milling operation: the controller's
+// Grafcet chart (the project's supervisor.charts, docs/grafcet.md) run by the Grafcet interpreter, the
+// machining modules A-L on their periods, and the face-milling process of the appendix (A1-A12).
+// Prints {"controller", "max_power_pct_of_limit", "overshoot_pct", "chatter_detected", "chatter_time_s",
+//   "passes", "cycle_time_s", "events": [{"t_s", "type", "detail"}...]} plus "reference_force_N",
+//   "max_F_Y_N", "final_program_mm", "steady_max_power_pct_of_limit", "tds_chatter_s", "run_seconds".
+// chatter_time_s is null without chatter. --csv: t, F_y, F_Y, power, feed, depth, pass every 2 ms.
+// Exit 2: bad project, section, chart or flags; exit 1: the run failed.
+#include <QJsonArray>
+
+#include "cli/cli_application.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_support.h"
+#include "cli/supervisor_request.h"
+#include "model/job_control.h"
+#include "supervisor/grafcet_interpreter.h"
+
+namespace mx::app {
+
+namespace {
+
+void writeSeries(const QString& path, const SupervisionResult& r) {
+  writeTextFileAtomically("--csv", path, [&](QTextStream& out) {
+    out << "t_s,Fy_N,F_Y_N,power_W,feed_mm_s,depth_mm,pass\n";
+    for (const SupervisionSample& s : r.series)
+      out << s.t_s << ',' << s.fy_N << ',' << s.F_Y_N << ',' << s.power_W << ',' << s.feed_m_per_s * 1e3 << ','
+          << s.depth_m * 1e3 << ',' << s.pass << '\n';
+  });
+}
+
+}  // namespace
+
+int runSuperviseCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Supervisory machining control of a face-milling operation (Landers & Ulsoy).");
+  parser.addHelpOption();
+  parser.addOptions({
+      {"controller", "none, smc1 or smc2 (required).", "NAME"},
+      {"csv", "Write the force and power history to FILE.", "FILE"},
+  });
+  const QString path = parseSubcommand(parser, arguments);
+  const QString controller = requiredOption(parser, "controller");
+  const Project project = loadProject(path);
+  const SupervisorRequest request = supervisorRequestFromProject(project, controller);
+  SupervisionResult r;
+  try {
+    GrafcetInterpreter logic(request.chart);
+    r = runSupervision(request.scenario, logic);
+  } catch (const InvalidInput& e) {
+    throw CliError(QString("supervise: %1").arg(e.what()), kExitBadInput);
+  } catch (const std::exception& e) {
+    throw CliError(QString("supervise: the run failed: %1").arg(e.what()), kExitComputationFailed);
+  }
+  if (parser.isSet("csv")) writeSeries(parser.value("csv"), r);
+  const SupervisionMetrics& m = r.metrics;
+  QJsonArray events, program;
+  for (const SupervisionEvent& e : r.events)
+    events.append(QJsonObject{{"t_s", e.t_s},
+                              {"type", QString::fromStdString(e.type)},
+                              {"detail", QString::fromStdString(e.detail)}});
+  for (double d : r.final_program_m) program.append(d * 1e3);
+  printJson({{"controller", controller},
+             {"max_power_pct_of_limit", m.max_power_pct_of_limit},
+             {"overshoot_pct", m.overshoot_pct},
+             {"chatter_detected", m.chatter_detected},
+             {"chatter_time_s", m.chatter_time_s >= 0.0 ? QJsonValue(m.chatter_time_s) : QJsonValue()},
+             {"passes", m.passes},
+             {"cycle_time_s", m.cycle_time_s},
+             {"events", events},
+             {"reference_force_N", m.reference_force_N},
+             {"max_F_Y_N", m.max_F_Y_N},
+             {"steady_max_power_pct_of_limit", m.steady_max_power_pct_of_limit},
+             {"tds_chatter_s", m.tds_chatter_s},
+             {"final_program_mm", program},
+             {"run_seconds", m.run_seconds}});
+  return kExitOk;
+}
+
+}  // namespace mx::app

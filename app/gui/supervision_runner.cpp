@@ -1,0 +1,129 @@
+#include "supervision_runner.h"
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QMetaObject>
+#include <QPointer>
+#include <QThread>
+#include <QtConcurrent>
+
+#include "model/job_control.h"
+#include "supervisor/grafcet_interpreter.h"
+
+namespace mx::gui {
+
+SupervisionRunner::SupervisionRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {
+  qRegisterMetaType<mx::gui::SupervisionChunk>();
+  qRegisterMetaType<mx::gui::SupervisionOutcome>();
+}
+
+SupervisionRunner::~SupervisionRunner() { stop(); }
+
+void SupervisionRunner::stop() {
+  if (live_) live_->cancel.store(true);
+  if (compare_cancel_) compare_cancel_->store(true);
+}
+
+void SupervisionRunner::inject(OperatorEventType type) {
+  if (!live_) return;
+  std::lock_guard<std::mutex> lock(live_->mutex);
+  live_->pending.push_back(type);
+}
+
+quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const GrafcetChart& chart, double speed_factor) {
+  if (live_) live_->cancel.store(true);
+  live_ = std::make_shared<Live>();
+  const quint64 generation = ++generation_;
+  auto* watcher = new QFutureWatcher<SupervisionOutcome>(this);
+  connect(watcher, &QFutureWatcher<SupervisionOutcome>::finished, this, [this, watcher] {
+    const SupervisionOutcome o = watcher->result();
+    watcher->deleteLater();
+    if (--running_ == 0) emit runningChanged(false);
+    if (o.generation == generation_) emit finished(o);
+  });
+  if (running_++ == 0) emit runningChanged(true);
+  QPointer<SupervisionRunner> self(this);
+  watcher->setFuture(QtConcurrent::run(pool_, [self, base = scenario, chart, speed_factor, generation, live = live_] {
+    SupervisionScenario scenario = base;
+    SupervisionOutcome out;
+    out.generation = generation;
+    out.controller = QString::fromStdString(controllerName(scenario.controller));
+    // Chunks: what the run added since the last one, every 50 ms of simulated time.
+    std::size_t n_samples = 0, n_steps = 0, n_modules = 0, n_events = 0;
+    QElapsedTimer wall;
+    wall.start();
+    scenario.progress_period_s = 0.05;
+    scenario.on_progress = [&](const SupervisionResult& r, double t_s) {
+      SupervisionChunk c;
+      c.generation = generation;
+      c.samples.assign(r.series.begin() + static_cast<std::ptrdiff_t>(n_samples), r.series.end());
+      c.steps.assign(r.steps.begin() + static_cast<std::ptrdiff_t>(n_steps), r.steps.end());
+      c.modules.assign(r.modules.begin() + static_cast<std::ptrdiff_t>(n_modules), r.modules.end());
+      c.events.assign(r.events.begin() + static_cast<std::ptrdiff_t>(n_events), r.events.end());
+      n_samples = r.series.size();
+      n_steps = r.steps.size();
+      n_modules = r.modules.size();
+      n_events = r.events.size();
+      if (self)
+        QMetaObject::invokeMethod(self, [self, c = std::move(c)] {
+          if (self) emit self->chunkReady(c);
+        }, Qt::QueuedConnection);
+      if (speed_factor > 0.0) {  // pace: simulated time <= speed x wall time
+        const double ahead_ms = t_s / speed_factor * 1e3 - static_cast<double>(wall.elapsed());
+        if (ahead_ms > 1.0) QThread::msleep(static_cast<unsigned long>(ahead_ms));
+      }
+    };
+    scenario.poll_events = [live](double t_s, std::vector<OperatorEvent>& events) {
+      std::lock_guard<std::mutex> lock(live->mutex);
+      for (OperatorEventType type : live->pending) events.push_back({t_s, type});
+      live->pending.clear();
+    };
+    JobControl job;
+    job.cancel = &live->cancel;
+    try {
+      GrafcetInterpreter logic(chart);
+      out.result = std::make_shared<const SupervisionResult>(runSupervision(scenario, logic, job));
+    } catch (const Cancelled&) {
+      out.error = "stopped";
+    } catch (const std::exception& e) {
+      out.error = QString::fromStdString(e.what());
+    }
+    return out;
+  }));
+  return generation;
+}
+
+quint64 SupervisionRunner::compare(const std::vector<std::pair<SupervisionScenario, GrafcetChart>>& runs) {
+  if (compare_cancel_) compare_cancel_->store(true);
+  compare_cancel_ = std::make_shared<std::atomic<bool>>(false);
+  const quint64 generation = ++compare_generation_;
+  for (const auto& [scenario, chart] : runs) {
+    auto* watcher = new QFutureWatcher<SupervisionOutcome>(this);
+    connect(watcher, &QFutureWatcher<SupervisionOutcome>::finished, this, [this, watcher] {
+      const SupervisionOutcome o = watcher->result();
+      watcher->deleteLater();
+      if (--running_ == 0) emit runningChanged(false);
+      if (o.generation == compare_generation_) emit compared(o);
+    });
+    if (running_++ == 0) emit runningChanged(true);
+    watcher->setFuture(QtConcurrent::run(pool_, [scenario, chart, generation, cancel = compare_cancel_] {
+      SupervisionOutcome out;
+      out.generation = generation;
+      out.controller = QString::fromStdString(controllerName(scenario.controller));
+      JobControl job;
+      job.cancel = cancel.get();
+      try {
+        GrafcetInterpreter logic(chart);
+        out.result = std::make_shared<const SupervisionResult>(runSupervision(scenario, logic, job));
+      } catch (const Cancelled&) {
+        out.error = "stopped";
+      } catch (const std::exception& e) {
+        out.error = QString::fromStdString(e.what());
+      }
+      return out;
+    }));
+  }
+  return generation;
+}
+
+}  // namespace mx::gui

@@ -1,0 +1,93 @@
+#pragma once
+// The supervisor dock (issue 8; Landers & Ulsoy's supervisory machining control):
+//   toolbar: controller (none / SMC I / SMC II), Run, Stop, speed (1x, 5x, 20x, max), the operator's
+//            Feed hold (checkable) and Chatter buttons (enabled while running), status;
+//   "Run" tab: the Grafcet chart with its tokens (left, scrolled to follow the active steps) and the
+//            timeline of F_Y, power and module activity (right), the run's metrics line below;
+//   "Compare" tab: SupervisorComparison and a "Compare none / SMC I / SMC II" button;
+//   "Edit chart" tab: GrafcetChartEditor.
+// The view never calls the engine: the main window reacts to the signals, injects the operator
+// events into the running simulation and feeds the display structs back.
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include "grafcet_chart_data.h"
+#include "supervision_data.h"
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QScrollArea;
+class QTabWidget;
+
+namespace mx::widgets {
+
+class GrafcetChartEditor;
+class GrafcetChartView;
+class SupervisionTimeline;
+class SupervisorComparison;
+
+class SupervisorView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SupervisorView(QWidget* parent = nullptr);
+
+  GrafcetChartView* chartView() const { return chart_; }
+  SupervisionTimeline* timeline() const { return timeline_; }
+  GrafcetChartEditor* editor() const { return editor_; }
+  SupervisorComparison* comparison() const { return comparison_; }
+
+  void setControllers(const QStringList& names);  // e.g. {"none","smc1","smc2"}; combo items
+  QString controller() const;
+  void setController(const QString& name);  // no signal
+  void setRunning(bool running);            // enables Stop and the operator buttons, disables Run
+  bool isRunning() const { return running_; }
+  void setMetrics(const SupervisionMetricsView& m);
+  void setStatus(const QString& text);
+  bool feedHoldOn() const;
+  double speedFactor() const;  // 1, 5, 20 or 0 (= as fast as possible)
+
+  // Tests.
+  QComboBox* controllerCombo() const { return controller_; }
+  QComboBox* speedCombo() const { return speed_; }
+  QPushButton* runButton() const { return run_; }
+  QPushButton* stopButton() const { return stop_; }
+  QPushButton* feedHoldButton() const { return feed_hold_; }
+  QPushButton* chatterButton() const { return chatter_; }
+  QPushButton* compareButton() const { return compare_; }
+  QTabWidget* tabs() const { return tabs_; }
+  QString metricsText() const;
+  QString statusText() const;
+
+ signals:
+  void controllerChanged(const QString& name);
+  void runRequested();
+  void stopRequested();
+  void compareRequested();
+  void feedHoldToggled(bool on);  // operator feed hold button (checkable)
+  void chatterSignalled();        // operator chatter button
+
+ private:
+  QWidget* buildToolbar();
+  void followTokens();
+
+  QComboBox* controller_;
+  QComboBox* speed_;
+  QPushButton* run_;
+  QPushButton* stop_;
+  QPushButton* feed_hold_;
+  QPushButton* chatter_;
+  QPushButton* compare_;
+  QLabel* status_;
+  QLabel* metrics_;
+  QTabWidget* tabs_;
+  QScrollArea* chart_scroll_;
+  GrafcetChartView* chart_;
+  SupervisionTimeline* timeline_;
+  SupervisorComparison* comparison_;
+  GrafcetChartEditor* editor_;
+  bool running_ = false;
+};
+
+}  // namespace mx::widgets
