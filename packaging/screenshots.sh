@@ -14,4 +14,5 @@ shot projects/rubio-pareto-case.mxproj --pareto --docks monitoringDock,operatorR
 shot projects/rubio2006-adaptive-control.mxproj --docks controlDock --screenshot docs/screenshots/force-control.png
 shot projects/cus-zuperl-sdnrp.mxproj --sdnrp --docks surfaceFinishDock --screenshot docs/screenshots/surface-finish.png
 shot projects/cus-zuperl-sdnrp.mxproj --program projects/programs/pocket_mm.nc --docks partProgramDock --screenshot docs/screenshots/part-program.png
+shot projects/landers-face-milling.mxproj --supervise smc2 --docks supervisorDock --screenshot docs/screenshots/supervisor.png
 echo "screenshots written to docs/screenshots/"

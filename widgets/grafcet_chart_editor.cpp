@@ -38,7 +38,7 @@ QTableWidget* makeTable(const QStringList& headers, QWidget* parent) {
   table->setSelectionBehavior(QAbstractItemView::SelectRows);
   table->setSelectionMode(QAbstractItemView::SingleSelection);
   table->horizontalHeader()->setStretchLastSection(true);
-  table->setMinimumHeight(150);
+  table->setMinimumHeight(80);
   return table;
 }
 

@@ -42,7 +42,7 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumSize(520, 460);
+  setMinimumSize(520, 320);
   plot_->setToolTip(tr("Wheel zooms and drag pans the shared time axis; a double click fits the data. Hover an "
                        "event marker for its details."));
   plot_->installEventFilter(this);

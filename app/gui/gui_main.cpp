@@ -10,6 +10,8 @@
 #include <clocale>
 
 #include "main_window.h"
+#include "supervisor_view.h"
+#include <QComboBox>
 
 namespace {
 QString defaultProject() {
@@ -33,6 +35,8 @@ int main(int argc, char** argv) {
   parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the point's "
                                   "simulation are shown, then quit.", "FILE"});
   parser.addOption({"docks", "Raise these docks (object names, e.g. paretoFrontDock,paretoWeightsDock).", "NAMES"});
+  parser.addOption({"supervise", "Run the supervisor with this controller (none, smc1, smc2) as fast as possible; "
+                                 "with --screenshot, the shot waits for its end.", "CONTROLLER"});
   parser.addOption({"sdnrp", "Run the surface-finish (SDNRP) loop of the project once it is open."});
   parser.addOption({"program", "Open this G-code part program in the part-program panel.", "FILE"});
   parser.addOption({"pareto", "Once the Pareto study is ready, move the operating point to the Pareto choice "
@@ -87,7 +91,16 @@ int main(int argc, char** argv) {
     QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, move);
   }
   if (!screenshot.isEmpty()) {
+    const bool supervise = parser.isSet("supervise");
+    auto shoot = [&window, screenshot] {
+      QTimer::singleShot(300, &window, [&window, screenshot] {
+        window.grab().save(screenshot);
+        QApplication::quit();
+      });
+    };
+    if (supervise) QObject::connect(&window, &mx::gui::MainWindow::supervisionFinished, &window, shoot);
     QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
+      if (supervise) return;                    // the supervised run decides
       if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
       QTimer::singleShot(300, &window, [&window, screenshot] {
         window.grab().save(screenshot);
@@ -98,6 +111,12 @@ int main(int argc, char** argv) {
   }
   if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
   if (parser.isSet("sdnrp")) window.runSurfaceFinish();
+  if (parser.isSet("supervise")) {
+    window.supervisorView()->setController(parser.value("supervise"));
+    emit window.supervisorView()->controllerChanged(parser.value("supervise"));
+    window.supervisorView()->speedCombo()->setCurrentIndex(window.supervisorView()->speedCombo()->count() - 1);
+    window.startSupervision();
+  }
   if (parser.isSet("program")) window.openPartProgram(parser.value("program"));
   return app.exec();
 }
