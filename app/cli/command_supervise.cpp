@@ -6,6 +6,9 @@
 //   "passes", "cycle_time_s", "events": [{"t_s", "type", "detail"}...]} plus "reference_force_N",
 //   "max_F_Y_N", "final_program_mm", "steady_max_power_pct_of_limit", "tds_chatter_s", "run_seconds".
 // chatter_time_s is null without chatter. --csv: t, F_y, F_Y, power, feed, depth, pass every 2 ms.
+// --marginal-depth instead prints the appendix's depth search for marginal stability of the project's
+// process: {"marginal_depth_mm", "stable_depth_mm", "unstable_depth_mm", "bracketed",
+// "trials": [{"depth_mm", "indicator", "chatter"}]} (feed per tooth of the programmed feed).
 // Exit 2: bad project, section, chart or flags; exit 1: the run failed.
 #include <QJsonArray>
 
@@ -15,6 +18,7 @@
 #include "cli/supervisor_request.h"
 #include "model/job_control.h"
 #include "supervisor/grafcet_interpreter.h"
+#include "supervisor/marginal_depth.h"
 
 namespace mx::app {
 
@@ -29,6 +33,29 @@ void writeSeries(const QString& path, const SupervisionResult& r) {
   });
 }
 
+int printMarginalDepth(const Project& project) {
+  const SupervisorRequest request = supervisorRequestFromProject(project, "none");
+  const SupervisionScenario& s = request.scenario;
+  MarginalDepthSettings settings;
+  settings.feed_per_tooth_m =
+      s.programmed_feed_m_per_s / (s.process.teeth * s.process.spindle_speed_rpm / 60.0);
+  MarginalDepthResult r;
+  try {
+    r = MarginalDepthSearch(s.process, settings).search();
+  } catch (const InvalidInput& e) {
+    throw CliError(QString("supervise: %1").arg(e.what()), kExitBadInput);
+  }
+  QJsonArray trials;
+  for (const DepthTrial& t : r.trials)
+    trials.append(QJsonObject{{"depth_mm", t.depth_m * 1e3}, {"indicator", t.indicator}, {"chatter", t.chatter}});
+  printJson({{"marginal_depth_mm", r.marginal_depth_m * 1e3},
+             {"stable_depth_mm", r.stable_depth_m * 1e3},
+             {"unstable_depth_mm", r.unstable_depth_m * 1e3},
+             {"bracketed", r.bracketed},
+             {"trials", trials}});
+  return kExitOk;
+}
+
 }  // namespace
 
 int runSuperviseCommand(const QStringList& arguments) {
@@ -38,10 +65,12 @@ int runSuperviseCommand(const QStringList& arguments) {
   parser.addOptions({
       {"controller", "none, smc1 or smc2 (required).", "NAME"},
       {"csv", "Write the force and power history to FILE.", "FILE"},
+      {"marginal-depth", "Print the depth of marginal stability of the process instead (appendix)."},
   });
   const QString path = parseSubcommand(parser, arguments);
-  const QString controller = requiredOption(parser, "controller");
   const Project project = loadProject(path);
+  if (parser.isSet("marginal-depth")) return printMarginalDepth(project);
+  const QString controller = requiredOption(parser, "controller");
   const SupervisorRequest request = supervisorRequestFromProject(project, controller);
   SupervisionResult r;
   try {

@@ -66,6 +66,16 @@ class TestCliSupervise : public QObject {
   void smc1OvershootsLessThanSmc2() {
     QVERIFY(runs_["smc1"]["overshoot_pct"].toDouble() < runs_["smc2"]["overshoot_pct"].toDouble());
   }
+  // The appendix's search: 1 mm (SMC I's passes) stable, 2 mm (one pass) unstable.
+  void marginalDepth() {
+    const mx::test::CliRun r = mx::test::runCli({"supervise", kProject, "--marginal-depth"}, 300000);
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.json["bracketed"].toBool());
+    const double d = r.json["marginal_depth_mm"].toDouble();
+    QVERIFY(d > 1.0 && d < 2.0);
+    QVERIFY(r.json["stable_depth_mm"].toDouble() < r.json["unstable_depth_mm"].toDouble());
+    QCOMPARE_LE(r.json["unstable_depth_mm"].toDouble() - r.json["stable_depth_mm"].toDouble(), 0.02 + 1e-9);
+  }
   void badInput_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QString>("controller");
