@@ -1,5 +1,6 @@
 #include "cli/cli_support.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
 #include <QTextStream>
@@ -80,6 +81,20 @@ void writeTextFileAtomically(const QString& flag, const QString& path, const std
   write(out);
   out.flush();
   if (!file.commit()) throw CliError(QString("%1 = '%2': write failed").arg(flag, path), kExitComputationFailed);
+}
+
+std::vector<std::pair<double, double>> depthStepsField(const QJsonValue& value, const QString& path) {
+  if (!value.isArray() || value.toArray().isEmpty())
+    failField(path, "(not a non-empty array)", "an array of {length_mm, depth_mm}");
+  std::vector<std::pair<double, double>> out;
+  const QJsonArray steps = value.toArray();
+  for (qsizetype i = 0; i < steps.size(); ++i) {
+    const QString element = QString("%1[%2]").arg(path).arg(i);
+    const QJsonObject step = steps[i].toObject();
+    out.emplace_back(sectionNumber(step, element, "length_mm", 1e-6, 1e7, "in (0, 1e7]") * 1e-3,
+                     sectionNumber(step, element, "depth_mm", 0.0, 1e3, "in [0, 1000]") * 1e-3);
+  }
+  return out;
 }
 
 void failField(const QString& field, const QString& value, const QString& range) {

@@ -8,6 +8,8 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 
 namespace mx::app {
@@ -45,6 +47,10 @@ void printJson(const QJsonObject& object);
 // Writes `lines` (CSV or other text) atomically to `path` (QSaveFile); `flag` names the option in
 // errors: cannot open -> CliError(2), write failed -> CliError(1).
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
+
+// A depth profile along the feed path: a non-empty array of {"length_mm" (0, 1e7], "depth_mm" [0, 1000]}
+// at `path`, as (length, depth) pairs in metres. CliError(2) naming the element.
+std::vector<std::pair<double, double>> depthStepsField(const QJsonValue& value, const QString& path);
 
 // Project sections: "<field> = <value>: must be <range>" as CliError(2).
 [[noreturn]] void failField(const QString& field, const QString& value, const QString& range);

@@ -114,16 +114,9 @@ ControlRequest controlRequestFromProject(const Project& project) {
     failField("control.rls.trace_max", QString::number(s.rls.trace_max), "greater than control.rls.trace_min");
 
   if (c.contains("workpiece")) {
-    if (!c.value("workpiece").isArray() || c.value("workpiece").toArray().isEmpty())
-      failField("control.workpiece", "(not a non-empty array)", "an array of {length_mm, depth_mm}");
     s.workpiece.steps.clear();
-    const QJsonArray steps = c.value("workpiece").toArray();
-    for (qsizetype i = 0; i < steps.size(); ++i) {
-      const QString path = QString("control.workpiece[%1]").arg(i);
-      const QJsonObject step = steps[i].toObject();
-      s.workpiece.steps.push_back({sectionNumber(step, path, "length_mm", 1e-6, 1e6, "in (0, 1e6]") * 1e-3,
-                                   sectionNumber(step, path, "depth_mm", 0.0, 1e3, "in [0, 1000]") * 1e-3});
-    }
+    for (const auto& [length, depth] : depthStepsField(c.value("workpiece"), "control.workpiece"))
+      s.workpiece.steps.push_back({length, depth});
   }
   try {
     validateAdaptiveControlSettings(s);

@@ -53,15 +53,9 @@ OverrideRequest overrideRequestFromProject(const Project& project, const QString
   const QJsonObject p = project.document.value("part_program").toObject();
   OverrideRequest r;
   r.settings.stock_top_z_m = sectionNumber(p, "part_program", "stock_top_mm", -1e5, 1e5, "in [-1e5, 1e5]", 0.0) * 1e-3;
-  if (p.contains("depth_profile")) {
-    const QJsonArray a = p.value("depth_profile").toArray();
-    for (qsizetype i = 0; i < a.size(); ++i) {
-      const QString path = QString("part_program.depth_profile[%1]").arg(i);
-      const QJsonObject s = a[i].toObject();
-      r.settings.depth_profile.push_back({sectionNumber(s, path, "length_mm", 1e-6, 1e7, "in (0, 1e7]") * 1e-3,
-                                          sectionNumber(s, path, "depth_mm", 0.0, 1e3, "in [0, 1000]") * 1e-3});
-    }
-  }
+  if (p.contains("depth_profile"))
+    for (const auto& [length, depth] : depthStepsField(p.value("depth_profile"), "part_program.depth_profile"))
+      r.settings.depth_profile.push_back({length, depth});
   if (p.contains("speed_rpm"))
     r.settings.speed_rev_per_s = sectionNumber(p, "part_program", "speed_rpm", 1e-3, 1e6, "in (0, 1e6]") / 60.0;
   if (speed_rpm) r.settings.speed_rev_per_s = *speed_rpm / 60.0;

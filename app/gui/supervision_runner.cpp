@@ -12,6 +12,27 @@
 
 namespace mx::gui {
 
+namespace {
+
+// One supervised run with its own interpreter; errors become the outcome's message.
+SupervisionOutcome runOne(const SupervisionScenario& scenario, const GrafcetChart& chart, quint64 generation,
+                          const JobControl& job) {
+  SupervisionOutcome out;
+  out.generation = generation;
+  out.controller = QString::fromStdString(controllerName(scenario.controller));
+  try {
+    GrafcetInterpreter logic(chart);
+    out.result = std::make_shared<const SupervisionResult>(runSupervision(scenario, logic, job));
+  } catch (const Cancelled&) {
+    out.error = "stopped";
+  } catch (const std::exception& e) {
+    out.error = QString::fromStdString(e.what());
+  }
+  return out;
+}
+
+}  // namespace
+
 SupervisionRunner::SupervisionRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {
   qRegisterMetaType<mx::gui::SupervisionChunk>();
   qRegisterMetaType<mx::gui::SupervisionOutcome>();
@@ -45,9 +66,6 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
   QPointer<SupervisionRunner> self(this);
   watcher->setFuture(QtConcurrent::run(pool_, [self, base = scenario, chart, speed_factor, generation, live = live_] {
     SupervisionScenario scenario = base;
-    SupervisionOutcome out;
-    out.generation = generation;
-    out.controller = QString::fromStdString(controllerName(scenario.controller));
     // Chunks: what the run added since the last one, every 50 ms of simulated time.
     std::size_t n_samples = 0, n_steps = 0, n_modules = 0, n_events = 0;
     QElapsedTimer wall;
@@ -80,15 +98,7 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
     };
     JobControl job;
     job.cancel = &live->cancel;
-    try {
-      GrafcetInterpreter logic(chart);
-      out.result = std::make_shared<const SupervisionResult>(runSupervision(scenario, logic, job));
-    } catch (const Cancelled&) {
-      out.error = "stopped";
-    } catch (const std::exception& e) {
-      out.error = QString::fromStdString(e.what());
-    }
-    return out;
+    return runOne(scenario, chart, generation, job);
   }));
   return generation;
 }
@@ -107,20 +117,9 @@ quint64 SupervisionRunner::compare(const std::vector<std::pair<SupervisionScenar
     });
     if (running_++ == 0) emit runningChanged(true);
     watcher->setFuture(QtConcurrent::run(pool_, [scenario, chart, generation, cancel = compare_cancel_] {
-      SupervisionOutcome out;
-      out.generation = generation;
-      out.controller = QString::fromStdString(controllerName(scenario.controller));
       JobControl job;
       job.cancel = cancel.get();
-      try {
-        GrafcetInterpreter logic(chart);
-        out.result = std::make_shared<const SupervisionResult>(runSupervision(scenario, logic, job));
-      } catch (const Cancelled&) {
-        out.error = "stopped";
-      } catch (const std::exception& e) {
-        out.error = QString::fromStdString(e.what());
-      }
-      return out;
+      return runOne(scenario, chart, generation, job);
     }));
   }
   return generation;
