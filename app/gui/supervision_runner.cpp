@@ -66,12 +66,20 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
   QPointer<SupervisionRunner> self(this);
   watcher->setFuture(QtConcurrent::run(pool_, [self, base = scenario, chart, speed_factor, generation, live = live_] {
     SupervisionScenario scenario = base;
-    // Chunks: what the run added since the last one, every 50 ms of simulated time.
+    // Chunks: what the run added since the last one (checked every 50 ms of simulated time).
     std::size_t n_samples = 0, n_steps = 0, n_modules = 0, n_events = 0;
     QElapsedTimer wall;
     wall.start();
     scenario.progress_period_s = 0.05;
+    qint64 last_post_ms = -1000;
     scenario.on_progress = [&](const SupervisionResult& r, double t_s) {
+      if (speed_factor > 0.0) {  // pace: simulated time <= speed x wall time
+        const double ahead_ms = t_s / speed_factor * 1e3 - static_cast<double>(wall.elapsed());
+        if (ahead_ms > 1.0) QThread::msleep(static_cast<unsigned long>(ahead_ms));
+      }
+      // At most one chunk per 40 ms of wall time: the GUI thread is never flooded, whatever the speed.
+      if (wall.elapsed() - last_post_ms < 40) return;
+      last_post_ms = wall.elapsed();
       SupervisionChunk c;
       c.generation = generation;
       c.samples.assign(r.series.begin() + static_cast<std::ptrdiff_t>(n_samples), r.series.end());
@@ -86,10 +94,6 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
         QMetaObject::invokeMethod(self, [self, c = std::move(c)] {
           if (self) emit self->chunkReady(c);
         }, Qt::QueuedConnection);
-      if (speed_factor > 0.0) {  // pace: simulated time <= speed x wall time
-        const double ahead_ms = t_s / speed_factor * 1e3 - static_cast<double>(wall.elapsed());
-        if (ahead_ms > 1.0) QThread::msleep(static_cast<unsigned long>(ahead_ms));
-      }
     };
     scenario.poll_events = [live](double t_s, std::vector<OperatorEvent>& events) {
       std::lock_guard<std::mutex> lock(live->mutex);

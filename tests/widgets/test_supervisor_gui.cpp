@@ -3,6 +3,8 @@
 // during a paced run reaches the run as an operator event; Compare fills the three columns; a valid
 // chart edit is one undoable project edit, an invalid one is shown inline and changes nothing.
 #include <QApplication>
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -75,6 +77,33 @@ class TestSupervisorGui : public QObject {
     QVERIFY(done.wait(120000));
     QVERIFY(view->metricsText().contains("2"));  // passes
     QVERIFY(view->timeline()->spanCount() > 0);
+  }
+
+  // The GUI keeps answering during a run as fast as possible (chunks are throttled to one per 40 ms).
+  void eventLoopKeepsTickingDuringARun() {
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = window.supervisorView();
+    view->setController("smc2");
+    emit view->controllerChanged("smc2");
+    view->speedCombo()->setCurrentIndex(3);  // max
+    QSignalSpy done(&window, &gui::MainWindow::supervisionFinished);
+    QElapsedTimer clock;
+    qint64 last = 0, worst = 0;
+    QTimer tick;
+    tick.setInterval(5);
+    connect(&tick, &QTimer::timeout, [&] {
+      const qint64 now = clock.elapsed();
+      worst = std::max(worst, now - last);
+      last = now;
+    });
+    clock.start();
+    tick.start();
+    window.startSupervision();
+    QVERIFY(done.wait(120000));
+    tick.stop();
+    qInfo("largest event-loop gap during a max-speed SMC II run: %lld ms", worst);
+    QCOMPARE_LE(worst, 250);  // the 50 ms target is measured in docs/performance.md; CI machines vary
   }
 
   void compareFillsThreeColumns() {
