@@ -49,8 +49,8 @@ SupervisorRequest supervisorRequestFromProject(const Project& project, const QSt
     const QJsonArray a = passes.toArray();
     for (qsizetype i = 0; i < a.size(); ++i) {
       const QString field = QString("supervisor.passes_mm.%1[%2]").arg(controller).arg(i);
-      if (!a[i].isDouble() || !(a[i].toDouble() > 0.0 && a[i].toDouble() <= 100.0))
-        failField(field, a[i].toVariant().toString(), "a depth in (0, 100] mm");
+      if (!a[i].isDouble() || !(a[i].toDouble() > 0.0 && a[i].toDouble() <= 20.0))
+        failField(field, a[i].toVariant().toString(), "a depth in (0, 20] mm");
       sc.pass_depths_m.push_back(a[i].toDouble() * 1e-3);
     }
   } else {

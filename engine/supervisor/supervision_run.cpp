@@ -104,6 +104,7 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
 
   std::vector<OperatorEvent> events = sc.events;
   double next_progress = 0.0;
+  bool last_stable = true;
   std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.t_s < b.t_s; });
   std::size_t next_event = 0;
   std::deque<double> power_window, regen_window;
@@ -188,7 +189,9 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
         if (job.cancelled()) throw Cancelled();
         SignalValues sig{{"a", ctx.a}, {"b", ctx.b}, {"c", ctx.c}, {"d", ctx.d}, {"e", ctx.e}, {"F_Y", ctx.F_Y_N}};
         const ScanOutput out = logic.scan(sig);
-        if (!out.stable) res.events.push_back({t, "logic_unstable", "no stable situation in this scan"});
+        // Reported once per episode, not at every scan of it.
+        if (!out.stable && last_stable) res.events.push_back({t, "logic_unstable", "no stable situation in this scan"});
+        last_stable = out.stable;
         scheduler.applyScan(out, ctx);
         if (out.active_steps != last_steps) {
           last_steps = out.active_steps;

@@ -76,6 +76,20 @@ class TestCliSupervise : public QObject {
     QVERIFY(r.json["stable_depth_mm"].toDouble() < r.json["unstable_depth_mm"].toDouble());
     QCOMPARE_LE(r.json["unstable_depth_mm"].toDouble() - r.json["stable_depth_mm"].toDouble(), 0.02 + 1e-9);
   }
+  // A chart that never stabilises (a self-loop that is always fireable) is reported, once per
+  // episode, and the run still ends.
+  void unstableChartIsReported() {
+    QTemporaryDir dir;
+    const QString path = mx::test::writeMutatedProject(
+        kProject, {R"(supervisor/charts/smc1/transitions/5={"id":6,"from":[4],"to":[4],"receptivity":"true"})"},
+        dir.filePath("p.mxproj"));
+    const mx::test::CliRun r = mx::test::runCli({"supervise", path, "--controller", "smc1"}, 300000);
+    QCOMPARE(r.code, 0);
+    int unstable = 0;
+    for (const QJsonValue& e : r.json["events"].toArray()) unstable += e.toObject()["type"].toString() == "logic_unstable";
+    QVERIFY(unstable >= 1);
+    QVERIFY(unstable <= 10);
+  }
   void badInput_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QString>("controller");
@@ -90,6 +104,8 @@ class TestCliSupervise : public QObject {
     QTest::newRow("event type") << QStringList{"supervisor/events/0/type=\"lunch\""} << "smc1"
                                 << "supervisor.events[0].type = 'lunch'";
     QTest::newRow("no section") << QStringList{"-supervisor"} << "none" << "section 'supervisor' is missing";
+    QTest::newRow("pass depth") << QStringList{"supervisor/passes_mm/smc1/0=50"} << "smc1"
+                                << "supervisor.passes_mm.smc1[0] = 50: must be a depth in (0, 20] mm";
   }
   void badInput() {
     QFETCH(QStringList, mutations);
