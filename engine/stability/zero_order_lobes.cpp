@@ -78,8 +78,10 @@ class BoundarySolver {
   double period(double u) const { return (theta(u) + 2.0 * kPi * k_) / w_; }
   double f(double u) const { return std::log(std::abs(1.0 - c_ * u)) - delta_ * period(u); }
   // Newton from a guess (continuation along the lobe); nullopt when it does not converge. Quadratic
-  // convergence: once a step is below 1e-6 u, the remaining error is ~1e-12 u and we stop.
-  std::optional<double> newton(double u) const {
+  // convergence: once a step is below 1e-5 u, the remaining error is ~1e-10 u and we stop. `theta_out`
+  // gets theta at the returned u, corrected to first order from the last iterate (d theta / du =
+  // Im(c / z)), so that the caller needs no further atan2.
+  std::optional<double> newton(double u, double& theta_out) const {
     for (int it = 0; it < 12; ++it) {
       const cplx z = 1.0 - c_ * u;
       const double nz = std::norm(z);
@@ -92,7 +94,10 @@ class BoundarySolver {
       const double step = value / slope;
       u -= step;
       if (!(u > 0.0)) return std::nullopt;
-      if (std::abs(step) < 1e-6 * u) return u;
+      if (std::abs(step) < 1e-5 * u) {
+        theta_out = t - r.imag() * step;
+        return u;
+      }
     }
     return std::nullopt;
   }
@@ -135,27 +140,38 @@ class BoundarySolver {
   double delta_;
 };
 
-// u_floor: depths above 1/u_floor are not of interest. guess: the previous point's u on this lobe
-// (0 if none); updated on success.
-bool boundaryPoint(cplx c, double w, int k, double delta, double u_floor, double& guess, double& depth,
-                   double& period) {
+// u_floor: depths above 1/u_floor are not of interest. guess, previous: the last two points' u on
+// this lobe (0 if none; Newton starts from their linear extrapolation); updated on success.
+bool boundaryPoint(cplx c, double w, int k, double delta, double u_floor, double& guess, double& previous,
+                   double& depth, double& period) {
   if (c.real() <= 0.0 && delta == 0.0) return false;
   const BoundarySolver solver(c, w, k, delta);
   const double u0 = c.real() > 0.0 ? 2.0 * c.real() / std::norm(c) : 0.0;
   std::optional<double> u = u0;
+  double theta = -1.0;  // theta at u when Newton already has it
   if (delta > 0.0) {
     const double lower = std::max(u0, u_floor);
     u = std::nullopt;
-    if (solver.f(lower) < 0.0) {
-      // Continuation along the lobe, else the nominal root u0 (F(u0) = -delta T).
-      const double start = guess > lower ? guess : (u0 >= lower ? u0 : 0.0);
-      if (start > 0.0) u = solver.newton(start);
-      if (!u || *u < lower) u = solver.bracketed(lower);
+    // Continuation along the lobe: a Newton root at or above `lower` is the boundary point.
+    const double start = previous > 0.0 && 2.0 * guess - previous > lower ? 2.0 * guess - previous : guess;
+    if (start > lower) u = solver.newton(start, theta);
+    if (!u || *u < lower) {
+      theta = -1.0;
+      u = std::nullopt;
+      if (solver.f(lower) < 0.0) {
+        // The nominal root u0 (F(u0) = -delta T), else bracketing from `lower`.
+        if (u0 >= lower) u = solver.newton(u0, theta);
+        if (!u || *u < lower) {
+          theta = -1.0;
+          u = solver.bracketed(lower);
+        }
+      }
     }
     if (!u) return false;
   }
   depth = 1.0 / *u;
-  period = solver.period(*u);
+  period = theta > 0.0 ? (theta + 2.0 * kPi * k) / w : solver.period(*u);
+  previous = guess;
   guess = *u;
   return std::isfinite(depth) && period > 0.0;
 }
@@ -218,9 +234,9 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
     for (int branch = 0; branch < 2; ++branch) {
       LobeCurve curve;
       curve.index = k;
-      double guess = 0.0;
+      double guess = 0.0, previous = 0.0;
       auto flush = [&] {
-        guess = 0.0;
+        guess = previous = 0.0;
         if (curve.speed_rev_per_s.size() >= 2) {
           envelope.add(curve);
           out.lobes.push_back(curve);
@@ -231,7 +247,7 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
         double depth = 0.0, period = 0.0;
         if (branch < counts[i] && inRange(omegas[i], k) &&
             boundaryPoint(cs[i][static_cast<size_t>(branch)], omegas[i], k, options.delta_per_s, u_floor, guess,
-                          depth, period)) {
+                          previous, depth, period)) {
           curve.speed_rev_per_s.push_back(1.0 / (setup.teeth * period));  // eq. 10
           curve.depth_m.push_back(depth);
           curve.chatter_hz.push_back(omegas[i] / (2.0 * kPi));
