@@ -20,8 +20,6 @@
 #include "cli/cli_support.h"
 #include "cli/control_request.h"
 #include "control/beta_sweep.h"
-#include "control/force_plant.h"
-#include "control/zero_threshold.h"
 #include "model/job_control.h"
 
 namespace mx::app {
@@ -32,13 +30,6 @@ QJsonArray complexJson(const Roots& roots) {
   QJsonArray out;
   for (const std::complex<double>& z : roots) out.append(QJsonArray{z.real(), z.imag()});
   return out;
-}
-
-// The beta where a zero of H_beta of the true plant (first depth) leaves the unit circle.
-double zeroThreshold(const AdaptiveControlSettings& s) {
-  const double depth = s.workpiece.steps.front().depth_m > 0.0 ? s.workpiece.steps.front().depth_m : 1e-3;
-  const ForcePlant plant = makeForcePlant(s.process, depth);
-  return unstableZeroThreshold(plant.stateSpace(), 1.0 / s.process.spindle_rev_s).threshold_beta;
 }
 
 BetaSweepSettings parseSweep(const QString& text) {
@@ -103,7 +94,7 @@ int runControlCommand(const QStringList& arguments) {
   ControlRequest request = controlRequestFromProject(project);
   AdaptiveControlSettings& s = request.settings;
   if (beta) s.beta = *beta;
-  const double threshold = zeroThreshold(s);
+  const double threshold = closedLoopZeroThreshold(s);
 
   QJsonObject out;
   try {

@@ -2,7 +2,6 @@
 
 #include "cli/control_request.h"
 #include "control/beta_sweep.h"
-#include "control_runner.h"
 #include "control_view.h"
 #include "control_view_data.h"
 #include "project/project.h"
@@ -34,7 +33,7 @@ QString renderControlJc(const QString& project_path, double from, double to, dou
     widgets::ControlView view;
     view.resize(1900, 1000);
     view.setBeta(request.settings.beta);
-    view.setJcCurve(jcCurveOf(r, ControlRunner::zeroThreshold(request.settings)));
+    view.setJcCurve(jcCurveOf(r, closedLoopZeroThreshold(request.settings)));
     if (!view.saveJcPlot(out_png)) return out_png + ": cannot write";
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());

@@ -3,8 +3,6 @@
 #include <QFutureWatcher>
 #include <QtConcurrent>
 
-#include "control/force_plant.h"
-#include "control/zero_threshold.h"
 #include "model/job_control.h"
 
 namespace mx::gui {
@@ -27,13 +25,6 @@ void ControlRunner::started() {
 
 void ControlRunner::stopped() {
   if (--running_ == 0) emit busyChanged(false);
-}
-
-double ControlRunner::zeroThreshold(const AdaptiveControlSettings& s) {
-  if (s.workpiece.steps.empty()) return -1.0;
-  const double depth = s.workpiece.steps.front().depth_m > 0.0 ? s.workpiece.steps.front().depth_m : 1e-3;
-  return unstableZeroThreshold(makeForcePlant(s.process, depth).stateSpace(), 1.0 / s.process.spindle_rev_s)
-      .threshold_beta;
 }
 
 // Runs `work(job)` on the engine pool with a fresh cancel flag (the previous one of the same kind is
@@ -73,7 +64,7 @@ quint64 ControlRunner::run(const AdaptiveControlSettings& settings) {
   return launch<ControlOutcome>(
       run_cancel_, run_generation_,
       [settings](const JobControl& job, ControlOutcome& out) {
-        out.threshold_beta = zeroThreshold(settings);
+        out.threshold_beta = closedLoopZeroThreshold(settings);
         out.result = std::make_shared<const ClosedLoopResult>(simulateAdaptiveForceControl(settings, job));
       },
       [this](const ControlOutcome& o) { emit finished(o); });
@@ -86,7 +77,7 @@ quint64 ControlRunner::sweep(const AdaptiveControlSettings& settings, const Beta
   return launch<SweepOutcome>(
       sweep_cancel_, sweep_generation_,
       [settings, s](const JobControl& job, SweepOutcome& out) {
-        out.threshold_beta = zeroThreshold(settings);
+        out.threshold_beta = closedLoopZeroThreshold(settings);
         out.result = std::make_shared<const BetaSweepResult>(sweepBeta(settings, s, job));
       },
       [this](const SweepOutcome& o) { emit sweepFinished(o); });

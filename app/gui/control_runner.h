@@ -38,9 +38,6 @@ class ControlRunner : public QObject {
   void cancel();
   bool busy() const { return running_ > 0; }
 
-  // The threshold of the plant of these settings (first depth); -1 when none in [-1, 0].
-  static double zeroThreshold(const AdaptiveControlSettings& settings);
-
  signals:
   void finished(const mx::gui::ControlOutcome& outcome);
   void sweepFinished(const mx::gui::SweepOutcome& outcome);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "control/rst_controller.h"
+#include "control/zero_threshold.h"
 
 namespace mx {
 
@@ -169,6 +170,13 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
   run.metrics.completed = plant.position() >= length;
   run.metrics.cvode_steps = plant.cvodeSteps();
   return run;
+}
+
+double closedLoopZeroThreshold(const AdaptiveControlSettings& s) {
+  if (s.workpiece.steps.empty()) return -1.0;
+  const double depth = s.workpiece.steps.front().depth_m > 0.0 ? s.workpiece.steps.front().depth_m : 1e-3;
+  return unstableZeroThreshold(makeForcePlant(s.process, depth).stateSpace(), 1.0 / s.process.spindle_rev_s)
+      .threshold_beta;
 }
 
 }  // namespace mx

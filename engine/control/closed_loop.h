@@ -98,6 +98,10 @@ struct ClosedLoopResult {
 
 ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& settings, const JobControl& job = {});
 
+// The beta below which a zero of H_beta of the true plant (at the workpiece's first depth; 1 mm when
+// that is 0) leaves the unit circle (unstableZeroThreshold); -1 for an empty workpiece.
+double closedLoopZeroThreshold(const AdaptiveControlSettings& settings);
+
 // The metrics from finished time series (used by simulateAdaptiveForceControl; public for tests and tools).
 ClosedLoopMetrics closedLoopMetrics(const ClosedLoopResult& run, double force_reference_N, double settling_band);
 

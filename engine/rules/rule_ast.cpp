@@ -43,20 +43,22 @@ Condition makeNot(Condition operand) {
   return node;
 }
 
-Condition makeAnd(Condition left, Condition right) {
+namespace {
+Condition makeBinary(ConditionNode::Kind kind, Condition left, Condition right) {
   auto node = std::make_shared<ConditionNode>();
-  node->kind = ConditionNode::Kind::And;
+  node->kind = kind;
   node->left = std::move(left);
   node->right = std::move(right);
   return node;
 }
+}  // namespace
+
+Condition makeAnd(Condition left, Condition right) {
+  return makeBinary(ConditionNode::Kind::And, std::move(left), std::move(right));
+}
 
 Condition makeOr(Condition left, Condition right) {
-  auto node = std::make_shared<ConditionNode>();
-  node->kind = ConditionNode::Kind::Or;
-  node->left = std::move(left);
-  node->right = std::move(right);
-  return node;
+  return makeBinary(ConditionNode::Kind::Or, std::move(left), std::move(right));
 }
 
 std::string formatNumber(double value) {
