@@ -8,7 +8,7 @@
 #include <QTemporaryDir>
 
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 
@@ -184,5 +184,5 @@ class TestCliCheck : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliCheck)
+MX_REGISTER_TEST(TestCliCheck)
 #include "test_cli_check.moc"

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
@@ -158,5 +158,5 @@ class TestCliCommands : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliCommands)
+MX_REGISTER_TEST(TestCliCommands)
 #include "test_cli_commands.moc"

@@ -9,7 +9,7 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
@@ -120,5 +120,5 @@ class TestCliControl : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliControl)
+MX_REGISTER_TEST(TestCliControl)
 #include "test_cli_control.moc"

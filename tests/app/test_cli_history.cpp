@@ -7,7 +7,7 @@
 #include <QTemporaryDir>
 
 #include "support/cli_runner.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");  // Aluminium; R1, R2
@@ -141,5 +141,5 @@ class TestCliHistory : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliHistory)
+MX_REGISTER_TEST(TestCliHistory)
 #include "test_cli_history.moc"

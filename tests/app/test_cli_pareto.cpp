@@ -11,7 +11,7 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
@@ -264,5 +264,5 @@ class TestCliPareto : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliPareto)
+MX_REGISTER_TEST(TestCliPareto)
 #include "test_cli_pareto.moc"

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
@@ -190,5 +190,5 @@ class TestCliRank : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCliRank)
+MX_REGISTER_TEST(TestCliRank)
 #include "test_cli_rank.moc"

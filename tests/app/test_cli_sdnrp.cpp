@@ -10,7 +10,7 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kSdnrp = QStringLiteral(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj");
@@ -109,22 +109,28 @@ class TestCliSdnrp : public QObject {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message");
     QTest::newRow("no --out") << QStringList{"override", kPocket, kSdnrp} << "--out";
-    QTest::newRow("one positional") << QStringList{"override", kSdnrp, "--out", "/tmp/x.nc"} << "expected PROGRAM.nc and PROJECT";
-    QTest::newRow("controller") << QStringList{"override", kPocket, kSdnrp, "--out", "/tmp/x.nc", "--controller", "pid"}
+    QTest::newRow("one positional") << QStringList{"override", kSdnrp, "--out", "OUT"} << "expected PROGRAM.nc and PROJECT";
+    QTest::newRow("controller") << QStringList{"override", kPocket, kSdnrp, "--out", "OUT", "--controller", "pid"}
                                 << "--controller = 'pid': must be adaptive or model-based";
-    QTest::newRow("missing program") << QStringList{"override", "/nonexistent.nc", kSdnrp, "--out", "/tmp/x.nc"}
-                                     << "/nonexistent.nc";
-    QTest::newRow("adaptive without control") << QStringList{"override", kPocket, kSdnrp, "--out", "/tmp/x.nc", "--controller", "adaptive"}
+    QTest::newRow("missing program") << QStringList{"override", "MISSING", kSdnrp, "--out", "OUT"}
+                                     << "missing.nc";
+    QTest::newRow("adaptive without control") << QStringList{"override", kPocket, kSdnrp, "--out", "OUT", "--controller", "adaptive"}
                                               << "section 'control' is missing";
   }
   void overrideErrors() {
     QFETCH(QStringList, args);
     QFETCH(QString, message);
+    // OUT and MISSING stand for paths in this test's temporary folder; neither file exists.
+    QTemporaryDir dir;
+    const QString out = dir.filePath("x.nc");
+    args.replaceInStrings(QRegularExpression("^OUT$"), out);
+    args.replaceInStrings(QRegularExpression("^MISSING$"), dir.filePath("missing.nc"));
     const mx::test::CliRun r = mx::test::runCli(args);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(!QFile::exists(out));
   }
 };
 
-MX_TEST_MAIN(TestCliSdnrp)
+MX_REGISTER_TEST(TestCliSdnrp)
 #include "test_cli_sdnrp.moc"

@@ -8,7 +8,7 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 namespace {
 const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
@@ -122,5 +122,5 @@ class TestCliSupervise : public QObject {
   QMap<QString, QJsonObject> runs_;
 };
 
-MX_TEST_MAIN(TestCliSupervise)
+MX_REGISTER_TEST(TestCliSupervise)
 #include "test_cli_supervise.moc"

@@ -7,7 +7,7 @@
 #include "cli/cli_support.h"
 #include "cli/grafcet_json.h"
 #include "supervisor/grafcet_interpreter.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 using namespace mx::app;
@@ -192,5 +192,5 @@ class TestGrafcetJson : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGrafcetJson)
+MX_REGISTER_TEST(TestGrafcetJson)
 #include "test_grafcet_json.moc"

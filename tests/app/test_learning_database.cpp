@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "learning/learning_database.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::app::JobFeatures;
 using mx::app::LearningDatabase;
@@ -328,5 +328,5 @@ class TestLearningDatabase : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestLearningDatabase)
+MX_REGISTER_TEST(TestLearningDatabase)
 #include "test_learning_database.moc"

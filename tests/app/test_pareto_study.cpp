@@ -9,7 +9,7 @@
 #include "cli/pareto_study.h"
 #include "pareto/pareto_front.h"
 #include "project/project.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 using namespace mx::app;
@@ -63,5 +63,5 @@ class TestParetoStudy : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestParetoStudy)
+MX_REGISTER_TEST(TestParetoStudy)
 #include "test_pareto_study.moc"

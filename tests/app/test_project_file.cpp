@@ -13,7 +13,7 @@
 #include "project/project.h"
 #include "project/project_validation.h"
 #include "support/json_mutation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 using namespace mx::app;
@@ -511,5 +511,5 @@ class TestProjectFile : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestProjectFile)
+MX_REGISTER_TEST(TestProjectFile)
 #include "test_project_file.moc"

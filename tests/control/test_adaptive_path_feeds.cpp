@@ -8,7 +8,7 @@
 #include "io/depth_profile.h"
 #include "io/gcode_interpreter.h"
 #include "io/gcode_reader.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -62,5 +62,5 @@ class TestAdaptivePathFeeds : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestAdaptivePathFeeds)
+MX_REGISTER_TEST(TestAdaptivePathFeeds)
 #include "test_adaptive_path_feeds.moc"

@@ -6,7 +6,7 @@
 
 #include "control/beta_sweep.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -78,5 +78,5 @@ class TestBetaSweep : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestBetaSweep)
+MX_REGISTER_TEST(TestBetaSweep)
 #include "test_beta_sweep.moc"

@@ -5,7 +5,7 @@
 
 #include "control/closed_loop.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -167,5 +167,5 @@ class TestClosedLoop : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestClosedLoop)
+MX_REGISTER_TEST(TestClosedLoop)
 #include "test_closed_loop.moc"

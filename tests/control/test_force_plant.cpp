@@ -3,7 +3,7 @@
 
 #include "control/force_plant.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -82,5 +82,5 @@ class TestForcePlant : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestForcePlant)
+MX_REGISTER_TEST(TestForcePlant)
 #include "test_force_plant.moc"

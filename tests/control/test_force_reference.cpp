@@ -3,7 +3,7 @@
 
 #include "control/force_reference.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -39,5 +39,5 @@ class TestForceReference : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestForceReference)
+MX_REGISTER_TEST(TestForceReference)
 #include "test_force_reference.moc"

@@ -7,7 +7,7 @@
 #include "control/froh_discretization.h"
 #include "model/job_control.h"
 #include "simulation/cvode_integrator.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -185,5 +185,5 @@ class TestFrohDiscretization : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestFrohDiscretization)
+MX_REGISTER_TEST(TestFrohDiscretization)
 #include "test_froh_discretization.moc"

@@ -4,7 +4,7 @@
 
 #include "control/model_based_force_controller.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -111,5 +111,5 @@ class TestModelBasedForceController : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestModelBasedForceController)
+MX_REGISTER_TEST(TestModelBasedForceController)
 #include "test_model_based_force_controller.moc"

@@ -8,7 +8,7 @@
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
 #include "support/gcode_samples.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -250,5 +250,5 @@ class TestPartProgramOverride : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestPartProgramOverride)
+MX_REGISTER_TEST(TestPartProgramOverride)
 #include "test_part_program_override.moc"

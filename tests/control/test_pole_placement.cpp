@@ -6,7 +6,7 @@
 #include "control/froh_discretization.h"
 #include "control/pole_placement.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -142,5 +142,5 @@ class TestPolePlacement : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestPolePlacement)
+MX_REGISTER_TEST(TestPolePlacement)
 #include "test_pole_placement.moc"

@@ -6,7 +6,7 @@
 
 #include "control/rls_estimator.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -134,5 +134,5 @@ class TestRlsEstimator : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestRlsEstimator)
+MX_REGISTER_TEST(TestRlsEstimator)
 #include "test_rls_estimator.moc"

@@ -3,7 +3,7 @@
 
 #include "control/rst_controller.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -64,5 +64,5 @@ class TestRstController : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestRstController)
+MX_REGISTER_TEST(TestRstController)
 #include "test_rst_controller.moc"

@@ -4,7 +4,7 @@
 #include "control/force_plant.h"
 #include "control/zero_threshold.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -63,5 +63,5 @@ class TestZeroThreshold : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestZeroThreshold)
+MX_REGISTER_TEST(TestZeroThreshold)
 #include "test_zero_threshold.moc"

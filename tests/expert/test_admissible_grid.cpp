@@ -5,7 +5,7 @@
 #include "expert/admissible_grid.h"
 #include "expert_fixtures.h"
 #include "model/cutting_force.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -81,5 +81,5 @@ class TestAdmissibleGrid : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestAdmissibleGrid)
+MX_REGISTER_TEST(TestAdmissibleGrid)
 #include "test_admissible_grid.moc"

@@ -6,7 +6,7 @@
 #include "expert/candidate_speeds.h"
 #include "model/job_control.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -51,5 +51,5 @@ class TestCandidateSpeeds : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCandidateSpeeds)
+MX_REGISTER_TEST(TestCandidateSpeeds)
 #include "test_candidate_speeds.moc"

@@ -3,7 +3,7 @@
 
 #include "expert/cost_weights.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -58,5 +58,5 @@ class TestCostWeights : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCostWeights)
+MX_REGISTER_TEST(TestCostWeights)
 #include "test_cost_weights.moc"

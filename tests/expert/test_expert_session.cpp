@@ -6,7 +6,7 @@
 #include "expert/expert_session.h"
 #include "model/job_control.h"
 #include "expert_fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -167,5 +167,5 @@ class TestExpertSession : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestExpertSession)
+MX_REGISTER_TEST(TestExpertSession)
 #include "test_expert_session.moc"

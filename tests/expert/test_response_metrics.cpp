@@ -4,7 +4,7 @@
 #include "expert/response_metrics.h"
 #include "simulation/milling_simulation.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -46,5 +46,5 @@ class TestResponseMetrics : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestResponseMetrics)
+MX_REGISTER_TEST(TestResponseMetrics)
 #include "test_response_metrics.moc"

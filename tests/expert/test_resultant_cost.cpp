@@ -3,7 +3,7 @@
 
 #include "expert/resultant_cost.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -51,5 +51,5 @@ class TestResultantCost : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestResultantCost)
+MX_REGISTER_TEST(TestResultantCost)
 #include "test_resultant_cost.moc"

@@ -1,7 +1,7 @@
 // Each point is simulated once; parallel and serial evaluation agree exactly.
 #include "expert/simulation_cache.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -36,5 +36,5 @@ class TestSimulationCache : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSimulationCache)
+MX_REGISTER_TEST(TestSimulationCache)
 #include "test_simulation_cache.moc"

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "expert/tool_cost.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -50,5 +50,5 @@ class TestToolCost : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestToolCost)
+MX_REGISTER_TEST(TestToolCost)
 #include "test_tool_cost.moc"

@@ -4,7 +4,7 @@
 #include "io/depth_profile.h"
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -47,5 +47,5 @@ class TestDepthProfile : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestDepthProfile)
+MX_REGISTER_TEST(TestDepthProfile)
 #include "test_depth_profile.moc"

@@ -2,7 +2,7 @@
 #include <limits>
 
 #include "io/feed_override_table.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -30,5 +30,5 @@ class TestFeedOverrideTable : public QObject {
   void emptyTable() { QCOMPARE(FeedOverrideTable::csv({}), FeedOverrideTable::header()); }
 };
 
-MX_TEST_MAIN(TestFeedOverrideTable)
+MX_REGISTER_TEST(TestFeedOverrideTable)
 #include "test_feed_override_table.moc"

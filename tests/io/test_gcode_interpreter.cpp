@@ -4,7 +4,7 @@
 
 #include "io/gcode_interpreter.h"
 #include "io/gcode_reader.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -110,5 +110,5 @@ class TestGcodeInterpreter : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGcodeInterpreter)
+MX_REGISTER_TEST(TestGcodeInterpreter)
 #include "test_gcode_interpreter.moc"

@@ -5,7 +5,7 @@
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
 #include "support/gcode_samples.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -140,5 +140,5 @@ class TestGcodeReader : public QObject {
   void unreadableFile() { QVERIFY_THROWS_EXCEPTION(InvalidInput, GcodeReader::readFile("/nonexistent/x.nc")); }
 };
 
-MX_TEST_MAIN(TestGcodeReader)
+MX_REGISTER_TEST(TestGcodeReader)
 #include "test_gcode_reader.moc"

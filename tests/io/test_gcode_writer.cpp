@@ -6,7 +6,7 @@
 #include "io/gcode_writer.h"
 #include "model/job_control.h"
 #include "support/gcode_samples.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -104,5 +104,5 @@ class TestGcodeWriter : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGcodeWriter)
+MX_REGISTER_TEST(TestGcodeWriter)
 #include "test_gcode_writer.moc"

@@ -5,7 +5,7 @@
 
 #include "model/cutting_force.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 constexpr double kPi = std::numbers::pi;
@@ -104,5 +104,5 @@ class TestCuttingForce : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCuttingForce)
+MX_REGISTER_TEST(TestCuttingForce)
 #include "test_cutting_force.moc"

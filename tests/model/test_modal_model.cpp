@@ -3,7 +3,7 @@
 #include <numbers>
 
 #include "model/modal_model.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -42,5 +42,5 @@ class TestModalModel : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestModalModel)
+MX_REGISTER_TEST(TestModalModel)
 #include "test_modal_model.moc"

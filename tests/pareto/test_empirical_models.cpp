@@ -5,7 +5,7 @@
 
 #include "model/job_control.h"
 #include "pareto/empirical_models.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -88,5 +88,5 @@ class TestEmpiricalModels : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestEmpiricalModels)
+MX_REGISTER_TEST(TestEmpiricalModels)
 #include "test_empirical_models.moc"

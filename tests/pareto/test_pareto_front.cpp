@@ -4,7 +4,7 @@
 #include <random>
 
 #include "pareto/pareto_front.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -66,5 +66,5 @@ class TestParetoFront : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestParetoFront)
+MX_REGISTER_TEST(TestParetoFront)
 #include "test_pareto_front.moc"

@@ -5,7 +5,7 @@
 #include "pareto/pareto_front.h"
 #include "pareto/pareto_selector.h"
 #include "pareto_fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -76,5 +76,5 @@ class TestParetoSelector : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestParetoSelector)
+MX_REGISTER_TEST(TestParetoSelector)
 #include "test_pareto_selector.moc"

@@ -3,7 +3,7 @@
 
 #include "model/job_control.h"
 #include "pareto/pareto_weights.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -60,5 +60,5 @@ class TestParetoWeights : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestParetoWeights)
+MX_REGISTER_TEST(TestParetoWeights)
 #include "test_pareto_weights.moc"

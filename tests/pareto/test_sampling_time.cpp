@@ -1,7 +1,7 @@
 // Rule 4: one spindle period, k periods while N and b stay constant.
 #include "model/job_control.h"
 #include "pareto/sampling_time.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -39,5 +39,5 @@ class TestSamplingTime : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSamplingTime)
+MX_REGISTER_TEST(TestSamplingTime)
 #include "test_sampling_time.moc"

@@ -4,7 +4,7 @@
 #include "pareto/objective_table.h"
 #include "pareto/weight_modulation.h"
 #include "pareto_fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -87,5 +87,5 @@ class TestWeightModulation : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestWeightModulation)
+MX_REGISTER_TEST(TestWeightModulation)
 #include "test_weight_modulation.moc"

@@ -2,7 +2,7 @@
 // reasons, advice vs constraint, three-valued conditions, and contradictions naming both rules.
 #include "rules/rule_evaluator.h"
 #include "rules/rule_parser.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -249,5 +249,5 @@ class TestRuleEvaluation : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestRuleEvaluation)
+MX_REGISTER_TEST(TestRuleEvaluation)
 #include "test_rule_evaluation.moc"

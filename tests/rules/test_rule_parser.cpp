@@ -1,7 +1,7 @@
 // The operator rule language (Module VII, Rule 18): lexer and parser. Every error of the language with
 // its exact line, column and message; the examples; and/or/not precedence; advice syntax.
 #include "rules/rule_parser.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -267,5 +267,5 @@ class TestRuleParser : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestRuleParser)
+MX_REGISTER_TEST(TestRuleParser)
 #include "test_rule_parser.moc"

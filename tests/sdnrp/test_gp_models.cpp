@@ -3,7 +3,7 @@
 
 #include "model/job_control.h"
 #include "sdnrp/gp_models.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -47,5 +47,5 @@ class TestGpModels : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGpModels)
+MX_REGISTER_TEST(TestGpModels)
 #include "test_gp_models.moc"

@@ -7,7 +7,7 @@
 #include "model/job_control.h"
 #include "sdnrp/gp_models.h"
 #include "sdnrp/sdnrp_simulator.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -135,5 +135,5 @@ class TestSdnrpSimulator : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSdnrpSimulator)
+MX_REGISTER_TEST(TestSdnrpSimulator)
 #include "test_sdnrp_simulator.moc"

@@ -3,7 +3,7 @@
 
 #include "model/job_control.h"
 #include "sdnrp/unmodelled_dynamics.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -46,5 +46,5 @@ class TestUnmodelledDynamics : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestUnmodelledDynamics)
+MX_REGISTER_TEST(TestUnmodelledDynamics)
 #include "test_unmodelled_dynamics.moc"

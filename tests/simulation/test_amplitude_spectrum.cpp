@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "simulation/amplitude_spectrum.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -81,5 +81,5 @@ class TestAmplitudeSpectrum : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestAmplitudeSpectrum)
+MX_REGISTER_TEST(TestAmplitudeSpectrum)
 #include "test_amplitude_spectrum.moc"

@@ -8,7 +8,7 @@
 #include "simulation/chatter_detection.h"
 #include "simulation/simulation.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -169,5 +169,5 @@ class TestChatterDetection : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestChatterDetection)
+MX_REGISTER_TEST(TestChatterDetection)
 #include "test_chatter_detection.moc"

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "simulation/cvode_integrator.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -80,5 +80,5 @@ class TestCvodeIntegrator : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCvodeIntegrator)
+MX_REGISTER_TEST(TestCvodeIntegrator)
 #include "test_cvode_integrator.moc"

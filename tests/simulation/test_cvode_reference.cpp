@@ -9,7 +9,7 @@
 #include "model/job_control.h"
 #include "simulation/simulation.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -137,5 +137,5 @@ class TestCvodeReference : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestCvodeReference)
+MX_REGISTER_TEST(TestCvodeReference)
 #include "test_cvode_reference.moc"

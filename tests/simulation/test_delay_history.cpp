@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "simulation/delay_history.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -81,5 +81,5 @@ class TestDelayHistory : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestDelayHistory)
+MX_REGISTER_TEST(TestDelayHistory)
 #include "test_delay_history.moc"

@@ -6,7 +6,7 @@
 #include "model/cutting_force.h"
 #include "simulation/engagement_plan.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -109,5 +109,5 @@ class TestEngagementPlan : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestEngagementPlan)
+MX_REGISTER_TEST(TestEngagementPlan)
 #include "test_engagement_plan.moc"

@@ -7,7 +7,7 @@
 #include "model/job_control.h"
 #include "simulation/amplitude_spectrum.h"
 #include "simulation/frequency_peaks.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -60,5 +60,5 @@ class TestFrequencyPeaks : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestFrequencyPeaks)
+MX_REGISTER_TEST(TestFrequencyPeaks)
 #include "test_frequency_peaks.moc"

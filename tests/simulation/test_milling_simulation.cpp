@@ -9,7 +9,7 @@
 #include "model/cutting_force.h"
 #include "simulation/simulation.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -309,5 +309,5 @@ class TestMillingSimulation : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestMillingSimulation)
+MX_REGISTER_TEST(TestMillingSimulation)
 #include "test_milling_simulation.moc"

@@ -4,7 +4,7 @@
 
 #include "simulation/modal_dynamics.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -64,5 +64,5 @@ class TestModalDynamics : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestModalDynamics)
+MX_REGISTER_TEST(TestModalDynamics)
 #include "test_modal_dynamics.moc"

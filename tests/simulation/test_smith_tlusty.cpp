@@ -5,7 +5,7 @@
 
 #include "model/job_control.h"
 #include "simulation/smith_tlusty.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -92,5 +92,5 @@ class TestSmithTlusty : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSmithTlusty)
+MX_REGISTER_TEST(TestSmithTlusty)
 #include "test_smith_tlusty.moc"

@@ -9,7 +9,7 @@
 #include "simulation/spindle_kinematics.h"
 #include "simulation/time_domain_simulator.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -167,5 +167,5 @@ class TestSpindleSpeedVariation : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSpindleSpeedVariation)
+MX_REGISTER_TEST(TestSpindleSpeedVariation)
 #include "test_spindle_speed_variation.moc"

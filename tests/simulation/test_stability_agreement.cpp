@@ -7,7 +7,7 @@
 #include "simulation/simulation.h"
 #include "stability/semi_discretization.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -106,5 +106,5 @@ class TestStabilityAgreement : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestStabilityAgreement)
+MX_REGISTER_TEST(TestStabilityAgreement)
 #include "test_stability_agreement.moc"

@@ -6,7 +6,7 @@
 #include "model/cutting_force.h"
 #include "simulation/time_domain_simulator.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -151,5 +151,5 @@ class TestTimeDomainSimulator : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestTimeDomainSimulator)
+MX_REGISTER_TEST(TestTimeDomainSimulator)
 #include "test_time_domain_simulator.moc"

@@ -7,7 +7,7 @@
 #include "stability/semi_discretization.h"
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -52,5 +52,5 @@ class TestMethodAgreement : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestMethodAgreement)
+MX_REGISTER_TEST(TestMethodAgreement)
 #include "test_method_agreement.moc"

@@ -14,7 +14,7 @@
 #include "stability/sdm_model.h"
 #include "stability/semi_discretization.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -441,5 +441,5 @@ class TestSemiDiscretization : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSemiDiscretization)
+MX_REGISTER_TEST(TestSemiDiscretization)
 #include "test_semi_discretization.moc"

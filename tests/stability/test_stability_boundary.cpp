@@ -3,7 +3,7 @@
 
 #include "model/job_control.h"
 #include "stability/stability_boundary.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -92,5 +92,5 @@ class TestStabilityBoundary : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestStabilityBoundary)
+MX_REGISTER_TEST(TestStabilityBoundary)
 #include "test_stability_boundary.moc"

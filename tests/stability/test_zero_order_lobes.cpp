@@ -4,7 +4,7 @@
 
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -114,5 +114,5 @@ class TestZeroOrderLobes : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestZeroOrderLobes)
+MX_REGISTER_TEST(TestZeroOrderLobes)
 #include "test_zero_order_lobes.moc"

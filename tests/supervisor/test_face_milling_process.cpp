@@ -5,7 +5,7 @@
 
 #include "model/job_control.h"
 #include "supervisor/face_milling_process.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -121,5 +121,5 @@ class TestFaceMillingProcess : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestFaceMillingProcess)
+MX_REGISTER_TEST(TestFaceMillingProcess)
 #include "test_face_milling_process.moc"

@@ -2,7 +2,7 @@
 // postfix complement a', comparisons on numeric signals, parse errors with line and column, the list
 // of signals read, and the indexed fast path agreeing with evaluation by name.
 #include "supervisor/grafcet_expression.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -145,5 +145,5 @@ class TestGrafcetExpression : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGrafcetExpression)
+MX_REGISTER_TEST(TestGrafcetExpression)
 #include "test_grafcet_expression.moc"

@@ -7,7 +7,7 @@
 
 #include "model/job_control.h"
 #include "supervisor/grafcet_interpreter.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -309,5 +309,5 @@ class TestGrafcetInterpreter : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGrafcetInterpreter)
+MX_REGISTER_TEST(TestGrafcetInterpreter)
 #include "test_grafcet_interpreter.moc"

@@ -1,7 +1,7 @@
 // Grafcet chart validation (issue 8): every error names its element (chart, step or transition, by
 // id and position) and field, and the message says what is wrong.
 #include "supervisor/grafcet_validation.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -126,5 +126,5 @@ class TestGrafcetValidation : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestGrafcetValidation)
+MX_REGISTER_TEST(TestGrafcetValidation)
 #include "test_grafcet_validation.moc"

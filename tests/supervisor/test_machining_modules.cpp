@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "supervisor/machining_modules.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -145,5 +145,5 @@ class TestMachiningModules : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestMachiningModules)
+MX_REGISTER_TEST(TestMachiningModules)
 #include "test_machining_modules.moc"

@@ -4,7 +4,7 @@
 #include <atomic>
 
 #include "supervisor/marginal_depth.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -45,5 +45,5 @@ class TestMarginalDepth : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestMarginalDepth)
+MX_REGISTER_TEST(TestMarginalDepth)
 #include "test_marginal_depth.moc"

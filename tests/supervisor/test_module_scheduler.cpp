@@ -2,7 +2,7 @@
 // actions switch modules on and off, impulse "X*" resets module X once.
 #include "model/job_control.h"
 #include "supervisor/module_scheduler.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -105,5 +105,5 @@ class TestModuleScheduler : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestModuleScheduler)
+MX_REGISTER_TEST(TestModuleScheduler)
 #include "test_module_scheduler.moc"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "supervisor/supervision_run.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -182,5 +182,5 @@ class TestSupervisionRun : public QObject {
   }
 };
 
-MX_TEST_MAIN(TestSupervisionRun)
+MX_REGISTER_TEST(TestSupervisionRun)
 #include "test_supervision_run.moc"

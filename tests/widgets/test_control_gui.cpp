@@ -16,7 +16,7 @@
 #include "main_window.h"
 #include "part_program_panel.h"
 #include "surface_finish_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -107,5 +107,5 @@ class TestControlGui : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestControlGui, QApplication)
+MX_REGISTER_TEST(TestControlGui)
 #include "test_control_gui.moc"

@@ -7,7 +7,7 @@
 #include <QSignalSpy>
 
 #include "control_settings_editor.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::ControllerSettingsView;
 using mx::widgets::ControlSettingsEditor;
@@ -201,5 +201,5 @@ class TestControlSettingsEditor : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestControlSettingsEditor, QApplication)
+MX_REGISTER_TEST(TestControlSettingsEditor)
 #include "test_control_settings_editor.moc"

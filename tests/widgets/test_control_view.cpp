@@ -17,7 +17,7 @@
 #include "control_view.h"
 #include "jc_curve_plot.h"
 #include "pole_zero_plot.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
 
@@ -374,5 +374,5 @@ class TestControlView : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestControlView, QApplication)
+MX_REGISTER_TEST(TestControlView)
 #include "test_control_view.moc"

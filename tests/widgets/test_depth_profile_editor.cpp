@@ -7,7 +7,7 @@
 #include <QTableWidget>
 
 #include "depth_profile_editor.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::DepthProfileEditor;
 using mx::widgets::DepthStepView;
@@ -157,5 +157,5 @@ class TestDepthProfileEditor : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestDepthProfileEditor, QApplication)
+MX_REGISTER_TEST(TestDepthProfileEditor)
 #include "test_depth_profile_editor.moc"

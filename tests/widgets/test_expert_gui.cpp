@@ -9,7 +9,7 @@
 #include "expert_runner.h"
 #include "main_window.h"
 #include "ranking_table.h"
-#include "test_main.h"
+#include "test_registry.h"
 #include "weights_panel.h"
 
 using namespace mx;
@@ -77,5 +77,5 @@ class TestExpertGui : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestExpertGui, QApplication)
+MX_REGISTER_TEST(TestExpertGui)
 #include "test_expert_gui.moc"

@@ -11,7 +11,7 @@
 
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
 
@@ -137,5 +137,5 @@ class TestGrafcetChartEditor : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestGrafcetChartEditor, QApplication)
+MX_REGISTER_TEST(TestGrafcetChartEditor)
 #include "test_grafcet_chart_editor.moc"

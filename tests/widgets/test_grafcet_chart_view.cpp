@@ -1,6 +1,7 @@
 // GrafcetChartView (issue 8): the automatic layout gives every step and transition a rect, steps never
 // overlap, levels follow the BFS from the initial step, upward arcs are back arcs; the initial step is
 // drawn double; tokens round trip; clicks emit the element's id; the PNG export draws the chart.
+#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
 #include <QSignalSpy>
@@ -8,7 +9,7 @@
 #include <cmath>
 
 #include "grafcet_chart_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
 
@@ -139,7 +140,8 @@ class TestGrafcetChartView : public QObject {
     view.setChart(smc2Chart());
     view.setActiveSteps({4});
     view.setSelected(-1, 6);
-    const QString path = QStringLiteral("/tmp/h8w/grafcet_smc2.png");
+    const QTemporaryDir dir;
+    const QString path = dir.filePath("grafcet_smc2.png");
     QVERIFY(view.saveImage(path, 1400, 1000));
     QImage image(path);
     QCOMPARE(image.size(), QSize(1400, 1000));
@@ -152,5 +154,5 @@ class TestGrafcetChartView : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestGrafcetChartView, QApplication)
+MX_REGISTER_TEST(TestGrafcetChartView)
 #include "test_grafcet_chart_view.moc"

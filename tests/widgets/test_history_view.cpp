@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -14,7 +15,7 @@
 #include <limits>
 
 #include "history_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::HistoryFilter;
 using mx::widgets::HistoryRow;
@@ -354,8 +355,9 @@ class TestHistoryView : public QObject {
     view.refreshButton()->click();
     QCOMPARE(refresh.count(), 1);
     QCOMPARE(changed.count(), 0);
-    view.setStatus("/tmp/learning.sqlite: 3 points");
-    QCOMPARE(view.statusLabel()->text(), QString("/tmp/learning.sqlite: 3 points"));
+    const QString status = QDir::temp().filePath("learning.sqlite") + ": 3 points";
+    view.setStatus(status);
+    QCOMPARE(view.statusLabel()->text(), status);
   }
 
   void everyControlHasATooltip() {
@@ -369,5 +371,5 @@ class TestHistoryView : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestHistoryView, QApplication)
+MX_REGISTER_TEST(TestHistoryView)
 #include "test_history_view.moc"

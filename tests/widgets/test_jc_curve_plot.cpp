@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "jc_curve_plot.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::JcCurvePlot;
 using mx::widgets::JcCurveView;
@@ -160,5 +160,5 @@ class TestJcCurvePlot : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestJcCurvePlot, QApplication)
+MX_REGISTER_TEST(TestJcCurvePlot)
 #include "test_jc_curve_plot.moc"

@@ -11,7 +11,7 @@
 #include "display_units.h"
 #include "machine_operation_panel.h"
 #include "project_document.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::app::Project;
 using mx::widgets::MachineOperationPanel;
@@ -167,5 +167,5 @@ class TestMachineOperationPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestMachineOperationPanel, QApplication)
+MX_REGISTER_TEST(TestMachineOperationPanel)
 #include "test_machine_operation_panel.moc"

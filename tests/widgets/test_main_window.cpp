@@ -12,7 +12,7 @@
 #include "project/project_validation.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -209,5 +209,5 @@ class TestMainWindow : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestMainWindow, QApplication)
+MX_REGISTER_TEST(TestMainWindow)
 #include "test_main_window.moc"

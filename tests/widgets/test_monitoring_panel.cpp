@@ -10,7 +10,7 @@
 
 #include "indicator_gauge.h"
 #include "monitoring_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::IndicatorGauge;
 using mx::widgets::MonitoringPanel;
@@ -263,5 +263,5 @@ class TestMonitoringPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestMonitoringPanel, QApplication)
+MX_REGISTER_TEST(TestMonitoringPanel)
 #include "test_monitoring_panel.moc"

@@ -9,7 +9,7 @@
 
 #include "operator_rules_editor.h"
 #include "rules/rule_parser.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::OperatorRulesEditor;
 
@@ -108,5 +108,5 @@ class TestOperatorRulesEditor : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestOperatorRulesEditor, QApplication)
+MX_REGISTER_TEST(TestOperatorRulesEditor)
 #include "test_operator_rules_editor.moc"

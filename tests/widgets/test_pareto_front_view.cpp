@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "pareto_front_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::ParetoFrontView;
 using mx::widgets::ParetoPointView;
@@ -132,5 +132,5 @@ class TestParetoFrontView : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestParetoFrontView, QApplication)
+MX_REGISTER_TEST(TestParetoFrontView)
 #include "test_pareto_front_view.moc"

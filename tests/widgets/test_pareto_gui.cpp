@@ -21,7 +21,7 @@
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -197,5 +197,5 @@ class TestParetoGui : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestParetoGui, QApplication)
+MX_REGISTER_TEST(TestParetoGui)
 #include "test_pareto_gui.moc"

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "pareto_weights_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::ParetoWeightsPanel;
 using W4 = std::array<double, 4>;
@@ -110,5 +110,5 @@ class TestParetoWeightsPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestParetoWeightsPanel, QApplication)
+MX_REGISTER_TEST(TestParetoWeightsPanel)
 #include "test_pareto_weights_panel.moc"

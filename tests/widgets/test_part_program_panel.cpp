@@ -3,6 +3,7 @@
 // their activation, the buttons and signals, and a 100 000-block program set in well under a second.
 #include <QApplication>
 #include <QCheckBox>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QHeaderView>
 #include <QListWidget>
@@ -11,7 +12,7 @@
 #include <QTableView>
 
 #include "part_program_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::PartProgramPanel;
 using mx::widgets::PartProgramRow;
@@ -62,8 +63,11 @@ QColor background(const PartProgramPanel& p, int r, int c) {
   return p.table()->model()->index(r, c).data(Qt::BackgroundRole).value<QColor>();
 }
 
+// A display path inside the test's temporary folder (the runner's TMPDIR); the file is never opened.
+QString programPath(const QString& name) { return QDir::temp().filePath(name); }
+
 void loadSample(PartProgramPanel& panel, const QString& unit = "mm/min") {
-  panel.setProgram("/tmp/part.nc", sampleRows(), sampleWarnings(), unit, "Fanuc");
+  panel.setProgram(programPath("part.nc"), sampleRows(), sampleWarnings(), unit, "Fanuc");
 }
 
 }  // namespace
@@ -117,7 +121,7 @@ class TestPartProgramPanel : public QObject {
     QCOMPARE(panel.rows().size(), 7);
     QCOMPARE(panel.table()->model()->rowCount(), 7);
     QCOMPARE(panel.changedCount(), 3);
-    QCOMPARE(panel.headerText(), QString("/tmp/part.nc \u2014 controller: Fanuc \u2014 3 of 7 blocks changed"));
+    QCOMPARE(panel.headerText(), QString(programPath("part.nc") + " \u2014 controller: Fanuc \u2014 3 of 7 blocks changed"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kLine), QString("4"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kBlock), QString("G1 X50 Z-2 F1200"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kFeed), QString("1200"));
@@ -275,7 +279,7 @@ class TestPartProgramPanel : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     QElapsedTimer clock;
     clock.start();
-    panel.setProgram("/tmp/big.nc", rows, {{50000, 1, "G1", "no feed"}}, "mm/min", "Heidenhain");
+    panel.setProgram(programPath("big.nc"), rows, {{50000, 1, "G1", "no feed"}}, "mm/min", "Heidenhain");
     QCoreApplication::processEvents();  // includes the repaint
     const qint64 ms = clock.elapsed();
     qInfo("setProgram with %d rows: %lld ms", kRows, static_cast<long long>(ms));
@@ -294,5 +298,5 @@ class TestPartProgramPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestPartProgramPanel, QApplication)
+MX_REGISTER_TEST(TestPartProgramPanel)
 #include "test_part_program_panel.moc"

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "pole_zero_plot.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::PoleZeroPlot;
 using mx::widgets::PoleZeroView;
@@ -96,5 +96,5 @@ class TestPoleZeroPlot : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestPoleZeroPlot, QApplication)
+MX_REGISTER_TEST(TestPoleZeroPlot)
 #include "test_pole_zero_plot.moc"

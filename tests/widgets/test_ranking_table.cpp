@@ -16,7 +16,7 @@
 #include "project/project.h"
 #include "ranking_table.h"
 #include "ranking_table_model.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::RankingRow;
 using mx::widgets::RankingTable;
@@ -242,5 +242,5 @@ class TestRankingTable : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestRankingTable, QApplication)
+MX_REGISTER_TEST(TestRankingTable)
 #include "test_ranking_table.moc"

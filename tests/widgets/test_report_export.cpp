@@ -18,7 +18,7 @@
 #include "report_builder.h"
 #include "report_data.h"
 #include "report_writer.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::gui;
 
@@ -147,5 +147,5 @@ class TestReportExport : public QObject {
   QString html_, pdf_;
 };
 
-MX_TEST_MAIN_WITH_APP(TestReportExport, QApplication)
+MX_REGISTER_TEST(TestReportExport)
 #include "test_report_export.moc"

@@ -13,7 +13,7 @@
 
 #include "indicator_gauge.h"
 #include "requirements_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::IndicatorGauge;
 using mx::widgets::RequirementsPanel;
@@ -263,5 +263,5 @@ class TestRequirementsPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestRequirementsPanel, QApplication)
+MX_REGISTER_TEST(TestRequirementsPanel)
 #include "test_requirements_panel.moc"

@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "ring_buffer.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::RingBuffer;
 
@@ -63,5 +63,5 @@ class TestRingBuffer : public QObject {
   void zeroCapacityIsRefused() { QVERIFY_THROWS_EXCEPTION(std::invalid_argument, RingBuffer<double>(0)); }
 };
 
-MX_TEST_MAIN(TestRingBuffer)
+MX_REGISTER_TEST(TestRingBuffer)
 #include "test_ring_buffer.moc"

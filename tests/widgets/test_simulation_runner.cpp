@@ -9,7 +9,7 @@
 
 #include "simulation_runner.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::gui::SimulationChunkData;
 using mx::gui::SimulationRunner;
@@ -238,5 +238,5 @@ class TestSimulationRunner : public QObject {
   QThreadPool pool_;
 };
 
-MX_TEST_MAIN(TestSimulationRunner)
+MX_REGISTER_TEST(TestSimulationRunner)
 #include "test_simulation_runner.moc"

@@ -9,7 +9,7 @@
 #include "simulation_runner.h"
 #include "simulation_view.h"
 #include "support/fixtures.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::gui::SimulationChunkData;
 using mx::gui::SimulationSummary;
@@ -177,5 +177,5 @@ class TestSimulationView : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSimulationView, QApplication)
+MX_REGISTER_TEST(TestSimulationView)
 #include "test_simulation_view.moc"

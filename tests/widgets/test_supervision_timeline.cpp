@@ -1,12 +1,13 @@
 // SupervisionTimeline (issue 8): streamed F_Y / power chunks add up, the power limit and F_ref lines
 // span the data, module spans fill the A-L rows, events are counted and answer a tooltip; the PNG
 // export of a synthetic SMC II run.
+#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
 #include <cmath>
 
 #include "supervision_timeline.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
 
@@ -103,11 +104,12 @@ class TestSupervisionTimeline : public QObject {
     view.appendSeries(series(6, 12));
     view.setModuleSpans(spans());
     view.appendEvents(events());
-    const QString path = QStringLiteral("/tmp/h8w/supervision_timeline.png");
+    const QTemporaryDir dir;
+    const QString path = dir.filePath("supervision_timeline.png");
     QVERIFY(view.saveImage(path, 1400, 900));
     QCOMPARE(QImage(path).size(), QSize(1400, 900));
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSupervisionTimeline, QApplication)
+MX_REGISTER_TEST(TestSupervisionTimeline)
 #include "test_supervision_timeline.moc"

@@ -1,12 +1,13 @@
 // SupervisorComparison (issue 8): three columns none | SMC I | SMC II, each with its F_Y/power plot
 // and its metric texts; the PNG export of the paper-like outcome.
+#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
 #include <QTableWidget>
 #include <cmath>
 
 #include "supervisor_comparison.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
 
@@ -86,11 +87,12 @@ class TestSupervisorComparison : public QObject {
     view.setResult("none", run(1390, 0.6, 99, 6), metrics("none", 224.0, 0, std::nullopt, 1, 5.9));
     view.setResult("smc1", run(620, -1, 99, 10), metrics("smc1", 99.6, 28.4, std::nullopt, 2, 10.2));
     view.setResult("smc2", run(600, 1.5, 2.5, 8), metrics("smc2", 98.4, 113.2, 2.5, 2, 11.73));
-    const QString path = QStringLiteral("/tmp/h8w/supervisor_comparison.png");
+    const QTemporaryDir dir;
+    const QString path = dir.filePath("supervisor_comparison.png");
     QVERIFY(view.saveImage(path, 1500, 800));
     QCOMPARE(QImage(path).size(), QSize(1500, 800));
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSupervisorComparison, QApplication)
+MX_REGISTER_TEST(TestSupervisorComparison)
 #include "test_supervisor_comparison.moc"

@@ -16,7 +16,7 @@
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
 #include "supervisor_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx;
 
@@ -149,5 +149,5 @@ class TestSupervisorGui : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSupervisorGui, QApplication)
+MX_REGISTER_TEST(TestSupervisorGui)
 #include "test_supervisor_gui.moc"

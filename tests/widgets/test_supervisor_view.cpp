@@ -2,9 +2,11 @@
 // the controller combo (signal on user change only), the running state, speed, metrics and the tabs.
 #include <QApplication>
 #include <QComboBox>
+#include <QImage>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "grafcet_chart_editor.h"
@@ -12,9 +14,19 @@
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
 #include "supervisor_view.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using namespace mx::widgets;
+
+namespace {
+int darkPixels(const QImage& image) {
+  int dark = 0;
+  for (int y = 0; y < image.height(); y += 2)
+    for (int x = 0; x < image.width(); x += 2)
+      if (qGray(image.pixel(x, y)) < 128) ++dark;
+  return dark;
+}
+}  // namespace
 
 class TestSupervisorView : public QObject {
   Q_OBJECT
@@ -140,11 +152,18 @@ class TestSupervisorView : public QObject {
     view.chartView()->setActiveSteps({4});
     view.resize(1800, 900);
     view.show();
-    QVERIFY(view.grab().save("/tmp/h8w/supervisor_view.png"));
+    const QImage chart = view.grab().toImage();
+    QCOMPARE(chart.size(), QSize(1800, 900));
+    QVERIFY(darkPixels(chart) > 2000);  // text, chart boxes and plot axes are drawn
     view.tabs()->setCurrentIndex(2);
-    QVERIFY(view.grab().save("/tmp/h8w/supervisor_editor.png"));
+    const QImage editor = view.grab().toImage();
+    QVERIFY(darkPixels(editor) > 2000);
+    QVERIFY(editor != chart);
+    const QTemporaryDir dir;
+    QVERIFY(editor.save(dir.filePath("supervisor_editor.png")));
+    QCOMPARE(QImage(dir.filePath("supervisor_editor.png")).size(), editor.size());
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSupervisorView, QApplication)
+MX_REGISTER_TEST(TestSupervisorView)
 #include "test_supervisor_view.moc"

@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "surface_finish_panel.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::SurfaceFinishPanel;
 using mx::widgets::SurfaceFinishSample;
@@ -275,5 +275,5 @@ class TestSurfaceFinishPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestSurfaceFinishPanel, QApplication)
+MX_REGISTER_TEST(TestSurfaceFinishPanel)
 #include "test_surface_finish_panel.moc"

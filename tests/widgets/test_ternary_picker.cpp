@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "ternary_picker.h"
-#include "test_main.h"
+#include "test_registry.h"
 
 using mx::widgets::TernaryPicker;
 using W3 = std::array<double, 3>;
@@ -125,5 +125,5 @@ class TestTernaryPicker : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestTernaryPicker, QApplication)
+MX_REGISTER_TEST(TestTernaryPicker)
 #include "test_ternary_picker.moc"

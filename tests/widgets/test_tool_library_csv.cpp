@@ -6,7 +6,7 @@
 #include <QTemporaryDir>
 
 #include "project/project.h"
-#include "test_main.h"
+#include "test_registry.h"
 #include "tool_library_csv.h"
 #include "tool_library_editor.h"
 
@@ -228,5 +228,5 @@ class TestToolLibraryCsv : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestToolLibraryCsv, QApplication)
+MX_REGISTER_TEST(TestToolLibraryCsv)
 #include "test_tool_library_csv.moc"

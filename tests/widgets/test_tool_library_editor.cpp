@@ -8,7 +8,7 @@
 
 #include "display_units.h"
 #include "project_document.h"
-#include "test_main.h"
+#include "test_registry.h"
 #include "tool_library_editor.h"
 
 using mx::app::Project;
@@ -292,5 +292,5 @@ class TestToolLibraryEditor : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestToolLibraryEditor, QApplication)
+MX_REGISTER_TEST(TestToolLibraryEditor)
 #include "test_tool_library_editor.moc"

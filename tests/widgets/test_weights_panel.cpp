@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "ternary_picker.h"
-#include "test_main.h"
+#include "test_registry.h"
 #include "weights_panel.h"
 
 using mx::CostWeights;
@@ -218,5 +218,5 @@ class TestWeightsPanel : public QObject {
   }
 };
 
-MX_TEST_MAIN_WITH_APP(TestWeightsPanel, QApplication)
+MX_REGISTER_TEST(TestWeightsPanel)
 #include "test_weights_panel.moc"

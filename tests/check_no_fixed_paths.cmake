@@ -1,0 +1,27 @@
+# Fails when a test source names a fixed absolute path under the temporary, home or system folders:
+# tests write only below their own QTemporaryDir (the runner points HOME and TMPDIR there).
+#   cmake -DSCAN_DIR=dir [-DEXCLUDE_DIR=dir] -P check_no_fixed_paths.cmake
+cmake_minimum_required(VERSION 3.25)
+file(GLOB_RECURSE _sources ${SCAN_DIR}/*.cpp ${SCAN_DIR}/*.h ${SCAN_DIR}/*.cmake ${SCAN_DIR}/*.txt
+     ${SCAN_DIR}/*.sh)
+set(_pattern "(^|[^A-Za-z0-9_./}])/(tmp|home|root|var)([^A-Za-z0-9_]|$)")
+set(_report "")
+set(_checked 0)
+foreach(_src IN LISTS _sources)
+  if(EXCLUDE_DIR AND _src MATCHES "^${EXCLUDE_DIR}/")
+    continue()
+  endif()
+  math(EXPR _checked "${_checked} + 1")
+  file(STRINGS ${_src} _hits REGEX "${_pattern}")
+  foreach(_hit IN LISTS _hits)
+    string(STRIP "${_hit}" _hit)
+    string(APPEND _report "\n  ${_src}: ${_hit}")
+  endforeach()
+endforeach()
+if(_checked EQUAL 0)
+  message(FATAL_ERROR "no test sources found under ${SCAN_DIR}")
+endif()
+if(_report)
+  message(FATAL_ERROR "fixed absolute path in test sources (use a QTemporaryDir):${_report}")
+endif()
+message(STATUS "no fixed absolute paths: ${_checked} test sources checked")
