@@ -104,10 +104,12 @@ class TestLearningDatabase : public QObject {
 
   void defaultPathIsTheApplicationsDataFolder() {
     const QString appName = QCoreApplication::applicationName();
+    const bool test_mode = QStandardPaths::isTestModeEnabled();
     QStandardPaths::setTestModeEnabled(true);
     const QString path = LearningDatabase::defaultPath();
-    QStandardPaths::setTestModeEnabled(false);
+    QStandardPaths::setTestModeEnabled(test_mode);
     QVERIFY2(path.endsWith("MillExpert/MillExpert/learning.sqlite"), qPrintable(path));
+    QVERIFY2(path.startsWith(QDir::homePath() + "/"), qPrintable(path));  // the runner's private HOME
     QCOMPARE(QCoreApplication::applicationName(), appName);  // restored
   }
 
