@@ -9,11 +9,15 @@
 
 namespace {
 
-QString rootOf(const QString& path) {
-  QDir dir(path);
-  while (!dir.dirName().startsWith("mx-test-") && dir.cdUp()) {
+// The enclosing "mx-test-*" folder of `path` (which need not exist yet), or "" when there is none.
+QString rootOf(QString path) {
+  path = QDir::cleanPath(path);
+  while (!QFileInfo(path).fileName().startsWith("mx-test-")) {
+    const QString parent = QFileInfo(path).path();
+    if (parent == path) return {};
+    path = parent;
   }
-  return dir.dirName().startsWith("mx-test-") ? dir.absolutePath() : QString();
+  return path;
 }
 
 }  // namespace
