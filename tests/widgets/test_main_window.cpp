@@ -2,8 +2,10 @@
 // engine's values), save/reopen, autosave recovery after a simulated crash, undo of a point move,
 // and a responsive event loop while the engine thread computes.
 #include <QApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <cmath>
 
@@ -158,6 +160,21 @@ class TestMainWindow : public QObject {
     QVERIFY(window.document()->isDirty());  // recovered, not yet saved
     window.document()->undoStack()->undo();  // back to the file's content
     QCOMPARE(window.project()->machine->spindle_power_W, 745.3);
+  }
+
+  void untitledAutosaveGoesToTheDataFolder() {  // below the runner's private HOME, never a fixed path
+    gui::ProjectDocument document;
+    document.newProject();
+    app::Project edited = document.project();
+    edited.name = "untitled edit";
+    QCOMPARE(document.applyEdit(edited, "name"), QString());
+    document.writeAutosave();
+    const QString autosave = document.autosavePath();
+    QVERIFY2(QFile::exists(autosave), qPrintable(autosave));
+    QVERIFY2(autosave.startsWith(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/"),
+             qPrintable(autosave));
+    QVERIFY2(autosave.startsWith(QDir::homePath() + "/"), qPrintable(autosave));
+    QVERIFY(QFile::remove(autosave));
   }
 
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
