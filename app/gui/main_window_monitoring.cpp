@@ -21,11 +21,7 @@ namespace mx::gui {
 
 namespace {
 
-QStringList rulesOf(const app::Project& p) {
-  QStringList out;
-  for (const QJsonValue& v : p.document.value("operator_rules").toArray()) out << v.toString();
-  return out;
-}
+QStringList rulesOf(const app::Project& p) { return p.operator_rules.value_or(QStringList{}); }
 
 std::optional<double> finiteOrNone(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
@@ -130,9 +126,9 @@ void MainWindow::refreshHistory() {
 void MainWindow::onRulesEdited(const QStringList& rules) {
   app::Project edited = doc_.project();
   if (rules.isEmpty())
-    edited.document.remove("operator_rules");
+    edited.operator_rules.reset();
   else
-    edited.document.insert("operator_rules", QJsonArray::fromStringList(rules));
+    edited.operator_rules = rules;
   const QString error = doc_.applyEdit(edited, tr("Edit operator rules"));
   if (!error.isEmpty()) showError(tr("Operator rules refused"), error);
 }

@@ -3,11 +3,13 @@
 // Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "model/milling_setup.h"
+#include "project/process_sections.h"
 
 namespace mx::app {
 
@@ -37,6 +39,7 @@ struct ToolSpec {
 };
 
 struct MachineSpec {
+  std::optional<QString> name;  // shown to operator rules as machine.name
   double spindle_power_W = 0.0;
   std::optional<double> max_spindle_rpm;  // no limit when absent
   std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
@@ -61,6 +64,7 @@ struct ExpertGridSpec {
   double speed_step_rpm = 100.0;
   int depth_divisions = 10;
   double feed_step_mm = 0.01;
+  std::optional<bool> modal_candidate_speeds;  // add the Rule 7.2 speeds; default true
 };
 
 struct ExpertSpec {
@@ -71,6 +75,8 @@ struct ExpertSpec {
   std::vector<double> ct{0.5, 0.5};
   std::vector<double> cf{0.5, 0.5};
   std::optional<ExpertGridSpec> grid;
+  std::optional<QString> method;          // "zoa" (default) or "sdm"
+  std::optional<int> simulated_points;    // K of Rule 5, [1, 1000], default 12
 };
 
 struct Project {
@@ -80,6 +86,13 @@ struct Project {
   std::optional<OperationSpec> operation;
   std::vector<ToolSpec> tools;
   std::optional<ExpertSpec> expert;
+  std::optional<ControlSection> control;
+  std::optional<SdnrpSection> sdnrp;
+  std::optional<ForceControlSection> force_control;
+  std::optional<PartProgramSection> part_program;
+  std::optional<SupervisorSection> supervisor;
+  std::optional<ParetoSection> pareto;
+  std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
   QJsonObject document;  // the JSON as loaded; unknown keys at every level survive a save
 
   const ToolSpec* findTool(const QString& id) const;  // nullptr when absent

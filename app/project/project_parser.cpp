@@ -4,6 +4,7 @@
 
 #include "project/json_reader.h"
 #include "project/project.h"
+#include "project/project_sections_io.h"
 #include "project/project_validation.h"
 
 namespace mx::app {
@@ -34,6 +35,7 @@ void readHeader(const ObjectReader& root) {
 
 MachineSpec readMachine(const ObjectReader& r) {
   MachineSpec m;
+  m.name = r.optionalString("name");
   m.spindle_power_W = r.number("spindle_power_W", rules::kPositive);
   m.max_spindle_rpm = r.optionalNumber("max_spindle_rpm");
   m.max_feed_mm_s = r.optionalNumber("max_feed_mm_s");
@@ -112,6 +114,7 @@ ExpertSpec readExpert(const ObjectReader& r) {
   if (auto ct = r.optionalNumbers("ct")) e.ct = *ct;
   if (auto cf = r.optionalNumbers("cf")) e.cf = *cf;
   if (auto grid = r.optionalObject("grid")) e.grid = readGrid(*grid);
+  readExpertExtras(r, e);
   return e;
 }
 
@@ -129,6 +132,7 @@ Project projectFromJson(const QJsonObject& root) {
     for (qsizetype i = 0; i < tools->size(); ++i) p.tools.push_back(readTool(elementObject(*tools, i, "tools")));
   }
   if (auto expert = r.optionalObject("expert")) p.expert = readExpert(*expert);
+  readProcessSections(r, p);
   p.document = root;
   validateProject(p);
   return p;

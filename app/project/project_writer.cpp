@@ -3,25 +3,11 @@
 #include <QJsonArray>
 
 #include "project/project.h"
+#include "project/project_sections_io.h"
 
 namespace mx::app {
 
 namespace {
-
-// Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
-void putNumber(QJsonObject& o, const QString& key, double value) {
-  const QJsonValue old = o.value(key);
-  if (old.isDouble() && old.toDouble() == value) return;
-  o.insert(key, value);
-}
-
-void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value) {
-  if (value) {
-    putNumber(o, key, *value);
-  } else {
-    o.remove(key);
-  }
-}
 
 QJsonObject objectAt(const QJsonArray& array, std::size_t index) {
   const auto i = static_cast<qsizetype>(index);
@@ -71,6 +57,11 @@ QJsonObject toolJson(QJsonObject t, const ToolSpec& tool) {
 }
 
 QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
+  if (m.name) {
+    o.insert("name", *m.name);
+  } else {
+    o.remove("name");
+  }
   putNumber(o, "spindle_power_W", m.spindle_power_W);
   putOptional(o, "max_spindle_rpm", m.max_spindle_rpm);
   putOptional(o, "max_feed_mm_s", m.max_feed_mm_s);
@@ -114,6 +105,7 @@ QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
   } else {
     o.remove("grid");
   }
+  putExpertExtras(o, e);
   return o;
 }
 
@@ -143,6 +135,7 @@ QJsonObject projectToJson(const Project& project) {
     root.insert("tools", tools);
   }
   putSection(root, "expert", project.expert, expertJson);
+  putProcessSections(root, project);
   return root;
 }
 
