@@ -5,6 +5,7 @@
 
 #include "model/job_control.h"
 #include "project/project_rules.h"
+#include "project/project_validation.h"
 
 namespace mx::app {
 
@@ -27,19 +28,15 @@ QString resetName(CovarianceReset r) {
   return "none";
 }
 
-// Default engagement from the operation: full immersion, or the radial immersion a/D for up (from 0)
-// or down milling (to pi).
-void engagementFromOperation(const Project& p, CuttingProcess& c) {
-  if (!p.operation || !p.operation->radial_immersion) return;
-  const double ratio = *p.operation->radial_immersion;
-  const double phi = std::acos(std::clamp(1.0 - 2.0 * ratio, -1.0, 1.0));
-  if (p.operation->milling == MillingDirection::Down) {
-    c.start_angle_rad = std::numbers::pi - phi;
-    c.exit_angle_rad = std::numbers::pi;
-  } else {
-    c.start_angle_rad = 0.0;
-    c.exit_angle_rad = phi;
-  }
+// Default engagement: the engine's immersion of the tool's radial depth (tool.radial_depth_mm, else
+// the operation's), as for the stability model; full immersion without an operation.
+void engagementOf(const Project& p, const ToolSpec& tool, CuttingProcess& c) {
+  if (!p.operation) return;
+  const std::optional<double> depth_mm = radialDepthMm(p, tool);
+  if (!depth_mm) return;
+  const Immersion im = Immersion::fromRadialDepth(*depth_mm * 1e-3, tool.diameter_mm * 1e-3, p.operation->milling);
+  c.start_angle_rad = im.entry_rad;
+  c.exit_angle_rad = im.exit_rad;
 }
 
 }  // namespace
@@ -59,7 +56,7 @@ ControlRequest controlRequestFrom(const ControlSection& c, const Project& projec
   const double kt = project.material ? project.material->Kt_N_mm2 : 0.0;
   if (!c.cutting_pressure_N_mm2 && !(kt > 0.0)) throwMissingField("control.cutting_pressure_N_mm2", "in (0, 1e6]");
   p.cutting_pressure_Pa = c.cutting_pressure_N_mm2.value_or(kt) * 1e6;
-  engagementFromOperation(project, p);
+  engagementOf(project, *tool, p);
   p.start_angle_rad = c.start_angle_deg.value_or(p.start_angle_rad / kDeg) * kDeg;
   p.exit_angle_rad = c.exit_angle_deg.value_or(p.exit_angle_rad / kDeg) * kDeg;
   if (!(p.exit_angle_rad > p.start_angle_rad))

@@ -6,6 +6,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
+#include <cmath>
+#include <numbers>
 
 #include "cli/control_request.h"
 #include "cli/sdnrp_request.h"
@@ -135,6 +137,30 @@ class TestProjectSections : public QObject {
     QFETCH(QString, message);
     const QJsonObject value = QJsonDocument::fromJson(json.toUtf8()).object();
     QCOMPARE(errorOf(minimalWith(section, value)), message);
+  }
+
+  void controlEngagementIsTheEngineImmersion() {
+    Project p = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
+    p.control->start_angle_deg.reset();
+    p.control->exit_angle_deg.reset();
+    p.operation->milling = MillingDirection::Up;
+    p.operation->radial_immersion = 0.5;
+    p.operation->radial_depth_mm.reset();
+    const double deg = std::numbers::pi / 180.0;
+    CuttingProcess c = controlRequestFromProject(p).settings.process;
+    QCOMPARE(c.start_angle_rad, 0.0);
+    QVERIFY(std::abs(c.exit_angle_rad - 90.0 * deg) < 1e-12);
+    // The tool's own radial depth wins over the operation's, as in the stability model.
+    p.tools[0].radial_depth_mm = 0.25 * p.tools[0].diameter_mm;
+    c = controlRequestFromProject(p).settings.process;
+    QVERIFY(std::abs(c.exit_angle_rad - 60.0 * deg) < 1e-12);
+    p.operation->milling = MillingDirection::Down;
+    c = controlRequestFromProject(p).settings.process;
+    QVERIFY(std::abs(c.start_angle_rad - 120.0 * deg) < 1e-12);
+    QVERIFY(std::abs(c.exit_angle_rad - 180.0 * deg) < 1e-12);
+    const Immersion im = p.setupFor(p.tools[0].id).immersion;
+    QCOMPARE(c.start_angle_rad, im.entry_rad);
+    QCOMPARE(c.exit_angle_rad, im.exit_rad);
   }
 
   void expertExtrasAreChecked() {
