@@ -21,9 +21,12 @@ CovarianceReset resetOf(const QString& r) {
 
 QString resetName(CovarianceReset r) {
   switch (r) {
-    case CovarianceReset::ErrorFraction: return "error";
-    case CovarianceReset::Trace: return "trace";
-    case CovarianceReset::None: break;
+    case CovarianceReset::ErrorFraction:
+      return "error";
+    case CovarianceReset::Trace:
+      return "trace";
+    case CovarianceReset::None:
+      break;
   }
   return "none";
 }

@@ -4,7 +4,9 @@
 
 namespace mx::app {
 
-SpeedGrid LobeInputs::grid() const { return {rpmToRevPerS(from_rpm), rpmToRevPerS(to_rpm), rpmToRevPerS(step_rpm)}; }
+SpeedGrid LobeInputs::grid() const {
+  return {rpmToRevPerS(from_rpm), rpmToRevPerS(to_rpm), rpmToRevPerS(step_rpm)};
+}
 
 LobeInputs lobeInputsFrom(const Project& project, double step_rpm) {
   LobeInputs in;

@@ -33,8 +33,8 @@ struct ControlRlsSpec {
 
 // "control": adaptive force control under beta-FROH.
 struct ControlSection {
-  std::optional<QString> tool;  // default the first tool
-  std::optional<double> spindle_rpm;  // required
+  std::optional<QString> tool;                   // default the first tool
+  std::optional<double> spindle_rpm;             // required
   std::optional<double> cutting_pressure_N_mm2;  // default material.Kt_N_mm2
   std::optional<double> start_angle_deg;
   std::optional<double> exit_angle_deg;

@@ -24,6 +24,7 @@ struct ModeSpec {
   double freq_Hz = 0.0;
   double damping_pct = 0.0;
   double stiffness_N_per_um = 0.0;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this mode
 };
 
 struct ToolSpec {
@@ -36,6 +37,7 @@ struct ToolSpec {
   std::optional<double> radial_depth_mm; // overrides the operation's radial engagement
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
 };
 
 struct MachineSpec {
@@ -93,7 +95,9 @@ struct Project {
   std::optional<SupervisorSection> supervisor;
   std::optional<ParetoSection> pareto;
   std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
-  QJsonObject document;  // the JSON as loaded; unknown keys at every level survive a save
+  // The keys of the file this build does not know, per object, at every level but tools and modes
+  // (those keep theirs in ToolSpec/ModeSpec::unknown, so that they follow their tool on reorder).
+  QJsonObject document;
 
   const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
   // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
@@ -107,7 +111,7 @@ struct Project {
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
 Project projectFromJson(const QJsonObject& root);
 Project loadProject(const QString& path);
-// Back to JSON, merged over project.document so that unknown keys are kept.
+// Back to JSON: the typed values, with the unknown keys of each object merged back in.
 QJsonObject projectToJson(const Project& project);
 // Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
 void saveProject(const Project& project, const QString& path);

@@ -159,9 +159,8 @@ ParetoSection readPareto(const ObjectReader& r) {
     }
     p.weights = values;
   }
-  p.fine = readOptional<ParetoFineSpec>(r, "fine", [](const ObjectReader& f) {
-    return ParetoFineSpec{f.optionalNumber("divisions")};
-  });
+  p.fine = readOptional<ParetoFineSpec>(
+      r, "fine", [](const ObjectReader& f) { return ParetoFineSpec{f.optionalNumber("divisions")}; });
   p.auto_weights = readOptional<ParetoAutoWeightsSpec>(r, "auto_weights", [](const ObjectReader& a) {
     return ParetoAutoWeightsSpec{a.optionalNumber("step"), a.optionalNumber("tolerance"),
                                  a.optionalNumber("max_iterations")};

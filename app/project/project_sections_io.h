@@ -19,6 +19,12 @@ void validateExpertExtras(const ExpertSpec& spec);
 void putProcessSections(QJsonObject& root, const Project& project);
 void putExpertExtras(QJsonObject& expert, const ExpertSpec& spec);
 
+// The part of `original` that `known` (the typed values written back) does not hold, per object;
+// arrays of objects by index. Tools are left out: each ToolSpec keeps its own unknown keys.
+QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known);
+// `known` with the unknown keys merged back in (the inverse of unknownKeys).
+QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known);
+
 // Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
 void putNumber(QJsonObject& o, const QString& key, double value);
 void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value);

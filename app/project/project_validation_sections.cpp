@@ -154,8 +154,8 @@ void validatePareto(const ParetoSection& p) {
   validatePowerLaw("pareto.taylor", p.taylor);
   validatePowerLaw("pareto.roughness", p.roughness);
   if (p.weights && p.weights->size() != 4) {
-    throw ProjectError(QString("pareto.weights has %1 values: expected 4 weights (tol, mrr, surf, ros)")
-                           .arg(p.weights->size()));
+    throw ProjectError(
+        QString("pareto.weights has %1 values: expected 4 weights (tol, mrr, surf, ros)").arg(p.weights->size()));
   }
   if (p.fine) checkField("pareto.fine.divisions", p.fine->divisions, {1.0, 100.0, "an integer in [1, 100]", true});
   if (p.auto_weights) {

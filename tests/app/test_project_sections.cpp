@@ -19,7 +19,9 @@ using namespace mx::app;
 
 namespace {
 
-QString projectsPath(const QString& name) { return QString(MX_PROJECTS_DIR) + "/" + name; }
+QString projectsPath(const QString& name) {
+  return QString(MX_PROJECTS_DIR) + "/" + name;
+}
 
 QByteArray readBytes(const QString& path) {
   QFile f(path);
@@ -27,7 +29,9 @@ QByteArray readBytes(const QString& path) {
   return f.readAll();
 }
 
-QJsonObject readJson(const QString& path) { return QJsonDocument::fromJson(readBytes(path)).object(); }
+QJsonObject readJson(const QString& path) {
+  return QJsonDocument::fromJson(readBytes(path)).object();
+}
 
 QString errorOf(const QJsonObject& root) {
   try {
@@ -60,6 +64,40 @@ class TestProjectSections : public QObject {
       saveProject(loadProject(first), second);
       QCOMPARE(readBytes(second), readBytes(first));
     }
+  }
+
+  void unknownKeysStayWithTheirTool() {
+    auto tool = [](const QString& id, const QString& key, double value) {
+      return QJsonObject{
+          {"id", id},
+          {"teeth", 2},
+          {"diameter_mm", 10},
+          {"helix_deg", 0},
+          {key, value},
+          {"modes_y", QJsonArray()},
+          {"modes_x", QJsonArray{QJsonObject{
+                          {"freq_Hz", 500}, {"damping_pct", 2}, {"stiffness_N_per_um", 5}, {"x_mode_of", id}}}}};
+    };
+    QJsonObject root = minimalWith("machine", QJsonObject{{"spindle_power_W", 1000}, {"x_vendor", "ACME"}});
+    root.insert("tools", QJsonArray{tool("A", "x_a", 1), tool("B", "x_b", 2), tool("C", "x_c", 3)});
+    Project p = projectFromJson(root);
+    QCOMPARE(p.document, (QJsonObject{{"machine", QJsonObject{{"x_vendor", "ACME"}}}}));  // unknown keys only
+    QCOMPARE(p.tools[1].unknown, (QJsonObject{{"x_b", 2}}));
+
+    std::swap(p.tools[0], p.tools[2]);   // C, B, A
+    p.tools.erase(p.tools.begin() + 1);  // C, A
+    const QJsonArray tools = projectToJson(p).value("tools").toArray();
+    QCOMPARE(tools.size(), 2);
+    const QJsonObject first = tools[0].toObject(), second = tools[1].toObject();
+    QCOMPARE(first.value("id").toString(), QString("C"));
+    QCOMPARE(first.value("x_c").toDouble(), 3.0);
+    QVERIFY(!first.contains("x_a") && !first.contains("x_b"));
+    QCOMPARE(first.value("modes_x").toArray()[0].toObject().value("x_mode_of").toString(), QString("C"));
+    QCOMPARE(second.value("id").toString(), QString("A"));
+    QCOMPARE(second.value("x_a").toDouble(), 1.0);
+    QVERIFY(!second.contains("x_b") && !second.contains("x_c"));
+    QCOMPARE(second.value("modes_x").toArray()[0].toObject().value("x_mode_of").toString(), QString("A"));
+    QCOMPARE(projectToJson(p).value("machine").toObject().value("x_vendor").toString(), QString("ACME"));
   }
 
   void sectionsAreTyped() {
@@ -107,27 +145,39 @@ class TestProjectSections : public QObject {
     QTest::addColumn<QString>("section");
     QTest::addColumn<QString>("json");
     QTest::addColumn<QString>("message");
-    QTest::newRow("sdnrp.ra_um") << "sdnrp" << R"({"ra_um": 9})" << "sdnrp.ra_um = 9: must be in [0.25, 2.5]";
-    QTest::newRow("seed") << "sdnrp" << R"({"disturbance": {"seed": 1.5}})"
+    QTest::newRow("sdnrp.ra_um") << "sdnrp"
+                                 << R"({"ra_um": 9})"
+                                 << "sdnrp.ra_um = 9: must be in [0.25, 2.5]";
+    QTest::newRow("seed") << "sdnrp"
+                          << R"({"disturbance": {"seed": 1.5}})"
                           << "sdnrp.disturbance.seed = 1.5: must be an integer in [0, 9e15]";
-    QTest::newRow("control.beta") << "control" << R"({"spindle_rpm": 700, "cutting_pressure_N_mm2": 1, "beta": 2})"
+    QTest::newRow("control.beta") << "control"
+                                  << R"({"spindle_rpm": 700, "cutting_pressure_N_mm2": 1, "beta": 2})"
                                   << "control.beta = 2: must be in [-1, 1]";
-    QTest::newRow("control.spindle_rpm") << "control" << R"({"cutting_pressure_N_mm2": 1})"
+    QTest::newRow("control.spindle_rpm") << "control"
+                                         << R"({"cutting_pressure_N_mm2": 1})"
                                          << "control.spindle_rpm is missing: must be in (0, 100000]";
-    QTest::newRow("rls.reset") << "control" << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rls": {"reset": "x"}})"
+    QTest::newRow("rls.reset") << "control"
+                               << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rls": {"reset": "x"}})"
                                << "control.rls.reset = 'x': must be one of error, trace, none";
-    QTest::newRow("workpiece") << "control"
-                               << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "workpiece": [{"length_mm": 0, "depth_mm": 1}]})"
-                               << "control.workpiece[0].length_mm = 0: must be in (0, 1e7]";
-    QTest::newRow("passes") << "supervisor" << R"({"passes_mm": {"smc1": [1, 30]}})"
+    QTest::newRow("workpiece")
+        << "control"
+        << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "workpiece": [{"length_mm": 0, "depth_mm": 1}]})"
+        << "control.workpiece[0].length_mm = 0: must be in (0, 1e7]";
+    QTest::newRow("passes") << "supervisor"
+                            << R"({"passes_mm": {"smc1": [1, 30]}})"
                             << "supervisor.passes_mm.smc1[1] = 30: must be a depth in (0, 20] mm";
-    QTest::newRow("event") << "supervisor" << R"({"events": [{"t_s": 1, "type": "boom"}]})"
+    QTest::newRow("event") << "supervisor"
+                           << R"({"events": [{"t_s": 1, "type": "boom"}]})"
                            << "supervisor.events[0].type = 'boom': must be one of feed_hold_on, feed_hold_off, chatter";
-    QTest::newRow("force model") << "force_control" << R"({"model": {"K_N": -1}})"
+    QTest::newRow("force model") << "force_control"
+                                 << R"({"model": {"K_N": -1}})"
                                  << "force_control.model.K_N = -1: must be in (0, 1e9]";
-    QTest::newRow("controller") << "part_program" << R"({"controller": "pid"})"
+    QTest::newRow("controller") << "part_program"
+                                << R"({"controller": "pid"})"
                                 << "part_program.controller = 'pid': must be adaptive or model-based";
-    QTest::newRow("pareto.taylor") << "pareto" << R"({})"
+    QTest::newRow("pareto.taylor") << "pareto"
+                                   << R"({})"
                                    << "pareto.taylor is missing: the model constants K and exponents";
   }
 
