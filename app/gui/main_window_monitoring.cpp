@@ -166,7 +166,7 @@ void MainWindow::updateFiredRules() {
       notes << tr("Line %1 violated at this point: %2").arg(v.rule.line).arg(QString::fromStdString(v.rule.text));
     for (const RuleAdvice& a : r.outcome.advice)
       notes << tr("Advice (line %1): %2").arg(a.rule.line).arg(QString::fromStdString(a.message));
-  } catch (const app::CliError& e) {
+  } catch (const app::ProjectError& e) {
     rules_editor_->setFiredRules({});
     notes << QString::fromStdString(e.what());
   }
