@@ -41,7 +41,9 @@ app::ExpertSpec& expert(app::Project& p) {
 }  // namespace
 
 app::MachineSpec MachineOperationPanel::defaultMachine() {
-  return {5000.0, std::nullopt, std::nullopt};
+  app::MachineSpec m;
+  m.spindle_power_W = 5000.0;
+  return m;
 }
 app::MaterialSpec MachineOperationPanel::defaultMaterial() {
   return {QStringLiteral("Aluminium"), 600.0, 0.3};

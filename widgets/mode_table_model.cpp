@@ -163,7 +163,7 @@ bool ModeTableModel::addMode() {
   if (ti < 0) return false;
   app::Project edited = project_;
   auto& list = axis_ == Axis::X ? edited.tools[std::size_t(ti)].modes_x : edited.tools[std::size_t(ti)].modes_y;
-  list.push_back(list.empty() ? app::ModeSpec{1000.0, 2.0, 10.0} : list.back());
+  list.push_back(list.empty() ? app::ModeSpec{1000.0, 2.0, 10.0, {}} : list.back());
   return request(edited, tr("Add %1 mode to tool %2").arg(axisName(), toolId_));
 }
 
@@ -173,16 +173,6 @@ bool ModeTableModel::removeMode(int row) {
   app::Project edited = project_;
   auto& list = axis_ == Axis::X ? edited.tools[std::size_t(ti)].modes_x : edited.tools[std::size_t(ti)].modes_y;
   list.erase(list.begin() + row);
-  // Keep the unknown keys of the file with their modes (the writer matches modes by index).
-  QJsonArray tools = edited.document.value("tools").toArray();
-  if (ti < tools.size()) {
-    QJsonObject tool = tools.at(ti).toObject();
-    QJsonArray old = tool.value(modesKey()).toArray();
-    if (row < old.size()) old.removeAt(row);
-    tool.insert(modesKey(), old);
-    tools.replace(ti, tool);
-    edited.document.insert("tools", tools);
-  }
   return request(edited, tr("Remove %1 mode %2 of tool %3").arg(axisName()).arg(row + 1).arg(toolId_));
 }
 

@@ -286,7 +286,6 @@ ToolLibraryFile ToolLibraryCsv::fromJson(const QByteArray& text) {
   const QJsonObject root{{"format", "millexpert-project"}, {"version", 1}, {"name", ""}, {"tools", tools}};
   try {
     out.tools = app::projectFromJson(root).tools;
-    out.json = tools.toArray();
     out.lines.assign(out.tools.size(), 0);
   } catch (const app::ProjectError& e) {
     out.error = QString::fromStdString(e.what());
@@ -298,8 +297,6 @@ QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& f
                               app::Project& merged) {
   if (!file.ok()) return file.error;
   app::Project p = base;
-  QJsonArray docTools = replace ? QJsonArray() : p.document.value("tools").toArray();
-  while (docTools.size() > static_cast<qsizetype>(p.tools.size())) docTools.removeLast();
   if (replace) p.tools.clear();
   const std::size_t offset = p.tools.size();
   QSet<QString> existing;
@@ -312,15 +309,6 @@ QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& f
       return where + QString("'%1' duplicate tool id (already in the library)").arg(file.tools[i].id);
     }
     p.tools.push_back(file.tools[i]);
-  }
-  if (!file.json.isEmpty()) {
-    while (docTools.size() < static_cast<qsizetype>(offset)) docTools.append(QJsonObject());
-    for (const QJsonValue& t : file.json) docTools.append(t);
-  }
-  if (docTools.isEmpty()) {
-    p.document.remove("tools");
-  } else {
-    p.document.insert("tools", docTools);
   }
   QString error = validationError(p);
   if (!error.isEmpty()) {

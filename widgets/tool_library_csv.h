@@ -12,12 +12,11 @@
 
 namespace mx::widgets {
 
-// A parsed library file: the tools, the source line of each tool's first row (CSV; 0 for JSON), the
-// raw JSON objects of the tools (JSON; keeps unknown keys), and the error ("" = ok).
+// A parsed library file: the tools (from JSON with their unknown keys), the source line of each
+// tool's first row (CSV; 0 for JSON), and the error ("" = ok).
 struct ToolLibraryFile {
   std::vector<app::ToolSpec> tools;
   std::vector<int> lines;
-  QJsonArray json;
   int idColumn = 1;  // CSV column of tool_id (1-based), for messages about ids
   QString error;
   bool ok() const { return error.isEmpty(); }

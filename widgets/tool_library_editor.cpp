@@ -228,8 +228,8 @@ void ToolLibraryEditor::addTool() {
   t.diameter_mm = 10.0;
   if (edited.operation && edited.operation->radial_depth_mm)
     t.diameter_mm = std::max(t.diameter_mm, *edited.operation->radial_depth_mm);
-  t.modes_x = {app::ModeSpec{1000.0, 2.0, 10.0}};
-  t.modes_y = {app::ModeSpec{1000.0, 2.0, 10.0}};
+  t.modes_x = {app::ModeSpec{1000.0, 2.0, 10.0, {}}};
+  t.modes_y = {app::ModeSpec{1000.0, 2.0, 10.0, {}}};
   edited.tools.push_back(t);
   request(edited, tr("Add tool %1").arg(t.id), t.id);
 }
@@ -241,11 +241,6 @@ void ToolLibraryEditor::duplicateTool() {
   app::ToolSpec copy = edited.tools[std::size_t(row)];
   copy.id = uniqueId(copy.id + "-copy");
   edited.tools.insert(edited.tools.begin() + row + 1, copy);
-  QJsonArray docTools = edited.document.value("tools").toArray();  // keep unknown keys with their tools
-  if (row < docTools.size()) {
-    docTools.insert(row + 1, docTools.at(row));
-    edited.document.insert("tools", docTools);
-  }
   request(edited, tr("Duplicate tool %1").arg(tools_->idAt(row)), copy.id);
 }
 
@@ -255,11 +250,6 @@ void ToolLibraryEditor::removeTool() {
   app::Project edited = project();
   const QString id = edited.tools[std::size_t(row)].id;
   edited.tools.erase(edited.tools.begin() + row);
-  QJsonArray docTools = edited.document.value("tools").toArray();
-  if (row < docTools.size()) {
-    docTools.removeAt(row);
-    edited.document.insert("tools", docTools);
-  }
   const QString next = tools_->idAt(row + 1).isEmpty() ? tools_->idAt(row - 1) : tools_->idAt(row + 1);
   request(edited, tr("Remove tool %1").arg(id), next);
 }

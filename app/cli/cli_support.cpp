@@ -1,12 +1,12 @@
 #include "cli/cli_support.h"
 
-#include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
 #include <QTextStream>
 #include <cmath>
 
 #include "cli/cli_application.h"
+#include "project/project.h"
 
 namespace mx::app {
 
@@ -83,36 +83,8 @@ void writeTextFileAtomically(const QString& flag, const QString& path, const std
   if (!file.commit()) throw CliError(QString("%1 = '%2': write failed").arg(flag, path), kExitComputationFailed);
 }
 
-std::vector<std::pair<double, double>> depthStepsField(const QJsonValue& value, const QString& path) {
-  if (!value.isArray() || value.toArray().isEmpty())
-    failField(path, "(not a non-empty array)", "an array of {length_mm, depth_mm}");
-  std::vector<std::pair<double, double>> out;
-  const QJsonArray steps = value.toArray();
-  for (qsizetype i = 0; i < steps.size(); ++i) {
-    const QString element = QString("%1[%2]").arg(path).arg(i);
-    const QJsonObject step = steps[i].toObject();
-    out.emplace_back(sectionNumber(step, element, "length_mm", 1e-6, 1e7, "in (0, 1e7]") * 1e-3,
-                     sectionNumber(step, element, "depth_mm", 0.0, 1e3, "in [0, 1000]") * 1e-3);
-  }
-  return out;
-}
-
 void failField(const QString& field, const QString& value, const QString& range) {
-  throw CliError(QString("%1 = %2: must be %3").arg(field, value, range), kExitBadInput);
-}
-
-double sectionNumber(const QJsonObject& o, const QString& path, const QString& key, double lo, double hi,
-                     const QString& range, std::optional<double> fallback) {
-  const QString field = path + "." + key;
-  if (!o.contains(key)) {
-    if (fallback) return *fallback;
-    throw CliError(QString("%1 is missing: must be %2").arg(field, range), kExitBadInput);
-  }
-  const QJsonValue v = o.value(key);
-  if (!v.isDouble()) failField(field, v.toVariant().toString().isEmpty() ? "(not a number)" : v.toVariant().toString(), range);
-  const double x = v.toDouble();
-  if (!(std::isfinite(x) && x >= lo && x <= hi)) failField(field, QString::number(x, 'g', 10), range);
-  return x;
+  throw ProjectError(QString("%1 = %2: must be %3").arg(field, value, range));
 }
 
 }  // namespace mx::app

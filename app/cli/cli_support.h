@@ -1,6 +1,7 @@
 #pragma once
 // Shared pieces of the CLI subcommands: option parsing with range-checked numbers, JSON output
-// and the error type that carries the exit code.
+// and the error type of command-line flags, which carries the exit code (project content throws
+// ProjectError, project/project.h).
 #include <QCommandLineParser>
 #include <QJsonObject>
 #include <QString>
@@ -8,8 +9,6 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <utility>
-#include <vector>
 #include <stdexcept>
 
 namespace mx::app {
@@ -48,16 +47,8 @@ void printJson(const QJsonObject& object);
 // errors: cannot open -> CliError(2), write failed -> CliError(1).
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
 
-// A depth profile along the feed path: a non-empty array of {"length_mm" (0, 1e7], "depth_mm" [0, 1000]}
-// at `path`, as (length, depth) pairs in metres. CliError(2) naming the element.
-std::vector<std::pair<double, double>> depthStepsField(const QJsonValue& value, const QString& path);
-
-// Project sections: "<field> = <value>: must be <range>" as CliError(2).
+// Project content (e.g. a Grafcet chart): "<field> = <value>: must be <range>" as ProjectError (exit 2).
 [[noreturn]] void failField(const QString& field, const QString& value, const QString& range);
-// o[key] as a finite number in [lo, hi] ("path.key" in messages); `fallback` when absent, else an
-// error naming the missing field.
-double sectionNumber(const QJsonObject& o, const QString& path, const QString& key, double lo, double hi,
-                     const QString& range, std::optional<double> fallback = {});
 
 // JSON number, or null for a non-finite value (never NaN in output).
 QJsonValue jsonNumberOrNull(double value);

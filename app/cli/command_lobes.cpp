@@ -8,6 +8,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "project/lobe_inputs.h"
 #include "project/project.h"
 #include "stability/lobe_computation.h"
 
@@ -33,27 +34,18 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.method = parser.value("method");
   if (r.method != "zoa" && r.method != "sdm")
     throw CliError(QString("--method = '%1': must be zoa or sdm").arg(r.method), kExitBadInput);
-  double from = 1000.0, to = 20000.0, step = 100.0;
-  if (project.expert && project.expert->grid) {
-    from = project.expert->grid->speed_from_rpm;
-    to = project.expert->grid->speed_to_rpm;
-    step = project.expert->grid->speed_step_rpm;
-  }
-  from = numberOption(parser, "from", 1e-3, 1e7).value_or(from);
-  to = numberOption(parser, "to", 1e-3, 1e7).value_or(to);
-  step = numberOption(parser, "step", 1e-3, 1e7).value_or(step);
+  const LobeInputs inputs = lobeInputsFrom(project, gridStepRpm(project, 100.0));
+  const double from = numberOption(parser, "from", 1e-3, 1e7).value_or(inputs.from_rpm);
+  const double to = numberOption(parser, "to", 1e-3, 1e7).value_or(inputs.to_rpm);
+  const double step = numberOption(parser, "step", 1e-3, 1e7).value_or(inputs.step_rpm);
   if (to < from) throw CliError(QString("--to = %1: must be >= --from (%2)").arg(to).arg(from), kExitBadInput);
   if ((to - from) / step > 200000)
     throw CliError(QString("--step = %1: gives more than 200000 speeds").arg(step), kExitBadInput);
   r.grid = {rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(step)};
   r.from_rpm = from;
   r.step_rpm = step;
-  if (project.expert) {
-    r.delta_per_s = project.expert->delta_per_s;
-    r.alpha = project.expert->alpha;
-  }
-  r.delta_per_s = numberOption(parser, "delta", 0.0, 1e6).value_or(r.delta_per_s);
-  r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(r.alpha);
+  r.delta_per_s = numberOption(parser, "delta", 0.0, 1e6).value_or(inputs.delta_per_s);
+  r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(inputs.alpha);
   r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
   r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
   return r;

@@ -1,7 +1,5 @@
 #include "cli/expert_request.h"
 
-#include <QJsonObject>
-#include <QJsonValue>
 #include <cmath>
 
 #include "cli/cli_application.h"
@@ -17,7 +15,7 @@ std::array<double, N> checkedWeights(const QString& name, const std::vector<doub
   try {
     validateSimplexWeights(name.toStdString(), values, N);
   } catch (const InvalidInput& e) {
-    throw CliError(QString("expert.%1").arg(QString::fromStdString(e.what())), kExitBadInput);
+    throw ProjectError(QString("expert.%1").arg(QString::fromStdString(e.what())));
   }
   std::array<double, N> out{};
   for (std::size_t i = 0; i < N; ++i) out[i] = values[i];
@@ -56,16 +54,10 @@ ExpertRequest expertRequestFromProject(const Project& project) {
   s.grid.depth_divisions = grid.depth_divisions;
   s.grid.feed_step_m = grid.feed_step_mm * 1e-3;
 
-  const QJsonObject doc = project.document.value("expert").toObject();
-  if (doc.contains("method")) s.stability.method = methodFromText(doc.value("method").toString(), "expert.method");
-  if (doc.contains("simulated_points")) {
-    const double k = doc.value("simulated_points").toDouble(-1.0);
-    if (!(k >= 1.0 && k <= 1000.0 && std::floor(k) == k))
-      throw CliError(QString("expert.simulated_points = %1: must be an integer in [1, 1000]").arg(k), kExitBadInput);
-    s.refinement.simulated_points = static_cast<int>(k);
-  }
-  const QJsonValue modal = doc.value("grid").toObject().value("modal_candidate_speeds");
-  if (modal.isBool()) s.grid.modal_candidate_speeds = modal.toBool();
+  if (expert.method) s.stability.method = methodFromText(*expert.method, "expert.method");
+  if (expert.simulated_points) s.refinement.simulated_points = *expert.simulated_points;
+  if (expert.grid && expert.grid->modal_candidate_speeds)
+    s.grid.modal_candidate_speeds = *expert.grid->modal_candidate_speeds;
 
   r.weights.c = checkedWeights<3>("c", expert.c);
   r.weights.cr = checkedWeights<3>("cr", expert.cr);

@@ -1,9 +1,7 @@
 #pragma once
 // Shared by `rank` and `weights-sweep`: a project's expert inputs (tools, grid, limits, margins and
-// weights) in engine form, and the --c / --cr weight flags. Keys of the project's `expert` section
-// beyond the parsed ones (read from the document, optional):
-//   expert.method: "zoa" (default) or "sdm";  expert.simulated_points: K of Rule 5 (default 12);
-//   expert.grid.modal_candidate_speeds: add the Rule 7.2 speeds 60 f_n / (n_t k) (default true).
+// weights) in engine form, and the --c / --cr weight flags. The expert section, its method,
+// simulated_points and grid.modal_candidate_speeds included, is typed in project/project.h.
 #include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
@@ -24,7 +22,7 @@ struct ExpertRequest {
   CostWeights weights;  // the project's, validated (exit 2 when off the simplex)
 };
 
-// Throws ProjectError (exit 2) for missing sections, CliError(2) for weights off the simplex.
+// Throws ProjectError (exit 2) for missing sections and weights off the simplex.
 ExpertRequest expertRequestFromProject(const Project& project);
 
 // "--name a,b,c": `count` numbers, non-negative, summing to 1 within 1e-6; CliError(2) otherwise.

@@ -1,4 +1,5 @@
 #include "cli/grafcet_json.h"
+#include "project/project.h"
 
 #include <QJsonArray>
 #include <QMap>
@@ -15,7 +16,7 @@ constexpr double kMaxInteger = 1e9;
 const QString kIntegerRange = "an integer in [0, 1000000000]";
 
 [[noreturn]] void fail(const QString& field, const QString& message) {
-  throw CliError(field + ": " + message, kExitBadInput);
+  throw ProjectError(field + ": " + message);
 }
 
 QString shown(const QJsonValue& v) {
@@ -144,7 +145,7 @@ GrafcetChart loadGrafcetChart(const QJsonValue& value, const QString& path,
                               const std::optional<std::set<std::string>>& knownSignals) {
   GrafcetChart chart = grafcetChartFromJson(value, path);
   const QStringList errors = grafcetChartErrors(chart, path, knownSignals);
-  if (!errors.isEmpty()) throw CliError(errors.front(), kExitBadInput);
+  if (!errors.isEmpty()) throw ProjectError(errors.front());
   return chart;
 }
 

@@ -1,8 +1,5 @@
 #include "cli/pareto_request.h"
 
-#include <QJsonArray>
-#include <QJsonObject>
-#include <QJsonValue>
 #include <QStringList>
 #include <cmath>
 
@@ -14,98 +11,67 @@ namespace mx::app {
 
 namespace {
 
-double numberField(const QJsonObject& o, const QString& path, const QString& key, double lo, double hi,
-                   const QString& range, std::optional<double> fallback = {}) {
-  return sectionNumber(o, path, key, lo, hi, range, fallback);
+[[noreturn]] void fail(const QString& flag, const QString& value, const QString& range) {
+  throw CliError(QString("%1 = %2: must be %3").arg(flag, value, range), kExitBadInput);
 }
 
-[[noreturn]] void fail(const QString& field, const QString& value, const QString& range) {
-  failField(field, value, range);
-}
-
-PowerLawModel readModel(const QJsonObject& pareto, const QString& key) {
-  const QString path = "pareto." + key;
-  if (!pareto.value(key).isObject()) throw CliError(QString("%1 is missing: the model constants K and exponents").arg(path), kExitBadInput);
-  const QJsonObject o = pareto.value(key).toObject();
+PowerLawModel modelFrom(const PowerLawSpec& spec) {
   PowerLawModel m;
-  m.k = numberField(o, path, "K", 1e-300, 1e300, "a finite number > 0");
-  if (!(m.k > 0.0)) fail(path + ".K", QString::number(m.k), "a finite number > 0");
-  m.speed_exponent = numberField(o, path, "speed_exponent", -10.0, 10.0, "in [-10, 10]");
-  m.depth_exponent = numberField(o, path, "depth_exponent", -10.0, 10.0, "in [-10, 10]");
-  m.feed_exponent = numberField(o, path, "feed_exponent", -10.0, 10.0, "in [-10, 10]");
+  m.k = spec.K;
+  m.speed_exponent = spec.speed_exponent;
+  m.depth_exponent = spec.depth_exponent;
+  m.feed_exponent = spec.feed_exponent;
   return m;
 }
 
-ParetoWeights checkedWeights(const QString& name, const std::vector<double>& values) {
+// Throws Error (CliError for a flag, ProjectError for the project) unless 4 weights on the simplex.
+template <typename Throw>
+ParetoWeights checkedWeights(const QString& name, const std::vector<double>& values, Throw raise) {
   if (values.size() != kObjectiveCount)
-    throw CliError(QString("%1 has %2 values: expected 4 weights (tol, mrr, surf, ros)").arg(name).arg(values.size()),
-                   kExitBadInput);
+    raise(QString("%1 has %2 values: expected 4 weights (tol, mrr, surf, ros)").arg(name).arg(values.size()));
   ParetoWeights w{};
   for (std::size_t i = 0; i < kObjectiveCount; ++i) w[i] = values[i];
   try {
     validateParetoWeights(w);
   } catch (const InvalidInput& e) {
-    throw CliError(QString("%1: %2").arg(name, QString::fromStdString(e.what())), kExitBadInput);
+    raise(QString("%1: %2").arg(name, QString::fromStdString(e.what())));
   }
   return w;
 }
 
+[[noreturn]] void raiseProject(const QString& message) { throw ProjectError(message); }
+[[noreturn]] void raiseFlag(const QString& message) { throw CliError(message, kExitBadInput); }
+
 }  // namespace
 
-ParetoRequest paretoRequestFromProject(const Project& project) {
-  if (!project.document.value("pareto").isObject())
-    throw CliError("section 'pareto' is missing: the Pareto expert system needs the taylor and roughness models",
-                   kExitBadInput);
-  const QJsonObject p = project.document.value("pareto").toObject();
+ParetoRequest paretoRequestFrom(const ParetoSection& p, const Project& project) {
   ParetoRequest r;
-  if (project.tools.empty()) throw CliError("section 'tools' is empty", kExitBadInput);
-  r.tool = project.tools.front().id;
-  if (p.contains("tool")) {
-    r.tool = p.value("tool").toString();
-    if (project.findTool(r.tool) == nullptr)
-      throw CliError(QString("pareto.tool = '%1': no tool with that id").arg(r.tool), kExitBadInput);
-  }
-  r.models.tool_life = readModel(p, "taylor");
-  r.models.roughness = readModel(p, "roughness");
-  if (p.contains("weights")) {
-    const QJsonValue wv = p.value("weights");
-    if (!wv.isArray()) throw CliError("pareto.weights: must be an array of 4 numbers", kExitBadInput);
-    std::vector<double> values;
-    for (const QJsonValue& v : wv.toArray()) {
-      if (!v.isDouble()) throw CliError("pareto.weights: must be an array of 4 numbers", kExitBadInput);
-      values.push_back(v.toDouble());
-    }
-    r.weights = checkedWeights("pareto.weights", values);
-  }
-  const QJsonObject fine = p.value("fine").toObject();
-  const double div = numberField(fine, "pareto.fine", "divisions", 1.0, 100.0, "an integer in [1, 100]", 5.0);
-  if (std::floor(div) != div) fail("pareto.fine.divisions", QString::number(div), "an integer in [1, 100]");
-  r.fine.divisions = static_cast<int>(div);
-  const QJsonObject aw = p.value("auto_weights").toObject();
-  r.ascent.step = numberField(aw, "pareto.auto_weights", "step", 1e-12, 1.0, "in (0, 1]", 0.05);
-  r.ascent.tolerance = numberField(aw, "pareto.auto_weights", "tolerance", 1e-15, 0.999999, "in (0, 1)", 1e-4);
-  const double iters =
-      numberField(aw, "pareto.auto_weights", "max_iterations", 1.0, 100000.0, "an integer in [1, 100000]", 200.0);
-  if (std::floor(iters) != iters)
-    fail("pareto.auto_weights.max_iterations", QString::number(iters), "an integer in [1, 100000]");
-  r.ascent.max_iterations = static_cast<int>(iters);
+  if (project.tools.empty()) throw ProjectError("section 'tools' is empty");
+  r.tool = p.tool.value_or(project.tools.front().id);
+  if (project.findTool(r.tool) == nullptr)
+    throw ProjectError(QString("pareto.tool = '%1': no tool with that id").arg(r.tool));
+  if (!p.taylor) throw ProjectError("pareto.taylor is missing: the model constants K and exponents");
+  if (!p.roughness) throw ProjectError("pareto.roughness is missing: the model constants K and exponents");
+  r.models.tool_life = modelFrom(*p.taylor);
+  r.models.roughness = modelFrom(*p.roughness);
+  if (p.weights) r.weights = checkedWeights("pareto.weights", *p.weights, raiseProject);
+  const ParetoFineSpec fine = p.fine.value_or(ParetoFineSpec{});
+  r.fine.divisions = static_cast<int>(fine.divisions.value_or(5.0));
+  const ParetoAutoWeightsSpec aw = p.auto_weights.value_or(ParetoAutoWeightsSpec{});
+  r.ascent.step = aw.step.value_or(0.05);
+  r.ascent.tolerance = aw.tolerance.value_or(1e-4);
+  r.ascent.max_iterations = static_cast<int>(aw.max_iterations.value_or(200.0));
   r.operator_rules = operatorRulesFromProject(project);
   return r;
 }
 
-QStringList operatorRulesFromProject(const Project& project) {
-  QStringList out;
-  if (!project.document.contains("operator_rules")) return out;
-  const QJsonValue rv = project.document.value("operator_rules");
-  if (!rv.isArray()) throw CliError("operator_rules: must be an array of strings (one rule each)", kExitBadInput);
-  const QJsonArray rules = rv.toArray();
-  for (qsizetype i = 0; i < rules.size(); ++i) {
-    if (!rules[i].isString() || rules[i].toString().contains('\n'))
-      throw CliError(QString("operator_rules[%1]: must be a string holding one rule").arg(i), kExitBadInput);
-    out << rules[i].toString();
-  }
-  return out;
+ParetoRequest paretoRequestFromProject(const Project& project) {
+  if (!project.pareto)
+    throw ProjectError("section 'pareto' is missing: the Pareto expert system needs the taylor and roughness models");
+  return paretoRequestFrom(*project.pareto, project);
 }
+
+QStringList operatorRulesFromProject(const Project& project) { return project.operator_rules.value_or(QStringList{}); }
 
 ParetoWeights parseParetoWeights(const QString& text) {
   std::vector<double> values;
@@ -116,7 +82,7 @@ ParetoWeights parseParetoWeights(const QString& text) {
       throw CliError(QString("--w = '%1': '%2' is not a finite number").arg(text, item), kExitBadInput);
     values.push_back(v);
   }
-  return checkedWeights(QString("--w = '%1'").arg(text), values);
+  return checkedWeights(QString("--w = '%1'").arg(text), values, raiseFlag);
 }
 
 ObjectiveRequirement parseRequirement(const QString& text) {

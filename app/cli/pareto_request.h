@@ -1,7 +1,7 @@
 #pragma once
-// The project's "pareto" section (issue 5) in engine form. The project loader keeps unknown sections
-// in project.document; this helper reads and validates them (CliError, exit 2, naming the field, the
-// value and the allowed range):
+// The project's "pareto" section (issue 5) in engine form. The section is typed in
+// project/process_sections.h and range-checked when the project is loaded (ProjectError, exit 2,
+// naming the field, the value and the allowed range):
 //   "pareto": {
 //     "tool": "R1",                                   optional; default the first tool
 //     "taylor":    {"K", "speed_exponent", "depth_exponent", "feed_exponent"},   TOL [min] (eq. 10)
@@ -34,10 +34,11 @@ struct ParetoRequest {
   QStringList operator_rules;  // the project's "operator_rules", as written
 };
 
+ParetoRequest paretoRequestFrom(const ParetoSection& section, const Project& project);
+// The project's pareto section; ProjectError when it has none.
 ParetoRequest paretoRequestFromProject(const Project& project);
 
-// The project's top-level "operator_rules" (empty when absent); CliError(2) unless an array of
-// one-line strings.
+// The project's top-level "operator_rules" (empty when absent).
 QStringList operatorRulesFromProject(const Project& project);
 
 // "--w a,b,c,d": four weights on the simplex.

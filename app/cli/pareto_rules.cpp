@@ -74,8 +74,7 @@ RuleContext ruleContextFor(const Project& project, const ToolSpec& tool) {
     c.set("machine.spindle_power_W", m.spindle_power_W);
     if (m.max_spindle_rpm) c.set("machine.max_spindle_rpm", *m.max_spindle_rpm);
     if (m.max_feed_mm_s) c.set("machine.max_feed_mm_s", *m.max_feed_mm_s);
-    const QJsonValue name = project.document.value("machine").toObject().value("name");
-    if (name.isString()) c.set("machine.name", name.toString().toStdString());
+    if (m.name) c.set("machine.name", m.name->toStdString());
   }
   return c;
 }
@@ -89,7 +88,7 @@ ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project
     QStringList messages;
     for (const RuleError& e : parsed.errors)
       messages << QString("operator_rules[%1]: %2").arg(e.line - 1).arg(qs(e.toString()));
-    throw CliError(messages.join('\n'), kExitBadInput);
+    throw ProjectError(messages.join('\n'));
   }
   ParetoRules r;
   r.rules = parsed.rules;
@@ -105,7 +104,7 @@ ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project
                       .arg(c.second.line - 1)
                       .arg(c.second.line)
                       .arg(qs(c.second.text), qs(c.message));
-    throw CliError(messages.join('\n'), kExitBadInput);
+    throw ProjectError(messages.join('\n'));
   }
   return r;
 }
@@ -133,21 +132,19 @@ std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& out
         hi[i] = std::min(hi[i], b->upper);
       }
     if (lo[i] > hi[i])
-      throw CliError(QString("operator_rules: %1 has no admissible value in [0, 1] (bounds [%2, %3])")
+      throw ProjectError(QString("operator_rules: %1 has no admissible value in [0, 1] (bounds [%2, %3])")
                          .arg(qs(names[i]))
                          .arg(lo[i])
-                         .arg(hi[i]),
-                     kExitBadInput);
+                         .arg(hi[i]));
     sum_lo += lo[i];
     sum_hi += hi[i];
   }
   if (!any) return w;
   if (sum_lo > 1.0 + 1e-12 || sum_hi < 1.0 - 1e-12)
-    throw CliError(QString("operator_rules: the weight bounds leave no weights on the simplex (sum of lower "
+    throw ProjectError(QString("operator_rules: the weight bounds leave no weights on the simplex (sum of lower "
                            "bounds %1, sum of upper bounds %2)")
                        .arg(sum_lo)
-                       .arg(sum_hi),
-                   kExitBadInput);
+                       .arg(sum_hi));
   auto total = [&](double lambda) {
     double s = 0.0;
     for (std::size_t i = 0; i < n; ++i) s += std::clamp(w[i] + lambda, lo[i], hi[i]);

@@ -2,7 +2,7 @@
 // Module VII operator rules (Rule 18) for `millexpert-cli pareto`: the project's "operator_rules"
 // array (one rule per element; element i is line i + 1) evaluated against the project and the Pareto
 // tool (docs/operator-rules.md, "In the project").
-//   - parse errors and contradictions: CliError exit 2 ("operator_rules[i]: line L, column C: ...");
+//   - parse errors and contradictions: ProjectError exit 2 ("operator_rules[i]: line L, column C: ...");
 //   - fired constraints on the point variables (speed_rpm, depth_mm, feed_mm_per_tooth, mrr_cm3_s,
 //     power_W, feed_velocity_mm_s) restrict the selection;
 //   - fired constraints on weight.tol/mrr/surf/ros bound the Pareto weights: the weights are projected
@@ -39,7 +39,7 @@ struct ParetoRules {
 // The context of docs/operator-rules.md (tool.*, material.*, operation.*, machine.*) for one tool.
 RuleContext ruleContextFor(const Project& project, const ToolSpec& tool);
 
-// Parses and evaluates the rules; CliError(2) on a parse error or a contradiction.
+// Parses and evaluates the rules; ProjectError (exit 2) on a parse error or a contradiction.
 ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project, const ToolSpec& tool);
 
 // The decision variables of a point, in the rules' units.
@@ -48,7 +48,7 @@ std::map<std::string, double> pointVariables(const ParetoPoint& p, int teeth);
 // Projects w onto the simplex within the bounds that the `outcomes` fired on the variables `names`
 // (w_i between the largest lower and the smallest upper bound of names[i] over all outcomes): clamp
 // w_i + lambda, one lambda for all, chosen so that the sum is 1 (the Euclidean projection).
-// CliError(2) when the bounds leave no weights on the simplex.
+// ProjectError (exit 2) when the bounds leave no weights on the simplex.
 std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& outcomes,
                                       const std::vector<std::string>& names, const std::vector<double>& w);
 // The Pareto weights under the fired weight.tol/mrr/surf/ros bounds.

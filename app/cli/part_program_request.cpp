@@ -1,37 +1,21 @@
 #include "cli/part_program_request.h"
 
-#include <QJsonArray>
-#include <QJsonObject>
-
 #include "cli/cli_application.h"
 #include "cli/cli_support.h"
 #include "control/adaptive_path_feeds.h"
 #include "io/depth_profile.h"
 #include "io/gcode_interpreter.h"
+#include "project/project_rules.h"
 
 namespace mx::app {
 
 namespace {
 
-ModelBasedForceSettings modelSettings(const Project& project) {
-  const QJsonObject c = project.document.value("force_control").toObject();
-  ModelBasedForceSettings s;
-  const QString tool_id = c.contains("tool") ? c.value("tool").toString()
-                                             : (project.tools.empty() ? QString() : project.tools.front().id);
+const ToolSpec& toolOrFirst(const Project& project, const std::optional<QString>& id, const QString& field) {
+  const QString tool_id = id.value_or(project.tools.empty() ? QString() : project.tools.front().id);
   const ToolSpec* tool = project.findTool(tool_id);
-  if (!tool) failField("force_control.tool", "'" + tool_id + "'", "the id of a tool of the project");
-  s.teeth = tool->teeth;
-  const QJsonObject m = c.value("model").toObject();
-  s.model.K_N = sectionNumber(m, "force_control.model", "K_N", 1e-6, 1e9, "in (0, 1e9]", 760.0);
-  s.model.depth_exponent = sectionNumber(m, "force_control.model", "depth_exponent", 0.01, 5.0, "in [0.01, 5]", 0.65);
-  s.model.feed_exponent = sectionNumber(m, "force_control.model", "feed_exponent", 0.01, 5.0, "in [0.01, 5]", 0.63);
-  s.reference_force_N = sectionNumber(c, "force_control", "reference_force_N", 1e-3, 1e7, "in (0, 1e7]");
-  const double drive = project.machine && project.machine->max_feed_mm_s ? *project.machine->max_feed_mm_s : 36.0;
-  s.max_feed_rate_m_per_s = sectionNumber(c, "force_control", "max_feed_mm_s", 1e-3, 1e5, "in (0, 1e5]", drive) * 1e-3;
-  const double tooth = project.operation ? project.operation->max_feed_per_tooth_mm : 0.6;
-  s.max_feed_per_tooth_m =
-      sectionNumber(c, "force_control", "max_feed_per_tooth_mm", 1e-4, 100.0, "in (0, 100]", tooth) * 1e-3;
-  return s;
+  if (!tool) throwBadField(field, "'" + tool_id + "'", "the id of a tool of the project");
+  return *tool;
 }
 
 }  // namespace
@@ -48,30 +32,48 @@ QString OverrideRequest::controllerName() const {
       .arg(model->reference_force_N);
 }
 
-OverrideRequest overrideRequestFromProject(const Project& project, const QString& controller,
-                                           std::optional<double> speed_rpm) {
-  const QJsonObject p = project.document.value("part_program").toObject();
+ModelBasedForceSettings modelBasedSettingsFrom(const ForceControlSection& c, const Project& project) {
+  ModelBasedForceSettings s;
+  s.teeth = toolOrFirst(project, c.tool, "force_control.tool").teeth;
+  const ForceModelSpec m = c.model.value_or(ForceModelSpec{});
+  s.model.K_N = m.K_N.value_or(760.0);
+  s.model.depth_exponent = m.depth_exponent.value_or(0.65);
+  s.model.feed_exponent = m.feed_exponent.value_or(0.63);
+  if (!c.reference_force_N) throwMissingField("force_control.reference_force_N", "in (0, 1e7]");
+  s.reference_force_N = *c.reference_force_N;
+  const double drive = project.machine && project.machine->max_feed_mm_s ? *project.machine->max_feed_mm_s : 36.0;
+  s.max_feed_rate_m_per_s = c.max_feed_mm_s.value_or(drive) * 1e-3;
+  const double tooth = project.operation ? project.operation->max_feed_per_tooth_mm : 0.6;
+  s.max_feed_per_tooth_m = c.max_feed_per_tooth_mm.value_or(tooth) * 1e-3;
+  return s;
+}
+
+OverrideRequest overrideRequestFrom(const PartProgramSection& p, const Project& project, const QString& controller,
+                                    std::optional<double> speed_rpm) {
   OverrideRequest r;
-  r.settings.stock_top_z_m = sectionNumber(p, "part_program", "stock_top_mm", -1e5, 1e5, "in [-1e5, 1e5]", 0.0) * 1e-3;
-  if (p.contains("depth_profile"))
-    for (const auto& [length, depth] : depthStepsField(p.value("depth_profile"), "part_program.depth_profile"))
-      r.settings.depth_profile.push_back({length, depth});
-  if (p.contains("speed_rpm"))
-    r.settings.speed_rev_per_s = sectionNumber(p, "part_program", "speed_rpm", 1e-3, 1e6, "in (0, 1e6]") / 60.0;
+  r.settings.stock_top_z_m = p.stock_top_mm.value_or(0.0) * 1e-3;
+  if (p.depth_profile)
+    for (const DepthStepSpec& step : *p.depth_profile)
+      r.settings.depth_profile.push_back({step.length_mm * 1e-3, step.depth_mm * 1e-3});
+  if (p.speed_rpm) r.settings.speed_rev_per_s = *p.speed_rpm / 60.0;
   if (speed_rpm) r.settings.speed_rev_per_s = *speed_rpm / 60.0;
-  r.settings.keep_plunge_feed = p.value("keep_plunge_feed").toBool(true);
-  QString choice = controller.isEmpty() ? p.value("controller").toString() : controller;
-  if (choice.isEmpty()) choice = project.document.contains("control") ? "adaptive" : "model-based";
+  r.settings.keep_plunge_feed = p.keep_plunge_feed.value_or(true);
+  QString choice = controller.isEmpty() ? p.controller.value_or(QString()) : controller;
+  if (choice.isEmpty()) choice = project.control ? "adaptive" : "model-based";
   if (choice == "adaptive") {
     r.adaptive = true;
     r.control = controlRequestFromProject(project);
   } else if (choice == "model-based") {
-    r.model = modelSettings(project);
+    r.model = modelBasedSettingsFrom(project.force_control.value_or(ForceControlSection{}), project);
   } else {
-    failField(controller.isEmpty() ? "part_program.controller" : "--controller", "'" + choice + "'",
-              "adaptive or model-based");
+    throw CliError(QString("--controller = '%1': must be adaptive or model-based").arg(choice), kExitBadInput);
   }
   return r;
+}
+
+OverrideRequest overrideRequestFromProject(const Project& project, const QString& controller,
+                                           std::optional<double> speed_rpm) {
+  return overrideRequestFrom(project.part_program.value_or(PartProgramSection{}), project, controller, speed_rpm);
 }
 
 OverrideOutcome runOverride(const OverrideRequest& request, const GcodeProgram& program, const JobControl& job) {

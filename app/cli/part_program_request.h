@@ -1,6 +1,7 @@
 #pragma once
 // Part-program overrides (issue 7) from the project, shared by `millexpert-cli override` and the GUI's
-// part-program panel. Sections (shop units; every key optional unless noted):
+// part-program panel. Sections (typed in project/process_sections.h, checked when the project is
+// loaded; shop units; every key optional unless noted):
 //   "part_program": {
 //     "stock_top_mm": 0,              depth = stock top - lowest Z of a feed move (when no profile)
 //     "depth_profile": [{"length_mm": 5.87, "depth_mm": 2}, ...],   along the feed path (wins over Z)
@@ -36,7 +37,12 @@ struct OverrideRequest {
   QString controllerName() const;
 };
 
-// controller: "adaptive", "model-based" or empty (the project's choice). CliError(2) naming the field.
+ModelBasedForceSettings modelBasedSettingsFrom(const ForceControlSection& section, const Project& project);
+// controller: "adaptive", "model-based" or empty (the project's choice); CliError(2) for another
+// --controller, ProjectError for what the project lacks.
+OverrideRequest overrideRequestFrom(const PartProgramSection& section, const Project& project,
+                                    const QString& controller = {}, std::optional<double> speed_rpm = std::nullopt);
+// The project's part_program section (the defaults when it has none).
 OverrideRequest overrideRequestFromProject(const Project& project, const QString& controller = {},
                                            std::optional<double> speed_rpm = std::nullopt);
 

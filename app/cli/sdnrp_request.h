@@ -9,12 +9,15 @@
 //     "drives": {"feed_natural_frequency_rad_s": 30, "feed_damping": 0.7, "spindle_time_constant_s": 0.3},
 //     "integral_rate_per_s": 2                the feed loop's pole (lambda)
 //   }
-// Errors: CliError(2) naming the field, the value and the range.
+// The section is typed in project/process_sections.h and range-checked when the project is loaded;
+// this applies the defaults and converts to SI.
 #include "project/project.h"
 #include "sdnrp/sdnrp_simulator.h"
 
 namespace mx::app {
 
+SdnrpSettings sdnrpSettingsFrom(const SdnrpSection& section);
+// The project's sdnrp section, or the defaults when it has none.
 SdnrpSettings sdnrpSettingsFromProject(const Project& project);
 
 }  // namespace mx::app

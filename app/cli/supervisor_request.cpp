@@ -1,12 +1,12 @@
 #include "cli/supervisor_request.h"
 
-#include <QJsonArray>
 #include <QJsonObject>
 
 #include "cli/cli_application.h"
 #include "cli/cli_support.h"
 #include "cli/grafcet_json.h"
 #include "model/job_control.h"
+#include "project/project_rules.h"
 
 namespace mx::app {
 
@@ -17,84 +17,72 @@ const std::set<std::string>& supervisionSignals() {
 
 QStringList supervisorControllers() { return {"none", "smc1", "smc2"}; }
 
-SupervisorRequest supervisorRequestFromProject(const Project& project, const QString& controller) {
+SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Project& project,
+                                        const QString& controller) {
   if (!supervisorControllers().contains(controller))
-    failField("--controller", "'" + controller + "'", "one of none, smc1, smc2");
-  if (!project.document.value("supervisor").isObject())
-    throw CliError("section 'supervisor' is missing: the supervised run needs it (docs/project-file.md)", kExitBadInput);
-  const QJsonObject s = project.document.value("supervisor").toObject();
+    throw CliError(QString("--controller = '%1': must be one of none, smc1, smc2").arg(controller), kExitBadInput);
   SupervisorRequest r;
   SupervisionScenario& sc = r.scenario;
   sc.controller = parseController(controller.toStdString());
 
-  const QString tool_id = s.contains("tool") ? s.value("tool").toString()
-                                             : (project.tools.empty() ? QString() : project.tools.front().id);
+  const QString tool_id = s.tool.value_or(project.tools.empty() ? QString() : project.tools.front().id);
   const ToolSpec* tool = project.findTool(tool_id);
-  if (!tool) failField("supervisor.tool", "'" + tool_id + "'", "the id of a tool of the project");
+  if (!tool) throwBadField("supervisor.tool", "'" + tool_id + "'", "the id of a tool of the project");
   sc.process.tool_radius_m = tool->diameter_mm * 0.5e-3;
   sc.process.teeth = tool->teeth;
-  sc.process.spindle_speed_rpm = sectionNumber(s, "supervisor", "spindle_rpm", 1.0, 1e5, "in [1, 1e5]", 1500.0);
-  sc.programmed_feed_m_per_s =
-      sectionNumber(s, "supervisor", "programmed_feed_mm_s", 1e-3, 1e4, "in (0, 1e4]", 10.0) * 1e-3;
-  const QJsonObject part = s.value("part").toObject();
-  sc.part_length_m = sectionNumber(part, "supervisor.part", "length_mm", 1e-3, 1e5, "in (0, 1e5]", 100.0) * 1e-3;
-  sc.process.part_width_m = sectionNumber(part, "supervisor.part", "width_mm", 1e-3, 1e4, "in (0, 1e4]", 50.0) * 1e-3;
-  sc.approach_m = sectionNumber(part, "supervisor.part", "approach_mm", 0.0, 1e4, "in [0, 1e4]", 2.0) * 1e-3;
+  sc.process.spindle_speed_rpm = s.spindle_rpm.value_or(1500.0);
+  sc.programmed_feed_m_per_s = s.programmed_feed_mm_s.value_or(10.0) * 1e-3;
+  const SupervisorPartSpec part = s.part.value_or(SupervisorPartSpec{});
+  sc.part_length_m = part.length_mm.value_or(100.0) * 1e-3;
+  sc.process.part_width_m = part.width_mm.value_or(50.0) * 1e-3;
+  sc.approach_m = part.approach_mm.value_or(2.0) * 1e-3;
 
-  const QJsonValue passes = s.value("passes_mm").toObject().value(controller);
-  if (!passes.isUndefined()) {
-    if (!passes.isArray() || passes.toArray().isEmpty())
-      failField("supervisor.passes_mm." + controller, "(not a non-empty array)", "an array of depths [mm]");
+  const std::optional<std::vector<double>>* passes = s.passes_mm ? s.passes_mm->of(controller) : nullptr;
+  if (passes && *passes) {
     sc.pass_depths_m.clear();
-    const QJsonArray a = passes.toArray();
-    for (qsizetype i = 0; i < a.size(); ++i) {
-      const QString field = QString("supervisor.passes_mm.%1[%2]").arg(controller).arg(i);
-      if (!a[i].isDouble() || !(a[i].toDouble() > 0.0 && a[i].toDouble() <= 20.0))
-        failField(field, a[i].toVariant().toString(), "a depth in (0, 20] mm");
-      sc.pass_depths_m.push_back(a[i].toDouble() * 1e-3);
-    }
+    for (double depth_mm : **passes) sc.pass_depths_m.push_back(depth_mm * 1e-3);
   } else {
     sc.pass_depths_m = defaultPassDepths(sc.controller);
   }
-  sc.scan_period_s = sectionNumber(s, "supervisor", "scan_period_ms", 0.5, 1000.0, "in [0.5, 1000]", 10.0) * 1e-3;
-  if (s.contains("reference_force_N"))
-    sc.reference_force_N = sectionNumber(s, "supervisor", "reference_force_N", 1e-3, 1e7, "in (0, 1e7]");
-  sc.power_margin = sectionNumber(s, "supervisor", "power_margin", 0.05, 1.0, "in [0.05, 1]", sc.power_margin);
-  sc.chatter_detector.threshold_N =
-      sectionNumber(s, "supervisor", "chatter_threshold_N", 1e-3, 1e6, "in (0, 1e6]", sc.chatter_detector.threshold_N);
+  sc.scan_period_s = s.scan_period_ms.value_or(10.0) * 1e-3;
+  if (s.reference_force_N) sc.reference_force_N = *s.reference_force_N;
+  sc.power_margin = s.power_margin.value_or(sc.power_margin);
+  sc.chatter_detector.threshold_N = s.chatter_threshold_N.value_or(sc.chatter_detector.threshold_N);
   if (project.machine) {
     sc.limits.spindle_power_limit_W = project.machine->spindle_power_W;
     if (project.machine->max_feed_mm_s) sc.limits.max_feed_rate_m_per_s = *project.machine->max_feed_mm_s * 1e-3;
   }
   if (project.operation) sc.limits.max_feed_per_tooth_m = project.operation->max_feed_per_tooth_mm * 1e-3;
 
-  const QJsonArray events = s.value("events").toArray();
-  for (qsizetype i = 0; i < events.size(); ++i) {
-    const QString path = QString("supervisor.events[%1]").arg(i);
-    const QJsonObject e = events[i].toObject();
+  for (const SupervisorEventSpec& e : s.events.value_or(std::vector<SupervisorEventSpec>{})) {
     OperatorEvent ev;
-    ev.t_s = sectionNumber(e, path, "t_s", 0.0, 1e5, "in [0, 1e5]");
-    const QString type = e.value("type").toString();
-    if (type == "feed_hold_on")
+    ev.t_s = e.t_s;
+    if (e.type == "feed_hold_on")
       ev.type = OperatorEventType::FeedHoldOn;
-    else if (type == "feed_hold_off")
+    else if (e.type == "feed_hold_off")
       ev.type = OperatorEventType::FeedHoldOff;
-    else if (type == "chatter")
-      ev.type = OperatorEventType::ChatterSignal;
     else
-      failField(path + ".type", "'" + type + "'", "one of feed_hold_on, feed_hold_off, chatter");
+      ev.type = OperatorEventType::ChatterSignal;
     sc.events.push_back(ev);
   }
   try {
     validateSupervisionScenario(sc);
   } catch (const InvalidInput& e) {
-    throw CliError(QString("supervisor: %1").arg(e.what()), kExitBadInput);
+    throw ProjectError(QString("supervisor: %1").arg(e.what()));
   }
   r.chart_path = "supervisor.charts." + controller;
-  const QJsonValue chart = s.value("charts").toObject().value(controller);
-  if (chart.isUndefined()) throw CliError(QString("%1 is missing: the Grafcet chart of this controller").arg(r.chart_path), kExitBadInput);
+  const QJsonValue chart = s.charts.value_or(QJsonObject()).value(controller);
+  if (chart.isUndefined()) throw ProjectError(QString("%1 is missing: the Grafcet chart of this controller").arg(r.chart_path));
   r.chart = loadGrafcetChart(chart, r.chart_path, supervisionSignals());
   return r;
+}
+
+SupervisorRequest supervisorRequestFromProject(const Project& project, const QString& controller) {
+  if (!supervisorControllers().contains(controller))
+    throw CliError(QString("--controller = '%1': must be one of none, smc1, smc2").arg(controller), kExitBadInput);
+  if (!project.supervisor)
+    throw ProjectError("section 'supervisor' is missing: the supervised run needs it (docs/project-file.md)");
+  return supervisorRequestFrom(*project.supervisor, project, controller);
 }
 
 }  // namespace mx::app

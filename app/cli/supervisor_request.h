@@ -1,7 +1,8 @@
 #pragma once
 // The project's "supervisor" section (issue 8: Landers & Ulsoy's supervisory machining control) in
-// engine form. Shop units in the file; every error is CliError(2) naming the field, the value and the
-// range (charts: the JSON path of the element, app/cli/grafcet_json.h).
+// engine form. Shop units in the file (typed in project/process_sections.h, checked when the project
+// is loaded); errors name the field, the value and the range (charts: the JSON path of the element,
+// app/cli/grafcet_json.h).
 //   "supervisor": {
 //     "tool": "FM50",                        the face mill (radius = diameter / 2, teeth); default first tool
 //     "spindle_rpm": 1500, "programmed_feed_mm_s": 10,
@@ -36,7 +37,10 @@ struct SupervisorRequest {
   QString chart_path;  // "supervisor.charts.smc1"
 };
 
-// controller: "none", "smc1" or "smc2".
+// controller: "none", "smc1" or "smc2" (CliError(2) otherwise: it is the --controller flag).
+SupervisorRequest supervisorRequestFrom(const SupervisorSection& section, const Project& project,
+                                        const QString& controller);
+// The project's supervisor section; ProjectError when it has none.
 SupervisorRequest supervisorRequestFromProject(const Project& project, const QString& controller);
 
 QStringList supervisorControllers();  // {"none", "smc1", "smc2"}

@@ -19,6 +19,7 @@
 #include "weights_panel.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
+#include "project/lobe_inputs.h"
 #include "stability/lobe_diagram.h"
 #include "tool_library_editor.h"
 
@@ -184,18 +185,12 @@ void MainWindow::recomputeLobes() {
   const app::Project& p = doc_.project();
   LobeJobInput input;
   input.method = method_;
-  double from = 1000.0, to = 20000.0, step = 10.0;
-  if (p.expert) {
-    input.delta_per_s = p.expert->delta_per_s;
-    input.alpha = p.expert->alpha;
-    if (p.expert->grid) {
-      from = p.expert->grid->speed_from_rpm;
-      to = p.expert->grid->speed_to_rpm;
-    }
-  }
-  // The ZOA is cheap on a fine grid; the SDM envelope uses 200 speeds.
-  if (method_ == LobeMethod::SemiDiscretization) step = std::max((to - from) / 199.0, 1.0);
-  input.speeds_rev_per_s = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(step)}.values();
+  app::LobeInputs lobes = app::lobeInputsFrom(p, 10.0);  // the ZOA is cheap on a fine grid
+  input.delta_per_s = lobes.delta_per_s;
+  input.alpha = lobes.alpha;
+  // The SDM envelope uses 200 speeds.
+  if (method_ == LobeMethod::SemiDiscretization) lobes.step_rpm = std::max((lobes.to_rpm - lobes.from_rpm) / 199.0, 1.0);
+  input.speeds_rev_per_s = lobes.grid().values();
   try {
     for (const app::ToolSpec& t : p.tools) input.tools.push_back(p.setupFor(t.id));
   } catch (const app::ProjectError& e) {

@@ -11,6 +11,7 @@
 #include "control_view.h"
 #include "control_view_data.h"
 #include "main_window.h"
+#include "project/project_validation.h"
 
 namespace mx::gui {
 
@@ -68,7 +69,7 @@ void MainWindow::buildControlDock() {
 // The project's control section changed (or the project was loaded): refresh the editors and re-run.
 void MainWindow::refreshControl() {
   const app::Project& p = doc_.project();
-  if (!p.document.contains("control")) {
+  if (!p.control) {
     control_request_.reset();
     control_inputs_.clear();
     control_run_inputs_.clear();
@@ -89,11 +90,12 @@ void MainWindow::refreshControl() {
   control_view_->setSettings(controllerSettingsOf(*control_request_));
   control_view_->setWorkpiece(workpieceViewOf(control_request_->settings.workpiece));
   // Everything but beta decides the sweep.
-  QJsonObject section = p.document.value("control").toObject();
+  const QJsonObject json = app::projectToJson(p);
+  QJsonObject section = json.value("control").toObject();
   section.remove("beta");
   const QByteArray inputs = QJsonDocument(section).toJson(QJsonDocument::Compact) +
-                            QJsonDocument(p.document.value("tools").toArray()).toJson(QJsonDocument::Compact) +
-                            QJsonDocument(p.document.value("material").toObject()).toJson(QJsonDocument::Compact);
+                            QJsonDocument(json.value("tools").toArray()).toJson(QJsonDocument::Compact) +
+                            QJsonDocument(json.value("material").toObject()).toJson(QJsonDocument::Compact);
   const QByteArray with_beta = inputs + QByteArray::number(control_request_->settings.beta, 'g', 17);
   if (with_beta == control_run_inputs_) return;  // an edit elsewhere in the project
   control_run_inputs_ = with_beta;
@@ -114,9 +116,10 @@ void MainWindow::editControlSection(const std::function<void(app::ControlRequest
   app::ControlRequest r = *control_request_;
   change(r);
   app::Project edited = doc_.project();
-  edited.document.insert("control", app::controlSectionJson(r, edited.document.value("control").toObject()));
+  edited.control = app::controlSectionFrom(r, edited.control.value_or(app::ControlSection{}));
   // The section's own validation (ranges, workpiece) before the edit is pushed.
   try {
+    app::validateProject(edited);
     app::controlRequestFromProject(edited);
   } catch (const std::exception& e) {
     showError(what, e.what());

@@ -113,8 +113,9 @@ void MainWindow::refreshMachining() {
     // an invalid sdnrp section is reported when the loop is run
   }
   QByteArray inputs;
+  const QJsonObject json = app::projectToJson(p);
   for (const char* section : {"control", "force_control", "part_program", "tools", "machine", "operation"})
-    inputs += QJsonDocument(QJsonObject{{section, p.document.value(section)}}).toJson(QJsonDocument::Compact);
+    inputs += QJsonDocument(QJsonObject{{section, json.value(section)}}).toJson(QJsonDocument::Compact);
   if (inputs == machining_inputs_) return;
   machining_inputs_ = inputs;
   if (!override_path_.isEmpty()) openPartProgram(override_path_);

@@ -21,11 +21,7 @@ namespace mx::gui {
 
 namespace {
 
-QStringList rulesOf(const app::Project& p) {
-  QStringList out;
-  for (const QJsonValue& v : p.document.value("operator_rules").toArray()) out << v.toString();
-  return out;
-}
+QStringList rulesOf(const app::Project& p) { return p.operator_rules.value_or(QStringList{}); }
 
 std::optional<double> finiteOrNone(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
@@ -130,9 +126,9 @@ void MainWindow::refreshHistory() {
 void MainWindow::onRulesEdited(const QStringList& rules) {
   app::Project edited = doc_.project();
   if (rules.isEmpty())
-    edited.document.remove("operator_rules");
+    edited.operator_rules.reset();
   else
-    edited.document.insert("operator_rules", QJsonArray::fromStringList(rules));
+    edited.operator_rules = rules;
   const QString error = doc_.applyEdit(edited, tr("Edit operator rules"));
   if (!error.isEmpty()) showError(tr("Operator rules refused"), error);
 }
@@ -170,7 +166,7 @@ void MainWindow::updateFiredRules() {
       notes << tr("Line %1 violated at this point: %2").arg(v.rule.line).arg(QString::fromStdString(v.rule.text));
     for (const RuleAdvice& a : r.outcome.advice)
       notes << tr("Advice (line %1): %2").arg(a.rule.line).arg(QString::fromStdString(a.message));
-  } catch (const app::CliError& e) {
+  } catch (const app::ProjectError& e) {
     rules_editor_->setFiredRules({});
     notes << QString::fromStdString(e.what());
   }

@@ -74,9 +74,8 @@ widgets::ParetoPointView pointView(const ParetoPoint& p) {
 
 ParetoWeights projectParetoWeightsOf(const app::Project& p) {
   ParetoWeights w{0.25, 0.25, 0.25, 0.25};
-  const QJsonArray a = p.document.value("pareto").toObject().value("weights").toArray();
-  if (a.size() == 4)
-    for (qsizetype i = 0; i < 4; ++i) w[static_cast<std::size_t>(i)] = a[i].toDouble();
+  if (p.pareto && p.pareto->weights && p.pareto->weights->size() == 4)
+    for (std::size_t i = 0; i < 4; ++i) w[i] = (*p.pareto->weights)[i];
   return w;
 }
 
@@ -172,7 +171,7 @@ void MainWindow::setLearningDatabasePath(const QString& path) {
 void MainWindow::rebuildPareto() {
   const app::Project& p = doc_.project();
   pareto_choice_.reset();
-  if (!p.document.contains("pareto") || p.tools.empty() || !p.machine || !p.operation || !p.expert) {
+  if (!p.pareto || p.tools.empty() || !p.machine || !p.operation || !p.expert) {
     pareto_->clear();
     front_view_->setPoints({});
     front_view_->setEnabled(false);
@@ -252,10 +251,8 @@ void MainWindow::showParetoChoice(const ParetoWeights& w) {
 void MainWindow::commitParetoWeights(const ParetoWeights& w, const QString& description,
                                      const std::optional<ParetoPoint>& target) {
   app::Project edited = doc_.project();
-  if (!edited.document.contains("pareto")) return;
-  QJsonObject pareto = edited.document.value("pareto").toObject();
-  pareto.insert("weights", QJsonArray{w[0], w[1], w[2], w[3]});
-  edited.document.insert("pareto", pareto);
+  if (!edited.pareto) return;
+  edited.pareto->weights = std::vector<double>{w[0], w[1], w[2], w[3]};
   doc_.undoStack()->beginMacro(description);
   const QString error = doc_.applyEdit(edited, description);
   pareto_weights_->setWeights(w);

@@ -138,12 +138,11 @@ void MainWindow::buildSupervisorDock() {
   connect(supervisor_view_->editor(), &widgets::GrafcetChartEditor::chartEdited, this,
           [this](const widgets::GrafcetChartData& d) {
             app::Project edited = doc_.project();
-            QJsonObject s = edited.document.value("supervisor").toObject();
-            QJsonObject charts = s.value("charts").toObject();
+            if (!edited.supervisor) return;
+            QJsonObject charts = edited.supervisor->charts.value_or(QJsonObject());
             const QString c = supervisor_view_->controller();
             charts.insert(c, app::grafcetChartToJson(engineChart(d), charts.value(c).toObject()));
-            s.insert("charts", charts);
-            edited.document.insert("supervisor", s);
+            edited.supervisor->charts = charts;
             const QString error = doc_.applyEdit(edited, tr("Edit the %1 chart").arg(c));
             if (!error.isEmpty()) showError(tr("Chart refused"), error);
           });
@@ -194,7 +193,7 @@ void MainWindow::buildSupervisorDock() {
 
 void MainWindow::refreshSupervisor() {
   const app::Project& p = doc_.project();
-  if (!p.document.contains("supervisor")) {
+  if (!p.supervisor) {
     supervisor_request_.reset();
     supervisor_view_->setEnabled(false);
     supervisor_view_->setStatus(tr("This project has no \"supervisor\" section (docs/project-file.md)"));
@@ -209,7 +208,7 @@ void MainWindow::refreshSupervisor() {
     try {
       const QString c = supervisor_view_->controller();
       const GrafcetChart raw = app::grafcetChartFromJson(
-          p.document.value("supervisor").toObject().value("charts").toObject().value(c), "supervisor.charts." + c);
+          p.supervisor->charts.value_or(QJsonObject()).value(c), "supervisor.charts." + c);
       supervisor_view_->editor()->setChart(chartData(raw));
     } catch (const std::exception&) {
     }

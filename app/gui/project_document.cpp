@@ -78,7 +78,6 @@ void ProjectDocument::setPoint(const PickedPoint& point, int drag_id) {
 void ProjectDocument::newProject() {
   app::Project p;
   p.name = tr("Untitled");
-  p.document = QJsonObject{{"format", "millexpert-project"}, {"version", 1}, {"name", p.name}};
   undo_.clear();
   path_.clear();
   setSnapshot(p);

@@ -38,6 +38,18 @@ QString ObjectReader::string(const QString& key) const {
   return v.toString();
 }
 
+std::optional<QString> ObjectReader::optionalString(const QString& key) const {
+  if (!has(key)) return std::nullopt;
+  return string(key);
+}
+
+std::optional<bool> ObjectReader::optionalBool(const QString& key) const {
+  if (!has(key)) return std::nullopt;
+  const QJsonValue v = value(key);
+  if (!v.isBool()) throwWrongType(pathOf(key), "true or false", v);
+  return v.toBool();
+}
+
 std::optional<ObjectReader> ObjectReader::optionalObject(const QString& key) const {
   if (!has(key)) return std::nullopt;
   const QJsonValue v = value(key);

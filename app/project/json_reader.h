@@ -19,6 +19,7 @@ class ObjectReader {
   ObjectReader(QJsonObject object, QString path) : object_(std::move(object)), path_(std::move(path)) {}
 
   const QString& path() const { return path_; }
+  const QJsonObject& object() const { return object_; }
   QString pathOf(const QString& key) const { return childPath(path_, key); }
   bool has(const QString& key) const { return object_.contains(key); }
   QJsonValue value(const QString& key) const { return object_.value(key); }
@@ -29,6 +30,8 @@ class ObjectReader {
   // Required integer, checked against `rule` right away (it must be integral to be stored).
   int integer(const QString& key, const NumberRule& rule) const;
   QString string(const QString& key) const;
+  std::optional<QString> optionalString(const QString& key) const;
+  std::optional<bool> optionalBool(const QString& key) const;
   std::optional<ObjectReader> optionalObject(const QString& key) const;
   std::optional<QJsonArray> optionalArray(const QString& key) const;
   QJsonArray array(const QString& key, const QString& requirement) const;

@@ -3,11 +3,13 @@
 // Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "model/milling_setup.h"
+#include "project/process_sections.h"
 
 namespace mx::app {
 
@@ -22,6 +24,7 @@ struct ModeSpec {
   double freq_Hz = 0.0;
   double damping_pct = 0.0;
   double stiffness_N_per_um = 0.0;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this mode
 };
 
 struct ToolSpec {
@@ -34,9 +37,11 @@ struct ToolSpec {
   std::optional<double> radial_depth_mm; // overrides the operation's radial engagement
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
 };
 
 struct MachineSpec {
+  std::optional<QString> name;  // shown to operator rules as machine.name
   double spindle_power_W = 0.0;
   std::optional<double> max_spindle_rpm;  // no limit when absent
   std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
@@ -61,6 +66,7 @@ struct ExpertGridSpec {
   double speed_step_rpm = 100.0;
   int depth_divisions = 10;
   double feed_step_mm = 0.01;
+  std::optional<bool> modal_candidate_speeds;  // add the Rule 7.2 speeds; default true
 };
 
 struct ExpertSpec {
@@ -71,6 +77,8 @@ struct ExpertSpec {
   std::vector<double> ct{0.5, 0.5};
   std::vector<double> cf{0.5, 0.5};
   std::optional<ExpertGridSpec> grid;
+  std::optional<QString> method;          // "zoa" (default) or "sdm"
+  std::optional<int> simulated_points;    // K of Rule 5, [1, 1000], default 12
 };
 
 struct Project {
@@ -80,7 +88,16 @@ struct Project {
   std::optional<OperationSpec> operation;
   std::vector<ToolSpec> tools;
   std::optional<ExpertSpec> expert;
-  QJsonObject document;  // the JSON as loaded; unknown keys at every level survive a save
+  std::optional<ControlSection> control;
+  std::optional<SdnrpSection> sdnrp;
+  std::optional<ForceControlSection> force_control;
+  std::optional<PartProgramSection> part_program;
+  std::optional<SupervisorSection> supervisor;
+  std::optional<ParetoSection> pareto;
+  std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
+  // The keys of the file this build does not know, per object, at every level but tools and modes
+  // (those keep theirs in ToolSpec/ModeSpec::unknown, so that they follow their tool on reorder).
+  QJsonObject document;
 
   const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
   // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
@@ -94,7 +111,7 @@ struct Project {
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
 Project projectFromJson(const QJsonObject& root);
 Project loadProject(const QString& path);
-// Back to JSON, merged over project.document so that unknown keys are kept.
+// Back to JSON: the typed values, with the unknown keys of each object merged back in.
 QJsonObject projectToJson(const Project& project);
 // Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
 void saveProject(const Project& project, const QString& path);

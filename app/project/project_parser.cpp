@@ -1,9 +1,11 @@
 // projectFromJson: reads the document into the Project structs (presence and types), then runs
 // validateProject (ranges and cross-field rules).
 #include <QJsonArray>
+#include <initializer_list>
 
 #include "project/json_reader.h"
 #include "project/project.h"
+#include "project/project_sections_io.h"
 #include "project/project_validation.h"
 
 namespace mx::app {
@@ -12,6 +14,11 @@ namespace {
 
 constexpr const char* kFormat = "millexpert-project";
 constexpr int kVersion = 1;
+
+QJsonObject withoutKeys(QJsonObject o, std::initializer_list<const char*> keys) {
+  for (const char* k : keys) o.remove(k);
+  return o;
+}
 
 void readHeader(const ObjectReader& root) {
   if (!root.has("format")) throwMissing("format", QString("string \"%1\"").arg(kFormat));
@@ -34,6 +41,7 @@ void readHeader(const ObjectReader& root) {
 
 MachineSpec readMachine(const ObjectReader& r) {
   MachineSpec m;
+  m.name = r.optionalString("name");
   m.spindle_power_W = r.number("spindle_power_W", rules::kPositive);
   m.max_spindle_rpm = r.optionalNumber("max_spindle_rpm");
   m.max_feed_mm_s = r.optionalNumber("max_feed_mm_s");
@@ -74,6 +82,7 @@ std::vector<ModeSpec> readModes(const ObjectReader& tool, const QString& key) {
     m.freq_Hz = r.number("freq_Hz", rules::kPositive);
     m.damping_pct = r.number("damping_pct", rules::kPercent);
     m.stiffness_N_per_um = r.number("stiffness_N_per_um", rules::kPositive);
+    m.unknown = withoutKeys(r.object(), {"freq_Hz", "damping_pct", "stiffness_N_per_um"});
     modes.push_back(m);
   }
   return modes;
@@ -90,6 +99,8 @@ ToolSpec readTool(const ObjectReader& r) {
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
   t.modes_x = readModes(r, "modes_x");
   t.modes_y = readModes(r, "modes_y");
+  t.unknown = withoutKeys(
+      r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm", "modes_x", "modes_y"});
   return t;
 }
 
@@ -112,6 +123,7 @@ ExpertSpec readExpert(const ObjectReader& r) {
   if (auto ct = r.optionalNumbers("ct")) e.ct = *ct;
   if (auto cf = r.optionalNumbers("cf")) e.cf = *cf;
   if (auto grid = r.optionalObject("grid")) e.grid = readGrid(*grid);
+  readExpertExtras(r, e);
   return e;
 }
 
@@ -129,7 +141,8 @@ Project projectFromJson(const QJsonObject& root) {
     for (qsizetype i = 0; i < tools->size(); ++i) p.tools.push_back(readTool(elementObject(*tools, i, "tools")));
   }
   if (auto expert = r.optionalObject("expert")) p.expert = readExpert(*expert);
-  p.document = root;
+  readProcessSections(r, p);
+  p.document = unknownKeys(root, projectToJson(p));
   validateProject(p);
   return p;
 }

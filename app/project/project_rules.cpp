@@ -88,6 +88,24 @@ void checkNumber(const QString& path, double value, const NumberRule& rule, cons
   throw ProjectError(message);
 }
 
+void checkField(const QString& path, double value, const FieldRange& range) {
+  const bool ok = std::isfinite(value) && value >= range.lo && value <= range.hi &&
+                  (!range.integer || std::floor(value) == value);
+  if (!ok) throwBadField(path, QString::number(value, 'g', 10), range.text);
+}
+
+void checkField(const QString& path, const std::optional<double>& value, const FieldRange& range) {
+  if (value) checkField(path, *value, range);
+}
+
+void throwMissingField(const QString& path, const QString& range) {
+  throw ProjectError(QString("%1 is missing: must be %2").arg(path, range));
+}
+
+void throwBadField(const QString& path, const QString& value, const QString& range) {
+  throw ProjectError(QString("%1 = %2: must be %3").arg(path, value, range));
+}
+
 void throwMissing(const QString& path, const QString& requirement) {
   throw ProjectError(QString("%1: missing (required %2)").arg(path, requirement));
 }

@@ -4,6 +4,7 @@
 //   "tools[0].teeth = 0: must be an integer >= 1", "material.Kt_N_mm2: missing (required number > 0)".
 #include <QJsonValue>
 #include <QString>
+#include <optional>
 
 namespace mx::app {
 
@@ -49,6 +50,21 @@ QString indexPath(const QString& parent, qsizetype index);
 
 // Throws ProjectError("PATH = VALUE: must be RANGE[ (context)]") unless rule.accepts(value).
 void checkNumber(const QString& path, double value, const NumberRule& rule, const QString& context = {});
+
+// The ranges of the process sections, worded as in their messages: "control.beta = 2: must be in [-1, 1]".
+struct FieldRange {
+  double lo = 0.0;
+  double hi = 0.0;
+  const char* text = "";  // "in (0, 1e5]": the wording of the message
+  bool integer = false;
+};
+// Throws ProjectError("PATH = VALUE: must be RANGE") unless value is finite, in [lo, hi] (and integral).
+void checkField(const QString& path, double value, const FieldRange& range);
+void checkField(const QString& path, const std::optional<double>& value, const FieldRange& range);
+// "PATH is missing: must be RANGE".
+[[noreturn]] void throwMissingField(const QString& path, const QString& range);
+// "PATH = VALUE: must be RANGE".
+[[noreturn]] void throwBadField(const QString& path, const QString& value, const QString& range);
 
 [[noreturn]] void throwMissing(const QString& path, const QString& requirement);
 [[noreturn]] void throwWrongType(const QString& path, const QString& expected, const QJsonValue& got);

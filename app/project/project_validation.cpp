@@ -3,6 +3,7 @@
 #include <QHash>
 
 #include "project/project_rules.h"
+#include "project/project_sections_io.h"
 
 namespace mx::app {
 
@@ -120,6 +121,7 @@ void validateExpert(const ExpertSpec& e) {
   validateWeights("expert.ct", e.ct, 2);
   validateWeights("expert.cf", e.cf, 2);
   if (e.grid) validateGrid(*e.grid);
+  validateExpertExtras(e);
 }
 
 }  // namespace
@@ -133,6 +135,7 @@ void validateProject(const Project& project) {
   validateUniqueIds(project.tools);
   validateRadialDepths(project);
   if (project.expert) validateExpert(*project.expert);
+  validateProcessSections(project);
 }
 
 std::optional<double> radialDepthMm(const Project& project, const ToolSpec& tool) {

@@ -1,32 +1,13 @@
-// projectToJson: the known values merged over project.document, so that unknown keys at every
-// level (root, sections, tools, modes, expert.grid) survive. Tools and modes are matched by index.
+// projectToJson: the typed values, then the unknown keys of every object merged back in: those of
+// tools and modes from their structs, the others from project.document.
 #include <QJsonArray>
 
 #include "project/project.h"
+#include "project/project_sections_io.h"
 
 namespace mx::app {
 
 namespace {
-
-// Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
-void putNumber(QJsonObject& o, const QString& key, double value) {
-  const QJsonValue old = o.value(key);
-  if (old.isDouble() && old.toDouble() == value) return;
-  o.insert(key, value);
-}
-
-void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value) {
-  if (value) {
-    putNumber(o, key, *value);
-  } else {
-    o.remove(key);
-  }
-}
-
-QJsonObject objectAt(const QJsonArray& array, std::size_t index) {
-  const auto i = static_cast<qsizetype>(index);
-  return i < array.size() ? array.at(i).toObject() : QJsonObject();
-}
 
 QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
   QJsonArray out;
@@ -45,10 +26,10 @@ void putWeights(QJsonObject& o, const QString& key, const std::vector<double>& v
   o.insert(key, numbersOver(o.value(key).toArray(), values));
 }
 
-QJsonArray modesJson(const QJsonArray& old, const std::vector<ModeSpec>& modes) {
+QJsonArray modesJson(const std::vector<ModeSpec>& modes) {
   QJsonArray out;
   for (std::size_t i = 0; i < modes.size(); ++i) {
-    QJsonObject m = objectAt(old, i);
+    QJsonObject m = modes[i].unknown;
     putNumber(m, "freq_Hz", modes[i].freq_Hz);
     putNumber(m, "damping_pct", modes[i].damping_pct);
     putNumber(m, "stiffness_N_per_um", modes[i].stiffness_N_per_um);
@@ -57,7 +38,8 @@ QJsonArray modesJson(const QJsonArray& old, const std::vector<ModeSpec>& modes) 
   return out;
 }
 
-QJsonObject toolJson(QJsonObject t, const ToolSpec& tool) {
+QJsonObject toolJson(const ToolSpec& tool) {
+  QJsonObject t = tool.unknown;
   t.insert("id", tool.id);
   putNumber(t, "teeth", tool.teeth);
   putNumber(t, "diameter_mm", tool.diameter_mm);
@@ -65,12 +47,17 @@ QJsonObject toolJson(QJsonObject t, const ToolSpec& tool) {
   putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
   putOptional(t, "Kr", tool.Kr);
   putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
-  t.insert("modes_x", modesJson(t.value("modes_x").toArray(), tool.modes_x));
-  t.insert("modes_y", modesJson(t.value("modes_y").toArray(), tool.modes_y));
+  t.insert("modes_x", modesJson(tool.modes_x));
+  t.insert("modes_y", modesJson(tool.modes_y));
   return t;
 }
 
 QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
+  if (m.name) {
+    o.insert("name", *m.name);
+  } else {
+    o.remove("name");
+  }
   putNumber(o, "spindle_power_W", m.spindle_power_W);
   putOptional(o, "max_spindle_rpm", m.max_spindle_rpm);
   putOptional(o, "max_feed_mm_s", m.max_feed_mm_s);
@@ -114,6 +101,7 @@ QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
   } else {
     o.remove("grid");
   }
+  putExpertExtras(o, e);
   return o;
 }
 
@@ -129,21 +117,21 @@ void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>
 }  // namespace
 
 QJsonObject projectToJson(const Project& project) {
-  QJsonObject root = project.document;
+  QJsonObject root;
   root.insert("format", "millexpert-project");
   putNumber(root, "version", 1);
   root.insert("name", project.name);
   putSection(root, "machine", project.machine, machineJson);
   putSection(root, "material", project.material, materialJson);
   putSection(root, "operation", project.operation, operationJson);
-  if (!project.tools.empty() || root.contains("tools")) {
-    const QJsonArray old = root.value("tools").toArray();
+  if (!project.tools.empty() || project.document.contains("tools")) {
     QJsonArray tools;
-    for (std::size_t i = 0; i < project.tools.size(); ++i) tools.append(toolJson(objectAt(old, i), project.tools[i]));
+    for (const ToolSpec& tool : project.tools) tools.append(toolJson(tool));
     root.insert("tools", tools);
   }
   putSection(root, "expert", project.expert, expertJson);
-  return root;
+  putProcessSections(root, project);
+  return withUnknownKeys(project.document, root);
 }
 
 }  // namespace mx::app

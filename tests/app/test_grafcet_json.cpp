@@ -6,6 +6,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/grafcet_json.h"
+#include "project/project.h"
 #include "supervisor/grafcet_interpreter.h"
 #include "test_registry.h"
 
@@ -35,8 +36,8 @@ QJsonObject parse(const char* text) { return QJsonDocument::fromJson(text).objec
 QString errorOf(const QJsonValue& v, const std::optional<std::set<std::string>>& known = std::nullopt) {
   try {
     loadGrafcetChart(v, "supervisor.charts.smc1", known);
-  } catch (const CliError& e) {
-    if (e.code != 2) return "wrong exit code";
+  } catch (const ProjectError& e) {
+    if (e.exitCode() != 2) return "wrong exit code";
     return QString::fromStdString(e.what());
   }
   return {};

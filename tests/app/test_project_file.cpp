@@ -449,6 +449,8 @@ class TestProjectFile : public QObject {
     p.tools[0].Kr = 0.25;
     ToolSpec added = p.tools[0];
     added.id = "R9";
+    added.unknown = {};  // a new tool, not a copy: none of the file's keys
+    added.modes_x[0].unknown = {};
     added.radial_depth_mm = 5.0;
     p.tools.push_back(added);
     p.operation->radial_immersion.reset();
@@ -459,7 +461,7 @@ class TestProjectFile : public QObject {
     QJsonObject j = projectToJson(p);
     QJsonArray tools = j["tools"].toArray();
     QCOMPARE(tools.size(), 2);
-    QVERIFY(!tools[1].toObject().contains("x_tool_holder"));  // a new tool is a new object
+    QVERIFY(!tools[1].toObject().contains("x_tool_holder"));
     QCOMPARE(tools[1].toObject()["radial_depth_mm"].toDouble(), 5.0);
     QVERIFY(!tools[1].toObject()["modes_x"].toArray()[0].toObject().contains("x_mode_source"));
     QCOMPARE(tools[0].toObject()["Kt_N_mm2"].toDouble(), 650.0);
@@ -472,7 +474,7 @@ class TestProjectFile : public QObject {
     QCOMPARE(back.setupFor("R9").radial_depth_m, 0.005);
     QCOMPARE(back.setupFor("R1").tangential_coefficient_pa, 6.5e8);
 
-    p.tools.erase(p.tools.begin());  // matched by index: the first tool object now carries R9
+    p.tools.erase(p.tools.begin());
     p.tools[0].Kt_N_mm2.reset();
     p.tools[0].Kr.reset();
     p.tools[0].modes_y.clear();

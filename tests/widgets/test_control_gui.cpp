@@ -15,6 +15,7 @@
 #include "control_view.h"
 #include "main_window.h"
 #include "part_program_panel.h"
+#include "project/project.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
 
@@ -58,16 +59,16 @@ class TestControlGui : public QObject {
     // A beta change: one undoable edit of control.beta, and a new run.
     shown.clear();
     emit view->betaChanged(0.3);
-    QCOMPARE(window.project()->document.value("control").toObject().value("beta").toDouble(), 0.3);
+    QCOMPARE(app::projectToJson(*window.project()).value("control").toObject().value("beta").toDouble(), 0.3);
     QVERIFY(shown.wait(30000));
     window.document()->undoStack()->undo();
-    QCOMPARE(window.project()->document.value("control").toObject().value("beta").toDouble(), -0.3);
+    QCOMPARE(app::projectToJson(*window.project()).value("control").toObject().value("beta").toDouble(), -0.3);
     QCOMPARE(view->beta(), -0.3);
 
     // A workpiece with a negative depth is refused: the project is unchanged.
-    const QJsonValue before = window.project()->document.value("control");
+    const QJsonValue before = app::projectToJson(*window.project()).value("control");
     emit view->workpieceEdited({{5.0, 2.0}, {5.0, -1.0}});
-    QCOMPARE(window.project()->document.value("control"), before);
+    QCOMPARE(app::projectToJson(*window.project()).value("control"), before);
   }
 
   void surfaceFinishRunsTheLoop() {

@@ -20,6 +20,7 @@
 #include "pareto_front_view.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
+#include "project/project.h"
 #include "requirements_panel.h"
 #include "test_registry.h"
 
@@ -39,7 +40,7 @@ bool openCase(gui::MainWindow& window) {
 }
 
 double weightAt(const gui::MainWindow& w, int i) {
-  return w.project()->document.value("pareto").toObject().value("weights").toArray().at(i).toDouble();
+  return app::projectToJson(*w.project()).value("pareto").toObject().value("weights").toArray().at(i).toDouble();
 }
 }  // namespace
 
@@ -120,7 +121,7 @@ class TestParetoGui : public QObject {
     widgets::OperatorRulesEditor* editor = window.rulesEditor();
     editor->textEdit()->setPlainText("speed_rpm <= 1500\nif tool.teeth >= 2 then advise depth_mm <= 0.01");
     QVERIFY(editor->check());
-    QCOMPARE(window.project()->document.value("operator_rules").toArray().size(), 2);
+    QCOMPARE(app::projectToJson(*window.project()).value("operator_rules").toArray().size(), 2);
     for (int i = 0; i < 60 && !(window.paretoChoice() && revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9); ++i)
       shown.wait(1000);
     QVERIFY(revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
@@ -134,7 +135,7 @@ class TestParetoGui : public QObject {
     // A syntax error changes nothing in the project.
     editor->textEdit()->setPlainText("speed_rpm <=");
     QVERIFY(!editor->check());
-    QCOMPARE(window.project()->document.value("operator_rules").toArray().size(), 2);
+    QCOMPARE(app::projectToJson(*window.project()).value("operator_rules").toArray().size(), 2);
   }
 
   void historyRecordsAndAppliesWeights() {

@@ -12,6 +12,7 @@
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "main_window.h"
+#include "project/project.h"
 #include "supervision_runner.h"
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
@@ -133,7 +134,7 @@ class TestSupervisorGui : public QObject {
     chart.steps[1].name = "Waiting for contact";
     emit editor->chartEdited(chart);
     const auto name = [&] {
-      return window.project()->document.value("supervisor").toObject().value("charts").toObject().value("smc2")
+      return app::projectToJson(*window.project()).value("supervisor").toObject().value("charts").toObject().value("smc2")
           .toObject().value("steps").toArray().at(1).toObject().value("name").toString();
     };
     QCOMPARE(name(), QString("Waiting for contact"));

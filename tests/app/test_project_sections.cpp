@@ -1,0 +1,231 @@
+// The typed process sections (control, sdnrp, force_control, part_program, supervisor, pareto,
+// operator_rules, expert extras): every example project saves byte-identically after a normalising
+// save, typed edits reach the file, and the section ranges are checked when a project is loaded.
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <cmath>
+#include <numbers>
+
+#include "cli/control_request.h"
+#include "cli/sdnrp_request.h"
+#include "project/project.h"
+#include "test_registry.h"
+
+using namespace mx;
+using namespace mx::app;
+
+namespace {
+
+QString projectsPath(const QString& name) {
+  return QString(MX_PROJECTS_DIR) + "/" + name;
+}
+
+QByteArray readBytes(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
+  return f.readAll();
+}
+
+QJsonObject readJson(const QString& path) {
+  return QJsonDocument::fromJson(readBytes(path)).object();
+}
+
+QString errorOf(const QJsonObject& root) {
+  try {
+    projectFromJson(root);
+  } catch (const ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+QJsonObject minimalWith(const QString& section, const QJsonValue& value) {
+  return QJsonObject{{"format", "millexpert-project"}, {"version", 1}, {"name", "x"}, {section, value}};
+}
+
+}  // namespace
+
+class TestProjectSections : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void everyExampleSavesByteIdentically() {
+    const QStringList names = QDir(MX_PROJECTS_DIR).entryList({"*.mxproj"}, QDir::Files, QDir::Name);
+    QCOMPARE_GE(names.size(), 7);
+    QTemporaryDir dir;
+    for (const QString& name : names) {
+      const QString first = dir.filePath(name + ".1");
+      const QString second = dir.filePath(name + ".2");
+      saveProject(loadProject(projectsPath(name)), first);
+      QCOMPARE(readJson(first), readJson(projectsPath(name)));  // every key and value kept
+      saveProject(loadProject(first), second);
+      QCOMPARE(readBytes(second), readBytes(first));
+    }
+  }
+
+  void unknownKeysStayWithTheirTool() {
+    auto tool = [](const QString& id, const QString& key, double value) {
+      return QJsonObject{
+          {"id", id},
+          {"teeth", 2},
+          {"diameter_mm", 10},
+          {"helix_deg", 0},
+          {key, value},
+          {"modes_y", QJsonArray()},
+          {"modes_x", QJsonArray{QJsonObject{
+                          {"freq_Hz", 500}, {"damping_pct", 2}, {"stiffness_N_per_um", 5}, {"x_mode_of", id}}}}};
+    };
+    QJsonObject root = minimalWith("machine", QJsonObject{{"spindle_power_W", 1000}, {"x_vendor", "ACME"}});
+    root.insert("tools", QJsonArray{tool("A", "x_a", 1), tool("B", "x_b", 2), tool("C", "x_c", 3)});
+    Project p = projectFromJson(root);
+    QCOMPARE(p.document, (QJsonObject{{"machine", QJsonObject{{"x_vendor", "ACME"}}}}));  // unknown keys only
+    QCOMPARE(p.tools[1].unknown, (QJsonObject{{"x_b", 2}}));
+
+    std::swap(p.tools[0], p.tools[2]);   // C, B, A
+    p.tools.erase(p.tools.begin() + 1);  // C, A
+    const QJsonArray tools = projectToJson(p).value("tools").toArray();
+    QCOMPARE(tools.size(), 2);
+    const QJsonObject first = tools[0].toObject(), second = tools[1].toObject();
+    QCOMPARE(first.value("id").toString(), QString("C"));
+    QCOMPARE(first.value("x_c").toDouble(), 3.0);
+    QVERIFY(!first.contains("x_a") && !first.contains("x_b"));
+    QCOMPARE(first.value("modes_x").toArray()[0].toObject().value("x_mode_of").toString(), QString("C"));
+    QCOMPARE(second.value("id").toString(), QString("A"));
+    QCOMPARE(second.value("x_a").toDouble(), 1.0);
+    QVERIFY(!second.contains("x_b") && !second.contains("x_c"));
+    QCOMPARE(second.value("modes_x").toArray()[0].toObject().value("x_mode_of").toString(), QString("A"));
+    QCOMPARE(projectToJson(p).value("machine").toObject().value("x_vendor").toString(), QString("ACME"));
+  }
+
+  void sectionsAreTyped() {
+    const Project c = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
+    QVERIFY(c.control);
+    QCOMPARE(*c.control->spindle_rpm, 715.0);
+    QCOMPARE(*c.control->beta, -0.3);
+    const Project s = loadProject(projectsPath("cus-zuperl-sdnrp.mxproj"));
+    QVERIFY(s.sdnrp && s.force_control && s.part_program);
+    QCOMPARE(*s.sdnrp->initial->feed_mm_min, 430.41);
+    QCOMPARE(*s.force_control->reference_force_N, 250.0);
+    QCOMPARE(*s.part_program->controller, QString("model-based"));
+    const Project l = loadProject(projectsPath("landers-face-milling.mxproj"));
+    QVERIFY(l.supervisor && l.supervisor->passes_mm);
+    QCOMPARE(l.supervisor->passes_mm->smc1->size(), std::size_t{2});
+    const Project r = loadProject(projectsPath("rubio-pareto-case.mxproj"));
+    QVERIFY(r.pareto && r.pareto->taylor);
+    QCOMPARE(r.pareto->taylor->K, 15300000.0);
+  }
+
+  void typedEditsReachTheFile() {
+    Project p = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
+    p.control->beta = 0.4;
+    p.control->rls->lambda.reset();
+    p.operator_rules = QStringList{"if tool.diameter_mm < 10 then speed_rpm <= 8000"};
+    const QJsonObject json = projectToJson(p);
+    QCOMPARE(json.value("control").toObject().value("beta").toDouble(), 0.4);
+    QVERIFY(!json.value("control").toObject().value("rls").toObject().contains("lambda"));
+    QCOMPARE(json.value("operator_rules").toArray().size(), 1);
+    const Project back = projectFromJson(json);
+    QCOMPARE(controlRequestFromProject(back).settings.beta, 0.4);
+    QCOMPARE(controlRequestFromProject(back).settings.rls.forgetting_factor, 1.0);  // the default
+  }
+
+  void defaultsAreNotWritten() {
+    const QJsonObject root = minimalWith("sdnrp", QJsonObject{{"ra_um", 1.2}});
+    const Project p = projectFromJson(root);
+    QCOMPARE(projectToJson(p).value("sdnrp").toObject(), (QJsonObject{{"ra_um", 1.2}}));
+    const SdnrpSettings s = sdnrpSettingsFromProject(p);
+    QCOMPARE(s.ra_desired_m, 1.2e-6);
+    QCOMPARE(s.duration_s, 15.0);
+  }
+
+  void rangesAreCheckedOnLoad_data() {
+    QTest::addColumn<QString>("section");
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("sdnrp.ra_um") << "sdnrp"
+                                 << R"({"ra_um": 9})"
+                                 << "sdnrp.ra_um = 9: must be in [0.25, 2.5]";
+    QTest::newRow("seed") << "sdnrp"
+                          << R"({"disturbance": {"seed": 1.5}})"
+                          << "sdnrp.disturbance.seed = 1.5: must be an integer in [0, 9e15]";
+    QTest::newRow("control.beta") << "control"
+                                  << R"({"spindle_rpm": 700, "cutting_pressure_N_mm2": 1, "beta": 2})"
+                                  << "control.beta = 2: must be in [-1, 1]";
+    QTest::newRow("control.spindle_rpm") << "control"
+                                         << R"({"cutting_pressure_N_mm2": 1})"
+                                         << "control.spindle_rpm is missing: must be in (0, 100000]";
+    QTest::newRow("rls.reset") << "control"
+                               << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rls": {"reset": "x"}})"
+                               << "control.rls.reset = 'x': must be one of error, trace, none";
+    QTest::newRow("workpiece")
+        << "control"
+        << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "workpiece": [{"length_mm": 0, "depth_mm": 1}]})"
+        << "control.workpiece[0].length_mm = 0: must be in (0, 1e7]";
+    QTest::newRow("passes") << "supervisor"
+                            << R"({"passes_mm": {"smc1": [1, 30]}})"
+                            << "supervisor.passes_mm.smc1[1] = 30: must be a depth in (0, 20] mm";
+    QTest::newRow("event") << "supervisor"
+                           << R"({"events": [{"t_s": 1, "type": "boom"}]})"
+                           << "supervisor.events[0].type = 'boom': must be one of feed_hold_on, feed_hold_off, chatter";
+    QTest::newRow("force model") << "force_control"
+                                 << R"({"model": {"K_N": -1}})"
+                                 << "force_control.model.K_N = -1: must be in (0, 1e9]";
+    QTest::newRow("controller") << "part_program"
+                                << R"({"controller": "pid"})"
+                                << "part_program.controller = 'pid': must be adaptive or model-based";
+    QTest::newRow("pareto.taylor") << "pareto"
+                                   << R"({})"
+                                   << "pareto.taylor is missing: the model constants K and exponents";
+  }
+
+  void rangesAreCheckedOnLoad() {
+    QFETCH(QString, section);
+    QFETCH(QString, json);
+    QFETCH(QString, message);
+    const QJsonObject value = QJsonDocument::fromJson(json.toUtf8()).object();
+    QCOMPARE(errorOf(minimalWith(section, value)), message);
+  }
+
+  void controlEngagementIsTheEngineImmersion() {
+    Project p = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
+    p.control->start_angle_deg.reset();
+    p.control->exit_angle_deg.reset();
+    p.operation->milling = MillingDirection::Up;
+    p.operation->radial_immersion = 0.5;
+    p.operation->radial_depth_mm.reset();
+    const double deg = std::numbers::pi / 180.0;
+    CuttingProcess c = controlRequestFromProject(p).settings.process;
+    QCOMPARE(c.start_angle_rad, 0.0);
+    QVERIFY(std::abs(c.exit_angle_rad - 90.0 * deg) < 1e-12);
+    // The tool's own radial depth wins over the operation's, as in the stability model.
+    p.tools[0].radial_depth_mm = 0.25 * p.tools[0].diameter_mm;
+    c = controlRequestFromProject(p).settings.process;
+    QVERIFY(std::abs(c.exit_angle_rad - 60.0 * deg) < 1e-12);
+    p.operation->milling = MillingDirection::Down;
+    c = controlRequestFromProject(p).settings.process;
+    QVERIFY(std::abs(c.start_angle_rad - 120.0 * deg) < 1e-12);
+    QVERIFY(std::abs(c.exit_angle_rad - 180.0 * deg) < 1e-12);
+    const Immersion im = p.setupFor(p.tools[0].id).immersion;
+    QCOMPARE(c.start_angle_rad, im.entry_rad);
+    QCOMPARE(c.exit_angle_rad, im.exit_rad);
+  }
+
+  void expertExtrasAreChecked() {
+    QJsonObject expert{{"delta_per_s", 0.0}, {"alpha", 1.0}, {"method", "fem"}};
+    QCOMPARE(errorOf(minimalWith("expert", expert)), QString("expert.method = 'fem': must be zoa or sdm"));
+    expert.insert("method", "sdm");
+    expert.insert("simulated_points", 0);
+    QCOMPARE(errorOf(minimalWith("expert", expert)),
+             QString("expert.simulated_points = 0: must be an integer in [1, 1000]"));
+    expert.insert("simulated_points", 20);
+    const Project p = projectFromJson(minimalWith("expert", expert));
+    QCOMPARE(*p.expert->simulated_points, 20);
+    QCOMPARE(*p.expert->method, QString("sdm"));
+  }
+};
+
+MX_REGISTER_TEST(TestProjectSections)
+#include "test_project_sections.moc"
