@@ -2,7 +2,8 @@
 // drives the closed loop on the engine thread and its result reaches the view (traces, metrics equal
 // to an independent engine run, pole-zero map, J_c sweep); a beta change is one undoable edit of
 // control.beta; an invalid workpiece is refused with the project unchanged; the surface-finish panel
-// runs the SDNRP loop; a part program is overridden and exported (only F/S words and comments change).
+// runs the SDNRP loop; a part program is overridden and exported (only F/S words and comments change);
+// a tool-table edit re-runs the control view, which then agrees with the CLI on the saved project.
 #include <QApplication>
 #include <QFile>
 #include <QJsonArray>
@@ -12,12 +13,17 @@
 
 #include "cli/control_request.h"
 #include "control/closed_loop.h"
+#include "control_metrics_panel.h"
 #include "control_view.h"
 #include "main_window.h"
+#include "monitoring_panel.h"
 #include "part_program_panel.h"
 #include "project/project.h"
+#include "support/cli_runner.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
+#include "tool_library_editor.h"
+#include "tool_table_model.h"
 
 using namespace mx;
 
@@ -69,6 +75,36 @@ class TestControlGui : public QObject {
     const QJsonValue before = app::projectToJson(*window.project()).value("control");
     emit view->workpieceEdited({{5.0, 2.0}, {5.0, -1.0}});
     QCOMPARE(app::projectToJson(*window.project()).value("control"), before);
+  }
+
+  void toolTableEditReRunsTheControlView() {
+    // C1's teeth 4 -> 2 in the tool table: the control view runs again and shows what the CLI
+    // computes on the saved project, not the 4-tooth result.
+    gui::MainWindow window;
+    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(shown.count() > 0 || shown.wait(30000));
+    widgets::ControlMetricsPanel* metrics = window.controlView()->metricsPanel();
+    const QString four_teeth_jc = metrics->valueText("jc");
+
+    widgets::ToolTableModel* tools = window.toolEditor()->toolModel();
+    int row = 0;
+    while (row < tools->rowCount() && tools->index(row, widgets::ToolTableModel::Id).data().toString() != "C1") ++row;
+    QVERIFY(row < tools->rowCount());
+    shown.clear();
+    QVERIFY(tools->setData(tools->index(row, widgets::ToolTableModel::Teeth), 2, Qt::EditRole));
+    QCOMPARE(window.project()->tools[static_cast<std::size_t>(row)].teeth, 2);
+    QVERIFY(shown.wait(30000));
+
+    QTemporaryDir dir;
+    const QString saved = dir.filePath("two-teeth.mxproj");
+    window.document()->save(saved);
+    const mx::test::CliRun cli =
+        mx::test::runCli({"control", saved, "--beta", QString::number(window.controlView()->beta(), 'g', 17)});
+    QCOMPARE(cli.code, 0);
+    const QString cli_jc = widgets::MonitoringPanel::formatNumber(cli.json.value("Jc").toDouble());
+    QCOMPARE(metrics->valueText("jc"), cli_jc);
+    QVERIFY(cli_jc != four_teeth_jc);
   }
 
   void surfaceFinishRunsTheLoop() {
