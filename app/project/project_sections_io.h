@@ -1,6 +1,8 @@
 #pragma once
 // The process sections' parts of the parser, the validator and the writer (internal to app/project).
+#include <QJsonArray>
 #include <QJsonObject>
+#include <vector>
 
 #include "project/json_reader.h"
 #include "project/project.h"
@@ -28,5 +30,7 @@ QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known
 // Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
 void putNumber(QJsonObject& o, const QString& key, double value);
 void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value);
+// `values` as a JSON array, keeping each stored element that is numerically equal.
+QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values);
 
 }  // namespace mx::app

@@ -9,16 +9,6 @@ namespace mx::app {
 
 namespace {
 
-QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
-  QJsonArray out;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const auto k = static_cast<qsizetype>(i);
-    const bool same = k < old.size() && old.at(k).isDouble() && old.at(k).toDouble() == values[i];
-    out.append(same ? old.at(k) : QJsonValue(values[i]));
-  }
-  return out;
-}
-
 // Writes an expert weight vector if the file had it or it differs from the default.
 void putWeights(QJsonObject& o, const QString& key, const std::vector<double>& values,
                 const std::vector<double>& defaults) {

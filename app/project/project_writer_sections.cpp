@@ -36,16 +36,6 @@ void putObject(QJsonObject& o, const QString& key, const std::optional<Spec>& sp
   }
 }
 
-QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
-  QJsonArray out;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const auto k = static_cast<qsizetype>(i);
-    const bool same = k < old.size() && old.at(k).isDouble() && old.at(k).toDouble() == values[i];
-    out.append(same ? old.at(k) : QJsonValue(values[i]));
-  }
-  return out;
-}
-
 void putNumbers(QJsonObject& o, const QString& key, const std::optional<std::vector<double>>& values) {
   if (values) {
     o.insert(key, numbersOver(o.value(key).toArray(), *values));
@@ -202,6 +192,16 @@ void writePareto(QJsonObject& o, const ParetoSection& p) {
 }
 
 }  // namespace
+
+QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
+  QJsonArray out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto k = static_cast<qsizetype>(i);
+    const bool same = k < old.size() && old.at(k).isDouble() && old.at(k).toDouble() == values[i];
+    out.append(same ? old.at(k) : QJsonValue(values[i]));
+  }
+  return out;
+}
 
 void putNumber(QJsonObject& o, const QString& key, double value) {
   const QJsonValue old = o.value(key);
