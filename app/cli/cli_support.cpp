@@ -83,8 +83,4 @@ void writeTextFileAtomically(const QString& flag, const QString& path, const std
   if (!file.commit()) throw CliError(QString("%1 = '%2': write failed").arg(flag, path), kExitComputationFailed);
 }
 
-void failField(const QString& field, const QString& value, const QString& range) {
-  throw ProjectError(QString("%1 = %2: must be %3").arg(field, value, range));
-}
-
 }  // namespace mx::app

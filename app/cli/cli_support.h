@@ -47,8 +47,6 @@ void printJson(const QJsonObject& object);
 // errors: cannot open -> CliError(2), write failed -> CliError(1).
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
 
-// Project content (e.g. a Grafcet chart): "<field> = <value>: must be <range>" as ProjectError (exit 2).
-[[noreturn]] void failField(const QString& field, const QString& value, const QString& range);
 
 // JSON number, or null for a non-finite value (never NaN in output).
 QJsonValue jsonNumberOrNull(double value);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "cli/cli_application.h"
-#include "cli/cli_support.h"
+#include "project/project_rules.h"
 
 namespace mx::app {
 
@@ -33,12 +33,12 @@ QString shown(const QJsonValue& v) {
 
 int integer(const QJsonValue& v, const QString& field) {
   const double x = v.toDouble(-1.0);
-  if (!v.isDouble() || !(x >= 0.0 && x <= kMaxInteger) || std::floor(x) != x) failField(field, shown(v), kIntegerRange);
+  if (!v.isDouble() || !(x >= 0.0 && x <= kMaxInteger) || std::floor(x) != x) throwBadField(field, shown(v), kIntegerRange);
   return static_cast<int>(x);
 }
 
 QJsonObject object(const QJsonValue& v, const QString& field) {
-  if (!v.isObject()) failField(field, shown(v), "an object");
+  if (!v.isObject()) throwBadField(field, shown(v), "an object");
   return v.toObject();
 }
 
@@ -48,7 +48,7 @@ QJsonArray array(const QJsonObject& o, const QString& key, const QString& field,
     return {};
   }
   const QJsonValue v = o.value(key);
-  if (!v.isArray()) failField(field, shown(v), "an array");
+  if (!v.isArray()) throwBadField(field, shown(v), "an array");
   return v.toArray();
 }
 
@@ -58,7 +58,7 @@ QString string(const QJsonObject& o, const QString& key, const QString& field, b
     return {};
   }
   const QJsonValue v = o.value(key);
-  if (!v.isString()) failField(field, shown(v), "a string");
+  if (!v.isString()) throwBadField(field, shown(v), "a string");
   return v.toString();
 }
 
@@ -94,13 +94,13 @@ GrafcetChart grafcetChartFromJson(const QJsonValue& value, const QString& path) 
     step.id = integer(s.value("id"), at + ".id");
     step.name = string(s, "name", at + ".name", true).toStdString();
     if (s.contains("initial")) {
-      if (!s.value("initial").isBool()) failField(at + ".initial", shown(s.value("initial")), "true or false");
+      if (!s.value("initial").isBool()) throwBadField(at + ".initial", shown(s.value("initial")), "true or false");
       step.initial = s.value("initial").toBool();
     }
     const QJsonArray actions = array(s, "actions", at + ".actions", false);
     for (qsizetype k = 0; k < actions.size(); ++k) {
       const QString field = QString("%1.actions[%2]").arg(at).arg(k);
-      if (!actions.at(k).isString()) failField(field, shown(actions.at(k)), "a string (\"A\", or \"L*\" for an impulse)");
+      if (!actions.at(k).isString()) throwBadField(field, shown(actions.at(k)), "a string (\"A\", or \"L*\" for an impulse)");
       step.actions.push_back(actions.at(k).toString().toStdString());
     }
     c.steps.push_back(std::move(step));
