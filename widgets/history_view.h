@@ -1,7 +1,7 @@
 #pragma once
 // The Rule 14 learning-database history (Pareto paper): the programmed points with the weights that
 // produced them, newest first, filtered by tool, material, source and an MRR band. The view does not
-// touch the database: the main window queries it (app/learning) on filterChanged() or
+// touch the database: the main window queries it (app/services/learning_database.h) on filterChanged() or
 // refreshRequested() and calls setRows() with the result.
 //
 // Signals: filterChanged() exactly once per user change of the filter widgets (combo chosen, MRR box

@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "display_units.h"
-#include "project/project.h"
+#include "document/project.h"
 
 class QCheckBox;
 class QComboBox;

@@ -4,7 +4,7 @@
 // validated edits are emitted with editRequested(), invalid ones with editRefused(reason).
 #include <QAbstractTableModel>
 
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::widgets {
 

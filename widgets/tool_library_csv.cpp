@@ -9,9 +9,9 @@
 #include <QSaveFile>
 #include <QSet>
 
-#include "project/json_format.h"
-#include "project/project_rules.h"
-#include "project/project_validation.h"
+#include "document/json_format.h"
+#include "document/project_rules.h"
+#include "document/project_validation.h"
 
 namespace mx::widgets {
 

@@ -8,7 +8,7 @@
 #include <QStringList>
 #include <vector>
 
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::widgets {
 

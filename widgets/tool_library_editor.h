@@ -12,7 +12,7 @@
 
 #include "display_units.h"
 #include "mode_table_model.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "tool_table_model.h"
 
 class QGroupBox;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "project/project_rules.h"
+#include "document/project_rules.h"
 #include "range_delegate.h"
 #include "tool_library_csv.h"
 

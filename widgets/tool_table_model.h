@@ -7,7 +7,7 @@
 #include <QPointer>
 
 #include "display_units.h"
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::widgets {
 

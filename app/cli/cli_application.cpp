@@ -6,7 +6,8 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "model/job_control.h"
-#include "project/project.h"
+#include "services/service_errors.h"
+#include "document/project.h"
 
 namespace mx::app {
 
@@ -51,6 +52,12 @@ int runCli(const QStringList& arguments) {
     printError(QString::fromStdString(e.what()));
     return e.code;
   } catch (const ProjectError& e) {
+    printError(QString::fromStdString(e.what()));
+    return e.exitCode();
+  } catch (const InputError& e) {
+    printError(QString::fromStdString(e.what()));
+    return e.exitCode();
+  } catch (const ComputationError& e) {
     printError(QString::fromStdString(e.what()));
     return e.exitCode();
   } catch (const InvalidInput& e) {

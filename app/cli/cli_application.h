@@ -1,10 +1,9 @@
 #pragma once
 #include <QStringList>
 
-namespace mx::app {
+#include "services/exit_code.h"
 
-// Exit codes of millexpert-cli (fixed interface).
-enum ExitCode : int { kExitOk = 0, kExitComputationFailed = 1, kExitBadInput = 2 };
+namespace mx::app {
 
 // Dispatches "millexpert-cli SUBCOMMAND ...": prints JSON on stdout, errors on stderr.
 int runCli(const QStringList& arguments);

@@ -6,7 +6,8 @@
 #include <cmath>
 
 #include "cli/cli_application.h"
-#include "project/project.h"
+#include "document/project.h"
+#include "services/expert_request.h"
 
 namespace mx::app {
 
@@ -70,7 +71,9 @@ void printJson(const QJsonObject& object) {
   out << QJsonDocument(object).toJson(QJsonDocument::Compact) << Qt::endl;
 }
 
-QJsonValue jsonNumberOrNull(double value) { return std::isfinite(value) ? QJsonValue(value) : QJsonValue(); }
+void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& settings) {
+  if (parser.isSet("method")) settings.stability.method = stabilityMethodFromText(parser.value("method"), "--method");
+}
 
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write) {
   QSaveFile file(path);

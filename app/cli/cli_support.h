@@ -1,7 +1,7 @@
 #pragma once
 // Shared pieces of the CLI subcommands: option parsing with range-checked numbers, JSON output
 // and the error type of command-line flags, which carries the exit code (project content throws
-// ProjectError, project/project.h).
+// ProjectError, document/project.h; the services throw InputError and ComputationError).
 #include <QCommandLineParser>
 #include <QJsonObject>
 #include <QString>
@@ -10,6 +10,9 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+
+#include "expert/expert_settings.h"
+#include "services/json_output.h"
 
 namespace mx::app {
 
@@ -41,14 +44,13 @@ struct CutPointFlags {
 QList<QCommandLineOption> cutPointOptions();
 CutPointFlags readCutPoint(const QCommandLineParser& parser);
 
+// Applies --method (zoa|sdm) when the parser has it set.
+void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& settings);
+
 void printJson(const QJsonObject& object);
 
 // Writes `lines` (CSV or other text) atomically to `path` (QSaveFile); `flag` names the option in
 // errors: cannot open -> CliError(2), write failed -> CliError(1).
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
-
-
-// JSON number, or null for a non-finite value (never NaN in output).
-QJsonValue jsonNumberOrNull(double value);
 
 }  // namespace mx::app

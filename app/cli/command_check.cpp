@@ -4,7 +4,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::app {
 

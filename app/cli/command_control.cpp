@@ -18,7 +18,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "cli/control_request.h"
+#include "services/control_request.h"
 #include "control/beta_sweep.h"
 #include "model/job_control.h"
 

@@ -15,8 +15,8 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "learning/learning_database.h"
-#include "project/project.h"
+#include "services/learning_database.h"
+#include "document/project.h"
 
 namespace mx::app {
 

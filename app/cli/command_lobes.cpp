@@ -8,8 +8,8 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "project/lobe_inputs.h"
-#include "project/project.h"
+#include "document/lobe_inputs.h"
+#include "document/project.h"
 #include "stability/lobe_computation.h"
 
 namespace mx::app {

@@ -16,7 +16,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "cli/part_program_request.h"
+#include "services/part_program_request.h"
 #include "io/gcode_reader.h"
 #include "model/job_control.h"
 

@@ -11,7 +11,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "model/cutting_force.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "stability/lobe_computation.h"
 #include "stability/stability_boundary.h"
 

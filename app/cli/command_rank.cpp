@@ -17,11 +17,11 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "cli/expert_request.h"
-#include "cli/pareto_request.h"
-#include "cli/pareto_rules.h"
+#include "services/expert_request.h"
+#include "services/pareto_request.h"
+#include "services/pareto_rules.h"
 #include "expert/expert_session.h"
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::app {
 

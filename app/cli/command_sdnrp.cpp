@@ -8,7 +8,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "cli/sdnrp_request.h"
+#include "services/sdnrp_request.h"
 #include "model/job_control.h"
 
 namespace mx::app {

@@ -9,7 +9,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "simulation/simulation.h"
 #include "simulation/time_domain_simulator.h"
 

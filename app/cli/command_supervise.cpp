@@ -15,7 +15,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "cli/supervisor_request.h"
+#include "services/supervisor_request.h"
 #include "model/job_control.h"
 #include "supervisor/grafcet_interpreter.h"
 #include "supervisor/marginal_depth.h"

@@ -1,10 +1,10 @@
 #include "control_figures.h"
 
-#include "cli/control_request.h"
+#include "services/control_request.h"
 #include "control/beta_sweep.h"
 #include "control_view.h"
 #include "control_view_data.h"
-#include "project/project.h"
+#include "document/project.h"
 
 namespace mx::gui {
 

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
       return 2;
     }
     QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, [&window, n, b, f] {
-      mx::gui::PickedPoint p = window.document()->point();
+      mx::app::PickedPoint p = window.document()->point();
       p.speed_rpm = n;
       p.depth_mm = b;
       if (f > 0.0) p.feed_mm_per_tooth = f;

@@ -19,7 +19,7 @@
 #include "weights_panel.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
-#include "project/lobe_inputs.h"
+#include "document/lobe_inputs.h"
 #include "stability/lobe_diagram.h"
 #include "tool_library_editor.h"
 
@@ -66,10 +66,10 @@ MainWindow::MainWindow(QWidget* parent)
   recompute_timer_.setInterval(120);
   connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recomputeLobes);
   connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::rebuildExpert);
-  connect(&doc_, &ProjectDocument::projectChanged, this, &MainWindow::onProjectChanged);
-  connect(&doc_, &ProjectDocument::pointChanged, this, &MainWindow::onPointChanged);
-  connect(&doc_, &ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
-  connect(&doc_, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+  connect(&doc_, &app::ProjectDocument::projectChanged, this, &MainWindow::onProjectChanged);
+  connect(&doc_, &app::ProjectDocument::pointChanged, this, &MainWindow::onPointChanged);
+  connect(&doc_, &app::ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
+  connect(&doc_, &app::ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
   connect(engine_, &EngineRunner::lobesReady, this, &MainWindow::onLobesReady);
   connect(engine_, &EngineRunner::lobeProgress, this, [this](double f) { progress_->setValue(qRound(100 * f)); });
   connect(engine_, &EngineRunner::busyChanged, this, [this](bool busy) {
@@ -92,7 +92,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (g == sim_generation_) sim_view_->setStatus(tr("Simulation failed: %1").arg(message));
   });
   connect(sim_view_, &widgets::SimulationView::moveToSpeedRequested, this, [this](double rpm) {
-    PickedPoint p = doc_.point();
+    app::PickedPoint p = doc_.point();
     p.speed_rpm = rpm;
     doc_.setPoint(p);
     startSimulation();
@@ -231,7 +231,7 @@ void MainWindow::onLobesReady(const LobeJobResult& result) {
   if (doc_.point().speed_rpm <= 0.0) {
     // First lobes of this project: start in the middle of the range at half the limit there.
     const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
-    PickedPoint start;
+    app::PickedPoint start;
     start.speed_rpm = std::round(revPerSToRpm(0.5 * (speeds.front() + speeds.back())) / 100.0) * 100.0;
     const widgets::PointReadout r = evaluator_.evaluate(tool, start.speed_rpm, 0.0, 0.1);
     start.depth_mm = std::isfinite(r.blim_mm) ? 0.5 * r.blim_mm : 1.0;
@@ -261,7 +261,7 @@ void MainWindow::updatePowerLimit() {
                                          : QString());
 }
 
-void MainWindow::onPointChanged(const PickedPoint& point) {
+void MainWindow::onPointChanged(const app::PickedPoint& point) {
   if (point.feed_mm_per_tooth != power_limit_feed_) updatePowerLimit();  // the curve depends on s_t
   const int tool = evaluator_.toolIndex(active_tool_);
   const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
@@ -284,7 +284,7 @@ void MainWindow::onPointChanged(const PickedPoint& point) {
 }
 
 void MainWindow::onPointDragged(double speed_rpm, double depth_mm) {
-  PickedPoint p = doc_.point();
+  app::PickedPoint p = doc_.point();
   p.speed_rpm = speed_rpm;
   p.depth_mm = depth_mm;
   doc_.setPoint(p, drag_id_);
@@ -298,7 +298,7 @@ void MainWindow::onPointReleased(double speed_rpm, double depth_mm) {
 
 void MainWindow::startSimulation() {
   const app::Project& p = doc_.project();
-  const PickedPoint& pt = doc_.point();
+  const app::PickedPoint& pt = doc_.point();
   if (active_tool_.isEmpty() || pt.speed_rpm <= 0.0 || pt.feed_mm_per_tooth <= 0.0) return;
   try {
     const MillingSetup setup = p.setupFor(active_tool_);

@@ -15,16 +15,16 @@
 #include <QToolButton>
 
 #include "display_units.h"
-#include "cli/control_request.h"
-#include "cli/part_program_request.h"
-#include "cli/pareto_study.h"
-#include "cli/supervisor_request.h"
+#include "services/control_request.h"
+#include "services/part_program_request.h"
+#include "services/pareto_study.h"
+#include "services/supervisor_request.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
 #include "lobe_chart_view.h"
 #include "operating_point_readout.h"
 #include "point_evaluator.h"
-#include "project_document.h"
+#include "document/project_document.h"
 
 namespace mx::widgets {
 class HistoryView;
@@ -70,7 +70,7 @@ class MainWindow : public QMainWindow {
   bool openProject(const QString& path);  // false (and a message unless quiet) on a bad file
   bool saveProject(const QString& path = {});
   const app::Project* project() const { return &doc_.project(); }
-  ProjectDocument* document() { return &doc_; }
+  app::ProjectDocument* document() { return &doc_; }
   widgets::DisplayUnits* units() { return &units_; }
   widgets::LobeChartView* lobeChart() const { return chart_; }
   widgets::OperatingPointReadout* readout() const { return readout_; }
@@ -186,14 +186,14 @@ class MainWindow : public QMainWindow {
   void onProjectChanged();
   void recomputeLobes();
   void onLobesReady(const mx::gui::LobeJobResult& result);
-  void onPointChanged(const PickedPoint& point);
+  void onPointChanged(const app::PickedPoint& point);
   void onPointDragged(double speed_rpm, double depth_mm);
   void onPointReleased(double speed_rpm, double depth_mm);
   void onSimulationFinished(quint64 generation, const SimulationSummary& summary);
   void updatePowerLimit();
   void showError(const QString& title, const QString& message);
 
-  ProjectDocument doc_;
+  app::ProjectDocument doc_;
   widgets::DisplayUnits units_;
   widgets::LobeChartView* chart_;
   widgets::OperatingPointReadout* readout_;

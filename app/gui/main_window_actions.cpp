@@ -84,7 +84,7 @@ void MainWindow::buildDocks() {
     recomputeLobes();
   });
   connect(feed_spin_, &QDoubleSpinBox::editingFinished, this, [this] {
-    PickedPoint p = doc_.point();
+    app::PickedPoint p = doc_.point();
     p.feed_mm_per_tooth = units_.toMm(feed_spin_->value());
     doc_.setPoint(p);
     updatePowerLimit();

@@ -11,7 +11,7 @@
 #include "control_view.h"
 #include "control_view_data.h"
 #include "main_window.h"
-#include "project/project_validation.h"
+#include "document/project_validation.h"
 
 namespace mx::gui {
 

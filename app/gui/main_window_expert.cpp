@@ -6,7 +6,7 @@
 #include <QScrollArea>
 #include <QStatusBar>
 
-#include "cli/expert_request.h"
+#include "services/expert_request.h"
 #include "expert_overlays.h"
 #include "expert_runner.h"
 #include "pareto_runner.h"

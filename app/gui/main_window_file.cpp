@@ -14,7 +14,7 @@ namespace mx::gui {
 
 bool MainWindow::openProject(const QString& path) {
   try {
-    const QString autosave = ProjectDocument::recoveryCandidate(path);
+    const QString autosave = app::ProjectDocument::recoveryCandidate(path);
     bool recover = false;
     if (!autosave.isEmpty()) {
       if (recovery_ == RecoveryPolicy::Ask && !quiet_) {

@@ -11,8 +11,8 @@
 #include <QStatusBar>
 #include <cmath>
 
-#include "cli/part_program_request.h"
-#include "cli/sdnrp_request.h"
+#include "services/part_program_request.h"
+#include "services/sdnrp_request.h"
 #include "engine_task.h"
 #include "io/gcode_reader.h"
 #include "main_window.h"

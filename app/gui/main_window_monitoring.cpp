@@ -5,10 +5,9 @@
 #include <QStatusBar>
 #include <cmath>
 
-#include "cli/cli_support.h"
-#include "cli/pareto_rules.h"
+#include "services/pareto_rules.h"
 #include "history_view.h"
-#include "learning/learning_database.h"
+#include "services/learning_database.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
@@ -53,7 +52,7 @@ widgets::HistoryRow historyRow(const app::LearningRecord& r) {
 // study's tool.
 std::optional<ParetoPoint> MainWindow::currentParetoPoint() const {
   const auto& study = pareto_->study();
-  const PickedPoint& pt = doc_.point();
+  const app::PickedPoint& pt = doc_.point();
   if (!study || active_tool_ != study->request().tool || pt.speed_rpm <= 0.0) return std::nullopt;
   return study->table().evaluate(rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3);
 }
@@ -151,7 +150,7 @@ void MainWindow::updateFiredRules() {
     QList<int> fired;
     for (const RuleRef& ref : r.outcome.fired) fired << ref.line;
     rules_editor_->setFiredRules(fired);
-    const PickedPoint& pt = doc_.point();
+    const app::PickedPoint& pt = doc_.point();
     ParetoPoint q;
     if (auto pq = currentParetoPoint()) {
       q = *pq;

@@ -19,9 +19,9 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "cli/pareto_rules.h"
+#include "services/pareto_rules.h"
 #include "history_view.h"
-#include "learning/learning_database.h"
+#include "services/learning_database.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"

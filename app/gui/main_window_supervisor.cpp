@@ -6,8 +6,8 @@
 #include <QDockWidget>
 #include <QStatusBar>
 
-#include "cli/grafcet_json.h"
-#include "cli/supervisor_request.h"
+#include "document/grafcet_json.h"
+#include "services/supervisor_request.h"
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "main_window.h"

@@ -3,7 +3,6 @@
 #include <QFutureWatcher>
 #include <QtConcurrent>
 
-#include "cli/cli_support.h"
 
 namespace mx::gui {
 

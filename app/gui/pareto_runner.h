@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "cli/pareto_study.h"
-#include "project/project.h"
+#include "services/pareto_study.h"
+#include "document/project.h"
 
 namespace mx::gui {
 

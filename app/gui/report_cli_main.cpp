@@ -10,11 +10,11 @@
 #include <QTextStream>
 #include <clocale>
 
-#include "cli/cli_application.h"
-#include "cli/cli_support.h"
-#include "cli/expert_request.h"
+#include "services/exit_code.h"
+#include "services/expert_request.h"
+#include "services/service_errors.h"
 #include "model/job_control.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "report_data.h"
 #include "report_writer.h"
 
@@ -79,8 +79,10 @@ int main(int argc, char** argv) {
   std::setlocale(LC_NUMERIC, "C");
   try {
     return run(app);
-  } catch (const mx::app::CliError& e) {
-    return fail(QString::fromStdString(e.what()), e.code);
+  } catch (const mx::app::InputError& e) {
+    return fail(QString::fromStdString(e.what()), e.exitCode());
+  } catch (const mx::app::ComputationError& e) {
+    return fail(QString::fromStdString(e.what()), e.exitCode());
   } catch (const mx::app::ProjectError& e) {
     return fail(QString::fromStdString(e.what()), e.exitCode());
   } catch (const mx::InvalidInput& e) {

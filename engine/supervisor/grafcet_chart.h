@@ -3,7 +3,7 @@
 // Landers & Ulsoy (issue 8) is drawn: numbered steps (one or more initial), each with its actions,
 // and numbered transitions from source steps to target steps, each with a Boolean receptivity over
 // named signals (grafcet_expression.h) and the designer's priority for conflicts. Charts are data
-// (JSON in the project, app/cli/grafcet_json.h); grafcet_validation.h checks them and
+// (JSON in the project, app/document/grafcet_json.h); grafcet_validation.h checks them and
 // grafcet_interpreter.h runs them. docs/grafcet.md describes the format and the semantics.
 #include <string>
 #include <string_view>

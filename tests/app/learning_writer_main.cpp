@@ -6,7 +6,7 @@
 #include <clocale>
 #include <exception>
 
-#include "learning/learning_database.h"
+#include "services/learning_database.h"
 
 int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);

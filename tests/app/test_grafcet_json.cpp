@@ -5,8 +5,8 @@
 #include <QJsonDocument>
 
 #include "cli/cli_support.h"
-#include "cli/grafcet_json.h"
-#include "project/project.h"
+#include "document/grafcet_json.h"
+#include "document/project.h"
 #include "supervisor/grafcet_interpreter.h"
 #include "test_registry.h"
 

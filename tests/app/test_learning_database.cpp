@@ -1,4 +1,4 @@
-// Rule 14 learning database (app/learning): schema creation, a record's round trip, the history /
+// Rule 14 learning database (app/services/learning_database.h): schema creation, a record's round trip, the history /
 // MRR-range / weight-suggestion queries, validation (bad source, weights off the simplex), error
 // messages naming the file, several connections and threads, and durability: a writer process killed
 // with SIGKILL mid-loop leaves a consistent database that still accepts writes.
@@ -15,7 +15,7 @@
 #include <cmath>
 #include <thread>
 
-#include "learning/learning_database.h"
+#include "services/learning_database.h"
 #include "test_registry.h"
 
 using mx::app::JobFeatures;

@@ -6,9 +6,9 @@
 #include <QJsonDocument>
 #include <cmath>
 
-#include "cli/pareto_study.h"
+#include "services/pareto_study.h"
 #include "pareto/pareto_front.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "test_registry.h"
 
 using namespace mx;

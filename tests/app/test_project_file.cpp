@@ -10,8 +10,8 @@
 #include <limits>
 #include <numbers>
 
-#include "project/project.h"
-#include "project/project_validation.h"
+#include "document/project.h"
+#include "document/project_validation.h"
 #include "support/json_mutation.h"
 #include "test_registry.h"
 

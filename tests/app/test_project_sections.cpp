@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "cli/control_request.h"
-#include "cli/sdnrp_request.h"
-#include "project/project.h"
+#include "services/control_request.h"
+#include "services/sdnrp_request.h"
+#include "document/project.h"
 #include "test_registry.h"
 
 using namespace mx;

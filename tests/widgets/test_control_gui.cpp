@@ -11,14 +11,14 @@
 #include <QTemporaryDir>
 #include <cmath>
 
-#include "cli/control_request.h"
+#include "services/control_request.h"
 #include "control/closed_loop.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "part_program_panel.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "support/cli_runner.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"

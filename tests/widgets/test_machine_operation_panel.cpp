@@ -10,7 +10,7 @@
 
 #include "display_units.h"
 #include "machine_operation_panel.h"
-#include "project_document.h"
+#include "document/project_document.h"
 #include "test_registry.h"
 
 using mx::app::Project;
@@ -138,12 +138,12 @@ class TestMachineOperationPanel : public QObject {
   }
 
   void undoThroughTheDocument() {
-    mx::gui::ProjectDocument doc;
+    mx::app::ProjectDocument doc;
     doc.load(kRubio);
     MachineOperationPanel panel;
     QObject::connect(&panel, &MachineOperationPanel::editRequested, &doc,
                      [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-    QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &panel, [&] { panel.setProject(doc.project()); });
+    QObject::connect(&doc, &mx::app::ProjectDocument::projectChanged, &panel, [&] { panel.setProject(doc.project()); });
     panel.setProject(doc.project());
     type(spin(panel, "material.Kt_N_mm2"), "800");
     QCOMPARE(doc.project().material->Kt_N_mm2, 800.0);

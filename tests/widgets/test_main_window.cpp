@@ -11,7 +11,7 @@
 
 #include "main_window.h"
 #include "model/cutting_force.h"
-#include "project/project_validation.h"
+#include "document/project_validation.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
 #include "test_registry.h"
@@ -80,7 +80,7 @@ class TestMainWindow : public QObject {
     QVERIFY(mid_speed > 2600.0 && mid_speed < 4100.0);  // the readouts follow during the drag
     QTest::mouseMove(plot, to);
     QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, to);
-    const gui::PickedPoint p = window.document()->point();
+    const app::PickedPoint p = window.document()->point();
     QVERIFY2(std::abs(p.speed_rpm - 4200.0) < 30.0, qPrintable(QString::number(p.speed_rpm)));
     QVERIFY2(std::abs(p.depth_mm - 0.45) < 0.01, qPrintable(QString::number(p.depth_mm)));
 
@@ -151,7 +151,7 @@ class TestMainWindow : public QObject {
       QVERIFY(QFile::exists(path + ".autosave"));
       // Simulated crash: the window goes away without closing (no save, autosave left behind).
     }
-    QCOMPARE(gui::ProjectDocument::recoveryCandidate(path), path + ".autosave");
+    QCOMPARE(app::ProjectDocument::recoveryCandidate(path), path + ".autosave");
     gui::MainWindow window;
     window.setQuiet(true);
     window.setRecoveryPolicy(gui::MainWindow::RecoveryPolicy::Recover);
@@ -163,7 +163,7 @@ class TestMainWindow : public QObject {
   }
 
   void untitledAutosaveGoesToTheDataFolder() {  // below the runner's private HOME, never a fixed path
-    gui::ProjectDocument document;
+    app::ProjectDocument document;
     document.newProject();
     app::Project edited = document.project();
     edited.name = "untitled edit";

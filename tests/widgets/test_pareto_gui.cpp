@@ -20,7 +20,7 @@
 #include "pareto_front_view.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "requirements_panel.h"
 #include "test_registry.h"
 

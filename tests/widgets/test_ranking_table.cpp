@@ -10,10 +10,10 @@
 #include <QTableView>
 #include <cmath>
 
-#include "cli/expert_request.h"
+#include "services/expert_request.h"
 #include "display_units.h"
 #include "expert/expert_session.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "ranking_table.h"
 #include "ranking_table_model.h"
 #include "test_registry.h"

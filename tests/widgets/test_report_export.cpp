@@ -12,9 +12,9 @@
 #include <QTemporaryDir>
 #include <memory>
 
-#include "cli/expert_request.h"
+#include "services/expert_request.h"
 #include "expert/expert_session.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "report_builder.h"
 #include "report_data.h"
 #include "report_writer.h"

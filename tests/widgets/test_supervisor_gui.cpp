@@ -12,7 +12,7 @@
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "main_window.h"
-#include "project/project.h"
+#include "document/project.h"
 #include "supervision_runner.h"
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"

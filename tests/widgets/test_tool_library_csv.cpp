@@ -5,7 +5,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
-#include "project/project.h"
+#include "document/project.h"
 #include "test_registry.h"
 #include "tool_library_csv.h"
 #include "tool_library_editor.h"

@@ -7,7 +7,7 @@
 #include <QSignalSpy>
 
 #include "display_units.h"
-#include "project_document.h"
+#include "document/project_document.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
 
@@ -22,10 +22,10 @@ namespace {
 const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
 
 // The editor wired to a document exactly as the main window does it.
-void wire(ToolLibraryEditor& editor, mx::gui::ProjectDocument& doc) {
+void wire(ToolLibraryEditor& editor, mx::app::ProjectDocument& doc) {
   QObject::connect(&editor, &ToolLibraryEditor::editRequested, &doc,
                    [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-  QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &editor, [&] { editor.setProject(doc.project()); });
+  QObject::connect(&doc, &mx::app::ProjectDocument::projectChanged, &editor, [&] { editor.setProject(doc.project()); });
   editor.setProject(doc.project());
 }
 
@@ -137,7 +137,7 @@ class TestToolLibraryEditor : public QObject {
   }
 
   void undoRestoresTheOldValue() {
-    mx::gui::ProjectDocument doc;
+    mx::app::ProjectDocument doc;
     doc.load(kRubio);
     ToolLibraryEditor editor;
     wire(editor, doc);
@@ -156,7 +156,7 @@ class TestToolLibraryEditor : public QObject {
   }
 
   void addDuplicateRemoveAreUndoable() {
-    mx::gui::ProjectDocument doc;
+    mx::app::ProjectDocument doc;
     doc.load(kRubio);
     ToolLibraryEditor editor;
     wire(editor, doc);
@@ -183,7 +183,7 @@ class TestToolLibraryEditor : public QObject {
   }
 
   void modesAreAddedAndRemoved() {
-    mx::gui::ProjectDocument doc;
+    mx::app::ProjectDocument doc;
     doc.load(kRubio);
     ToolLibraryEditor editor;
     wire(editor, doc);

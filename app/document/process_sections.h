@@ -1,0 +1,167 @@
+#pragma once
+// The typed process sections of a project (control, sdnrp, force_control, part_program, supervisor,
+// pareto), in the file's shop units. Every key the file may omit is a std::optional, so that a save
+// writes back exactly what was there; defaults are applied by the request builders (app/cli/*_request).
+// Ranges: project_validation.cpp; keys, units and defaults: docs/project-file.md.
+#include <QJsonObject>
+#include <QString>
+#include <optional>
+#include <vector>
+
+namespace mx::app {
+
+// One step of a depth profile along the feed path.
+struct DepthStepSpec {
+  double length_mm = 0.0;  // (0, 1e7]
+  double depth_mm = 0.0;   // [0, 1000]
+};
+
+struct ControlReferenceModelSpec {
+  std::optional<double> damping;            // [0.05, 5], default 0.75
+  std::optional<double> rise_time_periods;  // [0.5, 1000], default 4
+};
+
+struct ControlRlsSpec {
+  std::optional<double> lambda;          // [0.5, 1], default 1
+  std::optional<double> P0;              // [1e-6, 1e15], default 1e5
+  std::optional<double> theta0;          // [-1e6, 1e6], default 0.2
+  std::optional<QString> reset;          // "error" (default), "trace" or "none"
+  std::optional<double> reset_fraction;  // (0, 10], default 0.05
+  std::optional<double> trace_min;       // [0, 1e15], default 1e-6
+  std::optional<double> trace_max;       // (0, 1e300], default 1e12; > trace_min
+};
+
+// "control": adaptive force control under beta-FROH.
+struct ControlSection {
+  std::optional<QString> tool;                   // default the first tool
+  std::optional<double> spindle_rpm;             // required
+  std::optional<double> cutting_pressure_N_mm2;  // default material.Kt_N_mm2
+  std::optional<double> start_angle_deg;
+  std::optional<double> exit_angle_deg;
+  std::optional<double> drive_time_constant_ms;
+  std::optional<double> process_time_constant_ms;
+  std::optional<double> beta;
+  std::optional<double> force_reference_N;
+  std::optional<double> breakage_force_N;
+  std::optional<double> safety_factor;
+  std::optional<double> feed_max_mm_s;
+  std::optional<ControlReferenceModelSpec> reference_model;
+  std::optional<ControlRlsSpec> rls;
+  std::optional<std::vector<DepthStepSpec>> workpiece;
+};
+
+struct SdnrpDisturbanceSpec {
+  std::optional<bool> enabled;  // default true
+  std::optional<double> seed;   // integer in [0, 9e15], default 2008
+  std::optional<double> sigma_N;
+  std::optional<double> hold_ms;
+};
+
+struct SdnrpInitialSpec {
+  std::optional<double> feed_mm_min;
+  std::optional<double> speed_rpm;
+};
+
+struct SdnrpDrivesSpec {
+  std::optional<double> feed_natural_frequency_rad_s;
+  std::optional<double> feed_damping;
+  std::optional<double> spindle_time_constant_s;
+};
+
+// "sdnrp": Cus & Zuperl's surface-roughness loop.
+struct SdnrpSection {
+  std::optional<double> ra_um;
+  std::optional<double> seconds;
+  std::optional<SdnrpDisturbanceSpec> disturbance;
+  std::optional<SdnrpInitialSpec> initial;
+  std::optional<SdnrpDrivesSpec> drives;
+  std::optional<double> integral_rate_per_s;
+};
+
+struct ForceModelSpec {
+  std::optional<double> K_N;
+  std::optional<double> depth_exponent;
+  std::optional<double> feed_exponent;
+};
+
+// "force_control": the model-based controller F = K d^b f^a.
+struct ForceControlSection {
+  std::optional<QString> tool;
+  std::optional<ForceModelSpec> model;
+  std::optional<double> reference_force_N;  // required by the model-based controller
+  std::optional<double> max_feed_mm_s;
+  std::optional<double> max_feed_per_tooth_mm;
+};
+
+// "part_program": part-program feed overrides.
+struct PartProgramSection {
+  std::optional<double> stock_top_mm;
+  std::optional<std::vector<DepthStepSpec>> depth_profile;
+  std::optional<double> speed_rpm;
+  std::optional<bool> keep_plunge_feed;  // default true
+  std::optional<QString> controller;     // "adaptive" or "model-based"
+};
+
+struct SupervisorPartSpec {
+  std::optional<double> length_mm;
+  std::optional<double> width_mm;
+  std::optional<double> approach_mm;
+};
+
+struct SupervisorPassesSpec {  // pass depths [mm] per controller
+  std::optional<std::vector<double>> none;
+  std::optional<std::vector<double>> smc1;
+  std::optional<std::vector<double>> smc2;
+  const std::optional<std::vector<double>>* of(const QString& controller) const;
+};
+
+struct SupervisorEventSpec {
+  double t_s = 0.0;
+  QString type;  // "feed_hold_on", "feed_hold_off" or "chatter"
+};
+
+// "supervisor": supervisory control of face milling. The Grafcet charts stay JSON: they are read by
+// the chart reader (app/document/grafcet_json.h), which reports errors by JSON path.
+struct SupervisorSection {
+  std::optional<QString> tool;
+  std::optional<double> spindle_rpm;
+  std::optional<double> programmed_feed_mm_s;
+  std::optional<SupervisorPartSpec> part;
+  std::optional<SupervisorPassesSpec> passes_mm;
+  std::optional<double> scan_period_ms;
+  std::optional<double> reference_force_N;
+  std::optional<double> power_margin;
+  std::optional<double> chatter_threshold_N;
+  std::optional<std::vector<SupervisorEventSpec>> events;
+  std::optional<QJsonObject> charts;  // controller -> chart
+};
+
+// A power law K V^a b^b s_t^c (V [m/min], b [mm], s_t [mm/tooth]).
+struct PowerLawSpec {
+  double K = 0.0;
+  double speed_exponent = 0.0;
+  double depth_exponent = 0.0;
+  double feed_exponent = 0.0;
+};
+
+struct ParetoFineSpec {
+  std::optional<double> divisions;  // integer in [1, 100], default 5
+};
+
+struct ParetoAutoWeightsSpec {
+  std::optional<double> step;
+  std::optional<double> tolerance;
+  std::optional<double> max_iterations;
+};
+
+// "pareto": the Pareto expert system.
+struct ParetoSection {
+  std::optional<QString> tool;
+  std::optional<PowerLawSpec> taylor;     // required
+  std::optional<PowerLawSpec> roughness;  // required
+  std::optional<std::vector<double>> weights;
+  std::optional<ParetoFineSpec> fine;
+  std::optional<ParetoAutoWeightsSpec> auto_weights;
+};
+
+}  // namespace mx::app

@@ -1,0 +1,86 @@
+// Project queries: tool lookup, the required sections, and the SI engine setup of one tool.
+#include "document/project.h"
+
+#include <QStringList>
+#include <numbers>
+
+#include "document/project_validation.h"
+
+namespace mx::app {
+
+namespace {
+
+constexpr double kPaPerNPerMm2 = 1e6;    // 1 N/mm^2 = 1e6 N/m^2
+constexpr double kNPerMPerNPerUm = 1e6;  // 1 N/um = 1e6 N/m
+constexpr double kMPerMm = 1e-3;
+
+ModalAxis toModalAxis(const std::vector<ModeSpec>& modes) {
+  ModalAxis axis;
+  axis.reserve(modes.size());
+  for (const ModeSpec& m : modes)
+    axis.push_back({m.freq_Hz, m.damping_pct / 100.0, m.stiffness_N_per_um * kNPerMPerNPerUm});
+  return axis;
+}
+
+QString toolIds(const std::vector<ToolSpec>& tools) {
+  QStringList ids;
+  for (const ToolSpec& t : tools) ids << t.id;
+  return ids.isEmpty() ? QString("(none)") : ids.join(", ");
+}
+
+}  // namespace
+
+const ToolSpec* Project::findTool(const QString& id) const {
+  for (const ToolSpec& t : tools)
+    if (t.id == id) return &t;
+  return nullptr;
+}
+
+MillingSetup Project::setupFor(const QString& toolId) const {
+  const ToolSpec* tool = findTool(toolId);
+  if (tool == nullptr) throw ProjectError(QString("tool '%1' not found; available: %2").arg(toolId, toolIds(tools)));
+  if (!operation) {
+    throw ProjectError(QString("section 'operation' is missing (needed by tool '%1' for the milling direction and "
+                               "radial engagement)")
+                           .arg(toolId));
+  }
+  if (!material && (!tool->Kt_N_mm2 || !tool->Kr)) {
+    QStringList needed;
+    if (!tool->Kt_N_mm2) needed << "Kt_N_mm2";
+    if (!tool->Kr) needed << "Kr";
+    throw ProjectError(QString("section 'material' is missing (needed by tool '%1' for %2; or give them on the tool)")
+                           .arg(toolId, needed.join(" and ")));
+  }
+  const std::optional<double> radial_depth_mm = radialDepthMm(*this, *tool);
+  if (!radial_depth_mm) {
+    throw ProjectError(QString("operation: no radial engagement for tool '%1' (give operation.radial_immersion or "
+                               "operation.radial_depth_mm)")
+                           .arg(toolId));
+  }
+
+  MillingSetup s;
+  s.tool_id = tool->id.toStdString();
+  s.teeth = tool->teeth;
+  s.diameter_m = tool->diameter_mm * kMPerMm;
+  s.helix_rad = tool->helix_deg * std::numbers::pi / 180.0;
+  s.tangential_coefficient_pa = tool->Kt_N_mm2.value_or(material ? material->Kt_N_mm2 : 0.0) * kPaPerNPerMm2;
+  s.radial_ratio = tool->Kr.value_or(material ? material->Kr : 0.0);
+  s.modes_x = toModalAxis(tool->modes_x);
+  s.modes_y = toModalAxis(tool->modes_y);
+  s.direction = operation->milling;
+  s.radial_depth_m = *radial_depth_mm * kMPerMm;
+  s.immersion = Immersion::fromRadialDepth(s.radial_depth_m, s.diameter_m, s.direction);
+  return s;
+}
+
+const MachineSpec& Project::requireMachine() const {
+  if (!machine) throw ProjectError("section 'machine' is missing (needed for the spindle power and speed limits)");
+  return *machine;
+}
+
+const ExpertSpec& Project::requireExpert() const {
+  if (!expert) throw ProjectError("section 'expert' is missing (needed by the expert system: delta_per_s, alpha)");
+  return *expert;
+}
+
+}  // namespace mx::app

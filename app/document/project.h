@@ -1,0 +1,119 @@
+#pragma once
+// The project document (.mxproj, JSON). Field names are a fixed interface (issue 2, section 2).
+// Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "model/milling_setup.h"
+#include "document/process_sections.h"
+
+namespace mx::app {
+
+// A bad project or a request the project cannot serve. exitCode() is the CLI code (2 = bad input).
+class ProjectError : public std::runtime_error {
+ public:
+  explicit ProjectError(const QString& message) : std::runtime_error(message.toStdString()) {}
+  int exitCode() const { return 2; }
+};
+
+struct ModeSpec {
+  double freq_Hz = 0.0;
+  double damping_pct = 0.0;
+  double stiffness_N_per_um = 0.0;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this mode
+};
+
+struct ToolSpec {
+  QString id;
+  int teeth = 0;
+  double diameter_mm = 0.0;
+  double helix_deg = 0.0;
+  std::optional<double> Kt_N_mm2;        // overrides material.Kt_N_mm2
+  std::optional<double> Kr;              // overrides material.Kr
+  std::optional<double> radial_depth_mm; // overrides the operation's radial engagement
+  std::vector<ModeSpec> modes_x;
+  std::vector<ModeSpec> modes_y;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
+};
+
+struct MachineSpec {
+  std::optional<QString> name;  // shown to operator rules as machine.name
+  double spindle_power_W = 0.0;
+  std::optional<double> max_spindle_rpm;  // no limit when absent
+  std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
+};
+
+struct MaterialSpec {
+  QString name;
+  double Kt_N_mm2 = 0.0;
+  double Kr = 0.0;
+};
+
+struct OperationSpec {
+  MillingDirection milling = MillingDirection::Up;
+  std::optional<double> radial_immersion;  // a/D in (0, 1]
+  std::optional<double> radial_depth_mm;   // exactly one of the two is given
+  double max_feed_per_tooth_mm = 0.0;
+};
+
+struct ExpertGridSpec {
+  double speed_from_rpm = 1000.0;
+  double speed_to_rpm = 12000.0;
+  double speed_step_rpm = 100.0;
+  int depth_divisions = 10;
+  double feed_step_mm = 0.01;
+  std::optional<bool> modal_candidate_speeds;  // add the Rule 7.2 speeds; default true
+};
+
+struct ExpertSpec {
+  double delta_per_s = 0.0;
+  double alpha = 1.0;
+  std::vector<double> c{0.2, 0.725, 0.075};
+  std::vector<double> cr{0.8, 0.1, 0.1};
+  std::vector<double> ct{0.5, 0.5};
+  std::vector<double> cf{0.5, 0.5};
+  std::optional<ExpertGridSpec> grid;
+  std::optional<QString> method;          // "zoa" (default) or "sdm"
+  std::optional<int> simulated_points;    // K of Rule 5, [1, 1000], default 12
+};
+
+struct Project {
+  QString name;
+  std::optional<MachineSpec> machine;
+  std::optional<MaterialSpec> material;
+  std::optional<OperationSpec> operation;
+  std::vector<ToolSpec> tools;
+  std::optional<ExpertSpec> expert;
+  std::optional<ControlSection> control;
+  std::optional<SdnrpSection> sdnrp;
+  std::optional<ForceControlSection> force_control;
+  std::optional<PartProgramSection> part_program;
+  std::optional<SupervisorSection> supervisor;
+  std::optional<ParetoSection> pareto;
+  std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
+  // The keys of the file this build does not know, per object, at every level but tools and modes
+  // (those keep theirs in ToolSpec/ModeSpec::unknown, so that they follow their tool on reorder).
+  QJsonObject document;
+
+  const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
+  // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
+  // missing tool or section ("tool 'X' not found", "section 'material' is missing", ...).
+  MillingSetup setupFor(const QString& toolId) const;
+  const MachineSpec& requireMachine() const;    // throws ProjectError if the section is absent
+  const ExpertSpec& requireExpert() const;
+};
+
+// Parse and validate; throws ProjectError whose message names the field path, the value and the
+// allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
+Project projectFromJson(const QJsonObject& root);
+Project loadProject(const QString& path);
+// Back to JSON: the typed values, with the unknown keys of each object merged back in.
+QJsonObject projectToJson(const Project& project);
+// Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
+void saveProject(const Project& project, const QString& path);
+
+}  // namespace mx::app

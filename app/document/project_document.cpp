@@ -1,0 +1,148 @@
+#include "document/project_document.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QStandardPaths>
+#include <QUndoCommand>
+
+#include "document/project_validation.h"
+
+namespace mx::app {
+
+// Swaps whole Project snapshots: undo restores the previous project exactly.
+class SnapshotCommand : public QUndoCommand {
+ public:
+  SnapshotCommand(ProjectDocument* doc, Project before, Project after, const QString& text)
+      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+  void undo() override { doc_->setSnapshot(before_); }
+  void redo() override { doc_->setSnapshot(after_); }
+
+ private:
+  ProjectDocument* doc_;
+  Project before_, after_;
+};
+
+// Moves the operating point; the moves of one drag merge into one undo step.
+class PointCommand : public QUndoCommand {
+ public:
+  PointCommand(ProjectDocument* doc, PickedPoint before, PickedPoint after, int drag_id)
+      : QUndoCommand(QObject::tr("Move operating point")), doc_(doc), before_(before), after_(after), drag_(drag_id) {}
+  void undo() override { doc_->setPointSilently(before_); }
+  void redo() override { doc_->setPointSilently(after_); }
+  int id() const override { return drag_ > 0 ? 1001 : -1; }
+  bool mergeWith(const QUndoCommand* other) override {
+    const auto* o = static_cast<const PointCommand*>(other);
+    if (o->drag_ != drag_) return false;
+    after_ = o->after_;
+    return true;
+  }
+
+ private:
+  ProjectDocument* doc_;
+  PickedPoint before_, after_;
+  int drag_;
+};
+
+ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
+  connect(&undo_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit dirtyChanged(!clean); });
+  connect(&autosave_, &QTimer::timeout, this, &ProjectDocument::writeAutosave);
+  setAutosaveInterval(30000);
+  newProject();
+}
+
+void ProjectDocument::setSnapshot(const Project& project) {
+  project_ = project;
+  emit projectChanged();
+}
+
+void ProjectDocument::setPointSilently(const PickedPoint& point) {
+  point_ = point;
+  emit pointChanged(point_);
+}
+
+QString ProjectDocument::applyEdit(const Project& edited, const QString& description) {
+  try {
+    validateProject(edited);
+  } catch (const ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  undo_.push(new SnapshotCommand(this, project_, edited, description));
+  return {};
+}
+
+void ProjectDocument::setPoint(const PickedPoint& point, int drag_id) {
+  if (point == point_) return;
+  undo_.push(new PointCommand(this, point_, point, drag_id));
+}
+
+void ProjectDocument::newProject() {
+  Project p;
+  p.name = tr("Untitled");
+  undo_.clear();
+  path_.clear();
+  setSnapshot(p);
+  emit filePathChanged(path_);
+}
+
+void ProjectDocument::load(const QString& path) {
+  Project p = app::loadProject(path);
+  undo_.clear();
+  path_ = path;
+  setSnapshot(p);
+  emit filePathChanged(path_);
+}
+
+void ProjectDocument::recover(const QString& path) {
+  const Project recovered = app::loadProject(path + ".autosave");
+  if (QFileInfo::exists(path)) {
+    load(path);
+  } else {
+    newProject();
+    path_ = path;
+    emit filePathChanged(path_);
+  }
+  undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave")));
+}
+
+void ProjectDocument::save(const QString& path) {
+  const QString target = path.isEmpty() ? path_ : path;
+  if (target.isEmpty()) throw ProjectError(tr("no file name to save to"));
+  app::saveProject(project_, target);
+  QFile::remove(autosavePath());
+  if (target != path_) {
+    path_ = target;
+    emit filePathChanged(path_);
+  }
+  undo_.setClean();
+}
+
+void ProjectDocument::setAutosaveInterval(int ms) {
+  autosave_.stop();
+  if (ms > 0) autosave_.start(ms);
+}
+
+QString ProjectDocument::autosavePath() const {
+  if (!path_.isEmpty()) return path_ + ".autosave";
+  const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+  QDir().mkpath(dir);
+  return dir + "/untitled.mxproj.autosave";
+}
+
+void ProjectDocument::writeAutosave() {
+  if (!isDirty()) return;
+  try {
+    app::saveProject(project_, autosavePath());
+  } catch (const ProjectError&) {
+    // Autosave is best effort; the next interval retries.
+  }
+}
+
+QString ProjectDocument::recoveryCandidate(const QString& path) {
+  const QString autosave = path + ".autosave";
+  const QFileInfo a(autosave), f(path);
+  if (!a.exists()) return {};
+  if (f.exists() && a.lastModified() < f.lastModified()) return {};
+  return autosave;
+}
+
+}  // namespace mx::app

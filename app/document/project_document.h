@@ -1,0 +1,70 @@
+#pragma once
+// The open project as the GUI edits it: the Project snapshot, its file, the dirty flag, undo/redo
+// (every edit is a whole-snapshot QUndoCommand, so undo restores exactly), the picked operating point,
+// and autosave with crash recovery. Views never modify the Project directly: they call applyEdit().
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "document/project.h"
+
+namespace mx::app {
+
+// The operating point picked on the lobe chart, in shop units.
+struct PickedPoint {
+  double speed_rpm = 0.0;
+  double depth_mm = 0.0;
+  double feed_mm_per_tooth = 0.0;
+  bool operator==(const PickedPoint&) const = default;
+};
+
+class ProjectDocument : public QObject {
+  Q_OBJECT
+ public:
+  explicit ProjectDocument(QObject* parent = nullptr);
+
+  const Project& project() const { return project_; }
+  QString filePath() const { return path_; }
+  bool isDirty() const { return !undo_.isClean(); }
+  QUndoStack* undoStack() { return &undo_; }
+  const PickedPoint& point() const { return point_; }
+
+  // Validates `edited` (validateProject); on success pushes an undoable edit and returns "".
+  // On failure nothing changes and the returned message names the field, value and range.
+  QString applyEdit(const Project& edited, const QString& description);
+  // Undoable move of the operating point (consecutive moves within one drag merge: `drag_id` > 0).
+  void setPoint(const PickedPoint& point, int drag_id = 0);
+  // Sets the point without an undo entry (the initial point after loading).
+  void initPoint(const PickedPoint& point) { setPointSilently(point); }
+  // Loads `path` and applies its newer autosave on top as one undoable, unsaved edit.
+  void recover(const QString& path);
+
+  void newProject();
+  void load(const QString& path);          // throws ProjectError; clears undo history
+  void save(const QString& path = {});     // atomic (QSaveFile); throws ProjectError
+  void setAutosaveInterval(int ms);        // 0 disables; default 30 s
+  QString autosavePath() const;            // "<file>.autosave" or per-untitled file in AppDataLocation
+  void writeAutosave();                    // atomic; no-op when clean
+  static QString recoveryCandidate(const QString& path);  // autosave newer than `path`, else ""
+
+ signals:
+  void projectChanged();                // any change of the snapshot (edit, undo, redo, load)
+  void pointChanged(const mx::app::PickedPoint& point);
+  void dirtyChanged(bool dirty);
+  void filePathChanged(const QString& path);
+
+ private:
+  friend class SnapshotCommand;
+  friend class PointCommand;
+  void setSnapshot(const Project& project);
+  void setPointSilently(const PickedPoint& point);
+
+  Project project_;
+  PickedPoint point_;
+  QString path_;
+  QUndoStack undo_;
+  QTimer autosave_;
+};
+
+}  // namespace mx::app

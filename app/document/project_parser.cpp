@@ -1,0 +1,150 @@
+// projectFromJson: reads the document into the Project structs (presence and types), then runs
+// validateProject (ranges and cross-field rules).
+#include <QJsonArray>
+#include <initializer_list>
+
+#include "document/json_reader.h"
+#include "document/project.h"
+#include "document/project_sections_io.h"
+#include "document/project_validation.h"
+
+namespace mx::app {
+
+namespace {
+
+constexpr const char* kFormat = "millexpert-project";
+constexpr int kVersion = 1;
+
+QJsonObject withoutKeys(QJsonObject o, std::initializer_list<const char*> keys) {
+  for (const char* k : keys) o.remove(k);
+  return o;
+}
+
+void readHeader(const ObjectReader& root) {
+  if (!root.has("format")) throwMissing("format", QString("string \"%1\"").arg(kFormat));
+  const QJsonValue format = root.value("format");
+  if (!format.isString()) throwWrongType("format", "a string", format);
+  if (format.toString() != kFormat)
+    throw ProjectError(
+        QString("format = %1: must be \"%2\" (not a MillExpert project)").arg(formatValue(format), kFormat));
+
+  if (!root.has("version")) throwMissing("version", QString("integer %1").arg(kVersion));
+  const QJsonValue version = root.value("version");
+  if (!version.isDouble()) throwWrongType("version", "a number", version);
+  const double v = version.toDouble();
+  if (v > kVersion)
+    throw ProjectError(QString("version = %1: the file was written by a newer MillExpert; this build reads version %2")
+                           .arg(formatNumber(v))
+                           .arg(kVersion));
+  if (v != kVersion) throw ProjectError(QString("version = %1: must be %2").arg(formatNumber(v)).arg(kVersion));
+}
+
+MachineSpec readMachine(const ObjectReader& r) {
+  MachineSpec m;
+  m.name = r.optionalString("name");
+  m.spindle_power_W = r.number("spindle_power_W", rules::kPositive);
+  m.max_spindle_rpm = r.optionalNumber("max_spindle_rpm");
+  m.max_feed_mm_s = r.optionalNumber("max_feed_mm_s");
+  return m;
+}
+
+MaterialSpec readMaterial(const ObjectReader& r) {
+  MaterialSpec m;
+  m.name = r.string("name");
+  m.Kt_N_mm2 = r.number("Kt_N_mm2", rules::kPositive);
+  m.Kr = r.number("Kr", rules::kNonNegative);
+  return m;
+}
+
+OperationSpec readOperation(const ObjectReader& r) {
+  OperationSpec op;
+  const QString milling = r.string("milling");
+  if (milling == "up") {
+    op.milling = MillingDirection::Up;
+  } else if (milling == "down") {
+    op.milling = MillingDirection::Down;
+  } else {
+    throw ProjectError(
+        QString("%1 = %2: must be \"up\" or \"down\"").arg(r.pathOf("milling"), formatValue(r.value("milling"))));
+  }
+  op.radial_immersion = r.optionalNumber("radial_immersion");
+  op.radial_depth_mm = r.optionalNumber("radial_depth_mm");
+  op.max_feed_per_tooth_mm = r.number("max_feed_per_tooth_mm", rules::kPositive);
+  return op;
+}
+
+std::vector<ModeSpec> readModes(const ObjectReader& tool, const QString& key) {
+  const QJsonArray array = tool.array(key, "array of modes; [] for a rigid axis");
+  std::vector<ModeSpec> modes;
+  for (qsizetype i = 0; i < array.size(); ++i) {
+    const ObjectReader r = elementObject(array, i, tool.pathOf(key));
+    ModeSpec m;
+    m.freq_Hz = r.number("freq_Hz", rules::kPositive);
+    m.damping_pct = r.number("damping_pct", rules::kPercent);
+    m.stiffness_N_per_um = r.number("stiffness_N_per_um", rules::kPositive);
+    m.unknown = withoutKeys(r.object(), {"freq_Hz", "damping_pct", "stiffness_N_per_um"});
+    modes.push_back(m);
+  }
+  return modes;
+}
+
+ToolSpec readTool(const ObjectReader& r) {
+  ToolSpec t;
+  t.id = r.string("id");
+  t.teeth = r.integer("teeth", rules::kCountAtLeastOne);
+  t.diameter_mm = r.number("diameter_mm", rules::kPositive);
+  t.helix_deg = r.number("helix_deg", rules::kHelixDeg);
+  t.Kt_N_mm2 = r.optionalNumber("Kt_N_mm2");
+  t.Kr = r.optionalNumber("Kr");
+  t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
+  t.modes_x = readModes(r, "modes_x");
+  t.modes_y = readModes(r, "modes_y");
+  t.unknown = withoutKeys(
+      r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm", "modes_x", "modes_y"});
+  return t;
+}
+
+ExpertGridSpec readGrid(const ObjectReader& r) {
+  ExpertGridSpec g;
+  g.speed_from_rpm = r.number("speed_from_rpm", rules::kPositive);
+  g.speed_to_rpm = r.number("speed_to_rpm", rules::kPositive);
+  g.speed_step_rpm = r.number("speed_step_rpm", rules::kPositive);
+  g.depth_divisions = r.integer("depth_divisions", rules::kCountAtLeastOne);
+  g.feed_step_mm = r.number("feed_step_mm", rules::kPositive);
+  return g;
+}
+
+ExpertSpec readExpert(const ObjectReader& r) {
+  ExpertSpec e;
+  e.delta_per_s = r.number("delta_per_s", rules::kNonNegative);
+  e.alpha = r.number("alpha", rules::kFraction);
+  if (auto c = r.optionalNumbers("c")) e.c = *c;
+  if (auto cr = r.optionalNumbers("cr")) e.cr = *cr;
+  if (auto ct = r.optionalNumbers("ct")) e.ct = *ct;
+  if (auto cf = r.optionalNumbers("cf")) e.cf = *cf;
+  if (auto grid = r.optionalObject("grid")) e.grid = readGrid(*grid);
+  readExpertExtras(r, e);
+  return e;
+}
+
+}  // namespace
+
+Project projectFromJson(const QJsonObject& root) {
+  const ObjectReader r(root, QString());
+  readHeader(r);
+  Project p;
+  p.name = r.string("name");
+  if (auto machine = r.optionalObject("machine")) p.machine = readMachine(*machine);
+  if (auto material = r.optionalObject("material")) p.material = readMaterial(*material);
+  if (auto operation = r.optionalObject("operation")) p.operation = readOperation(*operation);
+  if (auto tools = r.optionalArray("tools")) {
+    for (qsizetype i = 0; i < tools->size(); ++i) p.tools.push_back(readTool(elementObject(*tools, i, "tools")));
+  }
+  if (auto expert = r.optionalObject("expert")) p.expert = readExpert(*expert);
+  readProcessSections(r, p);
+  p.document = unknownKeys(root, projectToJson(p));
+  validateProject(p);
+  return p;
+}
+
+}  // namespace mx::app

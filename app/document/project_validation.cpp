@@ -1,0 +1,149 @@
+#include "document/project_validation.h"
+
+#include <QHash>
+
+#include "document/project_rules.h"
+#include "document/project_sections_io.h"
+
+namespace mx::app {
+
+namespace {
+
+void checkOptional(const QString& path, const std::optional<double>& value, const NumberRule& rule) {
+  if (value) checkNumber(path, *value, rule);
+}
+
+void validateMachine(const MachineSpec& m) {
+  checkNumber("machine.spindle_power_W", m.spindle_power_W, rules::kPositive);
+  checkOptional("machine.max_spindle_rpm", m.max_spindle_rpm, rules::kPositive);
+  checkOptional("machine.max_feed_mm_s", m.max_feed_mm_s, rules::kPositive);
+}
+
+void validateMaterial(const MaterialSpec& m) {
+  checkNumber("material.Kt_N_mm2", m.Kt_N_mm2, rules::kPositive);
+  checkNumber("material.Kr", m.Kr, rules::kNonNegative);
+}
+
+void validateOperation(const OperationSpec& op) {
+  if (op.radial_immersion && op.radial_depth_mm) {
+    throw ProjectError(QString("operation: radial_immersion = %1 and radial_depth_mm = %2 are both given: "
+                               "must give exactly one of them")
+                           .arg(formatNumber(*op.radial_immersion), formatNumber(*op.radial_depth_mm)));
+  }
+  if (!op.radial_immersion && !op.radial_depth_mm) {
+    throwMissing("operation.radial_immersion", "number in (0, 1], or operation.radial_depth_mm in (0, D] instead");
+  }
+  checkOptional("operation.radial_immersion", op.radial_immersion, rules::kFraction);
+  checkOptional("operation.radial_depth_mm", op.radial_depth_mm, rules::kPositive);
+  checkNumber("operation.max_feed_per_tooth_mm", op.max_feed_per_tooth_mm, rules::kPositive);
+}
+
+void validateModes(const QString& path, const std::vector<ModeSpec>& modes) {
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const QString mode = indexPath(path, static_cast<qsizetype>(i));
+    checkNumber(mode + ".freq_Hz", modes[i].freq_Hz, rules::kPositive);
+    checkNumber(mode + ".damping_pct", modes[i].damping_pct, rules::kPercent);
+    checkNumber(mode + ".stiffness_N_per_um", modes[i].stiffness_N_per_um, rules::kPositive);
+  }
+}
+
+void validateTool(const QString& path, const ToolSpec& t) {
+  if (t.id.trimmed().isEmpty())
+    throw ProjectError(QString("%1.id = %2: must be a non-empty string").arg(path, formatValue(t.id)));
+  checkNumber(path + ".teeth", t.teeth, rules::kCountAtLeastOne);
+  checkNumber(path + ".diameter_mm", t.diameter_mm, rules::kPositive);
+  checkNumber(path + ".helix_deg", t.helix_deg, rules::kHelixDeg);
+  checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kPositive);
+  checkOptional(path + ".Kr", t.Kr, rules::kNonNegative);
+  validateModes(path + ".modes_x", t.modes_x);
+  validateModes(path + ".modes_y", t.modes_y);
+}
+
+void validateUniqueIds(const std::vector<ToolSpec>& tools) {
+  QHash<QString, qsizetype> first;
+  for (qsizetype i = 0; i < static_cast<qsizetype>(tools.size()); ++i) {
+    const QString& id = tools[static_cast<std::size_t>(i)].id;
+    if (first.contains(id)) {
+      throw ProjectError(QString("tools[%1].id = %2: duplicate of tools[%3].id (tool ids must be unique)")
+                             .arg(i)
+                             .arg(formatValue(id))
+                             .arg(first.value(id)));
+    }
+    first.insert(id, i);
+  }
+}
+
+// Every tool's radial depth must lie in (0, D]; the message names the field that gives it.
+void validateRadialDepths(const Project& p) {
+  for (std::size_t i = 0; i < p.tools.size(); ++i) {
+    const ToolSpec& t = p.tools[i];
+    const QString tool = indexPath("tools", static_cast<qsizetype>(i));
+    const QString diameter = QString("%1.diameter_mm = %2").arg(tool, formatNumber(t.diameter_mm));
+    if (t.radial_depth_mm) {
+      checkNumber(tool + ".radial_depth_mm", *t.radial_depth_mm, rules::radialDepth(t.diameter_mm), diameter);
+    } else if (p.operation && p.operation->radial_depth_mm) {
+      checkNumber("operation.radial_depth_mm", *p.operation->radial_depth_mm, rules::radialDepth(t.diameter_mm),
+                  QString("%1, tool '%2'").arg(diameter, t.id));
+    }
+  }
+}
+
+void validateWeights(const QString& path, const std::vector<double>& weights, std::size_t length) {
+  if (weights.size() != length) {
+    QStringList items;
+    for (double w : weights) items << formatNumber(w);
+    throw ProjectError(QString("%1 = [%2]: must be an array of %3 numbers >= 0, got %4")
+                           .arg(path, items.join(", "))
+                           .arg(length)
+                           .arg(weights.size()));
+  }
+  for (std::size_t i = 0; i < weights.size(); ++i)
+    checkNumber(indexPath(path, static_cast<qsizetype>(i)), weights[i], rules::kNonNegative);
+}
+
+void validateGrid(const ExpertGridSpec& g) {
+  checkNumber("expert.grid.speed_from_rpm", g.speed_from_rpm, rules::kPositive);
+  checkNumber("expert.grid.speed_to_rpm", g.speed_to_rpm, rules::kPositive);
+  if (!(g.speed_from_rpm < g.speed_to_rpm)) {
+    throw ProjectError(QString("expert.grid.speed_to_rpm = %1: must be > expert.grid.speed_from_rpm = %2")
+                           .arg(formatNumber(g.speed_to_rpm), formatNumber(g.speed_from_rpm)));
+  }
+  checkNumber("expert.grid.speed_step_rpm", g.speed_step_rpm, rules::kPositive);
+  checkNumber("expert.grid.depth_divisions", g.depth_divisions, rules::kCountAtLeastOne);
+  checkNumber("expert.grid.feed_step_mm", g.feed_step_mm, rules::kPositive);
+}
+
+void validateExpert(const ExpertSpec& e) {
+  checkNumber("expert.delta_per_s", e.delta_per_s, rules::kNonNegative);
+  checkNumber("expert.alpha", e.alpha, rules::kFraction);
+  validateWeights("expert.c", e.c, 3);
+  validateWeights("expert.cr", e.cr, 3);
+  validateWeights("expert.ct", e.ct, 2);
+  validateWeights("expert.cf", e.cf, 2);
+  if (e.grid) validateGrid(*e.grid);
+  validateExpertExtras(e);
+}
+
+}  // namespace
+
+void validateProject(const Project& project) {
+  if (project.machine) validateMachine(*project.machine);
+  if (project.material) validateMaterial(*project.material);
+  if (project.operation) validateOperation(*project.operation);
+  for (std::size_t i = 0; i < project.tools.size(); ++i)
+    validateTool(indexPath("tools", static_cast<qsizetype>(i)), project.tools[i]);
+  validateUniqueIds(project.tools);
+  validateRadialDepths(project);
+  if (project.expert) validateExpert(*project.expert);
+  validateProcessSections(project);
+}
+
+std::optional<double> radialDepthMm(const Project& project, const ToolSpec& tool) {
+  if (tool.radial_depth_mm) return tool.radial_depth_mm;
+  if (!project.operation) return std::nullopt;
+  if (project.operation->radial_depth_mm) return project.operation->radial_depth_mm;
+  if (project.operation->radial_immersion) return *project.operation->radial_immersion * tool.diameter_mm;
+  return std::nullopt;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,17 @@
+#pragma once
+// Range and cross-field rules of a Project (also for projects edited in memory, e.g. by the GUI).
+#include <optional>
+
+#include "document/project.h"
+
+namespace mx::app {
+
+// Throws ProjectError naming the field path, the value and the allowed range, e.g.
+// "tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)". projectFromJson calls it.
+void validateProject(const Project& project);
+
+// The radial depth of cut of one tool [mm]: tool.radial_depth_mm, else operation.radial_depth_mm,
+// else operation.radial_immersion * D. nullopt when neither the tool nor an operation gives one.
+std::optional<double> radialDepthMm(const Project& project, const ToolSpec& tool);
+
+}  // namespace mx::app

@@ -1,0 +1,127 @@
+// projectToJson: the typed values, then the unknown keys of every object merged back in: those of
+// tools and modes from their structs, the others from project.document.
+#include <QJsonArray>
+
+#include "document/project.h"
+#include "document/project_sections_io.h"
+
+namespace mx::app {
+
+namespace {
+
+// Writes an expert weight vector if the file had it or it differs from the default.
+void putWeights(QJsonObject& o, const QString& key, const std::vector<double>& values,
+                const std::vector<double>& defaults) {
+  if (!o.contains(key) && values == defaults) return;
+  o.insert(key, numbersOver(o.value(key).toArray(), values));
+}
+
+QJsonArray modesJson(const std::vector<ModeSpec>& modes) {
+  QJsonArray out;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    QJsonObject m = modes[i].unknown;
+    putNumber(m, "freq_Hz", modes[i].freq_Hz);
+    putNumber(m, "damping_pct", modes[i].damping_pct);
+    putNumber(m, "stiffness_N_per_um", modes[i].stiffness_N_per_um);
+    out.append(m);
+  }
+  return out;
+}
+
+QJsonObject toolJson(const ToolSpec& tool) {
+  QJsonObject t = tool.unknown;
+  t.insert("id", tool.id);
+  putNumber(t, "teeth", tool.teeth);
+  putNumber(t, "diameter_mm", tool.diameter_mm);
+  putNumber(t, "helix_deg", tool.helix_deg);
+  putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
+  putOptional(t, "Kr", tool.Kr);
+  putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
+  t.insert("modes_x", modesJson(tool.modes_x));
+  t.insert("modes_y", modesJson(tool.modes_y));
+  return t;
+}
+
+QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
+  if (m.name) {
+    o.insert("name", *m.name);
+  } else {
+    o.remove("name");
+  }
+  putNumber(o, "spindle_power_W", m.spindle_power_W);
+  putOptional(o, "max_spindle_rpm", m.max_spindle_rpm);
+  putOptional(o, "max_feed_mm_s", m.max_feed_mm_s);
+  return o;
+}
+
+QJsonObject materialJson(QJsonObject o, const MaterialSpec& m) {
+  o.insert("name", m.name);
+  putNumber(o, "Kt_N_mm2", m.Kt_N_mm2);
+  putNumber(o, "Kr", m.Kr);
+  return o;
+}
+
+QJsonObject operationJson(QJsonObject o, const OperationSpec& op) {
+  o.insert("milling", op.milling == MillingDirection::Up ? "up" : "down");
+  putOptional(o, "radial_immersion", op.radial_immersion);
+  putOptional(o, "radial_depth_mm", op.radial_depth_mm);
+  putNumber(o, "max_feed_per_tooth_mm", op.max_feed_per_tooth_mm);
+  return o;
+}
+
+QJsonObject gridJson(QJsonObject o, const ExpertGridSpec& g) {
+  putNumber(o, "speed_from_rpm", g.speed_from_rpm);
+  putNumber(o, "speed_to_rpm", g.speed_to_rpm);
+  putNumber(o, "speed_step_rpm", g.speed_step_rpm);
+  putNumber(o, "depth_divisions", g.depth_divisions);
+  putNumber(o, "feed_step_mm", g.feed_step_mm);
+  return o;
+}
+
+QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
+  const ExpertSpec defaults;
+  putNumber(o, "delta_per_s", e.delta_per_s);
+  putNumber(o, "alpha", e.alpha);
+  putWeights(o, "c", e.c, defaults.c);
+  putWeights(o, "cr", e.cr, defaults.cr);
+  putWeights(o, "ct", e.ct, defaults.ct);
+  putWeights(o, "cf", e.cf, defaults.cf);
+  if (e.grid) {
+    o.insert("grid", gridJson(o.value("grid").toObject(), *e.grid));
+  } else {
+    o.remove("grid");
+  }
+  putExpertExtras(o, e);
+  return o;
+}
+
+template <typename Spec, typename Writer>
+void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>& spec, Writer write) {
+  if (spec) {
+    root.insert(key, write(root.value(key).toObject(), *spec));
+  } else {
+    root.remove(key);
+  }
+}
+
+}  // namespace
+
+QJsonObject projectToJson(const Project& project) {
+  QJsonObject root;
+  root.insert("format", "millexpert-project");
+  putNumber(root, "version", 1);
+  root.insert("name", project.name);
+  putSection(root, "machine", project.machine, machineJson);
+  putSection(root, "material", project.material, materialJson);
+  putSection(root, "operation", project.operation, operationJson);
+  if (!project.tools.empty() || project.document.contains("tools")) {
+    QJsonArray tools;
+    for (const ToolSpec& tool : project.tools) tools.append(toolJson(tool));
+    root.insert("tools", tools);
+  }
+  putSection(root, "expert", project.expert, expertJson);
+  putProcessSections(root, project);
+  return withUnknownKeys(project.document, root);
+}
+
+}  // namespace mx::app

@@ -1,0 +1,333 @@
+// The process sections of projectToJson, each written over the object it was read from so that
+// unknown keys and the stored spelling of equal numbers survive.
+#include <QJsonArray>
+#include <QSet>
+
+#include "document/project_sections_io.h"
+
+namespace mx::app {
+
+namespace {
+
+void putString(QJsonObject& o, const QString& key, const std::optional<QString>& value) {
+  if (value) {
+    o.insert(key, *value);
+  } else {
+    o.remove(key);
+  }
+}
+
+void putBool(QJsonObject& o, const QString& key, const std::optional<bool>& value) {
+  if (value) {
+    o.insert(key, *value);
+  } else {
+    o.remove(key);
+  }
+}
+
+template <typename Spec, typename Writer>
+void putObject(QJsonObject& o, const QString& key, const std::optional<Spec>& spec, Writer write) {
+  if (spec) {
+    QJsonObject child = o.value(key).toObject();
+    write(child, *spec);
+    o.insert(key, child);
+  } else {
+    o.remove(key);
+  }
+}
+
+void putNumbers(QJsonObject& o, const QString& key, const std::optional<std::vector<double>>& values) {
+  if (values) {
+    o.insert(key, numbersOver(o.value(key).toArray(), *values));
+  } else {
+    o.remove(key);
+  }
+}
+
+void putDepthSteps(QJsonObject& o, const QString& key, const std::optional<std::vector<DepthStepSpec>>& steps) {
+  if (!steps) {
+    o.remove(key);
+    return;
+  }
+  const QJsonArray old = o.value(key).toArray();
+  QJsonArray out;
+  for (std::size_t i = 0; i < steps->size(); ++i) {
+    const auto k = static_cast<qsizetype>(i);
+    QJsonObject s = k < old.size() ? old.at(k).toObject() : QJsonObject();
+    putNumber(s, "length_mm", (*steps)[i].length_mm);
+    putNumber(s, "depth_mm", (*steps)[i].depth_mm);
+    out.append(s);
+  }
+  o.insert(key, out);
+}
+
+void writeControl(QJsonObject& o, const ControlSection& c) {
+  putString(o, "tool", c.tool);
+  putOptional(o, "spindle_rpm", c.spindle_rpm);
+  putOptional(o, "cutting_pressure_N_mm2", c.cutting_pressure_N_mm2);
+  putOptional(o, "start_angle_deg", c.start_angle_deg);
+  putOptional(o, "exit_angle_deg", c.exit_angle_deg);
+  putOptional(o, "drive_time_constant_ms", c.drive_time_constant_ms);
+  putOptional(o, "process_time_constant_ms", c.process_time_constant_ms);
+  putOptional(o, "beta", c.beta);
+  putOptional(o, "force_reference_N", c.force_reference_N);
+  putOptional(o, "breakage_force_N", c.breakage_force_N);
+  putOptional(o, "safety_factor", c.safety_factor);
+  putOptional(o, "feed_max_mm_s", c.feed_max_mm_s);
+  putObject(o, "reference_model", c.reference_model, [](QJsonObject& m, const ControlReferenceModelSpec& s) {
+    putOptional(m, "damping", s.damping);
+    putOptional(m, "rise_time_periods", s.rise_time_periods);
+  });
+  putObject(o, "rls", c.rls, [](QJsonObject& m, const ControlRlsSpec& s) {
+    putOptional(m, "lambda", s.lambda);
+    putOptional(m, "P0", s.P0);
+    putOptional(m, "theta0", s.theta0);
+    putString(m, "reset", s.reset);
+    putOptional(m, "reset_fraction", s.reset_fraction);
+    putOptional(m, "trace_min", s.trace_min);
+    putOptional(m, "trace_max", s.trace_max);
+  });
+  putDepthSteps(o, "workpiece", c.workpiece);
+}
+
+void writeSdnrp(QJsonObject& o, const SdnrpSection& s) {
+  putOptional(o, "ra_um", s.ra_um);
+  putOptional(o, "seconds", s.seconds);
+  putObject(o, "disturbance", s.disturbance, [](QJsonObject& d, const SdnrpDisturbanceSpec& v) {
+    putBool(d, "enabled", v.enabled);
+    putOptional(d, "seed", v.seed);
+    putOptional(d, "sigma_N", v.sigma_N);
+    putOptional(d, "hold_ms", v.hold_ms);
+  });
+  putObject(o, "initial", s.initial, [](QJsonObject& i, const SdnrpInitialSpec& v) {
+    putOptional(i, "feed_mm_min", v.feed_mm_min);
+    putOptional(i, "speed_rpm", v.speed_rpm);
+  });
+  putObject(o, "drives", s.drives, [](QJsonObject& d, const SdnrpDrivesSpec& v) {
+    putOptional(d, "feed_natural_frequency_rad_s", v.feed_natural_frequency_rad_s);
+    putOptional(d, "feed_damping", v.feed_damping);
+    putOptional(d, "spindle_time_constant_s", v.spindle_time_constant_s);
+  });
+  putOptional(o, "integral_rate_per_s", s.integral_rate_per_s);
+}
+
+void writeForceControl(QJsonObject& o, const ForceControlSection& f) {
+  putString(o, "tool", f.tool);
+  putObject(o, "model", f.model, [](QJsonObject& m, const ForceModelSpec& v) {
+    putOptional(m, "K_N", v.K_N);
+    putOptional(m, "depth_exponent", v.depth_exponent);
+    putOptional(m, "feed_exponent", v.feed_exponent);
+  });
+  putOptional(o, "reference_force_N", f.reference_force_N);
+  putOptional(o, "max_feed_mm_s", f.max_feed_mm_s);
+  putOptional(o, "max_feed_per_tooth_mm", f.max_feed_per_tooth_mm);
+}
+
+void writePartProgram(QJsonObject& o, const PartProgramSection& p) {
+  putOptional(o, "stock_top_mm", p.stock_top_mm);
+  putDepthSteps(o, "depth_profile", p.depth_profile);
+  putOptional(o, "speed_rpm", p.speed_rpm);
+  putBool(o, "keep_plunge_feed", p.keep_plunge_feed);
+  putString(o, "controller", p.controller);
+}
+
+void writeSupervisor(QJsonObject& o, const SupervisorSection& s) {
+  putString(o, "tool", s.tool);
+  putOptional(o, "spindle_rpm", s.spindle_rpm);
+  putOptional(o, "programmed_feed_mm_s", s.programmed_feed_mm_s);
+  putObject(o, "part", s.part, [](QJsonObject& p, const SupervisorPartSpec& v) {
+    putOptional(p, "length_mm", v.length_mm);
+    putOptional(p, "width_mm", v.width_mm);
+    putOptional(p, "approach_mm", v.approach_mm);
+  });
+  putObject(o, "passes_mm", s.passes_mm, [](QJsonObject& p, const SupervisorPassesSpec& v) {
+    putNumbers(p, "none", v.none);
+    putNumbers(p, "smc1", v.smc1);
+    putNumbers(p, "smc2", v.smc2);
+  });
+  putOptional(o, "scan_period_ms", s.scan_period_ms);
+  putOptional(o, "reference_force_N", s.reference_force_N);
+  putOptional(o, "power_margin", s.power_margin);
+  putOptional(o, "chatter_threshold_N", s.chatter_threshold_N);
+  if (s.events) {
+    const QJsonArray old = o.value("events").toArray();
+    QJsonArray out;
+    for (std::size_t i = 0; i < s.events->size(); ++i) {
+      const auto k = static_cast<qsizetype>(i);
+      QJsonObject e = k < old.size() ? old.at(k).toObject() : QJsonObject();
+      putNumber(e, "t_s", (*s.events)[i].t_s);
+      e.insert("type", (*s.events)[i].type);
+      out.append(e);
+    }
+    o.insert("events", out);
+  } else {
+    o.remove("events");
+  }
+  if (s.charts) {
+    o.insert("charts", *s.charts);
+  } else {
+    o.remove("charts");
+  }
+}
+
+void writePowerLaw(QJsonObject& o, const PowerLawSpec& m) {
+  putNumber(o, "K", m.K);
+  putNumber(o, "speed_exponent", m.speed_exponent);
+  putNumber(o, "depth_exponent", m.depth_exponent);
+  putNumber(o, "feed_exponent", m.feed_exponent);
+}
+
+void writePareto(QJsonObject& o, const ParetoSection& p) {
+  putString(o, "tool", p.tool);
+  putObject(o, "taylor", p.taylor, writePowerLaw);
+  putObject(o, "roughness", p.roughness, writePowerLaw);
+  putNumbers(o, "weights", p.weights);
+  putObject(o, "fine", p.fine,
+            [](QJsonObject& f, const ParetoFineSpec& v) { putOptional(f, "divisions", v.divisions); });
+  putObject(o, "auto_weights", p.auto_weights, [](QJsonObject& a, const ParetoAutoWeightsSpec& v) {
+    putOptional(a, "step", v.step);
+    putOptional(a, "tolerance", v.tolerance);
+    putOptional(a, "max_iterations", v.max_iterations);
+  });
+}
+
+}  // namespace
+
+QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values) {
+  QJsonArray out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto k = static_cast<qsizetype>(i);
+    const bool same = k < old.size() && old.at(k).isDouble() && old.at(k).toDouble() == values[i];
+    out.append(same ? old.at(k) : QJsonValue(values[i]));
+  }
+  return out;
+}
+
+void putNumber(QJsonObject& o, const QString& key, double value) {
+  const QJsonValue old = o.value(key);
+  if (old.isDouble() && old.toDouble() == value) return;
+  o.insert(key, value);
+}
+
+void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value) {
+  if (value) {
+    putNumber(o, key, *value);
+  } else {
+    o.remove(key);
+  }
+}
+
+void putProcessSections(QJsonObject& root, const Project& p) {
+  putObject(root, "control", p.control, writeControl);
+  putObject(root, "sdnrp", p.sdnrp, writeSdnrp);
+  putObject(root, "force_control", p.force_control, writeForceControl);
+  putObject(root, "part_program", p.part_program, writePartProgram);
+  putObject(root, "supervisor", p.supervisor, writeSupervisor);
+  putObject(root, "pareto", p.pareto, writePareto);
+  if (p.operator_rules) {
+    root.insert("operator_rules", QJsonArray::fromStringList(*p.operator_rules));
+  } else {
+    root.remove("operator_rules");
+  }
+}
+
+void putExpertExtras(QJsonObject& o, const ExpertSpec& e) {
+  putString(o, "method", e.method);
+  if (e.simulated_points) {
+    putNumber(o, "simulated_points", *e.simulated_points);
+  } else {
+    o.remove("simulated_points");
+  }
+  if (e.grid && o.value("grid").isObject()) {
+    QJsonObject grid = o.value("grid").toObject();
+    putBool(grid, "modal_candidate_speeds", e.grid->modal_candidate_speeds);
+    o.insert("grid", grid);
+  }
+}
+
+namespace {
+
+bool isEmptyUnknown(const QJsonValue& v) {
+  return v.isUndefined() || (v.isObject() && v.toObject().isEmpty());
+}
+
+QJsonValue unknownPart(const QJsonValue& original, const QJsonValue& known) {
+  if (original.isObject() && known.isObject()) {
+    const QJsonObject o = original.toObject(), k = known.toObject();
+    QJsonObject out;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+      if (!k.contains(it.key())) {
+        out.insert(it.key(), it.value());
+      } else {
+        const QJsonValue u = unknownPart(it.value(), k.value(it.key()));
+        if (!isEmptyUnknown(u)) out.insert(it.key(), u);
+      }
+    }
+    return out;
+  }
+  if (original.isArray() && known.isArray()) {
+    const QJsonArray o = original.toArray(), k = known.toArray();
+    QJsonArray out;
+    bool any = false;
+    for (qsizetype i = 0; i < o.size() && i < k.size(); ++i) {
+      const QJsonValue u = unknownPart(o.at(i), k.at(i));
+      any = any || !isEmptyUnknown(u);
+      out.append(isEmptyUnknown(u) ? QJsonValue(QJsonObject()) : u);
+    }
+    return any ? QJsonValue(out) : QJsonValue(QJsonValue::Undefined);
+  }
+  return QJsonValue(QJsonValue::Undefined);  // a known scalar: the typed value wins
+}
+
+// The keys whose values the typed project holds as objects or arrays: when the project no longer
+// has one (a section or sub-object removed), its unknown keys go with it.
+bool isTypedContainer(const QString& key) {
+  static const QSet<QString> keys{
+      "machine", "material",     "operation",       "tools",  "modes_x",      "modes_y",       "expert",
+      "grid",    "control",      "reference_model", "rls",    "workpiece",    "sdnrp",         "disturbance",
+      "initial", "drives",       "force_control",   "model",  "part_program", "depth_profile", "supervisor",
+      "part",    "passes_mm",    "events",          "charts", "pareto",       "taylor",        "roughness",
+      "fine",    "auto_weights", "operator_rules"};
+  return keys.contains(key);
+}
+
+QJsonValue mergeUnknown(const QJsonValue& unknown, const QJsonValue& known) {
+  if (unknown.isObject() && known.isObject()) {
+    QJsonObject out = unknown.toObject();
+    const QJsonObject k = known.toObject();
+    for (const QString& key : out.keys())
+      if (!k.contains(key) && isTypedContainer(key)) out.remove(key);
+    for (auto it = k.begin(); it != k.end(); ++it)
+      out.insert(it.key(), out.contains(it.key()) ? mergeUnknown(out.value(it.key()), it.value()) : it.value());
+    return out;
+  }
+  if (unknown.isArray() && known.isArray()) {
+    const QJsonArray u = unknown.toArray();
+    QJsonArray out;
+    const QJsonArray k = known.toArray();
+    for (qsizetype i = 0; i < k.size(); ++i) out.append(i < u.size() ? mergeUnknown(u.at(i), k.at(i)) : k.at(i));
+    return out;
+  }
+  return known;
+}
+
+}  // namespace
+
+QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known) {
+  QJsonObject k = known;
+  if (k.contains("tools") && original.contains("tools")) k.insert("tools", original.value("tools"));
+  return unknownPart(original, k).toObject();
+}
+
+QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known) {
+  return mergeUnknown(unknown, known).toObject();
+}
+
+const std::optional<std::vector<double>>* SupervisorPassesSpec::of(const QString& controller) const {
+  if (controller == "none") return &none;
+  if (controller == "smc1") return &smc1;
+  if (controller == "smc2") return &smc2;
+  return nullptr;
+}
+
+}  // namespace mx::app

@@ -1,0 +1,10 @@
+# CTest form of the layer rules (cmake/LayerRules.cmake): -DLAYER=name -DLAYER_DIR=folder.
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/LayerRules.cmake)
+mx_find_layer_violations(${LAYER} ${LAYER_DIR} _bad)
+if(_bad)
+  string(REPLACE ";" "\n  " _text "${_bad}")
+  message(FATAL_ERROR "layer '${LAYER}' includes a header it must not use (docs/architecture.md):\n  ${_text}")
+endif()
+file(GLOB_RECURSE _sources ${LAYER_DIR}/*.cpp ${LAYER_DIR}/*.h)
+list(LENGTH _sources _n)
+message(STATUS "layer '${LAYER}' keeps to its rule: ${_n} files checked")
