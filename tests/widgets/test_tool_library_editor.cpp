@@ -25,7 +25,7 @@ const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
 void wire(ToolLibraryEditor& editor, mx::gui::ProjectDocument& doc) {
   QObject::connect(&editor, &ToolLibraryEditor::editRequested, &doc,
                    [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-  QObject::connect(&doc, &mx::gui::ProjectDocument::projectChanged, &editor, [&] { editor.setProject(doc.project()); });
+  QObject::connect(&doc, &mx::gui::ProjectDocument::changed, &editor, [&] { editor.setProject(doc.project()); });
   editor.setProject(doc.project());
 }
 
