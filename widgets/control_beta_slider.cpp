@@ -66,9 +66,14 @@ ControlBetaSlider::ControlBetaSlider(QWidget* parent)
     slider_->setValue(toTicks(value));
     userChanged();
   });
+  connect(slider_, &QSlider::sliderPressed, this, [this] {
+    ++drag_;
+    dragging_ = true;
+  });
   connect(slider_, &QSlider::sliderReleased, this, [this] {
     debounce_->stop();
-    emitIfChanged();
+    emitIfChanged();  // still part of the drag
+    dragging_ = false;
   });
   setBeta(0.0);
 }

@@ -137,6 +137,10 @@ double ControlView::beta() const {
   return beta_->beta();
 }
 
+int ControlView::betaGesture() const {
+  return beta_->gesture();
+}
+
 void ControlView::setTraces(const ControlTraces& t) {
   traces_ = t;
   plots_->setTraces(t);

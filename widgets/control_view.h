@@ -36,6 +36,7 @@ class ControlView : public QWidget {
 
   void setBeta(double beta);  // slider [-1, 1] step 0.01 plus a spin box; no signal
   double beta() const;
+  int betaGesture() const;  // the beta slider drag that emits betaChanged, 0 outside a drag
   void setTraces(const ControlTraces& t);
   void setMetrics(const ControlMetricsView& m);  // overshoots, settling, J_c, feed range, "unstable zero" warning
   void setJcCurve(const JcCurveView& c);         // curve, current beta, shaded beta < threshold, best beta

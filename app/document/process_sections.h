@@ -14,11 +14,13 @@ namespace mx::app {
 struct DepthStepSpec {
   double length_mm = 0.0;  // (0, 1e7]
   double depth_mm = 0.0;   // [0, 1000]
+  bool operator==(const DepthStepSpec&) const = default;
 };
 
 struct ControlReferenceModelSpec {
   std::optional<double> damping;            // [0.05, 5], default 0.75
   std::optional<double> rise_time_periods;  // [0.5, 1000], default 4
+  bool operator==(const ControlReferenceModelSpec&) const = default;
 };
 
 struct ControlRlsSpec {
@@ -29,6 +31,7 @@ struct ControlRlsSpec {
   std::optional<double> reset_fraction;  // (0, 10], default 0.05
   std::optional<double> trace_min;       // [0, 1e15], default 1e-6
   std::optional<double> trace_max;       // (0, 1e300], default 1e12; > trace_min
+  bool operator==(const ControlRlsSpec&) const = default;
 };
 
 // "control": adaptive force control under beta-FROH.
@@ -48,6 +51,7 @@ struct ControlSection {
   std::optional<ControlReferenceModelSpec> reference_model;
   std::optional<ControlRlsSpec> rls;
   std::optional<std::vector<DepthStepSpec>> workpiece;
+  bool operator==(const ControlSection&) const = default;
 };
 
 struct SdnrpDisturbanceSpec {
@@ -55,17 +59,20 @@ struct SdnrpDisturbanceSpec {
   std::optional<double> seed;   // integer in [0, 9e15], default 2008
   std::optional<double> sigma_N;
   std::optional<double> hold_ms;
+  bool operator==(const SdnrpDisturbanceSpec&) const = default;
 };
 
 struct SdnrpInitialSpec {
   std::optional<double> feed_mm_min;
   std::optional<double> speed_rpm;
+  bool operator==(const SdnrpInitialSpec&) const = default;
 };
 
 struct SdnrpDrivesSpec {
   std::optional<double> feed_natural_frequency_rad_s;
   std::optional<double> feed_damping;
   std::optional<double> spindle_time_constant_s;
+  bool operator==(const SdnrpDrivesSpec&) const = default;
 };
 
 // "sdnrp": Cus & Zuperl's surface-roughness loop.
@@ -76,12 +83,14 @@ struct SdnrpSection {
   std::optional<SdnrpInitialSpec> initial;
   std::optional<SdnrpDrivesSpec> drives;
   std::optional<double> integral_rate_per_s;
+  bool operator==(const SdnrpSection&) const = default;
 };
 
 struct ForceModelSpec {
   std::optional<double> K_N;
   std::optional<double> depth_exponent;
   std::optional<double> feed_exponent;
+  bool operator==(const ForceModelSpec&) const = default;
 };
 
 // "force_control": the model-based controller F = K d^b f^a.
@@ -91,6 +100,7 @@ struct ForceControlSection {
   std::optional<double> reference_force_N;  // required by the model-based controller
   std::optional<double> max_feed_mm_s;
   std::optional<double> max_feed_per_tooth_mm;
+  bool operator==(const ForceControlSection&) const = default;
 };
 
 // "part_program": part-program feed overrides.
@@ -100,12 +110,14 @@ struct PartProgramSection {
   std::optional<double> speed_rpm;
   std::optional<bool> keep_plunge_feed;  // default true
   std::optional<QString> controller;     // "adaptive" or "model-based"
+  bool operator==(const PartProgramSection&) const = default;
 };
 
 struct SupervisorPartSpec {
   std::optional<double> length_mm;
   std::optional<double> width_mm;
   std::optional<double> approach_mm;
+  bool operator==(const SupervisorPartSpec&) const = default;
 };
 
 struct SupervisorPassesSpec {  // pass depths [mm] per controller
@@ -113,11 +125,13 @@ struct SupervisorPassesSpec {  // pass depths [mm] per controller
   std::optional<std::vector<double>> smc1;
   std::optional<std::vector<double>> smc2;
   const std::optional<std::vector<double>>* of(const QString& controller) const;
+  bool operator==(const SupervisorPassesSpec&) const = default;
 };
 
 struct SupervisorEventSpec {
   double t_s = 0.0;
   QString type;  // "feed_hold_on", "feed_hold_off" or "chatter"
+  bool operator==(const SupervisorEventSpec&) const = default;
 };
 
 // "supervisor": supervisory control of face milling. The Grafcet charts stay JSON: they are read by
@@ -134,6 +148,7 @@ struct SupervisorSection {
   std::optional<double> chatter_threshold_N;
   std::optional<std::vector<SupervisorEventSpec>> events;
   std::optional<QJsonObject> charts;  // controller -> chart
+  bool operator==(const SupervisorSection&) const = default;
 };
 
 // A power law K V^a b^b s_t^c (V [m/min], b [mm], s_t [mm/tooth]).
@@ -142,16 +157,19 @@ struct PowerLawSpec {
   double speed_exponent = 0.0;
   double depth_exponent = 0.0;
   double feed_exponent = 0.0;
+  bool operator==(const PowerLawSpec&) const = default;
 };
 
 struct ParetoFineSpec {
   std::optional<double> divisions;  // integer in [1, 100], default 5
+  bool operator==(const ParetoFineSpec&) const = default;
 };
 
 struct ParetoAutoWeightsSpec {
   std::optional<double> step;
   std::optional<double> tolerance;
   std::optional<double> max_iterations;
+  bool operator==(const ParetoAutoWeightsSpec&) const = default;
 };
 
 // "pareto": the Pareto expert system.
@@ -162,6 +180,7 @@ struct ParetoSection {
   std::optional<std::vector<double>> weights;
   std::optional<ParetoFineSpec> fine;
   std::optional<ParetoAutoWeightsSpec> auto_weights;
+  bool operator==(const ParetoSection&) const = default;
 };
 
 }  // namespace mx::app

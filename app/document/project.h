@@ -25,6 +25,7 @@ struct ModeSpec {
   double damping_pct = 0.0;
   double stiffness_N_per_um = 0.0;
   QJsonObject unknown;  // the file's keys this build does not know; they stay with this mode
+  bool operator==(const ModeSpec&) const = default;
 };
 
 struct ToolSpec {
@@ -38,6 +39,7 @@ struct ToolSpec {
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
   QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
+  bool operator==(const ToolSpec&) const = default;
 };
 
 struct MachineSpec {
@@ -45,12 +47,14 @@ struct MachineSpec {
   double spindle_power_W = 0.0;
   std::optional<double> max_spindle_rpm;  // no limit when absent
   std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
+  bool operator==(const MachineSpec&) const = default;
 };
 
 struct MaterialSpec {
   QString name;
   double Kt_N_mm2 = 0.0;
   double Kr = 0.0;
+  bool operator==(const MaterialSpec&) const = default;
 };
 
 struct OperationSpec {
@@ -58,6 +62,7 @@ struct OperationSpec {
   std::optional<double> radial_immersion;  // a/D in (0, 1]
   std::optional<double> radial_depth_mm;   // exactly one of the two is given
   double max_feed_per_tooth_mm = 0.0;
+  bool operator==(const OperationSpec&) const = default;
 };
 
 struct ExpertGridSpec {
@@ -67,6 +72,7 @@ struct ExpertGridSpec {
   int depth_divisions = 10;
   double feed_step_mm = 0.01;
   std::optional<bool> modal_candidate_speeds;  // add the Rule 7.2 speeds; default true
+  bool operator==(const ExpertGridSpec&) const = default;
 };
 
 struct ExpertSpec {
@@ -79,6 +85,7 @@ struct ExpertSpec {
   std::optional<ExpertGridSpec> grid;
   std::optional<QString> method;          // "zoa" (default) or "sdm"
   std::optional<int> simulated_points;    // K of Rule 5, [1, 1000], default 12
+  bool operator==(const ExpertSpec&) const = default;
 };
 
 struct Project {

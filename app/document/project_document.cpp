@@ -9,17 +9,36 @@
 
 namespace mx::app {
 
-// Swaps whole Project snapshots: undo restores the previous project exactly.
+// Swaps whole Project snapshots: undo restores the previous project exactly. The changed sections
+// are computed once; undo and redo emit the same ones.
 class SnapshotCommand : public QUndoCommand {
  public:
-  SnapshotCommand(ProjectDocument* doc, Project before, Project after, const QString& text)
-      : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
-  void undo() override { doc_->setSnapshot(before_); }
-  void redo() override { doc_->setSnapshot(after_); }
+  SnapshotCommand(ProjectDocument* doc, app::Project before, app::Project after, const QString& text,
+                  app::ProjectChanges sections, int gesture_id)
+      : QUndoCommand(text),
+        doc_(doc),
+        before_(std::move(before)),
+        after_(std::move(after)),
+        sections_(sections),
+        gesture_(gesture_id) {}
+  void undo() override { doc_->setSnapshot(before_, sections_); }
+  void redo() override { doc_->setSnapshot(after_, sections_); }
+  int id() const override { return gesture_ > 0 ? kId : -1; }
+  bool mergeWith(const QUndoCommand* other) override {
+    const auto* o = static_cast<const SnapshotCommand*>(other);
+    if (o->gesture_ != gesture_) return false;
+    after_ = o->after_;
+    sections_ = app::changedSections(before_, after_);
+    setObsolete(!sections_);  // the gesture came back to where it started: no undo step
+    return true;
+  }
 
  private:
+  static constexpr int kId = 1002;
   ProjectDocument* doc_;
-  Project before_, after_;
+  app::Project before_, after_;
+  app::ProjectChanges sections_;
+  int gesture_;
 };
 
 // Moves the operating point; the moves of one drag merge into one undo step.
@@ -29,15 +48,17 @@ class PointCommand : public QUndoCommand {
       : QUndoCommand(QObject::tr("Move operating point")), doc_(doc), before_(before), after_(after), drag_(drag_id) {}
   void undo() override { doc_->setPointSilently(before_); }
   void redo() override { doc_->setPointSilently(after_); }
-  int id() const override { return drag_ > 0 ? 1001 : -1; }
+  int id() const override { return drag_ > 0 ? kId : -1; }
   bool mergeWith(const QUndoCommand* other) override {
     const auto* o = static_cast<const PointCommand*>(other);
     if (o->drag_ != drag_) return false;
     after_ = o->after_;
+    setObsolete(after_ == before_);  // dragged back to the start: no undo step
     return true;
   }
 
  private:
+  static constexpr int kId = 1001;
   ProjectDocument* doc_;
   PickedPoint before_, after_;
   int drag_;
@@ -50,9 +71,9 @@ ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
   newProject();
 }
 
-void ProjectDocument::setSnapshot(const Project& project) {
+void ProjectDocument::setSnapshot(const app::Project& project, app::ProjectChanges sections) {
   project_ = project;
-  emit projectChanged();
+  emit changed(sections);
 }
 
 void ProjectDocument::setPointSilently(const PickedPoint& point) {
@@ -60,13 +81,15 @@ void ProjectDocument::setPointSilently(const PickedPoint& point) {
   emit pointChanged(point_);
 }
 
-QString ProjectDocument::applyEdit(const Project& edited, const QString& description) {
+QString ProjectDocument::applyEdit(const app::Project& edited, const QString& description, int gesture_id) {
+  const app::ProjectChanges sections = app::changedSections(project_, edited);
+  if (!sections) return {};
   try {
     validateProject(edited);
   } catch (const ProjectError& e) {
     return QString::fromStdString(e.what());
   }
-  undo_.push(new SnapshotCommand(this, project_, edited, description));
+  undo_.push(new SnapshotCommand(this, project_, edited, description, sections, gesture_id));
   return {};
 }
 
@@ -80,7 +103,7 @@ void ProjectDocument::newProject() {
   p.name = tr("Untitled");
   undo_.clear();
   path_.clear();
-  setSnapshot(p);
+  setSnapshot(p, app::kAllSections);
   emit filePathChanged(path_);
 }
 
@@ -88,7 +111,7 @@ void ProjectDocument::load(const QString& path) {
   Project p = app::loadProject(path);
   undo_.clear();
   path_ = path;
-  setSnapshot(p);
+  setSnapshot(p, app::kAllSections);
   emit filePathChanged(path_);
 }
 
@@ -101,7 +124,9 @@ void ProjectDocument::recover(const QString& path) {
     path_ = path;
     emit filePathChanged(path_);
   }
-  undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave")));
+  // Pushed even when equal to the file, so that the recovery stays one unsaved, undoable step.
+  undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave"),
+                                 app::changedSections(project_, recovered), 0));
 }
 
 void ProjectDocument::save(const QString& path) {

@@ -2,12 +2,14 @@
 // The open project as the GUI edits it: the Project snapshot, its file, the dirty flag, undo/redo
 // (every edit is a whole-snapshot QUndoCommand, so undo restores exactly), the picked operating point,
 // and autosave with crash recovery. Views never modify the Project directly: they call applyEdit().
+// Every change of the snapshot emits changed() with the sections it touched.
 #include <QObject>
 #include <QString>
 #include <QTimer>
 #include <QUndoStack>
 
 #include "document/project.h"
+#include "document/project_changes.h"
 
 namespace mx::app {
 
@@ -32,7 +34,11 @@ class ProjectDocument : public QObject {
 
   // Validates `edited` (validateProject); on success pushes an undoable edit and returns "".
   // On failure nothing changes and the returned message names the field, value and range.
-  QString applyEdit(const Project& edited, const QString& description);
+  // An edit that changes no section pushes nothing. Consecutive edits with the same `gesture_id` > 0
+  // (one slider drag, press to release) merge into one undo step.
+  QString applyEdit(const app::Project& edited, const QString& description, int gesture_id = 0);
+  // A fresh gesture id for applyEdit (one per slider press).
+  int newGesture() { return ++gestures_; }
   // Undoable move of the operating point (consecutive moves within one drag merge: `drag_id` > 0).
   void setPoint(const PickedPoint& point, int drag_id = 0);
   // Sets the point without an undo entry (the initial point after loading).
@@ -49,7 +55,8 @@ class ProjectDocument : public QObject {
   static QString recoveryCandidate(const QString& path);  // autosave newer than `path`, else ""
 
  signals:
-  void projectChanged();                // any change of the snapshot (edit, undo, redo, load)
+  // Any change of the snapshot: the sections an edit, its undo or redo touched; all on load and new.
+  void changed(mx::app::ProjectChanges sections);
   void pointChanged(const mx::app::PickedPoint& point);
   void dirtyChanged(bool dirty);
   void filePathChanged(const QString& path);
@@ -57,7 +64,7 @@ class ProjectDocument : public QObject {
  private:
   friend class SnapshotCommand;
   friend class PointCommand;
-  void setSnapshot(const Project& project);
+  void setSnapshot(const app::Project& project, app::ProjectChanges sections);
   void setPointSilently(const PickedPoint& point);
 
   Project project_;
@@ -65,6 +72,7 @@ class ProjectDocument : public QObject {
   QString path_;
   QUndoStack undo_;
   QTimer autosave_;
+  int gestures_ = 0;
 };
 
 }  // namespace mx::app

@@ -2,13 +2,13 @@
 
 #include <QCloseEvent>
 #include <QFile>
-#include <QJsonDocument>
 #include <QMenu>
 #include <QSettings>
 #include <limits>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <cmath>
+#include <utility>
 
 #include "control_runner.h"
 #include "supervision_runner.h"
@@ -64,9 +64,8 @@ MainWindow::MainWindow(QWidget* parent)
 
   recompute_timer_.setSingleShot(true);
   recompute_timer_.setInterval(120);
-  connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recomputeLobes);
-  connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::rebuildExpert);
-  connect(&doc_, &app::ProjectDocument::projectChanged, this, &MainWindow::onProjectChanged);
+  connect(&recompute_timer_, &QTimer::timeout, this, &MainWindow::recomputeEngine);
+  connect(&doc_, &app::ProjectDocument::changed, this, &MainWindow::onProjectChanged);
   connect(&doc_, &app::ProjectDocument::pointChanged, this, &MainWindow::onPointChanged);
   connect(&doc_, &app::ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
   connect(&doc_, &app::ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -99,7 +98,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   resize(1600, 950);
   updateTitle();
-  onProjectChanged();
+  onProjectChanged(app::kAllSections);
 }
 
 MainWindow::~MainWindow() {
@@ -118,8 +117,45 @@ void MainWindow::setMethod(LobeMethod method) {
   method_combo_->setCurrentIndex(method == LobeMethod::ZeroOrder ? 0 : 1);
 }
 
-// The project changed (edit, undo, redo, load): refresh the views and recompute the lobes.
-void MainWindow::onProjectChanged() {
+// The project changed (edit, undo, redo, load): each feature whose inputs are among `changes`
+// recomputes (featuresToRecompute); the others keep their results.
+void MainWindow::onProjectChanged(app::ProjectChanges changes) {
+  const Features f = featuresToRecompute(changes);
+  const app::Project& p = doc_.project();
+  if (f & Feature::Editors) refreshEditors();
+  if (f & Feature::ParetoStudy) {
+    pareto_timer_.start();
+  } else if ((f & Feature::ParetoChoice) && pareto_->study()) {
+    pareto_weights_->setWeights(projectParetoWeightsOf(p));
+    showParetoChoice(pareto_weights_->weights());
+  }
+  if (f & Feature::FiredRules) updateFiredRules();
+  refreshControl(f);
+  refreshMachining(f);
+  if (f & Feature::Supervisor) {
+    refreshSupervisor();
+    if (!supervisor_request_) supervision_shown_ = SupervisionShown::None;
+    if (supervision_shown_ == SupervisionShown::Run) startSupervision();
+    if (supervision_shown_ == SupervisionShown::Comparison) compareSupervision();
+  }
+  if (f & Feature::Simulation) startSimulation();
+  // Lobes and the expert session wait for the edits to pause (one recomputation per burst).
+  pending_engine_ |= f & (Feature::Lobes | Feature::ExpertSession);
+  if (pending_engine_) {
+    recompute_timer_.start();
+  } else if (f & Feature::ExpertRerank) {
+    // Rule 4 again from the cached session, and Rules 5-6 for q**: no lobes or grids.
+    const CostWeights w = projectWeightsOf(p);
+    weights_panel_->setWeights(w);
+    if (expert_->session()) {
+      rerank(w);
+      expert_->refine(w);
+    }
+  }
+}
+
+// The tool table, the machine and operation panel, and the tool choices of the toolbar and menu.
+void MainWindow::refreshEditors() {
   const app::Project& p = doc_.project();
   if (tool_editor_) tool_editor_->setProject(p);
   if (machine_panel_) machine_panel_->setProject(p);
@@ -140,45 +176,12 @@ void MainWindow::onProjectChanged() {
       connect(a, &QAction::toggled, this, [this, id = t.id](bool on) { chart_->setToolVisible(id, on); });
     }
   }
-  // A change of the cost weights alone (a committed slider move, its undo) re-ranks from the cached
-  // session and re-runs Rules 5-6; lobes and grids are only recomputed when their inputs change.
-  // The Pareto study (issue 5) depends on the project without any weights; the lobes and the 2006
-  // expert session also ignore the pareto section and the operator rules.
-  QJsonObject json = app::projectToJson(p);
-  QJsonObject expert = json.value("expert").toObject();
-  for (const char* key : {"c", "cr", "ct", "cf"}) expert.remove(key);
-  json.insert("expert", expert);
-  // The controllers' sections (issues 6 and 7) feed neither the lobes, the expert nor the Pareto study.
-  for (const char* section : {"control", "sdnrp", "force_control", "part_program", "supervisor"}) json.remove(section);
-  if (json.contains("pareto")) {
-    QJsonObject pareto = json.value("pareto").toObject();
-    pareto.remove("weights");
-    json.insert("pareto", pareto);
-  }
-  const QByteArray pareto_inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);
-  if (pareto_inputs != pareto_inputs_) {
-    pareto_inputs_ = pareto_inputs;
-    pareto_timer_.start();
-  } else if (pareto_->study()) {
-    pareto_weights_->setWeights(projectParetoWeightsOf(p));
-    showParetoChoice(pareto_weights_->weights());
-  }
-  updateFiredRules();
-  refreshControl();
-  refreshMachining();
-  refreshSupervisor();
-  json.remove("pareto");
-  json.remove("operator_rules");
-  const QByteArray inputs = QJsonDocument(json).toJson(QJsonDocument::Compact);
-  if (inputs == engine_inputs_ && expert_->session()) {
-    const CostWeights w = projectWeightsOf(p);
-    weights_panel_->setWeights(w);
-    rerank(w);
-    expert_->refine(w);
-    return;
-  }
-  engine_inputs_ = inputs;
-  recompute_timer_.start();
+}
+
+void MainWindow::recomputeEngine() {
+  const Features pending = std::exchange(pending_engine_, {});
+  if (pending & Feature::Lobes) recomputeLobes();
+  if (pending & Feature::ExpertSession) rebuildExpert();
 }
 
 void MainWindow::recomputeLobes() {

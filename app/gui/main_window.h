@@ -21,6 +21,7 @@
 #include "services/supervisor_request.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
+#include "feature_recompute.h"
 #include "lobe_chart_view.h"
 #include "operating_point_readout.h"
 #include "point_evaluator.h"
@@ -173,17 +174,20 @@ class MainWindow : public QMainWindow {
   void updateMonitoring(const SimulationSummary* summary = nullptr);
   // main_window_control.cpp
   void buildControlDock();
-  void refreshControl();
+  void refreshControl(Features features);  // the editors, then the runs `features` names (none: editors only)
   void startControlSweep();
-  void editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what);
+  void editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what,
+                          int gesture_id = 0);
   // main_window_machining.cpp
   void buildMachiningDocks();
-  void refreshMachining();
+  void refreshMachining(Features features);
   // main_window_supervisor.cpp
   void buildSupervisorDock();
   void refreshSupervisor();
   // main_window.cpp
-  void onProjectChanged();
+  void onProjectChanged(app::ProjectChanges changes);
+  void refreshEditors();
+  void recomputeEngine();  // the pending lobes and expert session, once the edits pause
   void recomputeLobes();
   void onLobesReady(const mx::gui::LobeJobResult& result);
   void onPointChanged(const app::PickedPoint& point);
@@ -216,28 +220,27 @@ class MainWindow : public QMainWindow {
   std::optional<app::ParetoChoice> pareto_choice_;
   std::optional<double> last_summary_eta_;
   QString learning_db_path_;
-  QByteArray pareto_inputs_;  // the project minus all weights: a change of it needs a new Pareto study
   QTimer pareto_timer_;
   ControlRunner* control_runner_ = nullptr;
   widgets::ControlView* control_view_ = nullptr;
   std::optional<app::ControlRequest> control_request_;
-  QByteArray control_inputs_;      // the control section minus beta, tools, material: a change re-runs the sweep
-  QByteArray control_run_inputs_;  // the same with beta: a change re-runs the closed loop
+  int beta_drag_ = 0, beta_gesture_ = 0;  // the slider's drag and the document gesture it maps to
   widgets::SurfaceFinishPanel* surface_panel_ = nullptr;
   widgets::PartProgramPanel* program_panel_ = nullptr;
   quint64 sdnrp_generation_ = 0, override_generation_ = 0;
   std::shared_ptr<const app::OverrideOutcome> override_;
   QString override_path_;
-  QByteArray machining_inputs_;
   SupervisionRunner* supervision_ = nullptr;
   widgets::SupervisorView* supervisor_view_ = nullptr;
   std::optional<app::SupervisorRequest> supervisor_request_;
   std::vector<ModuleActivityRecord> live_modules_;
+  enum class SupervisionShown { None, Run, Comparison };
+  SupervisionShown supervision_shown_ = SupervisionShown::None;  // re-run when its inputs change
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;
   bool show_cost_map_ = false, show_grid_ = false;
-  QByteArray engine_inputs_;  // the project minus the cost weights: a change of it needs new lobes
+  Features pending_engine_;  // Lobes and ExpertSession waiting for recompute_timer_
   EngineRunner* engine_;
   SimulationRunner* sim_runner_ = nullptr;
   PointEvaluator evaluator_;

@@ -1,10 +1,8 @@
 // MainWindow: the control view (issue 6; 2006 paper, section 4). The project's "control" section
 // drives the adaptive beta-FROH closed loop on the engine thread; the view's beta slider, controller
-// settings and workpiece editors are undoable edits of that section. Any change re-runs the closed
-// loop; a change other than beta also re-runs the J_c(beta) sweep.
+// settings and workpiece editors are undoable edits of that section (one per slider drag). A change of
+// its inputs re-runs the closed loop; a change other than beta also re-runs the J_c(beta) sweep.
 #include <QDockWidget>
-#include <QJsonArray>
-#include <QJsonDocument>
 #include <QStatusBar>
 
 #include "control_runner.h"
@@ -28,7 +26,13 @@ void MainWindow::buildControlDock() {
   control_view_->setStatus(tr("This project has no \"control\" section (docs/project-file.md)"));
 
   connect(control_view_, &widgets::ControlView::betaChanged, this, [this](double beta) {
-    editControlSection([beta](app::ControlRequest& r) { r.settings.beta = beta; }, tr("Change beta"));
+    // The debounced values of one slider drag are one undo step.
+    const int drag = control_view_->betaGesture();
+    if (drag != beta_drag_) {
+      beta_drag_ = drag;
+      beta_gesture_ = drag > 0 ? doc_.newGesture() : 0;
+    }
+    editControlSection([beta](app::ControlRequest& r) { r.settings.beta = beta; }, tr("Change beta"), beta_gesture_);
   });
   connect(control_view_, &widgets::ControlView::settingsEdited, this, [this](const widgets::ControllerSettingsView& v) {
     editControlSection([v](app::ControlRequest& r) { applyControllerSettings(v, r); }, tr("Change controller settings"));
@@ -66,13 +70,13 @@ void MainWindow::buildControlDock() {
   });
 }
 
-// The project's control section changed (or the project was loaded): refresh the editors and re-run.
-void MainWindow::refreshControl() {
+// The control view's inputs changed (or the project was loaded): refresh the editors, then the runs
+// `features` name.
+void MainWindow::refreshControl(Features features) {
   const app::Project& p = doc_.project();
+  if (features && !(features & (Feature::ControlRun | Feature::ControlSweep))) return;  // none of its inputs
   if (!p.control) {
     control_request_.reset();
-    control_inputs_.clear();
-    control_run_inputs_.clear();
     control_view_->setEnabled(false);
     control_view_->setStatus(tr("This project has no \"control\" section (docs/project-file.md)"));
     return;
@@ -89,21 +93,8 @@ void MainWindow::refreshControl() {
   control_view_->setBeta(control_request_->settings.beta);
   control_view_->setSettings(controllerSettingsOf(*control_request_));
   control_view_->setWorkpiece(workpieceViewOf(control_request_->settings.workpiece));
-  // Everything but beta decides the sweep.
-  const QJsonObject json = app::projectToJson(p);
-  QJsonObject section = json.value("control").toObject();
-  section.remove("beta");
-  const QByteArray inputs = QJsonDocument(section).toJson(QJsonDocument::Compact) +
-                            QJsonDocument(json.value("tools").toArray()).toJson(QJsonDocument::Compact) +
-                            QJsonDocument(json.value("material").toObject()).toJson(QJsonDocument::Compact);
-  const QByteArray with_beta = inputs + QByteArray::number(control_request_->settings.beta, 'g', 17);
-  if (with_beta == control_run_inputs_) return;  // an edit elsewhere in the project
-  control_run_inputs_ = with_beta;
-  control_runner_->run(control_request_->settings);
-  if (inputs != control_inputs_) {
-    control_inputs_ = inputs;
-    startControlSweep();
-  }
+  if (features & Feature::ControlRun) control_runner_->run(control_request_->settings);
+  if (features & Feature::ControlSweep) startControlSweep();
 }
 
 void MainWindow::startControlSweep() {
@@ -111,7 +102,8 @@ void MainWindow::startControlSweep() {
   control_runner_->sweep(control_request_->settings, {-1.0, 1.0, 0.05, 1});
 }
 
-void MainWindow::editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what) {
+void MainWindow::editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what,
+                                    int gesture_id) {
   if (!control_request_) return;
   app::ControlRequest r = *control_request_;
   change(r);
@@ -123,10 +115,10 @@ void MainWindow::editControlSection(const std::function<void(app::ControlRequest
     app::controlRequestFromProject(edited);
   } catch (const std::exception& e) {
     showError(what, e.what());
-    refreshControl();  // the editors show the project's values again
+    refreshControl({});  // the editors show the project's values again
     return;
   }
-  const QString error = doc_.applyEdit(edited, what);
+  const QString error = doc_.applyEdit(edited, what, gesture_id);
   if (!error.isEmpty()) showError(what, error);
 }
 

@@ -27,6 +27,7 @@ bool MainWindow::openProject(const QString& path) {
       }
     }
     doc_.initPoint({});
+    supervision_shown_ = SupervisionShown::None;  // another project: no run of it is shown yet
     if (recover) {
       doc_.recover(path);
     } else {
@@ -56,6 +57,7 @@ bool MainWindow::saveProject(const QString& path) {
 void MainWindow::onNew() {
   if (!maybeSave()) return;
   doc_.initPoint({});
+  supervision_shown_ = SupervisionShown::None;
   doc_.newProject();
 }
 

@@ -5,8 +5,6 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QSaveFile>
 #include <QStatusBar>
 #include <cmath>
@@ -101,9 +99,11 @@ void MainWindow::buildMachiningDocks() {
 }
 
 // The project changed: the panel takes sdnrp.ra_um, disturbance and duration; an open program is
-// overridden again when the controllers' sections changed.
-void MainWindow::refreshMachining() {
+// overridden again when the inputs of its controllers changed.
+void MainWindow::refreshMachining(Features features) {
   const app::Project& p = doc_.project();
+  if ((features & Feature::PartProgram) && !override_path_.isEmpty()) openPartProgram(override_path_);
+  if (!(features & Feature::SurfaceFinish)) return;
   try {
     const SdnrpSettings s = app::sdnrpSettingsFromProject(p);
     surface_panel_->setDesiredRaUm(s.ra_desired_m * 1e6);
@@ -112,13 +112,6 @@ void MainWindow::refreshMachining() {
   } catch (const std::exception&) {
     // an invalid sdnrp section is reported when the loop is run
   }
-  QByteArray inputs;
-  const QJsonObject json = app::projectToJson(p);
-  for (const char* section : {"control", "force_control", "part_program", "tools", "machine", "operation"})
-    inputs += QJsonDocument(QJsonObject{{section, json.value(section)}}).toJson(QJsonDocument::Compact);
-  if (inputs == machining_inputs_) return;
-  machining_inputs_ = inputs;
-  if (!override_path_.isEmpty()) openPartProgram(override_path_);
 }
 
 void MainWindow::runSurfaceFinish() {

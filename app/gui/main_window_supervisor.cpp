@@ -222,6 +222,7 @@ void MainWindow::refreshSupervisor() {
 
 void MainWindow::startSupervision() {
   if (!supervisor_request_) return;
+  supervision_shown_ = SupervisionShown::Run;
   supervisor_view_->timeline()->clear();
   live_modules_.clear();
   SupervisionScenario s = supervisor_request_->scenario;
@@ -241,6 +242,7 @@ void MainWindow::compareSupervision() {
     showError(tr("Compare controllers"), e.what());
     return;
   }
+  supervision_shown_ = SupervisionShown::Comparison;
   supervisor_view_->comparison()->clear();
   supervision_->compare(runs);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The project's "pareto" section (issue 5) in engine form. The section is typed in
-// project/process_sections.h and range-checked when the project is loaded (ProjectError, exit 2,
+// document/process_sections.h and range-checked when the project is loaded (ProjectError, exit 2,
 // naming the field, the value and the allowed range):
 //   "pareto": {
 //     "tool": "R1",                                   optional; default the first tool

@@ -1,6 +1,6 @@
 #pragma once
 // Part-program overrides (issue 7) from the project, shared by `millexpert-cli override` and the GUI's
-// part-program panel. Sections (typed in project/process_sections.h, checked when the project is
+// part-program panel. Sections (typed in document/process_sections.h, checked when the project is
 // loaded; shop units; every key optional unless noted):
 //   "part_program": {
 //     "stock_top_mm": 0,              depth = stock top - lowest Z of a feed move (when no profile)

@@ -9,7 +9,7 @@
 //     "drives": {"feed_natural_frequency_rad_s": 30, "feed_damping": 0.7, "spindle_time_constant_s": 0.3},
 //     "integral_rate_per_s": 2                the feed loop's pole (lambda)
 //   }
-// The section is typed in project/process_sections.h and range-checked when the project is loaded;
+// The section is typed in document/process_sections.h and range-checked when the project is loaded;
 // this applies the defaults and converts to SI.
 #include "document/project.h"
 #include "sdnrp/sdnrp_simulator.h"

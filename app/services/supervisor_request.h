@@ -1,6 +1,6 @@
 #pragma once
 // The project's "supervisor" section (issue 8: Landers & Ulsoy's supervisory machining control) in
-// engine form. Shop units in the file (typed in project/process_sections.h, checked when the project
+// engine form. Shop units in the file (typed in document/process_sections.h, checked when the project
 // is loaded); errors name the field, the value and the range (charts: the JSON path of the element,
 // app/document/grafcet_json.h).
 //   "supervisor": {

@@ -3,16 +3,19 @@
 // to an independent engine run, pole-zero map, J_c sweep); a beta change is one undoable edit of
 // control.beta; an invalid workpiece is refused with the project unchanged; the surface-finish panel
 // runs the SDNRP loop; a part program is overridden and exported (only F/S words and comments change);
-// a tool-table edit re-runs the control view, which then agrees with the CLI on the saved project.
+// a tool-table edit re-runs the control view, which then agrees with the CLI on the saved project; a
+// drag of the beta slider is one undo step.
 #include <QApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <cmath>
 
 #include "services/control_request.h"
 #include "control/closed_loop.h"
+#include "control_beta_slider.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
 #include "main_window.h"
@@ -105,6 +108,29 @@ class TestControlGui : public QObject {
     const QString cli_jc = widgets::MonitoringPanel::formatNumber(cli.json.value("Jc").toDouble());
     QCOMPARE(metrics->valueText("jc"), cli_jc);
     QVERIFY(cli_jc != four_teeth_jc);
+  }
+
+  void betaSliderDragIsOneUndoStep() {
+    gui::MainWindow window;
+    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(shown.count() > 0 || shown.wait(30000));
+    QUndoStack* undo = window.document()->undoStack();
+    const int steps = undo->count();
+    QSlider* slider = window.controlView()->betaSlider();
+    slider->setSliderDown(true);
+    for (int ticks : {-20, 0, 20, 40}) {
+      slider->setValue(ticks);
+      QTest::qWait(widgets::ControlBetaSlider::kDebounceMs + 100);  // a pause: the value is applied
+      QCOMPARE(*window.project()->control->beta, ticks / 100.0);
+    }
+    slider->setValue(50);
+    slider->setSliderDown(false);
+    QCOMPARE(*window.project()->control->beta, 0.5);
+    QCOMPARE(undo->count(), steps + 1);
+    undo->undo();
+    QCOMPARE(*window.project()->control->beta, -0.3);  // the value before the drag
+    QCOMPARE(window.controlView()->beta(), -0.3);
   }
 
   void surfaceFinishRunsTheLoop() {

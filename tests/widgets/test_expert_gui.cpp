@@ -1,6 +1,7 @@
 // The expert system in the main window (issue 4): the ranking table and q* / q** markers appear,
 // a weight change re-ranks from the cached session (no lobes, grids or simulations recomputed), a
-// committed weight change is an undoable project edit, and the heat map covers the admissible cells.
+// committed weight change (one per drag) is an undoable project edit that recomputes no lobes, and the
+// heat map covers the admissible cells.
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -41,9 +42,11 @@ class TestExpertGui : public QObject {
     ranked.clear();
     // Live change: c2 up to 0.9; the table follows, nothing is recomputed.
     QSlider* c2 = window.weightsPanel()->slider(widgets::WeightsPanel::Group::Tool, 1);
+    QSignalSpy lobes(&window, &gui::MainWindow::lobesShown);
     c2->setSliderDown(true);
+    c2->setValue(800);
     c2->setValue(900);
-    QVERIFY(ranked.count() >= 1);
+    QVERIFY(ranked.count() >= 2);
     QCOMPARE(window.expert()->session().get(), session);
     QCOMPARE(session->simulations().simulationsRun(), simulations);
     QCOMPARE_LE(std::abs(window.weightsPanel()->weights().c[1] - 0.9), 1e-9);
@@ -51,6 +54,9 @@ class TestExpertGui : public QObject {
     QVERIFY(window.document()->isDirty());
     QCOMPARE_LE(std::abs(window.project()->expert->c[1] - 0.9), 1e-9);
     QCOMPARE(window.expert()->session().get(), session);  // still the same session
+    QCOMPARE(window.document()->undoStack()->count(), 1);  // the drag is one step
+    QTest::qWait(300);  // past the lobes' 120 ms debounce: weights alone recompute no lobes
+    QCOMPARE(lobes.count(), 0);
     window.document()->undoStack()->undo();
     QCOMPARE_LE(std::abs(window.project()->expert->c[1] - 0.725), 1e-12);
     QCOMPARE_LE(std::abs(window.weightsPanel()->weights().c[1] - 0.725), 1e-12);

@@ -143,7 +143,7 @@ class TestMachineOperationPanel : public QObject {
     MachineOperationPanel panel;
     QObject::connect(&panel, &MachineOperationPanel::editRequested, &doc,
                      [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-    QObject::connect(&doc, &mx::app::ProjectDocument::projectChanged, &panel, [&] { panel.setProject(doc.project()); });
+    QObject::connect(&doc, &mx::app::ProjectDocument::changed, &panel, [&] { panel.setProject(doc.project()); });
     panel.setProject(doc.project());
     type(spin(panel, "material.Kt_N_mm2"), "800");
     QCOMPARE(doc.project().material->Kt_N_mm2, 800.0);

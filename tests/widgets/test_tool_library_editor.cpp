@@ -25,7 +25,7 @@ const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
 void wire(ToolLibraryEditor& editor, mx::app::ProjectDocument& doc) {
   QObject::connect(&editor, &ToolLibraryEditor::editRequested, &doc,
                    [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
-  QObject::connect(&doc, &mx::app::ProjectDocument::projectChanged, &editor, [&] { editor.setProject(doc.project()); });
+  QObject::connect(&doc, &mx::app::ProjectDocument::changed, &editor, [&] { editor.setProject(doc.project()); });
   editor.setProject(doc.project());
 }
 

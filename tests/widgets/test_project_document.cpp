@@ -1,0 +1,137 @@
+// ProjectDocument::changed: an edit emits the sections it changed, and its undo and redo emit the
+// same; a load emits every section; an edit that changes nothing leaves no undo entry; the edits of
+// one gesture merge into one undo step, which is dropped when the gesture ends where it started.
+#include <QSignalSpy>
+
+#include "document/project_document.h"
+#include "test_registry.h"
+
+using namespace mx;
+using app::ProjectSection;
+
+namespace {
+
+const QString kProject = MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj";
+
+app::ProjectChanges lastChanges(const QSignalSpy& spy) {
+  return spy.last().at(0).value<app::ProjectChanges>();
+}
+
+app::Project withBeta(const app::Project& p, double beta) {
+  app::Project edited = p;
+  edited.control->beta = beta;
+  return edited;
+}
+
+}  // namespace
+
+class TestProjectDocument : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void loadEmitsEverySection() {
+    app::ProjectDocument doc;
+    QSignalSpy changed(&doc, &app::ProjectDocument::changed);
+    doc.load(kProject);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(lastChanges(changed), app::kAllSections);
+    doc.newProject();
+    QCOMPARE(lastChanges(changed), app::kAllSections);
+  }
+
+  void undoAndRedoEmitTheEditsSections() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    QSignalSpy changed(&doc, &app::ProjectDocument::changed);
+    app::Project edited = doc.project();
+    edited.tools[0].teeth = 2;
+    edited.machine->spindle_power_W = 6000.0;
+    QCOMPARE(doc.applyEdit(edited, "teeth and power"), QString());
+    const app::ProjectChanges expected = ProjectSection::Tools | ProjectSection::Machine;
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(lastChanges(changed), expected);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.project().tools[0].teeth, 4);
+    QCOMPARE(lastChanges(changed), expected);
+    doc.undoStack()->redo();
+    QCOMPARE(doc.project().tools[0].teeth, 2);
+    QCOMPARE(lastChanges(changed), expected);
+    QCOMPARE(changed.count(), 3);
+  }
+
+  void aNoOpEditLeavesNoUndoEntry() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    QSignalSpy changed(&doc, &app::ProjectDocument::changed);
+    app::Project same = doc.project();
+    same.tools[0].teeth = 4;  // what the file has
+    QCOMPARE(doc.applyEdit(same, "same teeth"), QString());
+    QCOMPARE(doc.undoStack()->count(), 0);
+    QCOMPARE(changed.count(), 0);
+    QVERIFY(!doc.isDirty());
+  }
+
+  void oneGestureIsOneUndoStep() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    QCOMPARE(*doc.project().control->beta, -0.3);
+    QSignalSpy changed(&doc, &app::ProjectDocument::changed);
+    const int gesture = doc.newGesture();
+    for (double beta : {-0.2, -0.1, 0.0, 0.1, 0.25})
+      QCOMPARE(doc.applyEdit(withBeta(doc.project(), beta), "beta", gesture), QString());
+    QCOMPARE(changed.count(), 5);  // every value of the drag reaches the views
+    QCOMPARE(lastChanges(changed), app::ProjectChanges(ProjectSection::ControlBeta));
+    QCOMPARE(doc.undoStack()->count(), 1);
+    doc.undoStack()->undo();
+    QCOMPARE(*doc.project().control->beta, -0.3);  // the value before the drag
+    QCOMPARE(lastChanges(changed), app::ProjectChanges(ProjectSection::ControlBeta));
+    QVERIFY(!doc.isDirty());
+    doc.undoStack()->redo();
+    QCOMPARE(*doc.project().control->beta, 0.25);
+
+    // The next gesture is its own step.
+    const int next = doc.newGesture();
+    QVERIFY(next != gesture);
+    doc.applyEdit(withBeta(doc.project(), 0.5), "beta", next);
+    doc.applyEdit(withBeta(doc.project(), 0.6), "beta", next);
+    QCOMPARE(doc.undoStack()->count(), 2);
+    doc.undoStack()->undo();
+    QCOMPARE(*doc.project().control->beta, 0.25);
+  }
+
+  void aGestureBackToItsStartLeavesNoStep() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    const int gesture = doc.newGesture();
+    doc.applyEdit(withBeta(doc.project(), 0.4), "beta", gesture);
+    doc.applyEdit(withBeta(doc.project(), -0.3), "beta", gesture);
+    QCOMPARE(doc.undoStack()->count(), 0);
+    QCOMPARE(*doc.project().control->beta, -0.3);
+    QVERIFY(!doc.isDirty());
+  }
+
+  void editsWithoutGestureStaySeparate() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    doc.applyEdit(withBeta(doc.project(), 0.1), "beta");
+    doc.applyEdit(withBeta(doc.project(), 0.2), "beta");
+    QCOMPARE(doc.undoStack()->count(), 2);
+  }
+
+  void aPointDragIsOneStep() {
+    app::ProjectDocument doc;
+    doc.initPoint({3000.0, 1.0, 0.1});
+    for (double rpm : {3100.0, 3200.0, 3300.0}) doc.setPoint({rpm, 1.0, 0.1}, 7);
+    QCOMPARE(doc.undoStack()->count(), 1);
+    doc.undoStack()->undo();
+    QCOMPARE(doc.point().speed_rpm, 3000.0);
+    doc.undoStack()->redo();
+    doc.setPoint({3400.0, 1.0, 0.1}, 8);
+    doc.setPoint({3300.0, 1.0, 0.1}, 8);  // dragged back to where it started
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(doc.point().speed_rpm, 3300.0);
+  }
+};
+
+MX_REGISTER_TEST(TestProjectDocument)
+#include "test_project_document.moc"

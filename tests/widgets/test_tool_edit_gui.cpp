@@ -1,0 +1,205 @@
+// A tool-table edit (the number of teeth) re-runs every view built on the tools, and each then shows
+// what the CLI computes on the saved project: the lobe readout's power, the simulation, the expert
+// ranking (rubio2006-adaptive-control; its control view: test_control_gui.cpp), the Pareto choice
+// (rubio-pareto-case), the optimised part program (cus-zuperl-sdnrp) and the supervisor comparison
+// (landers-face-milling). Each number is also checked to differ from the one before the edit.
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "main_window.h"
+#include "part_program_panel.h"
+#include "pareto_runner.h"
+#include "ranking_table.h"
+#include "simulation_runner.h"
+#include "supervisor_comparison.h"
+#include "supervisor_view.h"
+#include "support/cli_runner.h"
+#include "test_registry.h"
+#include "tool_library_editor.h"
+#include "tool_table_model.h"
+
+using namespace mx;
+
+namespace {
+
+constexpr int kWaitMs = 60000;
+
+bool open(gui::MainWindow& w, const char* project) {
+  w.setQuiet(true);
+  w.resize(1600, 950);
+  w.show();
+  w.document()->setAutosaveInterval(0);  // the runs outlast 30 s: no autosave next to the example
+  return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
+}
+
+// Sets the teeth of tool `id` in the tool table, as the user would.
+bool setTeeth(gui::MainWindow& w, const QString& id, int teeth) {
+  widgets::ToolTableModel* tools = w.toolEditor()->toolModel();
+  for (int row = 0; row < tools->rowCount(); ++row)
+    if (tools->index(row, widgets::ToolTableModel::Id).data().toString() == id)
+      return tools->setData(tools->index(row, widgets::ToolTableModel::Teeth), teeth, Qt::EditRole) &&
+             w.project()->findTool(id)->teeth == teeth;
+  return false;
+}
+
+QString saved(gui::MainWindow& w, const QTemporaryDir& dir) {
+  const QString path = dir.filePath("edited.mxproj");
+  w.document()->save(path);
+  return path;
+}
+
+QString number(double v) { return QString::number(v, 'g', 17); }
+
+bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+// The lines of a written program but its "(date: ...)" header line.
+QStringList programBody(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) return {};
+  QStringList lines = QString::fromUtf8(f.readAll()).split('\n');
+  lines.removeIf([](const QString& l) { return l.startsWith("(date: "); });
+  return lines;
+}
+
+// Waits until `done` holds, spinning the event loop on `spy`.
+template <class Done>
+bool waitFor(QSignalSpy& spy, Done done) {
+  for (int i = 0; i < kWaitMs / 500 && !done(); ++i) spy.wait(500);
+  return done();
+}
+
+}  // namespace
+
+class TestToolEditGui : public QObject {
+  Q_OBJECT
+ private slots:
+  void init() {
+    QCoreApplication::setOrganizationName("MillExpertTest");
+    QCoreApplication::setApplicationName("millexpert-test");
+  }
+
+  void lobesSimulationAndRankingReRun() {
+    gui::MainWindow window;
+    QSignalSpy lobes(&window, &gui::MainWindow::lobesShown);
+    QSignalSpy refined(&window, &gui::MainWindow::refinementShown);
+    QSignalSpy simulated(window.simulations(), &gui::SimulationRunner::finished);
+    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(waitFor(simulated, [&] { return lobes.count() > 0 && simulated.count() > 0 && refined.count() > 0; }));
+    const double four_power = window.readout()->readout().peak_power_w;
+    const auto four_sim = simulated.last().at(1).value<gui::SimulationSummary>();
+    QCOMPARE(four_sim.teeth, 4);
+    const widgets::RankingRow four_rank = window.rankingTable()->rows().front();
+
+    lobes.clear();
+    refined.clear();
+    simulated.clear();
+    QVERIFY(setTeeth(window, "C1", 2));
+    QVERIFY(waitFor(simulated, [&] { return lobes.count() > 0 && simulated.count() > 0 && refined.count() > 0; }));
+    QTemporaryDir dir;
+    const QString path = saved(window, dir);
+    const app::PickedPoint pt = window.document()->point();
+    const QStringList cut{"--tool", "C1", "--speed", number(pt.speed_rpm), "--depth", number(pt.depth_mm),
+                          "--feed", number(pt.feed_mm_per_tooth)};
+
+    // The lobes' readout: the power at the operating point.
+    const mx::test::CliRun point = mx::test::runCli(QStringList{"point", path} + cut);
+    QCOMPARE(point.code, 0);
+    const double power = window.readout()->readout().peak_power_w;
+    QVERIFY2(near(power, point.json.value("peak_power_W").toDouble()), qPrintable(number(power)));
+    QVERIFY(!near(power, four_power));
+
+    // The simulation of the operating point.
+    const auto sim = simulated.last().at(1).value<gui::SimulationSummary>();
+    QCOMPARE(sim.teeth, 2);
+    const mx::test::CliRun simulate = mx::test::runCli(QStringList{"simulate", path} + cut);
+    QCOMPARE(simulate.code, 0);
+    QVERIFY2(near(sim.peak_force_n, simulate.json.value("peak_force_N").toDouble()), qPrintable(number(sim.peak_force_n)));
+    QVERIFY(near(sim.tooth_passing_hz, simulate.json.value("tooth_passing_Hz").toDouble()));
+    QVERIFY(!near(sim.peak_force_n, four_sim.peak_force_n));
+
+    // The expert ranking (Rules 4-6).
+    const mx::test::CliRun rank = mx::test::runCli({"rank", path});
+    QCOMPARE(rank.code, 0);
+    const QJsonObject best = rank.json.value("ranking").toArray().at(0).toObject();
+    const widgets::RankingRow row = window.rankingTable()->rows().front();
+    QVERIFY2(near(row.min_cost, best.value("min_cost").toDouble()), qPrintable(number(row.min_cost)));
+    QCOMPARE(row.speed_rpm, best.value("q").toObject().value("speed_rpm").toDouble());
+    QVERIFY(near(row.depth_mm, best.value("q").toObject().value("depth_mm").toDouble()));
+    QVERIFY(!near(row.min_cost, four_rank.min_cost) || row.depth_mm != four_rank.depth_mm);
+  }
+
+  void paretoStudyReRuns() {
+    gui::MainWindow window;
+    QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
+    QVERIFY(open(window, "rubio-pareto-case.mxproj"));
+    QVERIFY(waitFor(shown, [&] { return window.pareto()->study() && window.paretoChoice(); }));
+    const auto before = window.pareto()->study();
+    const double three_mrr = window.paretoChoice()->point().mrr();
+
+    QVERIFY(setTeeth(window, "R1", 2));
+    QVERIFY(waitFor(shown, [&] { return window.pareto()->study() != before && window.paretoChoice(); }));
+    QTemporaryDir dir;
+    const mx::test::CliRun cli = mx::test::runCli({"pareto", saved(window, dir)});
+    QCOMPARE(cli.code, 0);
+    const ParetoPoint& q = window.paretoChoice()->point();
+    const QJsonObject cli_q = cli.json.value("q").toObject();
+    QVERIFY(near(revPerSToRpm(q.speed_rev_per_s), cli_q.value("speed_rpm").toDouble()));
+    QVERIFY(near(q.depth_m * 1e3, cli_q.value("depth_mm").toDouble()));
+    QVERIFY(near(q.feed_per_tooth_m * 1e3, cli_q.value("feed_mm_per_tooth").toDouble()));
+    QVERIFY2(near(q.mrr() * 1e6, cli.json.value("mrr_cm3_s").toDouble()), qPrintable(number(q.mrr() * 1e6)));
+    QVERIFY(!near(q.mrr(), three_mrr));
+  }
+
+  void partProgramOverrideReRuns() {
+    gui::MainWindow window;
+    QSignalSpy shown(&window, &gui::MainWindow::partProgramShown);
+    QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
+    const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
+    window.openPartProgram(program);
+    QVERIFY(shown.wait(kWaitMs));
+    QTemporaryDir dir;
+    QVERIFY(window.exportPartProgram(dir.filePath("two-teeth.nc")));
+
+    QVERIFY(setTeeth(window, "R216-16B20-040", 4));
+    QVERIFY(shown.wait(kWaitMs));
+    const QString path = saved(window, dir);  // first: the exported header names the saved file
+    QVERIFY(window.exportPartProgram(dir.filePath("gui.nc")));
+    const mx::test::CliRun cli = mx::test::runCli({"override", program, path, "--out", dir.filePath("cli.nc")});
+    QCOMPARE(cli.code, 0);
+    QCOMPARE(window.partProgramPanel()->changedCount(), cli.json.value("changed_blocks").toInt());
+    const QString force = QString::number(cli.json.value("max_predicted_force_N").toDouble(), 'f', 1);
+    QVERIFY2(window.partProgramPanel()->statusText().contains("largest predicted force " + force + " N"),
+             qPrintable(window.partProgramPanel()->statusText() + " / CLI " + force));
+    // The optimised program, header date aside, is the CLI's, and not the two-tooth one.
+    QCOMPARE(programBody(dir.filePath("gui.nc")), programBody(dir.filePath("cli.nc")));
+    QVERIFY(programBody(dir.filePath("gui.nc")) != programBody(dir.filePath("two-teeth.nc")));
+  }
+
+  void supervisorComparisonReRuns() {
+    gui::MainWindow window;
+    QSignalSpy compared(&window, &gui::MainWindow::comparisonResult);
+    QVERIFY(open(window, "landers-face-milling.mxproj"));
+    window.compareSupervision();
+    QVERIFY(waitFor(compared, [&] { return compared.count() >= 3; }));
+    widgets::SupervisorComparison* table = window.supervisorView()->comparison();
+    const QString four_power = table->metricText("none", "max_power_pct_of_limit");
+    const QString four_cycle = table->metricText("none", "cycle_time_s");
+
+    compared.clear();
+    QVERIFY(setTeeth(window, "FM50", 2));
+    QVERIFY(waitFor(compared, [&] { return compared.count() >= 3; }));
+    QTemporaryDir dir;
+    const mx::test::CliRun cli = mx::test::runCli({"supervise", saved(window, dir), "--controller", "none"});
+    QCOMPARE(cli.code, 0);
+    QCOMPARE(table->metricText("none", "max_power_pct_of_limit"),
+             QString::number(cli.json.value("max_power_pct_of_limit").toDouble(), 'f', 0));
+    QCOMPARE(table->metricText("none", "cycle_time_s"), QString::number(cli.json.value("cycle_time_s").toDouble(), 'f', 2));
+    QVERIFY(table->metricText("none", "max_power_pct_of_limit") != four_power ||
+            table->metricText("none", "cycle_time_s") != four_cycle);
+  }
+};
+
+MX_REGISTER_TEST(TestToolEditGui)
+#include "test_tool_edit_gui.moc"
