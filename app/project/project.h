@@ -1,6 +1,7 @@
 #pragma once
 // The project document (.mxproj, JSON). Field names are a fixed interface (issue 2, section 2).
 // Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
+#include <QByteArray>
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
@@ -111,6 +112,9 @@ struct Project {
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
 Project projectFromJson(const QJsonObject& root);
 Project loadProject(const QString& path);
+// The tools of a tool library: a JSON array of tools, or an object with a "tools" array (a project
+// file). Throws ProjectError on a syntax error or naming the field path, as projectFromJson does.
+std::vector<ToolSpec> toolsFromJson(const QByteArray& text);
 // Back to JSON: the typed values, with the unknown keys of each object merged back in.
 QJsonObject projectToJson(const Project& project);
 // Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
