@@ -2,7 +2,9 @@
 // unknown keys and the stored spelling of equal numbers survive.
 #include <QJsonArray>
 #include <QSet>
+#include <utility>
 
+#include "project/project_grafcet_io.h"
 #include "project/project_sections_io.h"
 
 namespace mx::app {
@@ -49,13 +51,11 @@ void putDepthSteps(QJsonObject& o, const QString& key, const std::optional<std::
     o.remove(key);
     return;
   }
-  const QJsonArray old = o.value(key).toArray();
   QJsonArray out;
-  for (std::size_t i = 0; i < steps->size(); ++i) {
-    const auto k = static_cast<qsizetype>(i);
-    QJsonObject s = k < old.size() ? old.at(k).toObject() : QJsonObject();
-    putNumber(s, "length_mm", (*steps)[i].length_mm);
-    putNumber(s, "depth_mm", (*steps)[i].depth_mm);
+  for (const DepthStepSpec& step : *steps) {
+    QJsonObject s = step.unknown;
+    putNumber(s, "length_mm", step.length_mm);
+    putNumber(s, "depth_mm", step.depth_mm);
     out.append(s);
   }
   o.insert(key, out);
@@ -150,24 +150,26 @@ void writeSupervisor(QJsonObject& o, const SupervisorSection& s) {
   putOptional(o, "power_margin", s.power_margin);
   putOptional(o, "chatter_threshold_N", s.chatter_threshold_N);
   if (s.events) {
-    const QJsonArray old = o.value("events").toArray();
     QJsonArray out;
-    for (std::size_t i = 0; i < s.events->size(); ++i) {
-      const auto k = static_cast<qsizetype>(i);
-      QJsonObject e = k < old.size() ? old.at(k).toObject() : QJsonObject();
-      putNumber(e, "t_s", (*s.events)[i].t_s);
-      e.insert("type", (*s.events)[i].type);
+    for (const SupervisorEventSpec& event : *s.events) {
+      QJsonObject e = event.unknown;
+      putNumber(e, "t_s", event.t_s);
+      e.insert("type", event.type);
       out.append(e);
     }
     o.insert("events", out);
   } else {
     o.remove("events");
   }
-  if (s.charts) {
-    o.insert("charts", *s.charts);
-  } else {
-    o.remove("charts");
-  }
+  putObject(o, "charts", s.charts, [](QJsonObject& c, const SupervisorChartsSpec& v) {
+    for (const QString controller : {"none", "smc1", "smc2"}) {
+      if (const std::optional<GrafcetChartSpec>& chart = *v.of(controller)) {
+        c.insert(controller, grafcetChartToJson(*chart));
+      } else {
+        c.remove(controller);
+      }
+    }
+  });
 }
 
 void writePowerLaw(QJsonObject& o, const PowerLawSpec& m) {
@@ -328,6 +330,17 @@ const std::optional<std::vector<double>>* SupervisorPassesSpec::of(const QString
   if (controller == "smc1") return &smc1;
   if (controller == "smc2") return &smc2;
   return nullptr;
+}
+
+const std::optional<GrafcetChartSpec>* SupervisorChartsSpec::of(const QString& controller) const {
+  if (controller == "none") return &none;
+  if (controller == "smc1") return &smc1;
+  if (controller == "smc2") return &smc2;
+  return nullptr;
+}
+
+std::optional<GrafcetChartSpec>* SupervisorChartsSpec::of(const QString& controller) {
+  return const_cast<std::optional<GrafcetChartSpec>*>(std::as_const(*this).of(controller));
 }
 
 }  // namespace mx::app
