@@ -1,7 +1,6 @@
-// The process sections of projectToJson, each written over the object it was read from so that
-// unknown keys and the stored spelling of equal numbers survive.
+// The process sections of projectToJson, each written over the unknown keys of its object (so that
+// they survive, and go with a sub-object the project no longer has).
 #include <QJsonArray>
-#include <QSet>
 #include <utility>
 
 #include "project/project_grafcet_io.h"
@@ -249,80 +248,28 @@ void putExpertExtras(QJsonObject& o, const ExpertSpec& e) {
 
 namespace {
 
-bool isEmptyUnknown(const QJsonValue& v) {
-  return v.isUndefined() || (v.isObject() && v.toObject().isEmpty());
-}
-
+// What `original` holds beyond `known`: keys `known` lacks, and within objects both hold, their
+// unknown part. Arrays and scalars `known` holds are the typed values (the elements of typed arrays
+// of objects keep their own unknown keys).
 QJsonValue unknownPart(const QJsonValue& original, const QJsonValue& known) {
-  if (original.isObject() && known.isObject()) {
-    const QJsonObject o = original.toObject(), k = known.toObject();
-    QJsonObject out;
-    for (auto it = o.begin(); it != o.end(); ++it) {
-      if (!k.contains(it.key())) {
-        out.insert(it.key(), it.value());
-      } else {
-        const QJsonValue u = unknownPart(it.value(), k.value(it.key()));
-        if (!isEmptyUnknown(u)) out.insert(it.key(), u);
-      }
+  if (!original.isObject() || !known.isObject()) return QJsonValue(QJsonValue::Undefined);
+  const QJsonObject o = original.toObject(), k = known.toObject();
+  QJsonObject out;
+  for (auto it = o.begin(); it != o.end(); ++it) {
+    if (!k.contains(it.key())) {
+      out.insert(it.key(), it.value());
+    } else {
+      const QJsonValue u = unknownPart(it.value(), k.value(it.key()));
+      if (u.isObject() && !u.toObject().isEmpty()) out.insert(it.key(), u);
     }
-    return out;
   }
-  if (original.isArray() && known.isArray()) {
-    const QJsonArray o = original.toArray(), k = known.toArray();
-    QJsonArray out;
-    bool any = false;
-    for (qsizetype i = 0; i < o.size() && i < k.size(); ++i) {
-      const QJsonValue u = unknownPart(o.at(i), k.at(i));
-      any = any || !isEmptyUnknown(u);
-      out.append(isEmptyUnknown(u) ? QJsonValue(QJsonObject()) : u);
-    }
-    return any ? QJsonValue(out) : QJsonValue(QJsonValue::Undefined);
-  }
-  return QJsonValue(QJsonValue::Undefined);  // a known scalar: the typed value wins
-}
-
-// The keys whose values the typed project holds as objects or arrays: when the project no longer
-// has one (a section or sub-object removed), its unknown keys go with it.
-bool isTypedContainer(const QString& key) {
-  static const QSet<QString> keys{
-      "machine", "material",     "operation",       "tools",  "modes_x",      "modes_y",       "expert",
-      "grid",    "control",      "reference_model", "rls",    "workpiece",    "sdnrp",         "disturbance",
-      "initial", "drives",       "force_control",   "model",  "part_program", "depth_profile", "supervisor",
-      "part",    "passes_mm",    "events",          "charts", "pareto",       "taylor",        "roughness",
-      "fine",    "auto_weights", "operator_rules"};
-  return keys.contains(key);
-}
-
-QJsonValue mergeUnknown(const QJsonValue& unknown, const QJsonValue& known) {
-  if (unknown.isObject() && known.isObject()) {
-    QJsonObject out = unknown.toObject();
-    const QJsonObject k = known.toObject();
-    for (const QString& key : out.keys())
-      if (!k.contains(key) && isTypedContainer(key)) out.remove(key);
-    for (auto it = k.begin(); it != k.end(); ++it)
-      out.insert(it.key(), out.contains(it.key()) ? mergeUnknown(out.value(it.key()), it.value()) : it.value());
-    return out;
-  }
-  if (unknown.isArray() && known.isArray()) {
-    const QJsonArray u = unknown.toArray();
-    QJsonArray out;
-    const QJsonArray k = known.toArray();
-    for (qsizetype i = 0; i < k.size(); ++i) out.append(i < u.size() ? mergeUnknown(u.at(i), k.at(i)) : k.at(i));
-    return out;
-  }
-  return known;
+  return out;
 }
 
 }  // namespace
 
 QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known) {
-  QJsonObject k = known;
-  if (k.contains("tools") && original.contains("tools")) k.insert("tools", original.value("tools"));
-  return unknownPart(original, k).toObject();
-}
-
-QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known) {
-  return mergeUnknown(unknown, known).toObject();
+  return unknownPart(original, known).toObject();
 }
 
 const std::optional<std::vector<double>>* SupervisorPassesSpec::of(const QString& controller) const {

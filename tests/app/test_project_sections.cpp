@@ -151,6 +151,26 @@ class TestProjectSections : public QObject {
     QVERIFY(!second.contains("x_b") && !second.contains("x_c"));
   }
 
+  // A sub-object the project no longer has takes its unknown keys with it; its parent keeps its own.
+  void unknownKeysGoWithTheirSubObject() {
+    const QJsonObject rls{{"lambda", 0.98}, {"x_tuned_by", "rls"}};
+    const QJsonObject charts{{"x_layout", "grid"}, {"none", QJsonObject{{"steps", QJsonArray()}}}};
+    const QJsonObject supervisor{{"x_cell", 4}, {"charts", charts}};
+    QJsonObject root = minimalWith("control", QJsonObject{{"spindle_rpm", 700}, {"x_note", "n"}, {"rls", rls}});
+    root.insert("material", QJsonObject{{"name", "steel"}, {"Kt_N_mm2", 2000}, {"Kr", 0.3}});
+    root.insert("supervisor", supervisor);
+    Project p = projectFromJson(root);
+    QCOMPARE(p.document.value("control").toObject(),
+             (QJsonObject{{"x_note", "n"}, {"rls", QJsonObject{{"x_tuned_by", "rls"}}}}));
+    p.control->rls.reset();
+    p.supervisor->charts.reset();
+    const QJsonObject j = projectToJson(p);
+    QCOMPARE(j.value("control").toObject(), (QJsonObject{{"spindle_rpm", 700}, {"x_note", "n"}}));
+    QCOMPARE(j.value("supervisor").toObject(), (QJsonObject{{"x_cell", 4}}));
+    p.supervisor.reset();
+    QVERIFY(!projectToJson(p).contains("supervisor"));
+  }
+
   void sectionsAreTyped() {
     const Project c = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
     QVERIFY(c.control);
