@@ -2,8 +2,6 @@
 
 #include <QFile>
 #include <QHash>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QSaveFile>
@@ -268,24 +266,8 @@ QByteArray ToolLibraryCsv::toJson(const std::vector<app::ToolSpec>& tools) {
 
 ToolLibraryFile ToolLibraryCsv::fromJson(const QByteArray& text) {
   ToolLibraryFile out;
-  QJsonParseError parse{};
-  const QJsonDocument doc = QJsonDocument::fromJson(text, &parse);
-  if (parse.error != QJsonParseError::NoError) {
-    out.error = QString("JSON syntax error at offset %1: %2").arg(parse.offset).arg(parse.errorString());
-    return out;
-  }
-  QJsonValue tools = doc.isArray() ? QJsonValue(doc.array()) : doc.object().value("tools");
-  if (tools.isUndefined()) {
-    out.error = "tools: missing (required array of tools)";
-    return out;
-  }
-  if (!tools.isArray()) {
-    out.error = "tools: expected an array, got " + app::jsonTypeName(tools);
-    return out;
-  }
-  const QJsonObject root{{"format", "millexpert-project"}, {"version", 1}, {"name", ""}, {"tools", tools}};
   try {
-    out.tools = app::projectFromJson(root).tools;
+    out.tools = app::toolsFromJson(text);
     out.lines.assign(out.tools.size(), 0);
   } catch (const app::ProjectError& e) {
     out.error = QString::fromStdString(e.what());

@@ -1,12 +1,15 @@
 #pragma once
 // The typed process sections of a project (control, sdnrp, force_control, part_program, supervisor,
 // pareto), in the file's shop units. Every key the file may omit is a std::optional, so that a save
-// writes back exactly what was there; defaults are applied by the request builders (app/cli/*_request).
+// writes back exactly what was there; defaults are applied by the request builders (app/services/*_request).
 // Ranges: project_validation.cpp; keys, units and defaults: docs/project-file.md.
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 #include <optional>
 #include <vector>
+
+#include "supervisor/grafcet_chart.h"
 
 namespace mx::app {
 
@@ -14,6 +17,7 @@ namespace mx::app {
 struct DepthStepSpec {
   double length_mm = 0.0;  // (0, 1e7]
   double depth_mm = 0.0;   // [0, 1000]
+  QJsonObject unknown;     // the file's keys this build does not know; they stay with this step
   bool operator==(const DepthStepSpec&) const = default;
 };
 
@@ -130,12 +134,41 @@ struct SupervisorPassesSpec {  // pass depths [mm] per controller
 
 struct SupervisorEventSpec {
   double t_s = 0.0;
-  QString type;  // "feed_hold_on", "feed_hold_off" or "chatter"
+  QString type;         // "feed_hold_on", "feed_hold_off" or "chatter"
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this event
   bool operator==(const SupervisorEventSpec&) const = default;
 };
 
-// "supervisor": supervisory control of face milling. The Grafcet charts stay JSON: they are read by
-// the chart reader (app/document/grafcet_json.h), which reports errors by JSON path.
+// What the file holds for a Grafcet chart, step or transition beyond the engine's struct.
+struct GrafcetJsonKeys {
+  QJsonObject unknown;           // keys this build does not know (e.g. an editor's layout)
+  QStringList defaults_written;  // optional keys the file wrote at their default ("priority": 1)
+
+  bool operator==(const GrafcetJsonKeys&) const = default;
+};
+
+// One Grafcet chart (docs/grafcet.md) as read by app/document/project_grafcet_io.h: structure and id
+// ranges are checked on load, the chart's content (reachability, receptivities) by the run.
+struct GrafcetChartSpec {
+  GrafcetChart chart;
+  GrafcetJsonKeys keys;                      // the chart object's
+  std::vector<GrafcetJsonKeys> steps;        // by position in chart.steps; past its end: none
+  std::vector<GrafcetJsonKeys> transitions;  // by position in chart.transitions; past its end: none
+
+  bool operator==(const GrafcetChartSpec&) const = default;
+};
+
+struct SupervisorChartsSpec {  // the Grafcet chart per controller
+  std::optional<GrafcetChartSpec> none;
+  std::optional<GrafcetChartSpec> smc1;
+  std::optional<GrafcetChartSpec> smc2;
+  const std::optional<GrafcetChartSpec>* of(const QString& controller) const;  // nullptr: no such controller
+  std::optional<GrafcetChartSpec>* of(const QString& controller);
+
+  bool operator==(const SupervisorChartsSpec&) const = default;
+};
+
+// "supervisor": supervisory control of face milling.
 struct SupervisorSection {
   std::optional<QString> tool;
   std::optional<double> spindle_rpm;
@@ -147,7 +180,7 @@ struct SupervisorSection {
   std::optional<double> power_margin;
   std::optional<double> chatter_threshold_N;
   std::optional<std::vector<SupervisorEventSpec>> events;
-  std::optional<QJsonObject> charts;  // controller -> chart
+  std::optional<SupervisorChartsSpec> charts;
   bool operator==(const SupervisorSection&) const = default;
 };
 

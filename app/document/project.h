@@ -1,6 +1,7 @@
 #pragma once
 // The project document (.mxproj, JSON). Field names are a fixed interface (issue 2, section 2).
 // Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
+#include <QByteArray>
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
@@ -102,8 +103,9 @@ struct Project {
   std::optional<SupervisorSection> supervisor;
   std::optional<ParetoSection> pareto;
   std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
-  // The keys of the file this build does not know, per object, at every level but tools and modes
-  // (those keep theirs in ToolSpec/ModeSpec::unknown, so that they follow their tool on reorder).
+  // The keys of the file this build does not know, per object, at every level but the elements of
+  // arrays (tools, modes, depth steps, events, chart steps and transitions keep theirs in their
+  // structs, so that they follow their element on reorder).
   QJsonObject document;
 
   const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
@@ -118,7 +120,10 @@ struct Project {
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
 Project projectFromJson(const QJsonObject& root);
 Project loadProject(const QString& path);
-// Back to JSON: the typed values, with the unknown keys of each object merged back in.
+// The tools of a tool library: a JSON array of tools, or an object with a "tools" array (a project
+// file). Throws ProjectError on a syntax error or naming the field path, as projectFromJson does.
+std::vector<ToolSpec> toolsFromJson(const QByteArray& text);
+// Back to JSON: the typed values, written over the unknown keys of each object.
 QJsonObject projectToJson(const Project& project);
 // Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
 void saveProject(const Project& project, const QString& path);

@@ -1,6 +1,7 @@
 // projectFromJson: reads the document into the Project structs (presence and types), then runs
 // validateProject (ranges and cross-field rules).
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <initializer_list>
 
 #include "document/json_reader.h"
@@ -104,6 +105,12 @@ ToolSpec readTool(const ObjectReader& r) {
   return t;
 }
 
+std::vector<ToolSpec> readTools(const QJsonArray& array) {
+  std::vector<ToolSpec> tools;
+  for (qsizetype i = 0; i < array.size(); ++i) tools.push_back(readTool(elementObject(array, i, "tools")));
+  return tools;
+}
+
 ExpertGridSpec readGrid(const ObjectReader& r) {
   ExpertGridSpec g;
   g.speed_from_rpm = r.number("speed_from_rpm", rules::kPositive);
@@ -137,14 +144,25 @@ Project projectFromJson(const QJsonObject& root) {
   if (auto machine = r.optionalObject("machine")) p.machine = readMachine(*machine);
   if (auto material = r.optionalObject("material")) p.material = readMaterial(*material);
   if (auto operation = r.optionalObject("operation")) p.operation = readOperation(*operation);
-  if (auto tools = r.optionalArray("tools")) {
-    for (qsizetype i = 0; i < tools->size(); ++i) p.tools.push_back(readTool(elementObject(*tools, i, "tools")));
-  }
+  if (auto tools = r.optionalArray("tools")) p.tools = readTools(*tools);
   if (auto expert = r.optionalObject("expert")) p.expert = readExpert(*expert);
   readProcessSections(r, p);
   p.document = unknownKeys(root, projectToJson(p));
   validateProject(p);
   return p;
+}
+
+std::vector<ToolSpec> toolsFromJson(const QByteArray& text) {
+  QJsonParseError parse{};
+  const QJsonDocument doc = QJsonDocument::fromJson(text, &parse);
+  if (parse.error != QJsonParseError::NoError)
+    throw ProjectError(QString("JSON syntax error at offset %1: %2").arg(parse.offset).arg(parse.errorString()));
+  const QJsonValue tools = doc.isArray() ? QJsonValue(doc.array()) : doc.object().value("tools");
+  if (tools.isUndefined()) throwMissing("tools", "array of tools");
+  if (!tools.isArray()) throwWrongType("tools", "an array", tools);
+  std::vector<ToolSpec> out = readTools(tools.toArray());
+  validateTools(out, std::nullopt);
+  return out;
 }
 
 }  // namespace mx::app

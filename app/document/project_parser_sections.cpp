@@ -1,5 +1,8 @@
 // The process sections of projectFromJson: control, sdnrp, force_control, part_program,
 // supervisor, pareto, operator_rules, and the expert extras.
+#include <initializer_list>
+
+#include "document/project_grafcet_io.h"
 #include "document/project_sections_io.h"
 
 namespace mx::app {
@@ -10,6 +13,11 @@ template <typename Spec, typename Read>
 std::optional<Spec> readOptional(const ObjectReader& r, const QString& key, Read read) {
   if (auto o = r.optionalObject(key)) return read(*o);
   return std::nullopt;
+}
+
+QJsonObject withoutKeys(QJsonObject o, std::initializer_list<const char*> keys) {
+  for (const char* k : keys) o.remove(k);
+  return o;
 }
 
 double requiredNumber(const ObjectReader& r, const QString& key, const QString& range) {
@@ -23,7 +31,8 @@ std::optional<std::vector<DepthStepSpec>> readDepthSteps(const ObjectReader& r, 
   std::vector<DepthStepSpec> steps;
   for (qsizetype i = 0; i < array->size(); ++i) {
     const ObjectReader s = elementObject(*array, i, r.pathOf(key));
-    steps.push_back({requiredNumber(s, "length_mm", "in (0, 1e7]"), requiredNumber(s, "depth_mm", "in [0, 1000]")});
+    steps.push_back({requiredNumber(s, "length_mm", "in (0, 1e7]"), requiredNumber(s, "depth_mm", "in [0, 1000]"),
+                     withoutKeys(s.object(), {"length_mm", "depth_mm"})});
   }
   return steps;
 }
@@ -126,11 +135,17 @@ SupervisorSection readSupervisor(const ObjectReader& r) {
     std::vector<SupervisorEventSpec> list;
     for (qsizetype i = 0; i < events->size(); ++i) {
       const ObjectReader e = elementObject(*events, i, r.pathOf("events"));
-      list.push_back({requiredNumber(e, "t_s", "in [0, 1e5]"), e.optionalString("type").value_or(QString())});
+      list.push_back({requiredNumber(e, "t_s", "in [0, 1e5]"), e.optionalString("type").value_or(QString()),
+                      withoutKeys(e.object(), {"t_s", "type"})});
     }
     s.events = list;
   }
-  if (auto charts = r.optionalObject("charts")) s.charts = charts->object();
+  s.charts = readOptional<SupervisorChartsSpec>(r, "charts", [](const ObjectReader& c) {
+    SupervisorChartsSpec charts;
+    for (const QString controller : {"none", "smc1", "smc2"})
+      if (c.has(controller)) *charts.of(controller) = grafcetChartFromJson(c.value(controller), c.pathOf(controller));
+    return charts;
+  });
   return s;
 }
 

@@ -17,15 +17,15 @@ void readExpertExtras(const ObjectReader& expert, ExpertSpec& spec);
 void validateProcessSections(const Project& project);
 void validateExpertExtras(const ExpertSpec& spec);
 
-// Writes the process sections over `root` (a section absent from the project is removed).
+// Writes the process sections over `root`, which holds the unknown keys (a section absent from the
+// project is removed, with its unknown keys).
 void putProcessSections(QJsonObject& root, const Project& project);
 void putExpertExtras(QJsonObject& expert, const ExpertSpec& spec);
 
-// The part of `original` that `known` (the typed values written back) does not hold, per object;
-// arrays of objects by index. Tools are left out: each ToolSpec keeps its own unknown keys.
+// The part of `original` that `known` (the typed values written back) does not hold, per object.
+// The elements of arrays of objects (tools, modes, depth steps, events, chart steps) are left out:
+// each keeps its own unknown keys in its struct.
 QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known);
-// `known` with the unknown keys merged back in (the inverse of unknownKeys).
-QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known);
 
 // Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
 void putNumber(QJsonObject& o, const QString& key, double value);

@@ -74,15 +74,15 @@ void validateUniqueIds(const std::vector<ToolSpec>& tools) {
 }
 
 // Every tool's radial depth must lie in (0, D]; the message names the field that gives it.
-void validateRadialDepths(const Project& p) {
-  for (std::size_t i = 0; i < p.tools.size(); ++i) {
-    const ToolSpec& t = p.tools[i];
+void validateRadialDepths(const std::vector<ToolSpec>& tools, const std::optional<OperationSpec>& operation) {
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    const ToolSpec& t = tools[i];
     const QString tool = indexPath("tools", static_cast<qsizetype>(i));
     const QString diameter = QString("%1.diameter_mm = %2").arg(tool, formatNumber(t.diameter_mm));
     if (t.radial_depth_mm) {
       checkNumber(tool + ".radial_depth_mm", *t.radial_depth_mm, rules::radialDepth(t.diameter_mm), diameter);
-    } else if (p.operation && p.operation->radial_depth_mm) {
-      checkNumber("operation.radial_depth_mm", *p.operation->radial_depth_mm, rules::radialDepth(t.diameter_mm),
+    } else if (operation && operation->radial_depth_mm) {
+      checkNumber("operation.radial_depth_mm", *operation->radial_depth_mm, rules::radialDepth(t.diameter_mm),
                   QString("%1, tool '%2'").arg(diameter, t.id));
     }
   }
@@ -130,12 +130,15 @@ void validateProject(const Project& project) {
   if (project.machine) validateMachine(*project.machine);
   if (project.material) validateMaterial(*project.material);
   if (project.operation) validateOperation(*project.operation);
-  for (std::size_t i = 0; i < project.tools.size(); ++i)
-    validateTool(indexPath("tools", static_cast<qsizetype>(i)), project.tools[i]);
-  validateUniqueIds(project.tools);
-  validateRadialDepths(project);
+  validateTools(project.tools, project.operation);
   if (project.expert) validateExpert(*project.expert);
   validateProcessSections(project);
+}
+
+void validateTools(const std::vector<ToolSpec>& tools, const std::optional<OperationSpec>& operation) {
+  for (std::size_t i = 0; i < tools.size(); ++i) validateTool(indexPath("tools", static_cast<qsizetype>(i)), tools[i]);
+  validateUniqueIds(tools);
+  validateRadialDepths(tools, operation);
 }
 
 std::optional<double> radialDepthMm(const Project& project, const ToolSpec& tool) {

@@ -1,5 +1,6 @@
-// projectToJson: the typed values, then the unknown keys of every object merged back in: those of
-// tools and modes from their structs, the others from project.document.
+// projectToJson: the typed values written over project.document, the unknown keys of every object
+// (a typed object the project no longer has is removed with its unknown keys); the elements of
+// arrays of objects bring their own.
 #include <QJsonArray>
 
 #include "document/project.h"
@@ -107,21 +108,21 @@ void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>
 }  // namespace
 
 QJsonObject projectToJson(const Project& project) {
-  QJsonObject root;
+  QJsonObject root = project.document;
   root.insert("format", "millexpert-project");
   putNumber(root, "version", 1);
   root.insert("name", project.name);
   putSection(root, "machine", project.machine, machineJson);
   putSection(root, "material", project.material, materialJson);
   putSection(root, "operation", project.operation, operationJson);
-  if (!project.tools.empty() || project.document.contains("tools")) {
+  if (!project.tools.empty() || root.contains("tools")) {
     QJsonArray tools;
     for (const ToolSpec& tool : project.tools) tools.append(toolJson(tool));
     root.insert("tools", tools);
   }
   putSection(root, "expert", project.expert, expertJson);
   putProcessSections(root, project);
-  return withUnknownKeys(project.document, root);
+  return root;
 }
 
 }  // namespace mx::app

@@ -1,8 +1,9 @@
-// The process sections of projectToJson, each written over the object it was read from so that
-// unknown keys and the stored spelling of equal numbers survive.
+// The process sections of projectToJson, each written over the unknown keys of its object (so that
+// they survive, and go with a sub-object the project no longer has).
 #include <QJsonArray>
-#include <QSet>
+#include <utility>
 
+#include "document/project_grafcet_io.h"
 #include "document/project_sections_io.h"
 
 namespace mx::app {
@@ -49,13 +50,11 @@ void putDepthSteps(QJsonObject& o, const QString& key, const std::optional<std::
     o.remove(key);
     return;
   }
-  const QJsonArray old = o.value(key).toArray();
   QJsonArray out;
-  for (std::size_t i = 0; i < steps->size(); ++i) {
-    const auto k = static_cast<qsizetype>(i);
-    QJsonObject s = k < old.size() ? old.at(k).toObject() : QJsonObject();
-    putNumber(s, "length_mm", (*steps)[i].length_mm);
-    putNumber(s, "depth_mm", (*steps)[i].depth_mm);
+  for (const DepthStepSpec& step : *steps) {
+    QJsonObject s = step.unknown;
+    putNumber(s, "length_mm", step.length_mm);
+    putNumber(s, "depth_mm", step.depth_mm);
     out.append(s);
   }
   o.insert(key, out);
@@ -150,24 +149,26 @@ void writeSupervisor(QJsonObject& o, const SupervisorSection& s) {
   putOptional(o, "power_margin", s.power_margin);
   putOptional(o, "chatter_threshold_N", s.chatter_threshold_N);
   if (s.events) {
-    const QJsonArray old = o.value("events").toArray();
     QJsonArray out;
-    for (std::size_t i = 0; i < s.events->size(); ++i) {
-      const auto k = static_cast<qsizetype>(i);
-      QJsonObject e = k < old.size() ? old.at(k).toObject() : QJsonObject();
-      putNumber(e, "t_s", (*s.events)[i].t_s);
-      e.insert("type", (*s.events)[i].type);
+    for (const SupervisorEventSpec& event : *s.events) {
+      QJsonObject e = event.unknown;
+      putNumber(e, "t_s", event.t_s);
+      e.insert("type", event.type);
       out.append(e);
     }
     o.insert("events", out);
   } else {
     o.remove("events");
   }
-  if (s.charts) {
-    o.insert("charts", *s.charts);
-  } else {
-    o.remove("charts");
-  }
+  putObject(o, "charts", s.charts, [](QJsonObject& c, const SupervisorChartsSpec& v) {
+    for (const QString controller : {"none", "smc1", "smc2"}) {
+      if (const std::optional<GrafcetChartSpec>& chart = *v.of(controller)) {
+        c.insert(controller, grafcetChartToJson(*chart));
+      } else {
+        c.remove(controller);
+      }
+    }
+  });
 }
 
 void writePowerLaw(QJsonObject& o, const PowerLawSpec& m) {
@@ -247,80 +248,28 @@ void putExpertExtras(QJsonObject& o, const ExpertSpec& e) {
 
 namespace {
 
-bool isEmptyUnknown(const QJsonValue& v) {
-  return v.isUndefined() || (v.isObject() && v.toObject().isEmpty());
-}
-
+// What `original` holds beyond `known`: keys `known` lacks, and within objects both hold, their
+// unknown part. Arrays and scalars `known` holds are the typed values (the elements of typed arrays
+// of objects keep their own unknown keys).
 QJsonValue unknownPart(const QJsonValue& original, const QJsonValue& known) {
-  if (original.isObject() && known.isObject()) {
-    const QJsonObject o = original.toObject(), k = known.toObject();
-    QJsonObject out;
-    for (auto it = o.begin(); it != o.end(); ++it) {
-      if (!k.contains(it.key())) {
-        out.insert(it.key(), it.value());
-      } else {
-        const QJsonValue u = unknownPart(it.value(), k.value(it.key()));
-        if (!isEmptyUnknown(u)) out.insert(it.key(), u);
-      }
+  if (!original.isObject() || !known.isObject()) return QJsonValue(QJsonValue::Undefined);
+  const QJsonObject o = original.toObject(), k = known.toObject();
+  QJsonObject out;
+  for (auto it = o.begin(); it != o.end(); ++it) {
+    if (!k.contains(it.key())) {
+      out.insert(it.key(), it.value());
+    } else {
+      const QJsonValue u = unknownPart(it.value(), k.value(it.key()));
+      if (u.isObject() && !u.toObject().isEmpty()) out.insert(it.key(), u);
     }
-    return out;
   }
-  if (original.isArray() && known.isArray()) {
-    const QJsonArray o = original.toArray(), k = known.toArray();
-    QJsonArray out;
-    bool any = false;
-    for (qsizetype i = 0; i < o.size() && i < k.size(); ++i) {
-      const QJsonValue u = unknownPart(o.at(i), k.at(i));
-      any = any || !isEmptyUnknown(u);
-      out.append(isEmptyUnknown(u) ? QJsonValue(QJsonObject()) : u);
-    }
-    return any ? QJsonValue(out) : QJsonValue(QJsonValue::Undefined);
-  }
-  return QJsonValue(QJsonValue::Undefined);  // a known scalar: the typed value wins
-}
-
-// The keys whose values the typed project holds as objects or arrays: when the project no longer
-// has one (a section or sub-object removed), its unknown keys go with it.
-bool isTypedContainer(const QString& key) {
-  static const QSet<QString> keys{
-      "machine", "material",     "operation",       "tools",  "modes_x",      "modes_y",       "expert",
-      "grid",    "control",      "reference_model", "rls",    "workpiece",    "sdnrp",         "disturbance",
-      "initial", "drives",       "force_control",   "model",  "part_program", "depth_profile", "supervisor",
-      "part",    "passes_mm",    "events",          "charts", "pareto",       "taylor",        "roughness",
-      "fine",    "auto_weights", "operator_rules"};
-  return keys.contains(key);
-}
-
-QJsonValue mergeUnknown(const QJsonValue& unknown, const QJsonValue& known) {
-  if (unknown.isObject() && known.isObject()) {
-    QJsonObject out = unknown.toObject();
-    const QJsonObject k = known.toObject();
-    for (const QString& key : out.keys())
-      if (!k.contains(key) && isTypedContainer(key)) out.remove(key);
-    for (auto it = k.begin(); it != k.end(); ++it)
-      out.insert(it.key(), out.contains(it.key()) ? mergeUnknown(out.value(it.key()), it.value()) : it.value());
-    return out;
-  }
-  if (unknown.isArray() && known.isArray()) {
-    const QJsonArray u = unknown.toArray();
-    QJsonArray out;
-    const QJsonArray k = known.toArray();
-    for (qsizetype i = 0; i < k.size(); ++i) out.append(i < u.size() ? mergeUnknown(u.at(i), k.at(i)) : k.at(i));
-    return out;
-  }
-  return known;
+  return out;
 }
 
 }  // namespace
 
 QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known) {
-  QJsonObject k = known;
-  if (k.contains("tools") && original.contains("tools")) k.insert("tools", original.value("tools"));
-  return unknownPart(original, k).toObject();
-}
-
-QJsonObject withUnknownKeys(const QJsonObject& unknown, const QJsonObject& known) {
-  return mergeUnknown(unknown, known).toObject();
+  return unknownPart(original, known).toObject();
 }
 
 const std::optional<std::vector<double>>* SupervisorPassesSpec::of(const QString& controller) const {
@@ -328,6 +277,17 @@ const std::optional<std::vector<double>>* SupervisorPassesSpec::of(const QString
   if (controller == "smc1") return &smc1;
   if (controller == "smc2") return &smc2;
   return nullptr;
+}
+
+const std::optional<GrafcetChartSpec>* SupervisorChartsSpec::of(const QString& controller) const {
+  if (controller == "none") return &none;
+  if (controller == "smc1") return &smc1;
+  if (controller == "smc2") return &smc2;
+  return nullptr;
+}
+
+std::optional<GrafcetChartSpec>* SupervisorChartsSpec::of(const QString& controller) {
+  return const_cast<std::optional<GrafcetChartSpec>*>(std::as_const(*this).of(controller));
 }
 
 }  // namespace mx::app

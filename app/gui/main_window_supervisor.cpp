@@ -6,11 +6,11 @@
 #include <QDockWidget>
 #include <QStatusBar>
 
-#include "document/grafcet_json.h"
 #include "services/supervisor_request.h"
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "main_window.h"
+#include "document/project_grafcet_io.h"
 #include "supervision_runner.h"
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
@@ -139,10 +139,11 @@ void MainWindow::buildSupervisorDock() {
           [this](const widgets::GrafcetChartData& d) {
             app::Project edited = doc_.project();
             if (!edited.supervisor) return;
-            QJsonObject charts = edited.supervisor->charts.value_or(QJsonObject());
             const QString c = supervisor_view_->controller();
-            charts.insert(c, app::grafcetChartToJson(engineChart(d), charts.value(c).toObject()));
-            edited.supervisor->charts = charts;
+            if (!edited.supervisor->charts) edited.supervisor->charts.emplace();
+            std::optional<app::GrafcetChartSpec>* chart = edited.supervisor->charts->of(c);
+            if (!chart) return;
+            *chart = app::grafcetChartSpecWith(chart->value_or(app::GrafcetChartSpec{}), engineChart(d));
             const QString error = doc_.applyEdit(edited, tr("Edit the %1 chart").arg(c));
             if (!error.isEmpty()) showError(tr("Chart refused"), error);
           });
@@ -205,13 +206,8 @@ void MainWindow::refreshSupervisor() {
     supervisor_request_.reset();
     supervisor_view_->setStatus(tr("Supervisor section invalid: %1").arg(e.what()));
     // The editor still shows the chart, so that it can be mended.
-    try {
-      const QString c = supervisor_view_->controller();
-      const GrafcetChart raw = app::grafcetChartFromJson(
-          p.supervisor->charts.value_or(QJsonObject()).value(c), "supervisor.charts." + c);
-      supervisor_view_->editor()->setChart(chartData(raw));
-    } catch (const std::exception&) {
-    }
+    const auto* chart = p.supervisor->charts ? p.supervisor->charts->of(supervisor_view_->controller()) : nullptr;
+    if (chart && *chart) supervisor_view_->editor()->setChart(chartData((*chart)->chart));
     return;
   }
   supervisor_view_->setEnabled(true);

@@ -140,7 +140,7 @@ ControlSection controlSectionFrom(const ControlRequest& request, ControlSection 
   rls.reset_fraction = s.rls.reset_error_fraction;
   c.rls = rls;
   std::vector<DepthStepSpec> steps;
-  for (const ControlDepthStep& step : s.workpiece.steps) steps.push_back({step.length_m * 1e3, step.depth_m * 1e3});
+  for (const ControlDepthStep& step : s.workpiece.steps) steps.push_back({step.length_m * 1e3, step.depth_m * 1e3, {}});
   c.workpiece = steps;
   return c;
 }

@@ -1,8 +1,6 @@
 #include "services/supervisor_request.h"
 
-#include <QJsonObject>
-
-#include "document/grafcet_json.h"
+#include "document/project_grafcet_io.h"
 #include "document/project_rules.h"
 #include "model/job_control.h"
 #include "services/service_errors.h"
@@ -70,9 +68,11 @@ SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Projec
     throw ProjectError(QString("supervisor: %1").arg(e.what()));
   }
   r.chart_path = "supervisor.charts." + controller;
-  const QJsonValue chart = s.charts.value_or(QJsonObject()).value(controller);
-  if (chart.isUndefined()) throw ProjectError(QString("%1 is missing: the Grafcet chart of this controller").arg(r.chart_path));
-  r.chart = loadGrafcetChart(chart, r.chart_path, supervisionSignals());
+  const std::optional<GrafcetChartSpec>* chart = s.charts ? s.charts->of(controller) : nullptr;
+  if (!chart || !*chart)
+    throw ProjectError(QString("%1 is missing: the Grafcet chart of this controller").arg(r.chart_path));
+  checkGrafcetChart((*chart)->chart, r.chart_path, supervisionSignals());
+  r.chart = (*chart)->chart;
   return r;
 }
 

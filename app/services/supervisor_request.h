@@ -2,7 +2,7 @@
 // The project's "supervisor" section (issue 8: Landers & Ulsoy's supervisory machining control) in
 // engine form. Shop units in the file (typed in document/process_sections.h, checked when the project
 // is loaded); errors name the field, the value and the range (charts: the JSON path of the element,
-// app/document/grafcet_json.h).
+// app/document/project_grafcet_io.h).
 //   "supervisor": {
 //     "tool": "FM50",                        the face mill (radius = diameter / 2, teeth); default first tool
 //     "spindle_rpm": 1500, "programmed_feed_mm_s": 10,

@@ -3,7 +3,7 @@
 // Landers & Ulsoy (issue 8) is drawn: numbered steps (one or more initial), each with its actions,
 // and numbered transitions from source steps to target steps, each with a Boolean receptivity over
 // named signals (grafcet_expression.h) and the designer's priority for conflicts. Charts are data
-// (JSON in the project, app/document/grafcet_json.h); grafcet_validation.h checks them and
+// (JSON in the project, app/document/project_grafcet_io.h); grafcet_validation.h checks them and
 // grafcet_interpreter.h runs them. docs/grafcet.md describes the format and the semantics.
 #include <string>
 #include <string_view>
@@ -16,6 +16,8 @@ struct GrafcetStep {
   std::string name;                  // e.g. "No Contact and No Chatter"
   bool initial = false;              // part of the initial situation (double box)
   std::vector<std::string> actions;  // level "A", or impulse "L*" (a trailing asterisk)
+
+  bool operator==(const GrafcetStep&) const = default;
 };
 
 struct GrafcetTransition {
@@ -24,6 +26,8 @@ struct GrafcetTransition {
   std::vector<int> to;       // target step ids (more than one: parallel divergence)
   std::string receptivity;   // e.g. "b and a'" (grafcet_expression.h)
   int priority = 1;          // conflicts on a shared source step: the lowest number fires, then the lowest id
+
+  bool operator==(const GrafcetTransition&) const = default;
 };
 
 struct GrafcetChart {
@@ -36,6 +40,8 @@ struct GrafcetChart {
   const GrafcetTransition* transition(int id) const;
   // Index in `steps` of the first step with this id, or -1.
   int stepIndex(int id) const;
+
+  bool operator==(const GrafcetChart&) const = default;
 };
 
 // "L*" is an impulse action, "L" a level action.

@@ -1,7 +1,7 @@
 #pragma once
 // Checks a Grafcet chart before it runs (issue 8). Each issue names its element (the chart, a step
 // or a transition, by id and by position in the chart) and the field at fault, so the JSON reader
-// (app/document/grafcet_json.h) and the chart editor can point at it.
+// (app/document/project_grafcet_io.h) and the chart editor can point at it.
 #include <set>
 #include <string>
 #include <vector>

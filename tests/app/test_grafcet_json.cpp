@@ -1,12 +1,11 @@
-// Grafcet charts in JSON (issue 8): round trip, defaults, keys of the editor kept, and every error
-// naming its JSON path (structure errors and validation issues, receptivity errors with line and
-// column).
+// Grafcet charts in the project's JSON (issue 8): round trip, defaults, keys of the editor kept per
+// element, structure checked when the project loads, and every error naming its JSON path
+// (structure errors and validation issues, receptivity errors with line and column).
 #include <QJsonArray>
 #include <QJsonDocument>
 
-#include "cli/cli_support.h"
-#include "document/grafcet_json.h"
 #include "document/project.h"
+#include "document/project_grafcet_io.h"
 #include "supervisor/grafcet_interpreter.h"
 #include "test_registry.h"
 
@@ -33,9 +32,16 @@ const char* kSmc1 = R"({"name": "SMC I",
 
 QJsonObject parse(const char* text) { return QJsonDocument::fromJson(text).object(); }
 
+// Reads and checks, as the project load and the supervised run do.
+GrafcetChart loadChart(const QJsonValue& v, const QString& path, const std::optional<std::set<std::string>>& known) {
+  GrafcetChart chart = grafcetChartFromJson(v, path).chart;
+  checkGrafcetChart(chart, path, known);
+  return chart;
+}
+
 QString errorOf(const QJsonValue& v, const std::optional<std::set<std::string>>& known = std::nullopt) {
   try {
-    loadGrafcetChart(v, "supervisor.charts.smc1", known);
+    loadChart(v, "supervisor.charts.smc1", known);
   } catch (const ProjectError& e) {
     if (e.exitCode() != 2) return "wrong exit code";
     return QString::fromStdString(e.what());
@@ -49,7 +55,7 @@ class TestGrafcetJson : public QObject {
   Q_OBJECT
  private slots:
   void readsTheFormat() {
-    const GrafcetChart c = loadGrafcetChart(parse(kSmc1), "chart", std::set<std::string>{"a", "b"});
+    const GrafcetChart c = loadChart(parse(kSmc1), "chart", std::set<std::string>{"a", "b"});
     QCOMPARE(c.name, std::string("SMC I"));
     QCOMPARE(c.steps.size(), std::size_t(5));
     QVERIFY(c.steps[0].initial);
@@ -69,9 +75,10 @@ class TestGrafcetJson : public QObject {
 
   void roundTrip() {
     const QJsonObject original = parse(kSmc1);
-    const GrafcetChart c = grafcetChartFromJson(original, "chart");
-    const QJsonObject written = grafcetChartToJson(c);
-    const GrafcetChart back = grafcetChartFromJson(written, "chart");
+    const GrafcetChart c = grafcetChartFromJson(original, "chart").chart;
+    const QJsonObject written = grafcetChartToJson(GrafcetChartSpec{c, {}, {}, {}});
+    const GrafcetChartSpec backSpec = grafcetChartFromJson(written, "chart");
+    const GrafcetChart& back = backSpec.chart;
     QCOMPARE(back.name, c.name);
     QCOMPARE(back.steps.size(), c.steps.size());
     for (std::size_t i = 0; i < c.steps.size(); ++i) {
@@ -88,9 +95,11 @@ class TestGrafcetJson : public QObject {
       QCOMPARE(back.transitions[i].receptivity, c.transitions[i].receptivity);
       QCOMPARE(back.transitions[i].priority, c.transitions[i].priority);
     }
-    // Writing again gives the same JSON; "initial" only where true.
-    QCOMPARE(grafcetChartToJson(back), written);
+    // Writing again gives the same JSON; "initial" only where true, "priority" only where not 1.
+    QCOMPARE(grafcetChartToJson(backSpec), written);
     QVERIFY(!written["steps"].toArray()[1].toObject().contains("initial"));
+    QVERIFY(!written["transitions"].toArray()[1].toObject().contains("priority"));
+    QCOMPARE(written["transitions"].toArray()[2].toObject()["priority"].toInt(), 2);
   }
 
   void keepsUnknownKeysOfThePrevious() {
@@ -101,12 +110,123 @@ class TestGrafcetJson : public QObject {
     s2["x"] = 120;
     steps[1] = s2;
     original["steps"] = steps;
-    GrafcetChart c = grafcetChartFromJson(original, "chart");
+    const GrafcetChartSpec read = grafcetChartFromJson(original, "chart");
+    QCOMPARE(grafcetChartToJson(read), original);  // every key and value kept
+    GrafcetChart c = read.chart;
     c.steps[1].name = "Renamed";
-    const QJsonObject written = grafcetChartToJson(c, original);
+    const QJsonObject written = grafcetChartToJson(grafcetChartSpecWith(read, c));
     QCOMPARE(written["layout"].toString(), QString("vertical"));
     QCOMPARE(written["steps"].toArray()[1].toObject()["x"].toInt(), 120);
     QCOMPARE(written["steps"].toArray()[1].toObject()["name"].toString(), QString("Renamed"));
+  }
+
+  // The editor's chart comes back without the file's extra keys: they follow their step by id when
+  // steps are deleted or reordered, and land on no other step.
+  void unknownKeysStayWithTheirStep() {
+    QJsonObject original = parse(kSmc1);
+    QJsonArray steps = original["steps"].toArray();
+    for (int i = 0; i < 5; ++i) {
+      QJsonObject s = steps[i].toObject();
+      s["x"] = 100 * (i + 1);
+      steps[i] = s;
+    }
+    original["steps"] = steps;
+    QJsonArray transitions = original["transitions"].toArray();
+    QJsonObject t7 = transitions[6].toObject();
+    t7["route"] = "left";
+    transitions[6] = t7;
+    original["transitions"] = transitions;
+    const GrafcetChartSpec read = grafcetChartFromJson(original, "chart");
+
+    GrafcetChart c = read.chart;
+    std::swap(c.steps[0], c.steps[4]);              // 5, 2, 3, 4, 1
+    c.steps.erase(c.steps.begin() + 1);             // 5, 3, 4, 1
+    c.steps.push_back({9, "New", false, {}});       // 5, 3, 4, 1, 9
+    std::swap(c.transitions[0], c.transitions[6]);  // 7, 2, ..., 1
+    const QJsonObject written = grafcetChartToJson(grafcetChartSpecWith(read, c));
+    const QJsonArray out = written["steps"].toArray();
+    QCOMPARE(out.size(), 5);
+    const std::vector<std::pair<int, int>> idAndX{{5, 500}, {3, 300}, {4, 400}, {1, 100}};
+    for (qsizetype i = 0; i < 4; ++i) {
+      QCOMPARE(out[i].toObject()["id"].toInt(), idAndX[static_cast<std::size_t>(i)].first);
+      QCOMPARE(out[i].toObject()["x"].toInt(), idAndX[static_cast<std::size_t>(i)].second);
+    }
+    QVERIFY(!out[4].toObject().contains("x"));
+    QCOMPARE(out[4].toObject().keys(), (QStringList{"id", "name"}));  // no defaults written
+    const QJsonArray outT = written["transitions"].toArray();
+    QCOMPARE(outT[0].toObject()["id"].toInt(), 7);
+    QCOMPARE(outT[0].toObject()["route"].toString(), QString("left"));
+    QVERIFY(!outT[6].toObject().contains("route"));
+  }
+
+  // Optional keys the file wrote at their default stay; those it left out stay out.
+  void optionalKeysKeepTheirPresence() {
+    const QJsonObject chart{
+        {"name", ""},
+        {"steps", QJsonArray{QJsonObject{{"id", 1}, {"name", "S1"}, {"initial", true}},
+                             QJsonObject{{"id", 2}, {"name", "S2"}, {"initial", false}, {"actions", QJsonArray()}}}},
+        {"transitions", QJsonArray{QJsonObject{{"id", 1}, {"from", QJsonArray{1}}, {"to", QJsonArray{2}},
+                                               {"receptivity", "a"}},
+                                   QJsonObject{{"id", 2}, {"from", QJsonArray{2}}, {"to", QJsonArray{1}},
+                                               {"receptivity", "a'"}, {"priority", 1}}}}};
+    const GrafcetChartSpec read = grafcetChartFromJson(chart, "c");
+    QCOMPARE(grafcetChartToJson(read), chart);
+    QCOMPARE(read.steps[1].defaults_written, (QStringList{"initial", "actions"}));
+    QCOMPARE(read.transitions[1].defaults_written, QStringList{"priority"});
+    QVERIFY(read.transitions[0].defaults_written.isEmpty());
+    const QJsonObject bare{{"steps", QJsonArray{QJsonObject{{"id", 1}, {"name", "S1"}, {"initial", true}}}}};
+    QCOMPARE(grafcetChartToJson(grafcetChartFromJson(bare, "c")), bare);
+  }
+
+  // A project's charts are read when it loads: structure errors name the chart's field path, the
+  // value and the range; content errors (an unknown signal) wait for the run of that controller.
+  void chartsAreReadWithTheProject_data() {
+    QTest::addColumn<QString>("step");  // the JSON of supervisor.charts.smc2.steps[0]
+    QTest::addColumn<QString>("error");
+    const QString p = "supervisor.charts.smc2.steps[0]";
+    QTest::newRow("id negative") << R"({"id": -1, "name": "S"})"
+                                 << p + ".id = -1: must be an integer in [0, 1000000000]";
+    QTest::newRow("id too large") << R"({"id": 1000000001, "name": "S"})"
+                                  << p + ".id = 1000000001: must be an integer in [0, 1000000000]";
+    QTest::newRow("id fractional") << R"({"id": 2.5, "name": "S"})"
+                                   << p + ".id = 2.5: must be an integer in [0, 1000000000]";
+    QTest::newRow("name a number") << R"({"id": 1, "name": 4})" << p + ".name = 4: must be a string";
+    QTest::newRow("initial a string") << R"({"id": 1, "name": "S", "initial": "yes"})"
+                                      << p + ".initial = \"yes\": must be true or false";
+  }
+  void chartsAreReadWithTheProject() {
+    QFETCH(QString, step);
+    QFETCH(QString, error);
+    const QJsonObject s = QJsonDocument::fromJson(step.toUtf8()).object();
+    const QJsonObject chart{{"steps", QJsonArray{s}}};
+    const QJsonObject root{{"format", "millexpert-project"},
+                           {"version", 1},
+                           {"name", "x"},
+                           {"supervisor", QJsonObject{{"charts", QJsonObject{{"smc2", chart}}}}}};
+    QString got;
+    try {
+      projectFromJson(root);
+    } catch (const ProjectError& e) {
+      got = QString::fromStdString(e.what());
+    }
+    QCOMPARE(got, error);
+  }
+
+  void projectHoldsTheTypedCharts() {
+    const QJsonObject receptive{{"id", 1}, {"from", QJsonArray{1}}, {"to", QJsonArray{1}}, {"receptivity", "z"}};
+    const QJsonObject chart{{"steps", QJsonArray{QJsonObject{{"id", 1}, {"name", "S"}, {"initial", true}}}},
+                            {"transitions", QJsonArray{receptive}},
+                            {"x_zoom", 2}};
+    const QJsonObject charts{{"smc1", chart}, {"x_custom", QJsonObject{{"steps", 3}}}};
+    const QJsonObject root{{"format", "millexpert-project"},
+                           {"version", 1},
+                           {"name", "x"},
+                           {"supervisor", QJsonObject{{"charts", charts}}}};
+    const Project p = projectFromJson(root);  // the unknown signal 'z' is the run's concern
+    QVERIFY(p.supervisor->charts->smc1 && !p.supervisor->charts->none && !p.supervisor->charts->smc2);
+    QCOMPARE(p.supervisor->charts->smc1->chart.transitions[0].receptivity, std::string("z"));
+    QCOMPARE(p.supervisor->charts->smc1->keys.unknown, (QJsonObject{{"x_zoom", 2}}));
+    QCOMPARE(projectToJson(p), root);  // a key of charts that is no controller is kept too
   }
 
   void errorsNameTheJsonPath_data() {
@@ -183,7 +303,7 @@ class TestGrafcetJson : public QObject {
     t0["receptivity"] = "a and";
     t[0] = t0;
     root["transitions"] = t;
-    const GrafcetChart c = grafcetChartFromJson(root, "c");
+    const GrafcetChart c = grafcetChartFromJson(root, "c").chart;
     const QStringList errors = grafcetChartErrors(c, "c", std::set<std::string>{"b"});
     QCOMPARE(errors, (QStringList{
         "c.transitions[0].receptivity: line 1, column 6: expected a signal, a number or '(', found the end of the expression",

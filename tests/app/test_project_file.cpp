@@ -387,6 +387,35 @@ class TestProjectFile : public QObject {
     expectContains(errorOf([&] { loadProject(bad); }), {bad, "top level must be a JSON object"});
   }
 
+  // A tool library: a bare array or an object with "tools"; errors as for a project.
+  void toolsFromJsonReadsALibrary_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error");
+    const QByteArray tool = R"({"id": "E", "teeth": 2, "diameter_mm": 16, "helix_deg": 30, "x_shop": 7,
+        "modes_x": [{"freq_Hz": 900, "damping_pct": 3, "stiffness_N_per_um": 8}], "modes_y": []})";
+    QTest::newRow("array") << "[" + tool + "]" << QString();
+    QTest::newRow("object") << R"({"name": "lib", "tools": [)" + tool + "]}" << QString();
+    QTest::newRow("teeth") << QByteArray(R"([{"id": "A", "teeth": 0, "diameter_mm": 16, "helix_deg": 0,
+        "modes_x": [], "modes_y": []}])")
+                           << "tools[0].teeth = 0: must be an integer >= 1";
+    QTest::newRow("duplicate id") << "[" + tool + ", " + tool + "]"
+                                  << R"(tools[1].id = "E": duplicate of tools[0].id (tool ids must be unique))";
+    QTest::newRow("no tools") << QByteArray(R"({"name": "x"})") << "tools: missing (required array of tools)";
+    QTest::newRow("tools not an array") << QByteArray(R"({"tools": 3})") << "tools: expected an array, got number";
+    QTest::newRow("syntax") << QByteArray("[ ") << "JSON syntax error at offset 2: unterminated array";
+  }
+  void toolsFromJsonReadsALibrary() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    std::vector<ToolSpec> tools;
+    QCOMPARE(errorOf([&] { tools = toolsFromJson(json); }), error);
+    if (!error.isEmpty()) return;
+    QCOMPARE(tools.size(), std::size_t{1});
+    QCOMPARE(tools[0].diameter_mm, 16.0);
+    QCOMPARE(tools[0].modes_x[0].freq_Hz, 900.0);
+    QCOMPARE(tools[0].unknown, (QJsonObject{{"x_shop", 7}}));
+  }
+
   void saveReloadIsIdentical_data() {
     QTest::addColumn<QString>("path");
     QTest::newRow("rubio") << projectsPath("rubio2006-tool-selection.mxproj");

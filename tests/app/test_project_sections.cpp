@@ -100,6 +100,77 @@ class TestProjectSections : public QObject {
     QCOMPARE(projectToJson(p).value("machine").toObject().value("x_vendor").toString(), QString("ACME"));
   }
 
+  // The elements of the sections' arrays of objects keep their own unknown keys, like tools.
+  void unknownKeysStayWithTheirElement_data() {
+    QTest::addColumn<QString>("section");
+    QTest::addColumn<QString>("array");
+    QTest::addColumn<QString>("key");  // a typed number of each element
+    QTest::newRow("control.workpiece") << "control"
+                                       << "workpiece"
+                                       << "length_mm";
+    QTest::newRow("part_program.depth_profile") << "part_program"
+                                                << "depth_profile"
+                                                << "length_mm";
+    QTest::newRow("supervisor.events") << "supervisor"
+                                       << "events"
+                                       << "t_s";
+  }
+  void unknownKeysStayWithTheirElement() {
+    QFETCH(QString, section);
+    QFETCH(QString, array);
+    QFETCH(QString, key);
+    auto element = [&](double value, const QString& unknown) {
+      QJsonObject e = key == "t_s" ? QJsonObject{{"t_s", value}, {"type", "chatter"}}
+                                   : QJsonObject{{"length_mm", value}, {"depth_mm", 1.5}};
+      e.insert(unknown, value);
+      return e;
+    };
+    QJsonObject body{{array, QJsonArray{element(10, "x_a"), element(20, "x_b"), element(30, "x_c")}}};
+    if (section == "control") body.insert("spindle_rpm", 1000);
+    QJsonObject root = minimalWith(section, body);
+    root.insert("material", QJsonObject{{"name", "steel"}, {"Kt_N_mm2", 2000}, {"Kr", 0.3}});
+    Project p = projectFromJson(root);
+    QCOMPARE(projectToJson(p), root);
+    QVERIFY(!p.document.contains(section));  // the elements hold them, not the document
+
+    auto reorder = [](auto& list) {
+      std::swap((*list)[0], (*list)[2]);  // 30, 20, 10
+      list->erase(list->begin() + 1);     // 30, 10
+    };
+    if (section == "control") reorder(p.control->workpiece);
+    if (section == "part_program") reorder(p.part_program->depth_profile);
+    if (section == "supervisor") reorder(p.supervisor->events);
+    const QJsonArray out = projectToJson(p).value(section).toObject().value(array).toArray();
+    QCOMPARE(out.size(), 2);
+    const QJsonObject first = out[0].toObject(), second = out[1].toObject();
+    QCOMPARE(first.value(key).toDouble(), 30.0);
+    QCOMPARE(first.value("x_c").toDouble(), 30.0);
+    QVERIFY(!first.contains("x_a") && !first.contains("x_b"));
+    QCOMPARE(second.value(key).toDouble(), 10.0);
+    QCOMPARE(second.value("x_a").toDouble(), 10.0);
+    QVERIFY(!second.contains("x_b") && !second.contains("x_c"));
+  }
+
+  // A sub-object the project no longer has takes its unknown keys with it; its parent keeps its own.
+  void unknownKeysGoWithTheirSubObject() {
+    const QJsonObject rls{{"lambda", 0.98}, {"x_tuned_by", "rls"}};
+    const QJsonObject charts{{"x_layout", "grid"}, {"none", QJsonObject{{"steps", QJsonArray()}}}};
+    const QJsonObject supervisor{{"x_cell", 4}, {"charts", charts}};
+    QJsonObject root = minimalWith("control", QJsonObject{{"spindle_rpm", 700}, {"x_note", "n"}, {"rls", rls}});
+    root.insert("material", QJsonObject{{"name", "steel"}, {"Kt_N_mm2", 2000}, {"Kr", 0.3}});
+    root.insert("supervisor", supervisor);
+    Project p = projectFromJson(root);
+    QCOMPARE(p.document.value("control").toObject(),
+             (QJsonObject{{"x_note", "n"}, {"rls", QJsonObject{{"x_tuned_by", "rls"}}}}));
+    p.control->rls.reset();
+    p.supervisor->charts.reset();
+    const QJsonObject j = projectToJson(p);
+    QCOMPARE(j.value("control").toObject(), (QJsonObject{{"spindle_rpm", 700}, {"x_note", "n"}}));
+    QCOMPARE(j.value("supervisor").toObject(), (QJsonObject{{"x_cell", 4}}));
+    p.supervisor.reset();
+    QVERIFY(!projectToJson(p).contains("supervisor"));
+  }
+
   void sectionsAreTyped() {
     const Project c = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
     QVERIFY(c.control);
