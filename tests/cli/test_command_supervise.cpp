@@ -123,4 +123,4 @@ class TestCliSupervise : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliSupervise)
-#include "test_cli_supervise.moc"
+#include "test_command_supervise.moc"

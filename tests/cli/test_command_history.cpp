@@ -142,4 +142,4 @@ class TestCliHistory : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliHistory)
-#include "test_cli_history.moc"
+#include "test_command_history.moc"

@@ -314,4 +314,4 @@ class TestGrafcetJson : public QObject {
 };
 
 MX_REGISTER_TEST(TestGrafcetJson)
-#include "test_grafcet_json.moc"
+#include "test_project_grafcet_io.moc"

@@ -133,4 +133,4 @@ class TestCliSdnrp : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliSdnrp)
-#include "test_cli_sdnrp.moc"
+#include "test_command_sdnrp.moc"

@@ -121,4 +121,4 @@ class TestCliControl : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliControl)
-#include "test_cli_control.moc"
+#include "test_command_control.moc"

@@ -1,4 +1,4 @@
-// Test-only helper for app.learning_database: inserts learning records into DB_FILE in a loop (each
+// Test-only helper for services.learning_database: inserts learning records into DB_FILE in a loop (each
 // one transaction) and prints the running count after every commit, until killed or COUNT reached.
 //   learning_writer DB_FILE [COUNT]
 #include <QCoreApplication>

@@ -191,4 +191,4 @@ class TestCliRank : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliRank)
-#include "test_cli_rank.moc"
+#include "test_command_rank.moc"

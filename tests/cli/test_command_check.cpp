@@ -185,4 +185,4 @@ class TestCliCheck : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliCheck)
-#include "test_cli_check.moc"
+#include "test_command_check.moc"

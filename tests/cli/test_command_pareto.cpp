@@ -265,4 +265,4 @@ class TestCliPareto : public QObject {
 };
 
 MX_REGISTER_TEST(TestCliPareto)
-#include "test_cli_pareto.moc"
+#include "test_command_pareto.moc"
