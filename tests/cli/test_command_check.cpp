@@ -7,39 +7,18 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include "support/cli_runner.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
 
-struct CliRun {
-  int exitCode = -1;
-  QByteArray out;
-  QString err;
-};
-
-CliRun runCli(const QStringList& arguments) {
-  QProcess process;
-  process.start(MX_CLI_PATH, arguments);
-  if (!process.waitForFinished(60000)) qFatal("millexpert-cli did not finish");
-  CliRun run;
-  run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-  run.out = process.readAllStandardOutput();
-  run.err = QString::fromUtf8(process.readAllStandardError());
-  return run;
-}
-
-QString fixturePath(const QString& name) {
-  return QString(MX_TEST_DATA_DIR) + "/projects/" + name;
-}
-
-QJsonObject readJson(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
-  return QJsonDocument::fromJson(f.readAll()).object();
-}
-
+using mx::test::CliRun;
+using mx::test::fixturePath;
 using mx::test::mutated;
+using mx::test::readJson;
+using mx::test::runCli;
 
 }  // namespace
 
@@ -66,7 +45,7 @@ class TestCliCheck : public QObject {
     QFETCH(QString, name);
     QFETCH(QStringList, tools);
     const CliRun run = runCli({"check", path});
-    QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+    QVERIFY2(run.code == 0, qPrintable(run.err));
     QVERIFY(run.err.isEmpty());
     QJsonParseError error;
     const QJsonDocument out = QJsonDocument::fromJson(run.out, &error);
@@ -139,7 +118,7 @@ class TestCliCheck : public QObject {
     f.write(QJsonDocument(mutated(readJson(fixturePath("valid-full.mxproj")), mutations)).toJson());
     f.close();
     const CliRun run = runCli({"check", path});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
     QVERIFY2(run.out.isEmpty(), run.out.constData());
     QVERIFY2(run.err.contains(path + ": " + expected), qPrintable(run.err));
   }
@@ -159,7 +138,7 @@ class TestCliCheck : public QObject {
     QFETCH(QString, file);
     QFETCH(QString, expected);
     const CliRun run = runCli({"check", fixturePath(file)});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains(fixturePath(file) + ": " + expected), qPrintable(run.err));
   }
 
@@ -167,20 +146,20 @@ class TestCliCheck : public QObject {
     QTemporaryDir dir;
     const QString path = dir.filePath("absent.mxproj");
     const CliRun run = runCli({"check", path});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains(path), qPrintable(run.err));
     QVERIFY2(run.err.contains("not found"), qPrintable(run.err));
   }
 
   void badCommandLines() {
     CliRun run = runCli({"frobnicate", fixturePath("valid-full.mxproj")});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains("unknown command 'frobnicate'"), qPrintable(run.err));
     run = runCli({"check"});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains("PROJECT"), qPrintable(run.err));
     run = runCli({"check", "--no-such-flag", fixturePath("valid-full.mxproj")});
-    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.code, 2);
   }
 };
 

@@ -13,25 +13,14 @@
 #include "document/project.h"
 #include "document/project_validation.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using namespace mx;
 using namespace mx::app;
+using namespace mx::test;
 
 namespace {
-
-QString projectsPath(const QString& name) {
-  return QString(MX_PROJECTS_DIR) + "/" + name;
-}
-QString fixturePath(const QString& name) {
-  return QString(MX_TEST_DATA_DIR) + "/projects/" + name;
-}
-
-QJsonObject readJson(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
-  return QJsonDocument::fromJson(f.readAll()).object();
-}
 
 // The ProjectError message of f(), or a null string when nothing is thrown.
 QString errorOf(const std::function<void()>& f) {

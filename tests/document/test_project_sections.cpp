@@ -12,26 +12,14 @@
 #include "services/control_request.h"
 #include "services/sdnrp_request.h"
 #include "document/project.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using namespace mx;
 using namespace mx::app;
+using namespace mx::test;
 
 namespace {
-
-QString projectsPath(const QString& name) {
-  return QString(MX_PROJECTS_DIR) + "/" + name;
-}
-
-QByteArray readBytes(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
-  return f.readAll();
-}
-
-QJsonObject readJson(const QString& path) {
-  return QJsonDocument::fromJson(readBytes(path)).object();
-}
 
 QString errorOf(const QJsonObject& root) {
   try {

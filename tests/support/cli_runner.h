@@ -9,6 +9,7 @@ namespace mx::test {
 
 struct CliRun {
   int code = -1;  // -1 when the process crashed or timed out
+  QByteArray out;  // stdout as written
   QJsonObject json;
   QString err;
 };
@@ -19,7 +20,8 @@ inline CliRun runCli(const QStringList& args, int timeout_ms = 120000) {
   p.waitForFinished(timeout_ms);
   CliRun r;
   r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-  r.json = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+  r.out = p.readAllStandardOutput();
+  r.json = QJsonDocument::fromJson(r.out).object();
   r.err = QString::fromUtf8(p.readAllStandardError());
   return r;
 }

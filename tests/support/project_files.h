@@ -1,0 +1,23 @@
+#pragma once
+// Test helper: the paths of the example projects and the test fixtures, and their raw contents.
+#include <QByteArray>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QString>
+#include <QtGlobal>
+
+namespace mx::test {
+
+inline QString projectsPath(const QString& name) { return QString(MX_PROJECTS_DIR) + "/" + name; }
+inline QString fixturePath(const QString& name) { return QString(MX_TEST_DATA_DIR) + "/projects/" + name; }
+
+inline QByteArray readBytes(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
+  return f.readAll();
+}
+
+inline QJsonObject readJson(const QString& path) { return QJsonDocument::fromJson(readBytes(path)).object(); }
+
+}  // namespace mx::test
