@@ -1,4 +1,4 @@
-// Adaptive force control under beta-FROH (issue 6): one closed-loop simulation of the 2006 paper's workpiece
+// Adaptive force control under beta-FROH: one closed-loop simulation of the 2006 paper's workpiece
 // (targets: >= 100x real time, i.e. the run's simulated duration / wall time >= 100), the 31-point beta sweep
 // (target: <= 2 s on 2 cores), and the beta-FROH discretization itself. Counters: realtime_factor = simulated
 // seconds per wall second.

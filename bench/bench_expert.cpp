@@ -1,4 +1,4 @@
-// Expert system (issue 4): building the session of the 20-tool library (lobes + admissible grids),
+// Expert system: building the session of the 20-tool library (lobes + admissible grids),
 // re-ranking after a weight change (a pass over the cached grids), and the full ranking with the
 // time-domain refinement (Rules 4-6). The library is projects/library-20-tools.mxproj, repeated
 // here because the benchmark links the engine only (no project reader).

@@ -1,4 +1,4 @@
-// Part-program overrides (issue 7): a 100k-block G-code program parsed, run through the model-based
+// Part-program overrides: a 100k-block G-code program parsed, run through the model-based
 // force controller block by block, written back and exported as the feed-override CSV. Target: <= 2 s.
 #include <benchmark/benchmark.h>
 

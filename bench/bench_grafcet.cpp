@@ -1,4 +1,4 @@
-// Grafcet interpreter (issue 8): one scan of a 500-step chart. The chart: 20 parallel sequences of
+// Grafcet interpreter: one scan of a 500-step chart. The chart: 20 parallel sequences of
 // 25 steps (each a loop, its first step initial), every step with a "next" transition
 // (priority 1) and a "skip" transition (priority 2) over 32 signals, plus a global hold; the inputs
 // change at every scan, so a few transitions fire per scan and about 20 steps are active.

@@ -1,4 +1,4 @@
-// Pareto set of 100k points with four objectives (issue 5): SaLSa (pareto/pareto_front.h) on uniform
+// Pareto set of 100k points with four objectives: SaLSa (pareto/pareto_front.h) on uniform
 // random scores and on anti-correlated scores (large fronts), and the objective table + front of the
 // case study's admissible grid (projects/rubio-pareto-case.mxproj, 20 rpm grid). Recorded in
 // docs/performance.md.

@@ -1,5 +1,5 @@
 #pragma once
-// Display data of the adaptive force-control view (issue 6): closed-loop traces, metrics, the J_c(beta)
+// Display data of the adaptive force-control view: closed-loop traces, metrics, the J_c(beta)
 // curve, the pole-zero map of H_beta, the controller settings and the workpiece depth profile.
 // Display units (N, mm, mm/s, s, ms); the main window converts from the engine's SI results.
 #include <QMetaType>

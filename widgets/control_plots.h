@@ -1,5 +1,5 @@
 #pragma once
-// The closed-loop plots of the adaptive force controller (issue 6; the paper's figures 9-12), stacked
+// The closed-loop plots of the adaptive force controller (the paper's figures 9-12), stacked
 // on a shared time axis t [s] (dragging or zooming one row moves all; a double click fits the data):
 //   (1) force F [N]: reference (steps), model output, plant output at the samples (markers) and between
 //       them (thin line), with the depth of cut b [mm] on the right axis;

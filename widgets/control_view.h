@@ -1,5 +1,5 @@
 #pragma once
-// The adaptive force-control view (issue 6): tuning beta of the beta-FROH hold and the controller.
+// The adaptive force-control view: tuning beta of the beta-FROH hold and the controller.
 //   left:   beta slider and spin box (debounced), "Sweep beta", the run's metrics, the controller
 //           settings editor and the workpiece depth-profile editor;
 //   centre: the closed loop on a shared time axis (force with the depth of cut, tracking error, feed,

@@ -1,5 +1,5 @@
 #pragma once
-// Display structs of a Grafcet (IEC 60848) chart for the supervisor view and the chart editor (issue 8).
+// Display structs of a Grafcet (IEC 60848) chart for the supervisor view and the chart editor.
 // The main window converts the engine's chart to these; the widgets never see the engine.
 #include <QList>
 #include <QMetaType>

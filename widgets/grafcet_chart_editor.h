@@ -1,5 +1,5 @@
 #pragma once
-// The Grafcet chart editor (issue 8): a table of steps (id, name, initial, actions such as "A, B, L*")
+// The Grafcet chart editor: a table of steps (id, name, initial, actions such as "A, B, L*")
 // and a table of transitions (id, source steps, target steps, receptivity, priority), add/remove
 // buttons, the live drawing, and the validation errors inline. After each edit the chart is read
 // back from the tables, checked for format errors (ids, action names) and then by the validator the

@@ -1,5 +1,5 @@
 #pragma once
-// Automatic layout of a Grafcet chart for GrafcetChartView (issue 8), in drawing coordinates:
+// Automatic layout of a Grafcet chart for GrafcetChartView, in drawing coordinates:
 // levels by a breadth-first search from the initial steps (then from any step not reached), the
 // transitions leaving a step side by side under it in priority order (left first), a step under the
 // slot of the transition that reaches it first; back arcs (a target not below the source) each get a

@@ -1,5 +1,5 @@
 #pragma once
-// Drawing of a Grafcet chart (issue 8; the notation of Landers & Ulsoy section 4, after David & Alla):
+// Drawing of a Grafcet chart (the notation of Landers & Ulsoy section 4, after David & Alla):
 // steps are numbered boxes (an initial step is a double box) with their name on the left; transitions
 // are thick horizontal bars numbered "(n)" on the left with the receptivity on the right; arcs run
 // downward, back arcs go up a lane on the left with an arrow; actions are small boxes right of each

@@ -51,7 +51,7 @@ class LobeChartView : public QWidget {
   void setLengthUnit(double display_per_mm, const QString& suffix);
   void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color);  // q*, q**
   void clearMarkers();
-  // Expert overlays (issue 4): the cost heat map of the selected tool (cost[i * depths + j], NaN =
+  // Expert overlays: the cost heat map of the selected tool (cost[i * depths + j], NaN =
   // not admissible) and the admissible grid points; lengths in mm.
   void setCostMap(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm, const QVector<double>& cost);
   void setGridPoints(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm);

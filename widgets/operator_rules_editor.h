@@ -1,5 +1,5 @@
 #pragma once
-// The operator-rules editor (issue 5, GUI; Module VII, Rule 18): the rules, one per line, in a plain
+// The operator-rules editor (Pareto paper, Module VII, Rule 18): the rules, one per line, in a plain
 // text editor with inline errors. After each edit (debounced by kCheckDelayMs) or on check(), the
 // text is parsed with mx::parseRules; every line with an error gets a red background and the errors
 // are listed under the editor as "line L, column C: message" (the parser's own text). Clicking an

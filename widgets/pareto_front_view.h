@@ -1,5 +1,5 @@
 #pragma once
-// The Pareto-front view (issue 5, GUI): a scatter of the non-dominated set with two objectives on the
+// The Pareto-front view: a scatter of the non-dominated set with two objectives on the
 // axes and a third as the colour of the points, each chosen by the user from TOL [min], MRR [cm^3/s],
 // SURF [um] and ROS [-]. Clicking a point (the nearest one in pixel space within kPickRadiusPx) selects
 // it and emits pointActivated(); the caller moves the operating point and the weights to it.

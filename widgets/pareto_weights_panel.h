@@ -1,5 +1,5 @@
 #pragma once
-// The Pareto weights w = (w_TOL, w_MRR, w_SURF, w_ROS) of the four-objective cost (issue 5, Rule 10)
+// The Pareto weights w = (w_TOL, w_MRR, w_SURF, w_ROS) of the four-objective cost (Rule 10)
 // as four sliders with spin boxes. The weights stay on the simplex: moving one to x rescales the
 // others proportionally to their current values so that they sum to 1 - x (equal shares when they
 // are all 0), the rule of WeightsPanel::moveWeight.

@@ -1,5 +1,5 @@
 #pragma once
-// Part-program override panel (issue 7): the blocks of an opened NC program with the proposed feed F
+// Part-program override panel: the blocks of an opened NC program with the proposed feed F
 // and speed S beside the programmed ones, the reason of each change, the depth of cut and the predicted
 // cutting force per block; the parser warnings below; buttons to open a program and to export the
 // overridden program and the CSV (the main window shows the file dialogs and does the work).

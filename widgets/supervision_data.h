@@ -1,5 +1,5 @@
 #pragma once
-// Display structs of a supervised face-milling run (issue 8): the traces, the module activity, the
+// Display structs of a supervised face-milling run: the traces, the module activity, the
 // events and the run's metrics, in display units. The main window converts the engine's results.
 #include <QMetaType>
 #include <QString>

@@ -1,5 +1,5 @@
 #pragma once
-// The supervised run on a shared time axis t [s] (issue 8):
+// The supervised run on a shared time axis t [s]:
 //   top:    F_Y [N] (left axis) with the force reference F_ref (dashed), spindle power P [W] (right
 //           axis) with the power limit (dashed red);
 //   bottom: module activity, one row per Table 1 letter A-L (a bar where the module is active), and an

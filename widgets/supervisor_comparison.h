@@ -1,5 +1,5 @@
 #pragma once
-// Side-by-side comparison of the supervisory controllers (issue 8): one small plot per controller
+// Side-by-side comparison of the supervisory controllers: one small plot per controller
 // (columns none | SMC I | SMC II: F_Y [N] on the left axis, spindle power P [W] on the right with the
 // power limit dashed) above a metrics table (rows: max power [% of limit], force overshoot [%],
 // chatter detected, chatter time [s], passes, cycle time [s]; columns: the controllers). Values over

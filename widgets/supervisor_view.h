@@ -1,5 +1,5 @@
 #pragma once
-// The supervisor dock (issue 8; Landers & Ulsoy's supervisory machining control):
+// The supervisor dock (Landers & Ulsoy's supervisory machining control):
 //   toolbar: controller (none / SMC I / SMC II), Run, Stop, speed (1x, 5x, 20x, max), the operator's
 //            Feed hold (checkable) and Chatter buttons (enabled while running), status;
 //   "Run" tab: the Grafcet chart with its tokens (left, scrolled to follow the active steps) and the

@@ -1,5 +1,5 @@
 #pragma once
-// Surface-finish control panel (Cus & Zuperl SDNRP, issue 7): the desired roughness Ra_d, the
+// Surface-finish control panel (Cus & Zuperl SDNRP): the desired roughness Ra_d, the
 // machine-tool disturbance on or off, the simulated duration and a Run button; live plots of the six
 // signals against time t [s]: (1) Ra and Ra with the machine-tool dynamics, with Ra_d dashed; (2) the
 // cutting force F and F with its dynamic component, with the reference F_d dashed; (3) the feed f_a;

@@ -7,7 +7,7 @@
 //   "pareto_set": [{"q", "tol", "mrr_cm3_s", "surf", "ros"}...]} plus "j", "coarse_j", "points",
 //   "requirement" ({"key","lo","hi","satisfied"}, with --require) and "ascent" (with --auto-weights).
 // eta: time-domain simulation of q (expert.simulated revolutions of the refinement settings).
-// Added (issue 5, modules VI and VII):
+// With the operator rules and weight pipeline (Pareto paper, modules VI and VII):
 //   "rules" (when the project has "operator_rules"): Rule 18, pareto_rules.h. Order of the weights:
 //     --w or pareto.weights -> weight.* rules (projection onto the simplex within the bounds)
 //     -> Rule 11 (--require) -> Rule 12 (--auto-weights) -> weight.* rules again (final weights obey

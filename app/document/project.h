@@ -1,5 +1,5 @@
 #pragma once
-// The project document (.mxproj, JSON). Field names are a fixed interface (issue 2, section 2).
+// The project document (.mxproj, JSON). Field names are a fixed interface: scripts outside the repository read them.
 // Values are kept in the file's shop units here; setupFor() converts one tool to the engine's SI.
 #include <QByteArray>
 #include <QJsonObject>

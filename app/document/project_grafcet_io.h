@@ -1,5 +1,5 @@
 #pragma once
-// Grafcet charts in the project's JSON (issue 8; format in docs/grafcet.md):
+// Grafcet charts in the project's JSON (format in docs/grafcet.md):
 //   {"name": "SMC I",
 //    "steps": [{"id": 1, "name": "Initialize Modules", "initial": true, "actions": ["L*"]}, ...],
 //    "transitions": [{"id": 2, "from": [2], "to": [5], "receptivity": "a", "priority": 1}, ...]}

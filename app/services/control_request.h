@@ -1,5 +1,5 @@
 #pragma once
-// The project's "control" section (issue 6: adaptive force control under beta-FROH, 2006 paper,
+// The project's "control" section (adaptive force control under beta-FROH, 2006 paper,
 // section 4) in engine form: shop units in the section (document/process_sections.h, ranges checked
 // when the project is loaded), SI in the engine, defaults applied here (docs/project-file.md).
 // Requests the project cannot serve throw ProjectError (exit 2) naming the field.

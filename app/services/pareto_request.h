@@ -1,5 +1,5 @@
 #pragma once
-// The project's "pareto" section (issue 5) in engine form. The section is typed in
+// The project's "pareto" section in engine form. The section is typed in
 // document/process_sections.h and range-checked when the project is loaded (ProjectError, exit 2,
 // naming the field, the value and the allowed range):
 //   "pareto": {

@@ -1,5 +1,5 @@
 #pragma once
-// Part-program overrides (issue 7) from the project, shared by `millexpert-cli override` and the GUI's
+// Part-program overrides from the project, shared by `millexpert-cli override` and the GUI's
 // part-program panel. Sections (typed in document/process_sections.h, checked when the project is
 // loaded; shop units; every key optional unless noted):
 //   "part_program": {

@@ -1,5 +1,5 @@
 #pragma once
-// The project's "sdnrp" section (issue 7: Cus & Zuperl's surface-roughness control loop) in engine
+// The project's "sdnrp" section (Cus & Zuperl's surface-roughness control loop) in engine
 // form; shop units in the file. Every key is optional:
 //   "sdnrp": {
 //     "ra_um": 0.81,                          desired Ra [um], 0.25..2.5 (default of --ra)

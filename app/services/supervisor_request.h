@@ -1,5 +1,5 @@
 #pragma once
-// The project's "supervisor" section (issue 8: Landers & Ulsoy's supervisory machining control) in
+// The project's "supervisor" section (Landers & Ulsoy's supervisory machining control) in
 // engine form. Shop units in the file (typed in document/process_sections.h, checked when the project
 // is loaded); errors name the field, the value and the range (charts: the JSON path of the element,
 // app/document/project_grafcet_io.h).

@@ -1,5 +1,5 @@
 // GUI benchmark (QtTest QBENCHMARK, not a CTest gate): the cost of one drag step on the lobe chart,
-// from the mouse-move event to updated readouts and marker (issue 3 target: 16 ms or less).
+// from the mouse-move event to updated readouts and marker (target: 16 ms or less).
 // Run: QT_QPA_PLATFORM=offscreen build/release/bench/millexpert-gui-bench
 #include <QApplication>
 #include <QSignalSpy>

@@ -1,5 +1,5 @@
 #pragma once
-// The adaptive beta-FROH force controller (2006 paper, section 4) run along a part program (issue 7):
+// The adaptive beta-FROH force controller (2006 paper, section 4) run along a part program:
 // the cutting feed moves (depth > 0), in program order, form the workpiece of one closed-loop
 // simulation, as the controller meets them when the tool position is the integral of its own feed.
 // Each cutting block then gets the mean feed with which the simulated tool crossed its stretch of

@@ -1,6 +1,6 @@
 #pragma once
 // The data model of a Grafcet (IEC 60848 / SFC) chart, as the supervisory logic controller of
-// Landers & Ulsoy (issue 8) is drawn: numbered steps (one or more initial), each with its actions,
+// Landers & Ulsoy is drawn: numbered steps (one or more initial), each with its actions,
 // and numbered transitions from source steps to target steps, each with a Boolean receptivity over
 // named signals (grafcet_expression.h) and the designer's priority for conflicts. Charts are data
 // (JSON in the project, app/document/project_grafcet_io.h); grafcet_validation.h checks them and

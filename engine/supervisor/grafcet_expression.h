@@ -1,5 +1,5 @@
 #pragma once
-// Receptivities of Grafcet transitions: a small Boolean language over named signals (issue 8).
+// Receptivities of Grafcet transitions: a small Boolean language over named signals.
 //   or-expr    := and-expr { ("or" | "||") and-expr }
 //   and-expr   := not-expr { ("and" | "&&") not-expr }
 //   not-expr   := ("not" | "!") not-expr | comparison

@@ -1,5 +1,5 @@
 #pragma once
-// The Grafcet (IEC 60848 / SFC) interpreter of issue 8: runs a GrafcetChart as the supervisory logic
+// The Grafcet (IEC 60848 / SFC) interpreter: runs a GrafcetChart as the supervisory logic
 // controller of Landers & Ulsoy. At each scan it reads the signals, evolves the chart to its stable
 // situation (firing transitions repeatedly with the same inputs, within an iteration limit), and
 // reports the active steps, the level actions of the stable situation and the impulse actions of

@@ -1,5 +1,5 @@
 #pragma once
-// Checks a Grafcet chart before it runs (issue 8). Each issue names its element (the chart, a step
+// Checks a Grafcet chart before it runs. Each issue names its element (the chart, a step
 // or a transition, by id and by position in the chart) and the field at fault, so the JSON reader
 // (app/document/project_grafcet_io.h) and the chart editor can point at it.
 #include <set>

@@ -1,6 +1,6 @@
 #pragma once
 // The interface between a supervisory logic controller (the Grafcet interpreter, Landers & Ulsoy)
-// and the machining modules it coordinates (issue 8). At each scan the logic reads named signals
+// and the machining modules it coordinates. At each scan the logic reads named signals
 // (Table 2 receptivities such as "a" feed hold requested, "b" contact, ...; numbers allowed for
 // comparisons, booleans as 0/1), evolves to its stable situation, and reports which actions are
 // active: level actions (Table 1 module letters, active while a step that carries them is active)

@@ -1,4 +1,4 @@
-// millexpert-cli control (issue 6): the fixed JSON keys; the paper's four betas keep the feed within
+// millexpert-cli control: the fixed JSON keys; the paper's four betas keep the feed within
 // [0, f_max] and the force bounded; the unstable-zero threshold agrees with the first-order formula
 // of the reading notes; the sweep flags exactly the betas below the threshold and its best beta is
 // the argmin of J_c over the others; --csv has one row per sample; bad input exits 2 naming the field.

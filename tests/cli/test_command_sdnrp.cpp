@@ -1,4 +1,4 @@
-// millexpert-cli sdnrp and override (issue 7): the fixed JSON keys; the SDNRP loop holds F at F_d
+// millexpert-cli sdnrp and override: the fixed JSON keys; the SDNRP loop holds F at F_d
 // (2 %) and Ra at the desired value (10 %) with the disturbance, exactly without it; the override
 // writes a program that differs from the input only in F/S words and comments, with a header, and the
 // CSV table; the adaptive controller is used when the project has a control section; bad input exits 2.

@@ -1,4 +1,4 @@
-// millexpert-cli supervise (issue 8) on projects/landers-face-milling.mxproj, whose charts are rebuilt
+// millexpert-cli supervise on projects/landers-face-milling.mxproj, whose charts are rebuilt
 // from the paper's rules: the fixed JSON keys; the paper's claims (the baseline violates the power limit
 // and chatters; SMC I never chatters and holds power; SMC II detects chatter, re-plans to two 1 mm
 // passes and holds power in steady state; SMC I overshoots less than SMC II); the operator's feed hold

@@ -1,4 +1,4 @@
-// Grafcet charts in the project's JSON (issue 8): round trip, defaults, keys of the editor kept per
+// Grafcet charts in the project's JSON: round trip, defaults, keys of the editor kept per
 // element, structure checked when the project loads, and every error naming its JSON path
 // (structure errors and validation issues, receptivity errors with line and column).
 #include <QJsonArray>

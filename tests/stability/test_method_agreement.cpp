@@ -1,6 +1,6 @@
 // Two independent stability methods agree where both are valid: the zeroth-order approximation
 // (Rubio et al. 2006 eq. 8-10) and first-order semi-discretization, at full immersion with 3 or
-// more teeth, compared at the lobe minima (issue 2: within 5 %).
+// more teeth, compared at the lobe minima (within 5 %).
 #include <algorithm>
 #include <cmath>
 

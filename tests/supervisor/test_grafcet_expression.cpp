@@ -1,4 +1,4 @@
-// Receptivity language of the Grafcet interpreter (issue 8): operators and precedence, the paper's
+// Receptivity language of the Grafcet interpreter: operators and precedence, the paper's
 // postfix complement a', comparisons on numeric signals, parse errors with line and column, the list
 // of signals read, and the indexed fast path agreeing with evaluation by name.
 #include "supervisor/grafcet_expression.h"

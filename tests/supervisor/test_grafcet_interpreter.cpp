@@ -1,4 +1,4 @@
-// Grafcet interpreter (issue 8): the IEC 60848 evolution rules as documented in docs/grafcet.md
+// Grafcet interpreter: the IEC 60848 evolution rules as documented in docs/grafcet.md
 // (priority order in conflicts, simultaneous firing of independent transitions, simultaneous
 // clearing and activation, search for the stable situation with an iteration limit, level actions of
 // the stable situation, impulse actions once per activation), the fast path agreeing with the

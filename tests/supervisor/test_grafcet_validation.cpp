@@ -1,4 +1,4 @@
-// Grafcet chart validation (issue 8): every error names its element (chart, step or transition, by
+// Grafcet chart validation: every error names its element (chart, step or transition, by
 // id and position) and field, and the message says what is wrong.
 #include "supervisor/grafcet_validation.h"
 #include "test_registry.h"
