@@ -1,6 +1,6 @@
 #pragma once
 // The one place that decides which feature of the main window recomputes after a project change.
-// Each feature lists the sections its inputs come from (the request builders in app/cli and
+// Each feature lists the sections its inputs come from (the request builders in app/services and
 // app/document/lobe_inputs), so that an edit re-runs exactly the views it can affect.
 #include <QFlags>
 
