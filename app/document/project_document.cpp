@@ -13,8 +13,8 @@ namespace mx::app {
 // are computed once; undo and redo emit the same ones.
 class SnapshotCommand : public QUndoCommand {
  public:
-  SnapshotCommand(ProjectDocument* doc, app::Project before, app::Project after, const QString& text,
-                  app::ProjectChanges sections, int gesture_id)
+  SnapshotCommand(ProjectDocument* doc, Project before, Project after, const QString& text,
+                  ProjectChanges sections, int gesture_id)
       : QUndoCommand(text),
         doc_(doc),
         before_(std::move(before)),
@@ -28,7 +28,7 @@ class SnapshotCommand : public QUndoCommand {
     const auto* o = static_cast<const SnapshotCommand*>(other);
     if (o->gesture_ != gesture_) return false;
     after_ = o->after_;
-    sections_ = app::changedSections(before_, after_);
+    sections_ = changedSections(before_, after_);
     setObsolete(!sections_);  // the gesture came back to where it started: no undo step
     return true;
   }
@@ -36,8 +36,8 @@ class SnapshotCommand : public QUndoCommand {
  private:
   static constexpr int kId = 1002;
   ProjectDocument* doc_;
-  app::Project before_, after_;
-  app::ProjectChanges sections_;
+  Project before_, after_;
+  ProjectChanges sections_;
   int gesture_;
 };
 
@@ -71,7 +71,7 @@ ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
   newProject();
 }
 
-void ProjectDocument::setSnapshot(const app::Project& project, app::ProjectChanges sections) {
+void ProjectDocument::setSnapshot(const Project& project, ProjectChanges sections) {
   project_ = project;
   emit changed(sections);
 }
@@ -81,8 +81,8 @@ void ProjectDocument::setPointSilently(const PickedPoint& point) {
   emit pointChanged(point_);
 }
 
-QString ProjectDocument::applyEdit(const app::Project& edited, const QString& description, int gesture_id) {
-  const app::ProjectChanges sections = app::changedSections(project_, edited);
+QString ProjectDocument::applyEdit(const Project& edited, const QString& description, int gesture_id) {
+  const ProjectChanges sections = changedSections(project_, edited);
   if (!sections) return {};
   try {
     validateProject(edited);
@@ -103,20 +103,20 @@ void ProjectDocument::newProject() {
   p.name = tr("Untitled");
   undo_.clear();
   path_.clear();
-  setSnapshot(p, app::kAllSections);
+  setSnapshot(p, kAllSections);
   emit filePathChanged(path_);
 }
 
 void ProjectDocument::load(const QString& path) {
-  Project p = app::loadProject(path);
+  Project p = loadProject(path);
   undo_.clear();
   path_ = path;
-  setSnapshot(p, app::kAllSections);
+  setSnapshot(p, kAllSections);
   emit filePathChanged(path_);
 }
 
 void ProjectDocument::recover(const QString& path) {
-  const Project recovered = app::loadProject(path + ".autosave");
+  const Project recovered = loadProject(path + ".autosave");
   if (QFileInfo::exists(path)) {
     load(path);
   } else {
@@ -126,13 +126,13 @@ void ProjectDocument::recover(const QString& path) {
   }
   // Pushed even when equal to the file, so that the recovery stays one unsaved, undoable step.
   undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave"),
-                                 app::changedSections(project_, recovered), 0));
+                                 changedSections(project_, recovered), 0));
 }
 
 void ProjectDocument::save(const QString& path) {
   const QString target = path.isEmpty() ? path_ : path;
   if (target.isEmpty()) throw ProjectError(tr("no file name to save to"));
-  app::saveProject(project_, target);
+  saveProject(project_, target);
   QFile::remove(autosavePath());
   if (target != path_) {
     path_ = target;
@@ -156,7 +156,7 @@ QString ProjectDocument::autosavePath() const {
 void ProjectDocument::writeAutosave() {
   if (!isDirty()) return;
   try {
-    app::saveProject(project_, autosavePath());
+    saveProject(project_, autosavePath());
   } catch (const ProjectError&) {
     // Autosave is best effort; the next interval retries.
   }

@@ -36,7 +36,7 @@ class ProjectDocument : public QObject {
   // On failure nothing changes and the returned message names the field, value and range.
   // An edit that changes no section pushes nothing. Consecutive edits with the same `gesture_id` > 0
   // (one slider drag, press to release) merge into one undo step.
-  QString applyEdit(const app::Project& edited, const QString& description, int gesture_id = 0);
+  QString applyEdit(const Project& edited, const QString& description, int gesture_id = 0);
   // A fresh gesture id for applyEdit (one per slider press).
   int newGesture() { return ++gestures_; }
   // Undoable move of the operating point (consecutive moves within one drag merge: `drag_id` > 0).
@@ -64,7 +64,7 @@ class ProjectDocument : public QObject {
  private:
   friend class SnapshotCommand;
   friend class PointCommand;
-  void setSnapshot(const app::Project& project, app::ProjectChanges sections);
+  void setSnapshot(const Project& project, ProjectChanges sections);
   void setPointSilently(const PickedPoint& point);
 
   Project project_;
