@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "control/part_program_override.h"
-#include "io/gcode_reader.h"
+#include "machining/part_program_override.h"
+#include "gcode/gcode_reader.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "supervisor/grafcet_interpreter.h"
+#include "grafcet/grafcet_interpreter.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "services/service_errors.h"
 #include "document/project.h"
 

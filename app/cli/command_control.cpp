@@ -20,7 +20,7 @@
 #include "cli/cli_support.h"
 #include "services/control_request.h"
 #include "control/beta_sweep.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx::app {
 

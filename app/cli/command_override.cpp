@@ -17,8 +17,8 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "services/part_program_request.h"
-#include "io/gcode_reader.h"
-#include "model/job_control.h"
+#include "gcode/gcode_reader.h"
+#include "core/invalid_input.h"
 
 namespace mx::app {
 

@@ -9,7 +9,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "services/sdnrp_request.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx::app {
 

@@ -16,8 +16,8 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "services/supervisor_request.h"
-#include "model/job_control.h"
-#include "supervisor/grafcet_interpreter.h"
+#include "core/invalid_input.h"
+#include "grafcet/grafcet_interpreter.h"
 #include "supervisor/marginal_depth.h"
 
 namespace mx::app {

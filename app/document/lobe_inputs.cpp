@@ -1,6 +1,6 @@
 #include "document/lobe_inputs.h"
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx::app {
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "supervisor/grafcet_chart.h"
+#include "grafcet/grafcet_chart.h"
 
 namespace mx::app {
 

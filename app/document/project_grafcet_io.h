@@ -14,8 +14,8 @@
 #include <string>
 
 #include "document/process_sections.h"
-#include "supervisor/grafcet_chart.h"
-#include "supervisor/grafcet_validation.h"
+#include "grafcet/grafcet_chart.h"
+#include "grafcet/grafcet_validation.h"
 
 namespace mx::app {
 

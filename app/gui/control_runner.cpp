@@ -3,7 +3,7 @@
 #include <QFutureWatcher>
 #include <QtConcurrent>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 
 namespace mx::gui {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 
 namespace mx::gui {
 

@@ -12,7 +12,7 @@
 #include "services/part_program_request.h"
 #include "services/sdnrp_request.h"
 #include "engine_task.h"
-#include "io/gcode_reader.h"
+#include "gcode/gcode_reader.h"
 #include "main_window.h"
 #include "part_program_panel.h"
 #include "surface_finish_panel.h"

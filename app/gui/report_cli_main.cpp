@@ -13,7 +13,7 @@
 #include "services/exit_code.h"
 #include "services/expert_request.h"
 #include "services/service_errors.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "document/project.h"
 #include "report_data.h"
 #include "report_writer.h"

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 #include "simulation/milling_simulation.h"
 #include "simulation/smith_tlusty.h"
 #include "spectrum_plot.h"

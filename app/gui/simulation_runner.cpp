@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <exception>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 #include "simulation/time_domain_simulator.h"
 #include "simulation_job.h"
 

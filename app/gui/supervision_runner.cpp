@@ -7,8 +7,8 @@
 #include <QThread>
 #include <QtConcurrent>
 
-#include "model/job_control.h"
-#include "supervisor/grafcet_interpreter.h"
+#include "core/cancellation.h"
+#include "grafcet/grafcet_interpreter.h"
 
 namespace mx::gui {
 

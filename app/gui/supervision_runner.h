@@ -14,7 +14,7 @@
 #include <mutex>
 #include <optional>
 
-#include "supervisor/grafcet_chart.h"
+#include "grafcet/grafcet_chart.h"
 #include "supervisor/supervision_run.h"
 
 namespace mx::gui {

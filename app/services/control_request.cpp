@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "document/project_rules.h"
 #include "document/project_validation.h"
 

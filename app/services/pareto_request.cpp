@@ -3,7 +3,7 @@
 #include <QStringList>
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "services/service_errors.h"
 
 namespace mx::app {

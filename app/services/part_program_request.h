@@ -17,14 +17,14 @@
 //     "max_feed_per_tooth_mm": 0.6    default operation.max_feed_per_tooth_mm
 //   }
 // The adaptive controller uses the project's "control" section (control_request.h) and runs along the
-// program's cutting blocks (engine/control/adaptive_path_feeds.h).
+// program's cutting blocks (engine/machining/adaptive_path_feeds.h).
 #include <QString>
 #include <optional>
 
 #include "services/control_request.h"
 #include "control/model_based_force_controller.h"
-#include "control/part_program_override.h"
-#include "io/gcode_program.h"
+#include "machining/part_program_override.h"
+#include "gcode/gcode_program.h"
 #include "document/project.h"
 
 namespace mx::app {

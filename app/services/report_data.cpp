@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "services/expert_request.h"
 #include "services/service_errors.h"
 #include "simulation/milling_simulation.h"

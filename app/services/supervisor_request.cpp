@@ -2,7 +2,7 @@
 
 #include "document/project_grafcet_io.h"
 #include "document/project_rules.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "services/service_errors.h"
 
 namespace mx::app {

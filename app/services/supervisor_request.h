@@ -21,7 +21,7 @@
 #include <QStringList>
 
 #include "document/project.h"
-#include "supervisor/grafcet_chart.h"
+#include "grafcet/grafcet_chart.h"
 #include "supervisor/supervision_run.h"
 
 namespace mx::app {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "expert/parallel_for.h"
+#include "core/parallel_for.h"
 
 namespace mx {
 

@@ -14,7 +14,8 @@
 #include "control/plant_integrator.h"
 #include "control/pole_placement.h"
 #include "control/rls_estimator.h"
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

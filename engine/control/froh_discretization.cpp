@@ -6,7 +6,7 @@
 #include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

@@ -7,7 +7,7 @@
 
 #include "expert/candidate_speeds.h"
 #include "model/cutting_force.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "expert/parallel_for.h"
-#include "model/job_control.h"
+#include "core/parallel_for.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "expert/tool_cost.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

@@ -1,6 +1,6 @@
 #include "expert/simulation_cache.h"
 
-#include "expert/parallel_for.h"
+#include "core/parallel_for.h"
 #include "simulation/milling_simulation.h"
 
 namespace mx {

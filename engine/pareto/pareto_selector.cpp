@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

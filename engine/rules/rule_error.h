@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

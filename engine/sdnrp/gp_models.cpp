@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

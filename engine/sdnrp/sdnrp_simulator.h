@@ -17,7 +17,8 @@
 #include <limits>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "sdnrp/unmodelled_dynamics.h"
 
 namespace mx {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "model/cutting_force.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "simulation/cvode_integrator.h"
 #include "simulation/time_domain_simulator.h"
 

@@ -2,7 +2,8 @@
 // Time-domain milling simulation with chatter detection (Rubio et al. 2006, section 2; eq. 1-7, 11, 12).
 // The tool starts at rest in a surface cut by a rigid tool (zero pre-history) and runs `revolutions`
 // spindle revolutions; the indicators use the last `evaluated_revolutions`.
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "model/milling_setup.h"
 #include "simulation/simulation_types.h"
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 #include "model/milling_setup.h"
 #include "simulation/chatter_detection.h"
 #include "simulation/simulation_types.h"

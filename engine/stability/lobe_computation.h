@@ -3,7 +3,7 @@
 // (Rubio et al. 2006, eq. 8-10) or first-order semi-discretization, with the delta margin.
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_diagram.h"
 

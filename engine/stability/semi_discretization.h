@@ -11,7 +11,8 @@
 #include <complex>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_diagram.h"
 

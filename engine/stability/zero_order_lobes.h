@@ -3,7 +3,8 @@
 // eq. 8-10), with the Rule 1.1 margin: chatter roots placed at s = -delta + i omega_c.
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_diagram.h"
 

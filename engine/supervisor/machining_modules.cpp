@@ -7,7 +7,7 @@
 #include <numeric>
 #include <sstream>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

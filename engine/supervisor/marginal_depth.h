@@ -7,7 +7,8 @@
 // vanish in a stable cut; chatter makes it grow until teeth leave the cut (a fraction of the feed).
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "supervisor/face_milling_process.h"
 
 namespace mx {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 
 namespace mx {
 

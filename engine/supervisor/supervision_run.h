@@ -10,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "supervisor/face_milling_process.h"
 #include "supervisor/machining_modules.h"
 #include "supervisor/supervisor_logic.h"

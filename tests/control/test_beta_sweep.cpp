@@ -5,7 +5,8 @@
 #include <cmath>
 
 #include "control/beta_sweep.h"
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

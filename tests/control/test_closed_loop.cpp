@@ -4,7 +4,8 @@
 #include <cmath>
 
 #include "control/closed_loop.h"
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

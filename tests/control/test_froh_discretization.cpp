@@ -5,7 +5,7 @@
 
 #include "control/force_plant.h"
 #include "control/froh_discretization.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "simulation/cvode_integrator.h"
 #include "test_registry.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "control/model_based_force_controller.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

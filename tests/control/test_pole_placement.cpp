@@ -5,7 +5,7 @@
 #include "control/force_plant.h"
 #include "control/froh_discretization.h"
 #include "control/pole_placement.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

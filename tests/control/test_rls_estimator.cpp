@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "control/rls_estimator.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

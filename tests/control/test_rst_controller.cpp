@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "control/rst_controller.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

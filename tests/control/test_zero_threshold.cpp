@@ -3,7 +3,7 @@
 
 #include "control/force_plant.h"
 #include "control/zero_threshold.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "test_registry.h"
 
 using namespace mx;

@@ -6,7 +6,7 @@
 
 #include "document/project.h"
 #include "document/project_grafcet_io.h"
-#include "supervisor/grafcet_interpreter.h"
+#include "grafcet/grafcet_interpreter.h"
 #include "test_registry.h"
 
 using namespace mx;

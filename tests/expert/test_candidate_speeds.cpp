@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "expert/candidate_speeds.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "support/fixtures.h"
 #include "test_registry.h"
 

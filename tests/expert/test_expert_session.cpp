@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "expert/expert_session.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "expert_fixtures.h"
 #include "test_registry.h"
 

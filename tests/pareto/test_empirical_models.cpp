@@ -3,7 +3,7 @@
 // n_t = 3), and their ratios between rows are independent of K. Validation names the field.
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "pareto/empirical_models.h"
 #include "test_registry.h"
 

@@ -1,7 +1,7 @@
 // Rule 8 validation and both Rule 13 renormalisations keep the weights on the simplex.
 #include <random>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "pareto/pareto_weights.h"
 #include "test_registry.h"
 

@@ -1,5 +1,5 @@
 // Rule 4: one spindle period, k periods while N and b stay constant.
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "pareto/sampling_time.h"
 #include "test_registry.h"
 

@@ -1,6 +1,6 @@
 // Rule 11 (requirement bounds move the required objective's weight) and Rule 12 (gradient ascent on
 // the weights): the weights stay on the simplex (Rule 13) and the requirement is met when reachable.
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "pareto/objective_table.h"
 #include "pareto/weight_modulation.h"
 #include "pareto_fixtures.h"

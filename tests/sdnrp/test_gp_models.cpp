@@ -1,7 +1,7 @@
 // The GP models K1-K5 of Cus & Zuperl (2008) as printed (reference values computed independently).
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "sdnrp/gp_models.h"
 #include "test_registry.h"
 

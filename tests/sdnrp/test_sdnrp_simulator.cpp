@@ -4,7 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "model/job_control.h"
+#include "core/cancellation.h"
+#include "core/invalid_input.h"
 #include "sdnrp/gp_models.h"
 #include "sdnrp/sdnrp_simulator.h"
 #include "test_registry.h"

@@ -1,7 +1,7 @@
 // The seeded disturbance: reproducible, zero mean, the requested spread, held over its period.
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "sdnrp/unmodelled_dynamics.h"
 #include "test_registry.h"
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "model/cutting_force.h"
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "simulation/simulation.h"
 #include "support/fixtures.h"
 #include "test_registry.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "simulation/amplitude_spectrum.h"
 #include "simulation/frequency_peaks.h"
 #include "test_registry.h"

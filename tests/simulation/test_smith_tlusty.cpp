@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "simulation/smith_tlusty.h"
 #include "test_registry.h"
 

@@ -1,7 +1,7 @@
 // Lobe-geometry queries on a synthetic envelope whose answers are known by hand.
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "stability/stability_boundary.h"
 #include "test_registry.h"
 

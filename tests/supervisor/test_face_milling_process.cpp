@@ -3,7 +3,7 @@
 // convergence in the step size, and input validation.
 #include <cmath>
 
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "supervisor/face_milling_process.h"
 #include "test_registry.h"
 

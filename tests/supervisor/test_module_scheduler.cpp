@@ -1,6 +1,6 @@
 // Multi-rate scheduler: each active module runs at its own period on the simulated time axis, level
 // actions switch modules on and off, impulse "X*" resets module X once.
-#include "model/job_control.h"
+#include "core/invalid_input.h"
 #include "supervisor/module_scheduler.h"
 #include "test_registry.h"
 
