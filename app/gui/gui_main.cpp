@@ -10,6 +10,7 @@
 #include <clocale>
 
 #include "main_window.h"
+#include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include <QComboBox>
 
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   window.setQuiet(!screenshot.isEmpty());
   if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
+  auto* supervisor = window.findChild<mx::gui::SupervisorFeature*>("supervisorFeature");
   if (parser.isSet("point")) {
     const QStringList parts = parser.value("point").split(',');
     bool ok_n = false, ok_b = false, ok_f = true;
@@ -98,7 +100,7 @@ int main(int argc, char** argv) {
         QApplication::quit();
       });
     };
-    if (supervise) QObject::connect(&window, &mx::gui::MainWindow::supervisionFinished, &window, shoot);
+    if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
     QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
       if (supervise) return;                    // the supervised run decides
       if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
@@ -112,10 +114,11 @@ int main(int argc, char** argv) {
   if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
   if (parser.isSet("sdnrp")) window.runSurfaceFinish();
   if (parser.isSet("supervise")) {
-    window.supervisorView()->setController(parser.value("supervise"));
-    emit window.supervisorView()->controllerChanged(parser.value("supervise"));
-    window.supervisorView()->speedCombo()->setCurrentIndex(window.supervisorView()->speedCombo()->count() - 1);
-    window.startSupervision();
+    mx::widgets::SupervisorView* view = supervisor->view();
+    view->setController(parser.value("supervise"));
+    emit view->controllerChanged(parser.value("supervise"));
+    view->speedCombo()->setCurrentIndex(view->speedCombo()->count() - 1);
+    supervisor->start();
   }
   if (parser.isSet("program")) window.openPartProgram(parser.value("program"));
   return app.exec();

@@ -16,6 +16,7 @@
 #include "services/control_request.h"
 #include "control/closed_loop.h"
 #include "control_beta_slider.h"
+#include "control_feature.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
 #include "main_window.h"
@@ -37,6 +38,8 @@ bool open(gui::MainWindow& w, const char* project) {
   w.show();
   return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
 }
+
+gui::ControlFeature* control(const gui::MainWindow& w) { return w.findChild<gui::ControlFeature*>("controlFeature"); }
 }  // namespace
 
 class TestControlGui : public QObject {
@@ -49,11 +52,11 @@ class TestControlGui : public QObject {
 
   void closedLoopReachesTheView() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
-    QSignalSpy swept(&window, &gui::MainWindow::controlSweepShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
+    QSignalSpy swept(control(window), &gui::ControlFeature::controlSweepShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
-    widgets::ControlView* view = window.controlView();
+    widgets::ControlView* view = control(window)->view();
     QVERIFY(view->isEnabled());
     QCOMPARE(view->beta(), -0.3);
     // An independent engine run of the same project section gives the same samples.
@@ -84,10 +87,10 @@ class TestControlGui : public QObject {
     // C1's teeth 4 -> 2 in the tool table: the control view runs again and shows what the CLI
     // computes on the saved project, not the 4-tooth result.
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
-    widgets::ControlMetricsPanel* metrics = window.controlView()->metricsPanel();
+    widgets::ControlMetricsPanel* metrics = control(window)->view()->metricsPanel();
     const QString four_teeth_jc = metrics->valueText("jc");
 
     widgets::ToolTableModel* tools = window.toolEditor()->toolModel();
@@ -103,7 +106,7 @@ class TestControlGui : public QObject {
     const QString saved = dir.filePath("two-teeth.mxproj");
     window.document()->save(saved);
     const mx::test::CliRun cli =
-        mx::test::runCli({"control", saved, "--beta", QString::number(window.controlView()->beta(), 'g', 17)});
+        mx::test::runCli({"control", saved, "--beta", QString::number(control(window)->view()->beta(), 'g', 17)});
     QCOMPARE(cli.code, 0);
     const QString cli_jc = widgets::MonitoringPanel::formatNumber(cli.json.value("Jc").toDouble());
     QCOMPARE(metrics->valueText("jc"), cli_jc);
@@ -112,12 +115,12 @@ class TestControlGui : public QObject {
 
   void betaSliderDragIsOneUndoStep() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
     QUndoStack* undo = window.document()->undoStack();
     const int steps = undo->count();
-    QSlider* slider = window.controlView()->betaSlider();
+    QSlider* slider = control(window)->view()->betaSlider();
     slider->setSliderDown(true);
     for (int ticks : {-20, 0, 20, 40}) {
       slider->setValue(ticks);
@@ -130,7 +133,7 @@ class TestControlGui : public QObject {
     QCOMPARE(undo->count(), steps + 1);
     undo->undo();
     QCOMPARE(*window.project()->control->beta, -0.3);  // the value before the drag
-    QCOMPARE(window.controlView()->beta(), -0.3);
+    QCOMPARE(control(window)->view()->beta(), -0.3);
   }
 
   void surfaceFinishRunsTheLoop() {

@@ -14,6 +14,7 @@
 #include "ranking_table.h"
 #include "simulation_runner.h"
 #include "supervisor_comparison.h"
+#include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "support/cli_runner.h"
 #include "test_registry.h"
@@ -179,11 +180,12 @@ class TestToolEditGui : public QObject {
 
   void supervisorComparisonReRuns() {
     gui::MainWindow window;
-    QSignalSpy compared(&window, &gui::MainWindow::comparisonResult);
+    auto* supervisor = window.findChild<gui::SupervisorFeature*>("supervisorFeature");
+    QSignalSpy compared(supervisor, &gui::SupervisorFeature::comparisonResult);
     QVERIFY(open(window, "landers-face-milling.mxproj"));
-    window.compareSupervision();
+    supervisor->compare();
     QVERIFY(waitFor(compared, [&] { return compared.count() >= 3; }));
-    widgets::SupervisorComparison* table = window.supervisorView()->comparison();
+    widgets::SupervisorComparison* table = supervisor->view()->comparison();
     const QString four_power = table->metricText("none", "max_power_pct_of_limit");
     const QString four_cycle = table->metricText("none", "cycle_time_s");
 
