@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <clocale>
 
+#include "machining_feature.h"
 #include "main_window.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
   auto* supervisor = window.findChild<mx::gui::SupervisorFeature*>("supervisorFeature");
+  auto* machining = window.findChild<mx::gui::MachiningFeature*>("machiningFeature");
   if (parser.isSet("point")) {
     const QStringList parts = parser.value("point").split(',');
     bool ok_n = false, ok_b = false, ok_f = true;
@@ -112,7 +114,7 @@ int main(int argc, char** argv) {
     QTimer::singleShot(60000, &app, [] { QApplication::exit(1); });
   }
   if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
-  if (parser.isSet("sdnrp")) window.runSurfaceFinish();
+  if (parser.isSet("sdnrp")) machining->runSurfaceFinish();
   if (parser.isSet("supervise")) {
     mx::widgets::SupervisorView* view = supervisor->view();
     view->setController(parser.value("supervise"));
@@ -120,6 +122,6 @@ int main(int argc, char** argv) {
     view->speedCombo()->setCurrentIndex(view->speedCombo()->count() - 1);
     supervisor->start();
   }
-  if (parser.isSet("program")) window.openPartProgram(parser.value("program"));
+  if (parser.isSet("program")) machining->openPartProgram(parser.value("program"));
   return app.exec();
 }

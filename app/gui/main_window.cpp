@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "control_feature.h"
+#include "machining_feature.h"
 #include "supervisor_feature.h"
 #include "expert_runner.h"
 #include "pareto_runner.h"
@@ -46,7 +47,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildExpertDocks();
   buildParetoDocks();
   addFeature(new ControlFeature(this, doc_, engine_->pool()));
-  buildMachiningDocks();
+  addFeature(new MachiningFeature(this, doc_, engine_->pool()));
   addFeature(new SupervisorFeature(this, doc_, engine_->pool()));
   buildActions();
 
@@ -151,7 +152,6 @@ void MainWindow::onProjectChanged(app::ProjectChanges changes) {
   }
   if (f & Feature::FiredRules) updateFiredRules();
   for (WindowFeature* feature : features_) feature->projectChanged(p, f);
-  refreshMachining(f);
   if (f & Feature::Simulation) startSimulation();
   // Lobes and the expert session wait for the edits to pause (one recomputation per burst).
   pending_engine_ |= f & (Feature::Lobes | Feature::ExpertSession);

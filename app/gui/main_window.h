@@ -1,8 +1,9 @@
 #pragma once
 // MillExpert main window: the project document with undo/redo and autosave, the interactive lobe
-// chart (central), docks for the tool library, machine and operation, the operating-point readouts
-// and the live simulation, and the engine thread behind them. Later issues add docks (weights and
-// ranking, control, supervisor) next to these.
+// chart (central), docks for the tool library, machine and operation, the operating-point readouts,
+// the live simulation, the expert ranking and the Pareto study, and the engine thread behind them.
+// Force control, machining and the supervisor are features it hosts (window_feature.h): it hands them
+// each project change and applies the edits they request.
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -16,7 +17,6 @@
 #include <vector>
 
 #include "display_units.h"
-#include "services/part_program_request.h"
 #include "services/pareto_study.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
@@ -33,8 +33,6 @@ class OperatorRulesEditor;
 class ParetoFrontView;
 class ParetoWeightsPanel;
 class RequirementsPanel;
-class SurfaceFinishPanel;
-class PartProgramPanel;
 struct ParetoPointView;
 class RankingTable;
 class WeightsPanel;
@@ -48,7 +46,6 @@ namespace mx::gui {
 class SimulationRunner;
 class ExpertRunner;
 class ParetoRunner;
-class ControlFeature;
 class WindowFeature;
 struct RefinementOutcome;
 struct SimulationSummary;
@@ -92,12 +89,6 @@ class MainWindow : public QMainWindow {
   QString learningDatabasePath() const;            // default: LearningDatabase::defaultPath()
   void setLearningDatabasePath(const QString& path);
   void recordOperatingPoint();                     // Rule 14, source operator or automatic
-  widgets::SurfaceFinishPanel* surfaceFinishPanel() const { return surface_panel_; }
-  widgets::PartProgramPanel* partProgramPanel() const { return program_panel_; }
-  void runSurfaceFinish();                           // SDNRP with the panel's Ra, disturbance, duration
-  void openPartProgram(const QString& path);         // override with the project's controller (engine thread)
-  bool exportPartProgram(const QString& path);       // the optimised program (atomic)
-  bool exportPartProgramCsv(const QString& path);    // the per-block feed-override table (atomic)
   void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
@@ -113,8 +104,6 @@ class MainWindow : public QMainWindow {
   void simulationFinished();
   void paretoShown();   // the Pareto choice was recomputed (study ready, weights or requirement changed)
   void historyShown();  // the history view was refreshed from the database
-  void surfaceFinishShown(); // an SDNRP run arrived
-  void partProgramShown();   // an override of the opened program arrived
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -159,9 +148,6 @@ class MainWindow : public QMainWindow {
   void onRulesEdited(const QStringList& rules);
   void updateFiredRules();
   void updateMonitoring(const SimulationSummary* summary = nullptr);
-  // main_window_machining.cpp
-  void buildMachiningDocks();
-  void refreshMachining(Features features);
   // main_window.cpp
   void addFeature(WindowFeature* feature);
   void applyFeatureEdit(const WindowFeature* feature, const app::Project& edited, const QString& description,
@@ -206,11 +192,6 @@ class MainWindow : public QMainWindow {
   // The last feature gesture (one slider drag) and the document gesture its edits merge into.
   std::pair<const WindowFeature*, int> feature_gesture_{nullptr, 0};
   int document_gesture_ = 0;
-  widgets::SurfaceFinishPanel* surface_panel_ = nullptr;
-  widgets::PartProgramPanel* program_panel_ = nullptr;
-  quint64 sdnrp_generation_ = 0, override_generation_ = 0;
-  std::shared_ptr<const app::OverrideOutcome> override_;
-  QString override_path_;
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;

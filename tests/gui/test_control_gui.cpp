@@ -19,6 +19,7 @@
 #include "control_feature.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
+#include "machining_feature.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "part_program_panel.h"
@@ -40,6 +41,9 @@ bool open(gui::MainWindow& w, const char* project) {
 }
 
 gui::ControlFeature* control(const gui::MainWindow& w) { return w.findChild<gui::ControlFeature*>("controlFeature"); }
+gui::MachiningFeature* machining(const gui::MainWindow& w) {
+  return w.findChild<gui::MachiningFeature*>("machiningFeature");
+}
 }  // namespace
 
 class TestControlGui : public QObject {
@@ -139,10 +143,10 @@ class TestControlGui : public QObject {
   void surfaceFinishRunsTheLoop() {
     gui::MainWindow window;
     QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
-    widgets::SurfaceFinishPanel* panel = window.surfaceFinishPanel();
+    widgets::SurfaceFinishPanel* panel = machining(window)->surfacePanel();
     QCOMPARE(panel->desiredRaUm(), 0.81);  // sdnrp.ra_um of the project
-    QSignalSpy shown(&window, &gui::MainWindow::surfaceFinishShown);
-    window.runSurfaceFinish();
+    QSignalSpy shown(machining(window), &gui::MachiningFeature::surfaceFinishShown);
+    machining(window)->runSurfaceFinish();
     QVERIFY(shown.wait(30000));
     QCOMPARE(panel->sampleCount(), 1501);  // 15 s every 10 ms, t = 0 included
     QVERIFY(!panel->summaryText("f_final_n").isEmpty());
@@ -151,19 +155,19 @@ class TestControlGui : public QObject {
   void partProgramOverrideAndExport() {
     gui::MainWindow window;
     QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
-    QSignalSpy shown(&window, &gui::MainWindow::partProgramShown);
+    QSignalSpy shown(machining(window), &gui::MachiningFeature::partProgramShown);
     const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
-    window.openPartProgram(program);
+    machining(window)->openPartProgram(program);
     QVERIFY(shown.wait(30000));
-    widgets::PartProgramPanel* panel = window.partProgramPanel();
+    widgets::PartProgramPanel* panel = machining(window)->programPanel();
     QVERIFY(panel->changedCount() >= 1);
     QFile in(program);
     QVERIFY(in.open(QIODevice::ReadOnly));
     const QList<QByteArray> input = in.readAll().split('\n');
     QCOMPARE(panel->rows().size(), input.size() - (input.last().isEmpty() ? 1 : 0));
     QTemporaryDir dir;
-    QVERIFY(window.exportPartProgram(dir.filePath("out.nc")));
-    QVERIFY(window.exportPartProgramCsv(dir.filePath("out.csv")));
+    QVERIFY(machining(window)->exportPartProgram(dir.filePath("out.nc")));
+    QVERIFY(machining(window)->exportPartProgramCsv(dir.filePath("out.csv")));
     QFile out(dir.filePath("out.nc"));
     QVERIFY(out.open(QIODevice::ReadOnly));
     const QByteArray text = out.readAll();

@@ -5,6 +5,7 @@
 #include <QUndoStack>
 
 #include "control_feature.h"
+#include "machining_feature.h"
 #include "main_window.h"
 #include "supervisor_feature.h"
 #include "test_registry.h"
@@ -30,8 +31,9 @@ class TestWindowFeatures : public QObject {
   void featuresAreFoundByName() {
     gui::MainWindow window;
     QVERIFY(window.findChild<gui::ControlFeature*>("controlFeature"));
+    QVERIFY(window.findChild<gui::MachiningFeature*>("machiningFeature"));
     QVERIFY(window.findChild<gui::SupervisorFeature*>("supervisorFeature"));
-    QCOMPARE(window.findChildren<gui::WindowFeature*>().size(), 2);
+    QCOMPARE(window.findChildren<gui::WindowFeature*>().size(), 3);
   }
 
   void featureEditsAreUndoSteps() {

@@ -1,20 +1,16 @@
-// MainWindow: surface-finish control and part-program overrides (issue 7). The SDNRP loop (Cus &
-// Zuperl) and the override of a G-code program by a force controller run on the engine thread; the
-// panels only show their results. Exports are atomic (QSaveFile).
+#include "machining_feature.h"
+
 #include <QDateTime>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QSaveFile>
-#include <QStatusBar>
 #include <cmath>
 
-#include "services/part_program_request.h"
-#include "services/sdnrp_request.h"
 #include "engine_task.h"
 #include "io/gcode_reader.h"
-#include "main_window.h"
 #include "part_program_panel.h"
+#include "services/sdnrp_request.h"
 #include "surface_finish_panel.h"
 
 namespace mx::gui {
@@ -65,47 +61,59 @@ bool writeAtomically(const QString& path, const QByteArray& bytes, QString* erro
 
 }  // namespace
 
-void MainWindow::buildMachiningDocks() {
-  surface_panel_ = new widgets::SurfaceFinishPanel;
-  program_panel_ = new widgets::PartProgramPanel;
-  auto* surface = new QDockWidget(tr("Surface finish (SDNRP)"), this);
+MachiningFeature::MachiningFeature(QMainWindow* window, const app::ProjectDocument& document,
+                                   QThreadPool* engine_pool)
+    : WindowFeature(window),
+      window_(window),
+      document_(document),
+      pool_(engine_pool),
+      surface_panel_(new widgets::SurfaceFinishPanel),
+      program_panel_(new widgets::PartProgramPanel) {
+  setObjectName("machiningFeature");
+  addDocks();
+  connectPanels();
+}
+
+void MachiningFeature::addDocks() {
+  auto* surface = new QDockWidget(tr("Surface finish (SDNRP)"), window_);
   surface->setObjectName("surfaceFinishDock");
   surface->setWidget(surface_panel_);
-  auto* program = new QDockWidget(tr("Part program"), this);
+  auto* program = new QDockWidget(tr("Part program"), window_);
   program->setObjectName("partProgramDock");
   program->setWidget(program_panel_);
-  addDockWidget(Qt::BottomDockWidgetArea, surface);
-  addDockWidget(Qt::BottomDockWidgetArea, program);
-  if (auto* control = findChild<QDockWidget*>("controlDock")) {
-    tabifyDockWidget(control, surface);
-    tabifyDockWidget(surface, program);
+  window_->addDockWidget(Qt::BottomDockWidgetArea, surface);
+  window_->addDockWidget(Qt::BottomDockWidgetArea, program);
+  if (auto* control = window_->findChild<QDockWidget*>("controlDock")) {
+    window_->tabifyDockWidget(control, surface);
+    window_->tabifyDockWidget(surface, program);
   }
-  if (auto* simulation = findChild<QDockWidget*>("simulationDock")) simulation->raise();
-  connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MainWindow::runSurfaceFinish);
+  if (auto* simulation = window_->findChild<QDockWidget*>("simulationDock")) simulation->raise();
+}
+
+void MachiningFeature::connectPanels() {
+  connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MachiningFeature::runSurfaceFinish);
   connect(program_panel_, &widgets::PartProgramPanel::openRequested, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open part program"), QString(),
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Open part program"), QString(),
                                                       tr("G-code (*.nc *.ngc *.tap *.gcode);;All files (*)"));
     if (!path.isEmpty()) openPartProgram(path);
   });
   connect(program_panel_, &widgets::PartProgramPanel::exportProgramRequested, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export optimised program"), QString(),
+    const QString path = QFileDialog::getSaveFileName(window_, tr("Export optimised program"), QString(),
                                                       tr("G-code (*.nc);;All files (*)"));
     if (!path.isEmpty()) exportPartProgram(path);
   });
   connect(program_panel_, &widgets::PartProgramPanel::exportCsvRequested, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export feed overrides"), QString(), tr("CSV (*.csv)"));
+    const QString path =
+        QFileDialog::getSaveFileName(window_, tr("Export feed overrides"), QString(), tr("CSV (*.csv)"));
     if (!path.isEmpty()) exportPartProgramCsv(path);
   });
 }
 
-// The project changed: the panel takes sdnrp.ra_um, disturbance and duration; an open program is
-// overridden again when the inputs of its controllers changed.
-void MainWindow::refreshMachining(Features features) {
-  const app::Project& p = doc_.project();
-  if ((features & Feature::PartProgram) && !override_path_.isEmpty()) openPartProgram(override_path_);
-  if (!(features & Feature::SurfaceFinish)) return;
+void MachiningFeature::projectChanged(const app::Project& project, Features recompute) {
+  if ((recompute & Feature::PartProgram) && !override_path_.isEmpty()) openPartProgram(override_path_);
+  if (!(recompute & Feature::SurfaceFinish)) return;
   try {
-    const SdnrpSettings s = app::sdnrpSettingsFromProject(p);
+    const SdnrpSettings s = app::sdnrpSettingsFromProject(project);
     surface_panel_->setDesiredRaUm(s.ra_desired_m * 1e6);
     surface_panel_->setDisturbanceOn(s.disturbance.enabled);
     surface_panel_->setDurationS(s.duration_s);
@@ -114,12 +122,12 @@ void MainWindow::refreshMachining(Features features) {
   }
 }
 
-void MainWindow::runSurfaceFinish() {
+void MachiningFeature::runSurfaceFinish() {
   SdnrpSettings s;
   try {
-    s = app::sdnrpSettingsFromProject(doc_.project());
+    s = app::sdnrpSettingsFromProject(document_.project());
   } catch (const std::exception& e) {
-    showError(tr("Surface finish"), e.what());
+    emit errorRaised(tr("Surface finish"), e.what());
     return;
   }
   s.ra_desired_m = surface_panel_->desiredRaUm() * 1e-6;
@@ -127,12 +135,12 @@ void MainWindow::runSurfaceFinish() {
   s.duration_s = surface_panel_->durationS();
   const quint64 generation = ++sdnrp_generation_;
   surface_panel_->setBusy(true);
-  runEngineTask<SdnrpResult>(engine_->pool(), this, [s] { return SdnrpSimulator(s).run(); },
+  runEngineTask<SdnrpResult>(pool_, this, [s] { return SdnrpSimulator(s).run(); },
                              [this, generation](TaskResult<SdnrpResult> r) {
                                if (generation != sdnrp_generation_) return;
                                surface_panel_->setBusy(false);
                                if (!r.value) {
-                                 showError(tr("Surface finish"), r.error);
+                                 emit errorRaised(tr("Surface finish"), r.error);
                                  return;
                                }
                                surface_panel_->clear();
@@ -149,70 +157,75 @@ void MainWindow::runSurfaceFinish() {
                              });
 }
 
-void MainWindow::openPartProgram(const QString& path) {
+void MachiningFeature::openPartProgram(const QString& path) {
   app::OverrideRequest request;
   GcodeProgram program;
   try {
-    request = app::overrideRequestFromProject(doc_.project());
+    request = app::overrideRequestFromProject(document_.project());
     program = GcodeReader::readFile(path.toStdString());
   } catch (const std::exception& e) {
-    showError(tr("Part program"), e.what());
+    emit errorRaised(tr("Part program"), e.what());
     return;
   }
   const quint64 generation = ++override_generation_;
   program_panel_->setStatus(tr("Running the %1 controller along %2...").arg(request.controllerName(), path));
   runEngineTask<app::OverrideOutcome>(
-      engine_->pool(), this, [request, program] { return app::runOverride(request, program); },
+      pool_, this, [request, program] { return app::runOverride(request, program); },
       [this, generation, path](TaskResult<app::OverrideOutcome> r) {
         if (generation != override_generation_) return;
         if (!r.value) {
           program_panel_->setStatus(tr("Override failed: %1").arg(r.error));
-          showError(tr("Part program"), r.error);
+          emit errorRaised(tr("Part program"), r.error);
           return;
         }
-        override_ = std::make_shared<app::OverrideOutcome>(std::move(*r.value));
-        override_path_ = path;
-        QVector<widgets::PartProgramWarningView> warnings;
-        for (const GcodeWarning& w : override_->result.warnings)
-          warnings.append({w.line, static_cast<int>(w.column), QString::fromStdString(w.text),
-                           QString::fromStdString(w.message)});
-        const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
-        program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
-                                   override_->controller);
-        double peak = 0.0;
-        for (const FeedOverrideRow& f : override_->result.rows)
-          if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
-        program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4 N")
-                                      .arg(override_->result.program.blocks.size())
-                                      .arg(override_->result.changed_blocks)
-                                      .arg(override_->result.warnings.size())
-                                      .arg(peak, 0, 'f', 1));
-        emit partProgramShown();
+        showOverride(path, std::move(*r.value));
       });
 }
 
-bool MainWindow::exportPartProgram(const QString& path) {
+void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome outcome) {
+  override_ = std::make_shared<app::OverrideOutcome>(std::move(outcome));
+  override_path_ = path;
+  QVector<widgets::PartProgramWarningView> warnings;
+  for (const GcodeWarning& w : override_->result.warnings)
+    warnings.append({w.line, static_cast<int>(w.column), QString::fromStdString(w.text),
+                     QString::fromStdString(w.message)});
+  const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
+  program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
+                             override_->controller);
+  double peak = 0.0;
+  for (const FeedOverrideRow& f : override_->result.rows)
+    if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
+  program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4 N")
+                                .arg(override_->result.program.blocks.size())
+                                .arg(override_->result.changed_blocks)
+                                .arg(override_->result.warnings.size())
+                                .arg(peak, 0, 'f', 1));
+  emit partProgramShown();
+}
+
+bool MachiningFeature::exportPartProgram(const QString& path) {
   if (!override_) return false;
-  const GcodeHeader header{QFileInfo(doc_.filePath()).fileName().toStdString(), override_->controller.toStdString(),
+  const GcodeHeader header{QFileInfo(document_.filePath()).fileName().toStdString(),
+                           override_->controller.toStdString(),
                            QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString()};
   const std::string text = override_->result.writeProgram(header);
   QString error;
   if (!writeAtomically(path, QByteArray::fromStdString(text), &error)) {
-    showError(tr("Export program"), tr("%1: %2").arg(path, error));
+    emit errorRaised(tr("Export program"), tr("%1: %2").arg(path, error));
     return false;
   }
-  statusBar()->showMessage(tr("Optimised program written to %1").arg(path), 8000);
+  emit statusMessage(tr("Optimised program written to %1").arg(path), 8000);
   return true;
 }
 
-bool MainWindow::exportPartProgramCsv(const QString& path) {
+bool MachiningFeature::exportPartProgramCsv(const QString& path) {
   if (!override_) return false;
   QString error;
   if (!writeAtomically(path, QByteArray::fromStdString(override_->result.csv()), &error)) {
-    showError(tr("Export CSV"), tr("%1: %2").arg(path, error));
+    emit errorRaised(tr("Export CSV"), tr("%1: %2").arg(path, error));
     return false;
   }
-  statusBar()->showMessage(tr("Feed-override table written to %1").arg(path), 8000);
+  emit statusMessage(tr("Feed-override table written to %1").arg(path), 8000);
   return true;
 }
 
