@@ -139,22 +139,24 @@ void MachiningFeature::runSurfaceFinish() {
                              [this, generation](TaskResult<SdnrpResult> r) {
                                if (generation != sdnrp_generation_) return;
                                surface_panel_->setBusy(false);
-                               if (!r.value) {
+                               if (r.value)
+                                 showSurfaceFinish(*r.value);
+                               else
                                  emit errorRaised(tr("Surface finish"), r.error);
-                                 return;
-                               }
-                               surface_panel_->clear();
-                               QVector<widgets::SurfaceFinishSample> samples;
-                               for (const SdnrpSample& x : r.value->samples)
-                                 samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N,
-                                                 x.feed_m_per_s * 60e3, x.speed_rev_per_s * 60.0});
-                               surface_panel_->appendSamples(samples);
-                               const SdnrpResult& v = *r.value;
-                               surface_panel_->setSummary({v.ra_desired_m * 1e6, v.fd_N, v.f_final_N,
-                                                           v.feed_final_m_per_s * 60e3, v.speed_final_rev_per_s * 60.0,
-                                                           v.ra_produced_m * 1e6, v.feed_saturated});
-                               emit surfaceFinishShown();
                              });
+}
+
+// Shop units on the panel: Ra in um, feed in mm/min, speed in rpm.
+void MachiningFeature::showSurfaceFinish(const SdnrpResult& v) {
+  surface_panel_->clear();
+  QVector<widgets::SurfaceFinishSample> samples;
+  for (const SdnrpSample& x : v.samples)
+    samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N, x.feed_m_per_s * 60e3,
+                    x.speed_rev_per_s * 60.0});
+  surface_panel_->appendSamples(samples);
+  surface_panel_->setSummary({v.ra_desired_m * 1e6, v.fd_N, v.f_final_N, v.feed_final_m_per_s * 60e3,
+                              v.speed_final_rev_per_s * 60.0, v.ra_produced_m * 1e6, v.feed_saturated});
+  emit surfaceFinishShown();
 }
 
 void MachiningFeature::openPartProgram(const QString& path) {

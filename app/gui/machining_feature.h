@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "document/project_document.h"
+#include "sdnrp/sdnrp_simulator.h"
 #include "services/part_program_request.h"
 #include "window_feature.h"
 
@@ -40,6 +41,7 @@ class MachiningFeature : public WindowFeature {
  private:
   void addDocks();
   void connectPanels();
+  void showSurfaceFinish(const SdnrpResult& result);
   void showOverride(const QString& path, app::OverrideOutcome outcome);
 
   QMainWindow* window_;

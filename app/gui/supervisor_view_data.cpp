@@ -35,8 +35,8 @@ GrafcetChart engineChart(const widgets::GrafcetChartData& d) {
   return c;
 }
 
-widgets::SupervisionSeries supervisionSeriesOf(const std::vector<SupervisionSample>& samples, const SupervisionScenario& s,
-                                    double reference_n) {
+widgets::SupervisionSeries supervisionSeriesOf(const std::vector<SupervisionSample>& samples,
+                                               const SupervisionScenario& s, double reference_n) {
   widgets::SupervisionSeries out;
   for (const SupervisionSample& x : samples) {
     out.t_s << x.t_s;

@@ -13,8 +13,8 @@ namespace mx::gui {
 
 widgets::GrafcetChartData chartData(const GrafcetChart& c);
 GrafcetChart engineChart(const widgets::GrafcetChartData& d);
-widgets::SupervisionSeries supervisionSeriesOf(const std::vector<SupervisionSample>& samples, const SupervisionScenario& s,
-                                    double reference_n);
+widgets::SupervisionSeries supervisionSeriesOf(const std::vector<SupervisionSample>& samples,
+                                               const SupervisionScenario& s, double reference_n);
 widgets::SupervisionMetricsView supervisionMetricsOf(const QString& controller, const SupervisionMetrics& m);
 // Module activity records (the active letters whenever the set changes) as spans per letter.
 QVector<widgets::ModuleSpan> moduleSpans(const std::vector<ModuleActivityRecord>& records, double end_s);

@@ -17,7 +17,7 @@ class WindowFeature : public QObject {
   using QObject::QObject;
 
   // The project changed (edit, undo, redo, load); `recompute` names what its sections invalidate
-  // (featuresToRecompute), the empty set on construction.
+  // (featuresToRecompute), and a feature ignores what is not its own.
   virtual void projectChanged(const app::Project& project, Features recompute) = 0;
   // Another project is about to be loaded: forget what was shown of the previous one.
   virtual void projectReplaced() {}
