@@ -9,7 +9,9 @@
 #include <QTimer>
 #include <clocale>
 
+#include "machining_feature.h"
 #include "main_window.h"
+#include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include <QComboBox>
 
@@ -49,6 +51,8 @@ int main(int argc, char** argv) {
   window.setQuiet(!screenshot.isEmpty());
   if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
+  auto* supervisor = window.findChild<mx::gui::SupervisorFeature*>("supervisorFeature");
+  auto* machining = window.findChild<mx::gui::MachiningFeature*>("machiningFeature");
   if (parser.isSet("point")) {
     const QStringList parts = parser.value("point").split(',');
     bool ok_n = false, ok_b = false, ok_f = true;
@@ -98,7 +102,7 @@ int main(int argc, char** argv) {
         QApplication::quit();
       });
     };
-    if (supervise) QObject::connect(&window, &mx::gui::MainWindow::supervisionFinished, &window, shoot);
+    if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
     QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
       if (supervise) return;                    // the supervised run decides
       if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
@@ -110,13 +114,14 @@ int main(int argc, char** argv) {
     QTimer::singleShot(60000, &app, [] { QApplication::exit(1); });
   }
   if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
-  if (parser.isSet("sdnrp")) window.runSurfaceFinish();
+  if (parser.isSet("sdnrp")) machining->runSurfaceFinish();
   if (parser.isSet("supervise")) {
-    window.supervisorView()->setController(parser.value("supervise"));
-    emit window.supervisorView()->controllerChanged(parser.value("supervise"));
-    window.supervisorView()->speedCombo()->setCurrentIndex(window.supervisorView()->speedCombo()->count() - 1);
-    window.startSupervision();
+    mx::widgets::SupervisorView* view = supervisor->view();
+    view->setController(parser.value("supervise"));
+    emit view->controllerChanged(parser.value("supervise"));
+    view->speedCombo()->setCurrentIndex(view->speedCombo()->count() - 1);
+    supervisor->start();
   }
-  if (parser.isSet("program")) window.openPartProgram(parser.value("program"));
+  if (parser.isSet("program")) machining->openPartProgram(parser.value("program"));
   return app.exec();
 }

@@ -10,8 +10,9 @@
 #include <cmath>
 #include <utility>
 
-#include "control_runner.h"
-#include "supervision_runner.h"
+#include "control_feature.h"
+#include "machining_feature.h"
+#include "supervisor_feature.h"
 #include "expert_runner.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
@@ -45,9 +46,9 @@ MainWindow::MainWindow(QWidget* parent)
   buildDocks();
   buildExpertDocks();
   buildParetoDocks();
-  buildControlDock();
-  buildMachiningDocks();
-  buildSupervisorDock();
+  addFeature(new ControlFeature(this, doc_, engine_->pool()));
+  addFeature(new MachiningFeature(this, doc_, engine_->pool()));
+  addFeature(new SupervisorFeature(this, doc_, engine_->pool()));
   buildActions();
 
   progress_->setRange(0, 100);
@@ -102,8 +103,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-  supervision_->stop();
-  control_runner_->cancel();
+  for (WindowFeature* feature : features_) feature->stop();
   sim_runner_->cancel();
   engine_->cancelAll();
 }
@@ -111,6 +111,27 @@ MainWindow::~MainWindow() {
 void MainWindow::showError(const QString& title, const QString& message) {
   statusBar()->showMessage(title + ": " + message, 10000);
   if (!quiet_) QMessageBox::critical(this, title, message);
+}
+
+void MainWindow::addFeature(WindowFeature* feature) {
+  features_.push_back(feature);
+  connect(feature, &WindowFeature::editRequested, this,
+          [this, feature](const app::Project& edited, const QString& description, int gesture) {
+            applyFeatureEdit(feature, edited, description, gesture);
+          });
+  connect(feature, &WindowFeature::statusMessage, statusBar(), &QStatusBar::showMessage);
+  connect(feature, &WindowFeature::errorRaised, this, &MainWindow::showError);
+}
+
+// The edits of one gesture of a feature (a slider drag) merge into one undo step.
+void MainWindow::applyFeatureEdit(const WindowFeature* feature, const app::Project& edited,
+                                  const QString& description, int gesture) {
+  if (std::pair(feature, gesture) != feature_gesture_) {
+    feature_gesture_ = {feature, gesture};
+    document_gesture_ = gesture > 0 ? doc_.newGesture() : 0;
+  }
+  const QString error = doc_.applyEdit(edited, description, document_gesture_);
+  if (!error.isEmpty()) showError(description, error);
 }
 
 void MainWindow::setMethod(LobeMethod method) {
@@ -130,14 +151,7 @@ void MainWindow::onProjectChanged(app::ProjectChanges changes) {
     showParetoChoice(pareto_weights_->weights());
   }
   if (f & Feature::FiredRules) updateFiredRules();
-  refreshControl(f);
-  refreshMachining(f);
-  if (f & Feature::Supervisor) {
-    refreshSupervisor();
-    if (!supervisor_request_) supervision_shown_ = SupervisionShown::None;
-    if (supervision_shown_ == SupervisionShown::Run) startSupervision();
-    if (supervision_shown_ == SupervisionShown::Comparison) compareSupervision();
-  }
+  for (WindowFeature* feature : features_) feature->projectChanged(p, f);
   if (f & Feature::Simulation) startSimulation();
   // Lobes and the expert session wait for the edits to pause (one recomputation per burst).
   pending_engine_ |= f & (Feature::Lobes | Feature::ExpertSession);

@@ -1,10 +1,10 @@
 #pragma once
 // MillExpert main window: the project document with undo/redo and autosave, the interactive lobe
-// chart (central), docks for the tool library, machine and operation, the operating-point readouts
-// and the live simulation, and the engine thread behind them. Later issues add docks (weights and
-// ranking, control, supervisor) next to these.
+// chart (central), docks for the tool library, machine and operation, the operating-point readouts,
+// the live simulation, the expert ranking and the Pareto study, and the engine thread behind them.
+// Force control, machining and the supervisor are features it hosts (window_feature.h): it hands them
+// each project change and applies the edits they request.
 #include <QAction>
-#include <functional>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -13,12 +13,11 @@
 #include <QPushButton>
 #include <QTimer>
 #include <QToolButton>
+#include <utility>
+#include <vector>
 
 #include "display_units.h"
-#include "services/control_request.h"
-#include "services/part_program_request.h"
 #include "services/pareto_study.h"
-#include "services/supervisor_request.h"
 #include "expert/expert_session.h"
 #include "engine_runner.h"
 #include "feature_recompute.h"
@@ -34,10 +33,6 @@ class OperatorRulesEditor;
 class ParetoFrontView;
 class ParetoWeightsPanel;
 class RequirementsPanel;
-class ControlView;
-class SurfaceFinishPanel;
-class PartProgramPanel;
-class SupervisorView;
 struct ParetoPointView;
 class RankingTable;
 class WeightsPanel;
@@ -51,8 +46,7 @@ namespace mx::gui {
 class SimulationRunner;
 class ExpertRunner;
 class ParetoRunner;
-class ControlRunner;
-class SupervisionRunner;
+class WindowFeature;
 struct RefinementOutcome;
 struct SimulationSummary;
 
@@ -95,18 +89,6 @@ class MainWindow : public QMainWindow {
   QString learningDatabasePath() const;            // default: LearningDatabase::defaultPath()
   void setLearningDatabasePath(const QString& path);
   void recordOperatingPoint();                     // Rule 14, source operator or automatic
-  ControlRunner* controlRunner() const { return control_runner_; }
-  widgets::ControlView* controlView() const { return control_view_; }
-  widgets::SurfaceFinishPanel* surfaceFinishPanel() const { return surface_panel_; }
-  widgets::PartProgramPanel* partProgramPanel() const { return program_panel_; }
-  void runSurfaceFinish();                           // SDNRP with the panel's Ra, disturbance, duration
-  void openPartProgram(const QString& path);         // override with the project's controller (engine thread)
-  bool exportPartProgram(const QString& path);       // the optimised program (atomic)
-  bool exportPartProgramCsv(const QString& path);    // the per-block feed-override table (atomic)
-  widgets::SupervisorView* supervisorView() const { return supervisor_view_; }
-  SupervisionRunner* supervision() const { return supervision_; }
-  void startSupervision();    // live run of the view's controller (paced, operator buttons active)
-  void compareSupervision();  // none, SMC I and SMC II side by side
   void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
   void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
@@ -122,12 +104,6 @@ class MainWindow : public QMainWindow {
   void simulationFinished();
   void paretoShown();   // the Pareto choice was recomputed (study ready, weights or requirement changed)
   void historyShown();  // the history view was refreshed from the database
-  void controlShown();       // a closed-loop run of the control view arrived
-  void controlSweepShown();  // the J_c(beta) sweep arrived
-  void surfaceFinishShown(); // an SDNRP run arrived
-  void partProgramShown();   // an override of the opened program arrived
-  void supervisionFinished();                      // a live supervised run ended
-  void comparisonResult(const QString& controller);  // one controller of a comparison arrived
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -172,19 +148,10 @@ class MainWindow : public QMainWindow {
   void onRulesEdited(const QStringList& rules);
   void updateFiredRules();
   void updateMonitoring(const SimulationSummary* summary = nullptr);
-  // main_window_control.cpp
-  void buildControlDock();
-  void refreshControl(Features features);  // the editors, then the runs `features` names (none: editors only)
-  void startControlSweep();
-  void editControlSection(const std::function<void(app::ControlRequest&)>& change, const QString& what,
-                          int gesture_id = 0);
-  // main_window_machining.cpp
-  void buildMachiningDocks();
-  void refreshMachining(Features features);
-  // main_window_supervisor.cpp
-  void buildSupervisorDock();
-  void refreshSupervisor();
   // main_window.cpp
+  void addFeature(WindowFeature* feature);
+  void applyFeatureEdit(const WindowFeature* feature, const app::Project& edited, const QString& description,
+                        int gesture);
   void onProjectChanged(app::ProjectChanges changes);
   void refreshEditors();
   void recomputeEngine();  // the pending lobes and expert session, once the edits pause
@@ -221,21 +188,10 @@ class MainWindow : public QMainWindow {
   std::optional<double> last_summary_eta_;
   QString learning_db_path_;
   QTimer pareto_timer_;
-  ControlRunner* control_runner_ = nullptr;
-  widgets::ControlView* control_view_ = nullptr;
-  std::optional<app::ControlRequest> control_request_;
-  int beta_drag_ = 0, beta_gesture_ = 0;  // the slider's drag and the document gesture it maps to
-  widgets::SurfaceFinishPanel* surface_panel_ = nullptr;
-  widgets::PartProgramPanel* program_panel_ = nullptr;
-  quint64 sdnrp_generation_ = 0, override_generation_ = 0;
-  std::shared_ptr<const app::OverrideOutcome> override_;
-  QString override_path_;
-  SupervisionRunner* supervision_ = nullptr;
-  widgets::SupervisorView* supervisor_view_ = nullptr;
-  std::optional<app::SupervisorRequest> supervisor_request_;
-  std::vector<ModuleActivityRecord> live_modules_;
-  enum class SupervisionShown { None, Run, Comparison };
-  SupervisionShown supervision_shown_ = SupervisionShown::None;  // re-run when its inputs change
+  std::vector<WindowFeature*> features_;  // in the order they recompute after a project change
+  // The last feature gesture (one slider drag) and the document gesture its edits merge into.
+  std::pair<const WindowFeature*, int> feature_gesture_{nullptr, 0};
+  int document_gesture_ = 0;
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;

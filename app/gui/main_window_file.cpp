@@ -9,6 +9,7 @@
 #include <QStatusBar>
 
 #include "main_window.h"
+#include "window_feature.h"
 
 namespace mx::gui {
 
@@ -27,7 +28,7 @@ bool MainWindow::openProject(const QString& path) {
       }
     }
     doc_.initPoint({});
-    supervision_shown_ = SupervisionShown::None;  // another project: no run of it is shown yet
+    for (WindowFeature* feature : features_) feature->projectReplaced();  // no run of the new one is shown yet
     if (recover) {
       doc_.recover(path);
     } else {
@@ -57,7 +58,7 @@ bool MainWindow::saveProject(const QString& path) {
 void MainWindow::onNew() {
   if (!maybeSave()) return;
   doc_.initPoint({});
-  supervision_shown_ = SupervisionShown::None;
+  for (WindowFeature* feature : features_) feature->projectReplaced();
   doc_.newProject();
 }
 

@@ -16,8 +16,10 @@
 #include "services/control_request.h"
 #include "control/closed_loop.h"
 #include "control_beta_slider.h"
+#include "control_feature.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
+#include "machining_feature.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "part_program_panel.h"
@@ -37,6 +39,11 @@ bool open(gui::MainWindow& w, const char* project) {
   w.show();
   return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
 }
+
+gui::ControlFeature* control(const gui::MainWindow& w) { return w.findChild<gui::ControlFeature*>("controlFeature"); }
+gui::MachiningFeature* machining(const gui::MainWindow& w) {
+  return w.findChild<gui::MachiningFeature*>("machiningFeature");
+}
 }  // namespace
 
 class TestControlGui : public QObject {
@@ -49,11 +56,11 @@ class TestControlGui : public QObject {
 
   void closedLoopReachesTheView() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
-    QSignalSpy swept(&window, &gui::MainWindow::controlSweepShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
+    QSignalSpy swept(control(window), &gui::ControlFeature::controlSweepShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
-    widgets::ControlView* view = window.controlView();
+    widgets::ControlView* view = control(window)->view();
     QVERIFY(view->isEnabled());
     QCOMPARE(view->beta(), -0.3);
     // An independent engine run of the same project section gives the same samples.
@@ -84,10 +91,10 @@ class TestControlGui : public QObject {
     // C1's teeth 4 -> 2 in the tool table: the control view runs again and shows what the CLI
     // computes on the saved project, not the 4-tooth result.
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
-    widgets::ControlMetricsPanel* metrics = window.controlView()->metricsPanel();
+    widgets::ControlMetricsPanel* metrics = control(window)->view()->metricsPanel();
     const QString four_teeth_jc = metrics->valueText("jc");
 
     widgets::ToolTableModel* tools = window.toolEditor()->toolModel();
@@ -103,7 +110,7 @@ class TestControlGui : public QObject {
     const QString saved = dir.filePath("two-teeth.mxproj");
     window.document()->save(saved);
     const mx::test::CliRun cli =
-        mx::test::runCli({"control", saved, "--beta", QString::number(window.controlView()->beta(), 'g', 17)});
+        mx::test::runCli({"control", saved, "--beta", QString::number(control(window)->view()->beta(), 'g', 17)});
     QCOMPARE(cli.code, 0);
     const QString cli_jc = widgets::MonitoringPanel::formatNumber(cli.json.value("Jc").toDouble());
     QCOMPARE(metrics->valueText("jc"), cli_jc);
@@ -112,12 +119,12 @@ class TestControlGui : public QObject {
 
   void betaSliderDragIsOneUndoStep() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::controlShown);
+    QSignalSpy shown(control(window), &gui::ControlFeature::controlShown);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(shown.count() > 0 || shown.wait(30000));
     QUndoStack* undo = window.document()->undoStack();
     const int steps = undo->count();
-    QSlider* slider = window.controlView()->betaSlider();
+    QSlider* slider = control(window)->view()->betaSlider();
     slider->setSliderDown(true);
     for (int ticks : {-20, 0, 20, 40}) {
       slider->setValue(ticks);
@@ -130,16 +137,16 @@ class TestControlGui : public QObject {
     QCOMPARE(undo->count(), steps + 1);
     undo->undo();
     QCOMPARE(*window.project()->control->beta, -0.3);  // the value before the drag
-    QCOMPARE(window.controlView()->beta(), -0.3);
+    QCOMPARE(control(window)->view()->beta(), -0.3);
   }
 
   void surfaceFinishRunsTheLoop() {
     gui::MainWindow window;
     QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
-    widgets::SurfaceFinishPanel* panel = window.surfaceFinishPanel();
+    widgets::SurfaceFinishPanel* panel = machining(window)->surfacePanel();
     QCOMPARE(panel->desiredRaUm(), 0.81);  // sdnrp.ra_um of the project
-    QSignalSpy shown(&window, &gui::MainWindow::surfaceFinishShown);
-    window.runSurfaceFinish();
+    QSignalSpy shown(machining(window), &gui::MachiningFeature::surfaceFinishShown);
+    machining(window)->runSurfaceFinish();
     QVERIFY(shown.wait(30000));
     QCOMPARE(panel->sampleCount(), 1501);  // 15 s every 10 ms, t = 0 included
     QVERIFY(!panel->summaryText("f_final_n").isEmpty());
@@ -148,19 +155,19 @@ class TestControlGui : public QObject {
   void partProgramOverrideAndExport() {
     gui::MainWindow window;
     QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
-    QSignalSpy shown(&window, &gui::MainWindow::partProgramShown);
+    QSignalSpy shown(machining(window), &gui::MachiningFeature::partProgramShown);
     const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
-    window.openPartProgram(program);
+    machining(window)->openPartProgram(program);
     QVERIFY(shown.wait(30000));
-    widgets::PartProgramPanel* panel = window.partProgramPanel();
+    widgets::PartProgramPanel* panel = machining(window)->programPanel();
     QVERIFY(panel->changedCount() >= 1);
     QFile in(program);
     QVERIFY(in.open(QIODevice::ReadOnly));
     const QList<QByteArray> input = in.readAll().split('\n');
     QCOMPARE(panel->rows().size(), input.size() - (input.last().isEmpty() ? 1 : 0));
     QTemporaryDir dir;
-    QVERIFY(window.exportPartProgram(dir.filePath("out.nc")));
-    QVERIFY(window.exportPartProgramCsv(dir.filePath("out.csv")));
+    QVERIFY(machining(window)->exportPartProgram(dir.filePath("out.nc")));
+    QVERIFY(machining(window)->exportPartProgramCsv(dir.filePath("out.csv")));
     QFile out(dir.filePath("out.nc"));
     QVERIFY(out.open(QIODevice::ReadOnly));
     const QByteArray text = out.readAll();

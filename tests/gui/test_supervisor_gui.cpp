@@ -16,6 +16,7 @@
 #include "supervision_runner.h"
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
+#include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "test_registry.h"
 
@@ -27,6 +28,10 @@ bool openLanders(gui::MainWindow& w) {
   w.resize(1600, 950);
   w.show();
   return w.openProject(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
+}
+
+gui::SupervisorFeature* supervisor(const gui::MainWindow& w) {
+  return w.findChild<gui::SupervisorFeature*>("supervisorFeature");
 }
 }  // namespace
 
@@ -41,7 +46,7 @@ class TestSupervisorGui : public QObject {
   void liveRunWithFeedHold() {
     gui::MainWindow window;
     QVERIFY(openLanders(window));
-    widgets::SupervisorView* view = window.supervisorView();
+    widgets::SupervisorView* view = supervisor(window)->view();
     QVERIFY(view->isEnabled());
     view->setController("smc1");
     emit view->controllerChanged("smc1");
@@ -49,15 +54,15 @@ class TestSupervisorGui : public QObject {
     // A paced run (20x): the feed hold pressed while it runs is an operator event of the run.
     view->speedCombo()->setCurrentIndex(2);
     QCOMPARE(view->speedFactor(), 20.0);
-    QSignalSpy chunks(window.supervision(), &gui::SupervisionRunner::chunkReady);
-    QSignalSpy done(&window, &gui::MainWindow::supervisionFinished);
-    window.startSupervision();
+    QSignalSpy chunks(supervisor(window)->runner(), &gui::SupervisionRunner::chunkReady);
+    QSignalSpy done(supervisor(window), &gui::SupervisorFeature::supervisionFinished);
+    supervisor(window)->start();
     QVERIFY(chunks.wait(20000));
     emit view->feedHoldToggled(true);
     QTest::qWait(200);
     emit view->feedHoldToggled(false);
     QTest::qWait(300);  // a few chunks (every 50 ms simulated = 2.5 ms at 20x)
-    window.supervision()->stop();  // do not wait for 43 s / 20
+    supervisor(window)->runner()->stop();  // do not wait for 43 s / 20
     QTest::qWait(300);
     QVERIFY(view->timeline()->pointCount() > 0);
     QVERIFY(!view->chartView()->activeSteps().isEmpty());
@@ -74,7 +79,7 @@ class TestSupervisorGui : public QObject {
     // An unpaced run to the end gives the CLI's metrics (no chatter, two passes).
     view->speedCombo()->setCurrentIndex(3);
     QCOMPARE(view->speedFactor(), 0.0);
-    window.startSupervision();
+    supervisor(window)->start();
     QVERIFY(done.wait(120000));
     QVERIFY(view->metricsText().contains("2"));  // passes
     QVERIFY(view->timeline()->spanCount() > 0);
@@ -84,11 +89,11 @@ class TestSupervisorGui : public QObject {
   void eventLoopKeepsTickingDuringARun() {
     gui::MainWindow window;
     QVERIFY(openLanders(window));
-    widgets::SupervisorView* view = window.supervisorView();
+    widgets::SupervisorView* view = supervisor(window)->view();
     view->setController("smc2");
     emit view->controllerChanged("smc2");
     view->speedCombo()->setCurrentIndex(3);  // max
-    QSignalSpy done(&window, &gui::MainWindow::supervisionFinished);
+    QSignalSpy done(supervisor(window), &gui::SupervisorFeature::supervisionFinished);
     QElapsedTimer clock;
     qint64 last = 0, worst = 0;
     QTimer tick;
@@ -100,7 +105,7 @@ class TestSupervisorGui : public QObject {
     });
     clock.start();
     tick.start();
-    window.startSupervision();
+    supervisor(window)->start();
     QVERIFY(done.wait(120000));
     tick.stop();
     qInfo("largest event-loop gap during a max-speed SMC II run: %lld ms", worst);
@@ -110,11 +115,11 @@ class TestSupervisorGui : public QObject {
   void compareFillsThreeColumns() {
     gui::MainWindow window;
     QVERIFY(openLanders(window));
-    QSignalSpy results(&window, &gui::MainWindow::comparisonResult);
-    window.compareSupervision();
+    QSignalSpy results(supervisor(window), &gui::SupervisorFeature::comparisonResult);
+    supervisor(window)->compare();
     for (int i = 0; i < 3 && results.count() < 3; ++i) QVERIFY(results.wait(120000));
     QCOMPARE(results.count(), 3);
-    widgets::SupervisorComparison* c = window.supervisorView()->comparison();
+    widgets::SupervisorComparison* c = supervisor(window)->view()->comparison();
     QCOMPARE(c->resultCount(), 3);
     QCOMPARE(c->metricText("none", "chatter_detected"), QString("yes"));
     QCOMPARE(c->metricText("smc1", "chatter_detected"), QString("no"));
@@ -124,7 +129,7 @@ class TestSupervisorGui : public QObject {
   void chartEditsAreProjectEdits() {
     gui::MainWindow window;
     QVERIFY(openLanders(window));
-    widgets::SupervisorView* view = window.supervisorView();
+    widgets::SupervisorView* view = supervisor(window)->view();
     view->setController("smc2");
     emit view->controllerChanged("smc2");
     widgets::GrafcetChartEditor* editor = view->editor();

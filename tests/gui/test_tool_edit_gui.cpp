@@ -8,12 +8,14 @@
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "machining_feature.h"
 #include "main_window.h"
 #include "part_program_panel.h"
 #include "pareto_runner.h"
 #include "ranking_table.h"
 #include "simulation_runner.h"
 #include "supervisor_comparison.h"
+#include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "support/cli_runner.h"
 #include "test_registry.h"
@@ -154,24 +156,25 @@ class TestToolEditGui : public QObject {
 
   void partProgramOverrideReRuns() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::partProgramShown);
+    auto* machining = window.findChild<gui::MachiningFeature*>("machiningFeature");
+    QSignalSpy shown(machining, &gui::MachiningFeature::partProgramShown);
     QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
     const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
-    window.openPartProgram(program);
+    machining->openPartProgram(program);
     QVERIFY(shown.wait(kWaitMs));
     QTemporaryDir dir;
-    QVERIFY(window.exportPartProgram(dir.filePath("two-teeth.nc")));
+    QVERIFY(machining->exportPartProgram(dir.filePath("two-teeth.nc")));
 
     QVERIFY(setTeeth(window, "R216-16B20-040", 4));
     QVERIFY(shown.wait(kWaitMs));
     const QString path = saved(window, dir);  // first: the exported header names the saved file
-    QVERIFY(window.exportPartProgram(dir.filePath("gui.nc")));
+    QVERIFY(machining->exportPartProgram(dir.filePath("gui.nc")));
     const mx::test::CliRun cli = mx::test::runCli({"override", program, path, "--out", dir.filePath("cli.nc")});
     QCOMPARE(cli.code, 0);
-    QCOMPARE(window.partProgramPanel()->changedCount(), cli.json.value("changed_blocks").toInt());
+    QCOMPARE(machining->programPanel()->changedCount(), cli.json.value("changed_blocks").toInt());
     const QString force = QString::number(cli.json.value("max_predicted_force_N").toDouble(), 'f', 1);
-    QVERIFY2(window.partProgramPanel()->statusText().contains("largest predicted force " + force + " N"),
-             qPrintable(window.partProgramPanel()->statusText() + " / CLI " + force));
+    QVERIFY2(machining->programPanel()->statusText().contains("largest predicted force " + force + " N"),
+             qPrintable(machining->programPanel()->statusText() + " / CLI " + force));
     // The optimised program, header date aside, is the CLI's, and not the two-tooth one.
     QCOMPARE(programBody(dir.filePath("gui.nc")), programBody(dir.filePath("cli.nc")));
     QVERIFY(programBody(dir.filePath("gui.nc")) != programBody(dir.filePath("two-teeth.nc")));
@@ -179,11 +182,12 @@ class TestToolEditGui : public QObject {
 
   void supervisorComparisonReRuns() {
     gui::MainWindow window;
-    QSignalSpy compared(&window, &gui::MainWindow::comparisonResult);
+    auto* supervisor = window.findChild<gui::SupervisorFeature*>("supervisorFeature");
+    QSignalSpy compared(supervisor, &gui::SupervisorFeature::comparisonResult);
     QVERIFY(open(window, "landers-face-milling.mxproj"));
-    window.compareSupervision();
+    supervisor->compare();
     QVERIFY(waitFor(compared, [&] { return compared.count() >= 3; }));
-    widgets::SupervisorComparison* table = window.supervisorView()->comparison();
+    widgets::SupervisorComparison* table = supervisor->view()->comparison();
     const QString four_power = table->metricText("none", "max_power_pct_of_limit");
     const QString four_cycle = table->metricText("none", "cycle_time_s");
 

@@ -1,0 +1,234 @@
+#include "machining_feature.h"
+
+#include <QDateTime>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <cmath>
+
+#include "engine_task.h"
+#include "gcode/gcode_reader.h"
+#include "part_program_panel.h"
+#include "services/sdnrp_request.h"
+#include "surface_finish_panel.h"
+
+namespace mx::gui {
+
+namespace {
+
+std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+
+// One display row per block: F in the program's units per minute, S in rpm.
+QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult& r) {
+  QVector<widgets::PartProgramRow> rows;
+  rows.reserve(static_cast<qsizetype>(r.program.blocks.size()));
+  std::vector<const FeedOverrideRow*> by_block(r.program.blocks.size(), nullptr);
+  for (const FeedOverrideRow& f : r.rows)
+    if (f.block >= 1 && f.block <= by_block.size()) by_block[f.block - 1] = &f;
+  for (std::size_t i = 0; i < r.program.blocks.size(); ++i) {
+    const GcodeBlock& b = r.program.blocks[i];
+    const GcodeMotion& m = r.run.motions[i];
+    const GcodeBlockEdit& e = r.edits[i];
+    const double unit = m.inch ? 0.0254 : 1e-3;
+    widgets::PartProgramRow row;
+    row.line = b.line;
+    row.text = QString::fromStdString(b.text);
+    if (m.isFeedMove() || m.feed_word) row.original_feed = finiteOr(m.feed_m_per_s * 60.0 / unit);
+    row.new_feed = finiteOr(e.feed);
+    if (m.isFeedMove() || m.speed_word) row.speed_rpm = finiteOr(m.speed_rev_per_s * 60.0);
+    row.new_speed_rpm = finiteOr(e.speed_rpm);
+    if (m.isFeedMove()) row.depth_mm = r.depths_m[i] * 1e3;
+    if (const FeedOverrideRow* f = by_block[i]) {
+      row.predicted_force_n = finiteOr(f->predicted_force_N);
+      row.reason = QString::fromStdString(f->reason);
+    }
+    if (row.reason.isEmpty() && !e.comment.empty()) row.reason = QString::fromStdString(e.comment).remove("MX: ");
+    row.changed = !e.empty();
+    rows.append(row);
+  }
+  return rows;
+}
+
+bool writeAtomically(const QString& path, const QByteArray& bytes, QString* error) {
+  QSaveFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
+    *error = f.errorString();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+MachiningFeature::MachiningFeature(QMainWindow* window, const app::ProjectDocument& document,
+                                   QThreadPool* engine_pool)
+    : WindowFeature(window),
+      window_(window),
+      document_(document),
+      pool_(engine_pool),
+      surface_panel_(new widgets::SurfaceFinishPanel),
+      program_panel_(new widgets::PartProgramPanel) {
+  setObjectName("machiningFeature");
+  addDocks();
+  connectPanels();
+}
+
+void MachiningFeature::addDocks() {
+  auto* surface = new QDockWidget(tr("Surface finish (SDNRP)"), window_);
+  surface->setObjectName("surfaceFinishDock");
+  surface->setWidget(surface_panel_);
+  auto* program = new QDockWidget(tr("Part program"), window_);
+  program->setObjectName("partProgramDock");
+  program->setWidget(program_panel_);
+  window_->addDockWidget(Qt::BottomDockWidgetArea, surface);
+  window_->addDockWidget(Qt::BottomDockWidgetArea, program);
+  if (auto* control = window_->findChild<QDockWidget*>("controlDock")) {
+    window_->tabifyDockWidget(control, surface);
+    window_->tabifyDockWidget(surface, program);
+  }
+  if (auto* simulation = window_->findChild<QDockWidget*>("simulationDock")) simulation->raise();
+}
+
+void MachiningFeature::connectPanels() {
+  connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MachiningFeature::runSurfaceFinish);
+  connect(program_panel_, &widgets::PartProgramPanel::openRequested, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Open part program"), QString(),
+                                                      tr("G-code (*.nc *.ngc *.tap *.gcode);;All files (*)"));
+    if (!path.isEmpty()) openPartProgram(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::exportProgramRequested, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(window_, tr("Export optimised program"), QString(),
+                                                      tr("G-code (*.nc);;All files (*)"));
+    if (!path.isEmpty()) exportPartProgram(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::exportCsvRequested, this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(window_, tr("Export feed overrides"), QString(), tr("CSV (*.csv)"));
+    if (!path.isEmpty()) exportPartProgramCsv(path);
+  });
+}
+
+void MachiningFeature::projectChanged(const app::Project& project, Features recompute) {
+  if ((recompute & Feature::PartProgram) && !override_path_.isEmpty()) openPartProgram(override_path_);
+  if (!(recompute & Feature::SurfaceFinish)) return;
+  try {
+    const SdnrpSettings s = app::sdnrpSettingsFromProject(project);
+    surface_panel_->setDesiredRaUm(s.ra_desired_m * 1e6);
+    surface_panel_->setDisturbanceOn(s.disturbance.enabled);
+    surface_panel_->setDurationS(s.duration_s);
+  } catch (const std::exception&) {
+    // an invalid sdnrp section is reported when the loop is run
+  }
+}
+
+void MachiningFeature::runSurfaceFinish() {
+  SdnrpSettings s;
+  try {
+    s = app::sdnrpSettingsFromProject(document_.project());
+  } catch (const std::exception& e) {
+    emit errorRaised(tr("Surface finish"), e.what());
+    return;
+  }
+  s.ra_desired_m = surface_panel_->desiredRaUm() * 1e-6;
+  s.disturbance.enabled = surface_panel_->disturbanceOn();
+  s.duration_s = surface_panel_->durationS();
+  const quint64 generation = ++sdnrp_generation_;
+  surface_panel_->setBusy(true);
+  runEngineTask<SdnrpResult>(pool_, this, [s] { return SdnrpSimulator(s).run(); },
+                             [this, generation](TaskResult<SdnrpResult> r) {
+                               if (generation != sdnrp_generation_) return;
+                               surface_panel_->setBusy(false);
+                               if (r.value)
+                                 showSurfaceFinish(*r.value);
+                               else
+                                 emit errorRaised(tr("Surface finish"), r.error);
+                             });
+}
+
+// Shop units on the panel: Ra in um, feed in mm/min, speed in rpm.
+void MachiningFeature::showSurfaceFinish(const SdnrpResult& v) {
+  surface_panel_->clear();
+  QVector<widgets::SurfaceFinishSample> samples;
+  for (const SdnrpSample& x : v.samples)
+    samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N, x.feed_m_per_s * 60e3,
+                    x.speed_rev_per_s * 60.0});
+  surface_panel_->appendSamples(samples);
+  surface_panel_->setSummary({v.ra_desired_m * 1e6, v.fd_N, v.f_final_N, v.feed_final_m_per_s * 60e3,
+                              v.speed_final_rev_per_s * 60.0, v.ra_produced_m * 1e6, v.feed_saturated});
+  emit surfaceFinishShown();
+}
+
+void MachiningFeature::openPartProgram(const QString& path) {
+  app::OverrideRequest request;
+  GcodeProgram program;
+  try {
+    request = app::overrideRequestFromProject(document_.project());
+    program = GcodeReader::readFile(path.toStdString());
+  } catch (const std::exception& e) {
+    emit errorRaised(tr("Part program"), e.what());
+    return;
+  }
+  const quint64 generation = ++override_generation_;
+  program_panel_->setStatus(tr("Running the %1 controller along %2...").arg(request.controllerName(), path));
+  runEngineTask<app::OverrideOutcome>(
+      pool_, this, [request, program] { return app::runOverride(request, program); },
+      [this, generation, path](TaskResult<app::OverrideOutcome> r) {
+        if (generation != override_generation_) return;
+        if (!r.value) {
+          program_panel_->setStatus(tr("Override failed: %1").arg(r.error));
+          emit errorRaised(tr("Part program"), r.error);
+          return;
+        }
+        showOverride(path, std::move(*r.value));
+      });
+}
+
+void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome outcome) {
+  override_ = std::make_shared<app::OverrideOutcome>(std::move(outcome));
+  override_path_ = path;
+  QVector<widgets::PartProgramWarningView> warnings;
+  for (const GcodeWarning& w : override_->result.warnings)
+    warnings.append({w.line, static_cast<int>(w.column), QString::fromStdString(w.text),
+                     QString::fromStdString(w.message)});
+  const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
+  program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
+                             override_->controller);
+  double peak = 0.0;
+  for (const FeedOverrideRow& f : override_->result.rows)
+    if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
+  program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4 N")
+                                .arg(override_->result.program.blocks.size())
+                                .arg(override_->result.changed_blocks)
+                                .arg(override_->result.warnings.size())
+                                .arg(peak, 0, 'f', 1));
+  emit partProgramShown();
+}
+
+bool MachiningFeature::exportPartProgram(const QString& path) {
+  if (!override_) return false;
+  const GcodeHeader header{QFileInfo(document_.filePath()).fileName().toStdString(),
+                           override_->controller.toStdString(),
+                           QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString()};
+  const std::string text = override_->result.writeProgram(header);
+  QString error;
+  if (!writeAtomically(path, QByteArray::fromStdString(text), &error)) {
+    emit errorRaised(tr("Export program"), tr("%1: %2").arg(path, error));
+    return false;
+  }
+  emit statusMessage(tr("Optimised program written to %1").arg(path), 8000);
+  return true;
+}
+
+bool MachiningFeature::exportPartProgramCsv(const QString& path) {
+  if (!override_) return false;
+  QString error;
+  if (!writeAtomically(path, QByteArray::fromStdString(override_->result.csv()), &error)) {
+    emit errorRaised(tr("Export CSV"), tr("%1: %2").arg(path, error));
+    return false;
+  }
+  emit statusMessage(tr("Feed-override table written to %1").arg(path), 8000);
+  return true;
+}
+
+}  // namespace mx::gui

@@ -1,0 +1,57 @@
+#pragma once
+// The machining docks: surface-finish control (the SDNRP loop of Cus & Zuperl) and part-program
+// overrides (a G-code program re-fed by the project's force controller). Both run on the engine
+// thread; the panels only show their results. Exports are atomic (QSaveFile).
+#include <QMainWindow>
+#include <QThreadPool>
+#include <memory>
+
+#include "document/project_document.h"
+#include "sdnrp/sdnrp_simulator.h"
+#include "services/part_program_request.h"
+#include "window_feature.h"
+
+namespace mx::widgets {
+class PartProgramPanel;
+class SurfaceFinishPanel;
+}  // namespace mx::widgets
+
+namespace mx::gui {
+
+class MachiningFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  // Adds "surfaceFinishDock" and "partProgramDock" to `window`, tabbed with the control dock.
+  MachiningFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool);
+
+  // The panel takes sdnrp.ra_um, disturbance and duration; an open program is overridden again when
+  // the inputs of its controllers changed.
+  void projectChanged(const app::Project& project, Features recompute) override;
+  void runSurfaceFinish();                       // SDNRP with the panel's Ra, disturbance, duration
+  void openPartProgram(const QString& path);     // override with the project's controller
+  bool exportPartProgram(const QString& path);   // the optimised program
+  bool exportPartProgramCsv(const QString& path);  // the per-block feed-override table
+  widgets::SurfaceFinishPanel* surfacePanel() const { return surface_panel_; }
+  widgets::PartProgramPanel* programPanel() const { return program_panel_; }
+
+ signals:
+  void surfaceFinishShown();  // an SDNRP run arrived
+  void partProgramShown();    // an override of the opened program arrived
+
+ private:
+  void addDocks();
+  void connectPanels();
+  void showSurfaceFinish(const SdnrpResult& result);
+  void showOverride(const QString& path, app::OverrideOutcome outcome);
+
+  QMainWindow* window_;
+  const app::ProjectDocument& document_;
+  QThreadPool* pool_;
+  widgets::SurfaceFinishPanel* surface_panel_;
+  widgets::PartProgramPanel* program_panel_;
+  quint64 sdnrp_generation_ = 0, override_generation_ = 0;
+  std::shared_ptr<const app::OverrideOutcome> override_;
+  QString override_path_;
+};
+
+}  // namespace mx::gui
