@@ -22,8 +22,8 @@ void BM_FaceMillingSteps(benchmark::State& state) {
     for (int i = 0; i < n; ++i) proc.step();
     benchmark::DoNotOptimize(proc.output().fy_N);
   }
-  state.counters["steps/s"] = benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
-                                                 benchmark::Counter::kIsRate);
+  state.counters["steps/s"] =
+      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FaceMillingSteps)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
@@ -50,7 +50,8 @@ void BM_SupervisedRun(benchmark::State& state) {
     simulated = r.metrics.cycle_time_s;
     benchmark::DoNotOptimize(r.metrics.max_power_W);
   }
-  state.counters["sim_s/s"] = benchmark::Counter(simulated * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["sim_s/s"] =
+      benchmark::Counter(simulated * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_SupervisedRun)->Unit(benchmark::kMillisecond)->Iterations(3);
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "machining/part_program_override.h"
 #include "gcode/gcode_reader.h"
+#include "machining/part_program_override.h"
 
 namespace {
 

@@ -15,8 +15,8 @@ bool registerTest(const char* source_file, TestFactory factory);
 
 }  // namespace mx::test
 
-#define MX_REGISTER_TEST(TestClass)                                                               \
-  namespace {                                                                                     \
-  const bool mx_test_registered = mx::test::registerTest(                                         \
-      __FILE__, []() -> std::unique_ptr<QObject> { return std::make_unique<TestClass>(); });      \
+#define MX_REGISTER_TEST(TestClass)                                                                                 \
+  namespace {                                                                                                       \
+  const bool mx_test_registered =                                                                                   \
+      mx::test::registerTest(__FILE__, []() -> std::unique_ptr<QObject> { return std::make_unique<TestClass>(); }); \
   }

@@ -21,7 +21,7 @@ class ControlBetaSlider : public QWidget {
 
   void setBeta(double beta);  // clamped to [-1, 1], rounded to 0.01; no signal
   double beta() const;
-  bool pending() const;  // a user change waits for the debounce
+  bool pending() const;                                  // a user change waits for the debounce
   int gesture() const { return dragging_ ? drag_ : 0; }  // the drag emitting (press to release), else 0
 
   QSlider* slider() const { return slider_; }

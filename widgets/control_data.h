@@ -10,13 +10,13 @@
 
 namespace mx::widgets {
 
-struct ControlTraces {                       // display units
-  QVector<double> t_s;                       // sample instants
+struct ControlTraces {                                                        // display units
+  QVector<double> t_s;                                                        // sample instants
   QVector<double> reference_n, model_n, force_sampled_n, error_n, feed_mm_s;  // per sample
-  QVector<QVector<double>> theta;            // theta[k] = estimates at sample k
-  QStringList theta_names;                   // e.g. "a1","a2","b0","b1"
-  QVector<double> dense_t_s, dense_force_n, dense_feed_mm_s;  // continuous plant output between samples
-  QVector<double> depth_t_s, depth_mm;       // depth of cut seen by the tool over time
+  QVector<QVector<double>> theta;                                             // theta[k] = estimates at sample k
+  QStringList theta_names;                                                    // e.g. "a1","a2","b0","b1"
+  QVector<double> dense_t_s, dense_force_n, dense_feed_mm_s;                  // continuous plant output between samples
+  QVector<double> depth_t_s, depth_mm;                                        // depth of cut seen by the tool over time
 };
 
 struct ControlMetricsView {

@@ -86,12 +86,12 @@ void ControlMetricsPanel::setMetrics(const ControlMetricsView& m) {
   values_["settling_time"]->setText(num(m.settling_time_s));
   values_["jc"]->setText(num(m.jc_n_s));
   values_["max_force"]->setText(num(m.max_force_n));
-  values_["feed_range"]->setText(
-      std::isfinite(m.min_feed_mm_s) || std::isfinite(m.max_feed_mm_s)
-          ? tr("%1 to %2").arg(num(m.min_feed_mm_s), num(m.max_feed_mm_s))
-          : kMissing);
-  warning_->setText(tr("Unstable zero: H_\u03b2 has a zero outside the unit circle, so the controller does not "
-                       "cancel it (slower tracking). Raise \u03b2 above the shaded region."));
+  values_["feed_range"]->setText(std::isfinite(m.min_feed_mm_s) || std::isfinite(m.max_feed_mm_s)
+                                     ? tr("%1 to %2").arg(num(m.min_feed_mm_s), num(m.max_feed_mm_s))
+                                     : kMissing);
+  warning_->setText(
+      tr("Unstable zero: H_\u03b2 has a zero outside the unit circle, so the controller does not "
+         "cancel it (slower tracking). Raise \u03b2 above the shaded region."));
   warning_->setVisible(m.unstable_zero);
 }
 
@@ -107,8 +107,7 @@ void ControlMetricsPanel::showOvershoots() {
     QString line = tr("step %1: %2").arg(i + 1).arg(num(overshoot_pct_[i]));
     if (i < steps_.size()) {
       const auto [from, to] = steps_[i];
-      line += tr(" (%1 \u2192 %2 mm, %3)")
-                  .arg(num(from), num(to), to < from ? tr("undershoot") : tr("overshoot"));
+      line += tr(" (%1 \u2192 %2 mm, %3)").arg(num(from), num(to), to < from ? tr("undershoot") : tr("overshoot"));
     }
     lines << line;
   }

@@ -17,7 +17,7 @@ const QColor kDepthColor(150, 150, 150);
 const QColor kErrorColor(214, 39, 40);
 const QColor kFeedColor(44, 160, 44);
 const QColor kLimitColor(214, 39, 40);
-const QColor kThetaColors[] = {QColor(31, 119, 180), QColor(255, 127, 14), QColor(44, 160, 44), QColor(214, 39, 40),
+const QColor kThetaColors[] = {QColor(31, 119, 180),  QColor(255, 127, 14), QColor(44, 160, 44),  QColor(214, 39, 40),
                                QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194)};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -63,7 +63,8 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   depth->setLineStyle(QCPGraph::lsStepLeft);
   depth->setBrush(QColor(150, 150, 150, 40));
   addGraph(0, force_axis, "force continuous", tr("Plant F_p between samples"), QPen(QColor(31, 119, 180, 150), 1.0));
-  QCPGraph* reference = addGraph(0, force_axis, "reference", tr("Reference F_r"), QPen(kReferenceColor, 1.5, Qt::DashLine));
+  QCPGraph* reference =
+      addGraph(0, force_axis, "reference", tr("Reference F_r"), QPen(kReferenceColor, 1.5, Qt::DashLine));
   reference->setLineStyle(QCPGraph::lsStepLeft);
   QCPGraph* model = addGraph(0, force_axis, "model", tr("Model output F_m"), QPen(kModelColor, 1.5));
   model->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 3));

@@ -20,7 +20,7 @@ struct FieldSpec {
   const char* label;
   const char* tip;
   double min, max;
-  bool min_open;  // min itself refused
+  bool min_open;         // min itself refused
   double display_scale;  // displayed = value * scale
 };
 
@@ -93,7 +93,9 @@ QString ControlSettingsEditor::format(const QString& key, double value) {
 std::optional<double> ControlSettingsEditor::parse(const QString& key, const QString& text, QString* reason) {
   const FieldSpec* f = spec(key);
   auto refuse = [&](const QString& why) -> std::optional<double> {
-    if (reason) *reason = tr("%1 = %2: %3").arg(f ? tr(f->label) : key, text.trimmed().isEmpty() ? tr("(empty)") : text.trimmed(), why);
+    if (reason)
+      *reason =
+          tr("%1 = %2: %3").arg(f ? tr(f->label) : key, text.trimmed().isEmpty() ? tr("(empty)") : text.trimmed(), why);
     return std::nullopt;
   };
   if (!f) return refuse(tr("unknown field"));
@@ -188,9 +190,10 @@ void ControlSettingsEditor::commit(const QString& key) {
 
 void ControlSettingsEditor::showErrors() {
   for (auto it = fields_.cbegin(); it != fields_.cend(); ++it)
-    it.value()->setStyleSheet(errors_.contains(it.key())
-                                  ? QString("QLineEdit { border: 2px solid %1; }").arg(IndicatorGauge::alarmColor().name())
-                                  : QString());
+    it.value()->setStyleSheet(
+        errors_.contains(it.key())
+            ? QString("QLineEdit { border: 2px solid %1; }").arg(IndicatorGauge::alarmColor().name())
+            : QString());
   error_label_->setText(errorText());
   error_label_->setVisible(!errors_.isEmpty());
 }

@@ -190,11 +190,11 @@ QString ControlView::statusText() const {
 }
 
 bool ControlView::saveResponsePlots(const QString& path, int width, int height, const QString& title) {
-  const QString shown =
-      title.isEmpty() ? tr("Discrete and continuous responses, tracking error and programmed control law, "
-                           "\u03b2 = %1")
-                            .arg(betaText(beta()))
-                      : title;
+  const QString shown = title.isEmpty()
+                            ? tr("Discrete and continuous responses, tracking error and programmed control law, "
+                                 "\u03b2 = %1")
+                                  .arg(betaText(beta()))
+                            : title;
   return ControlPlots::saveResponses(traces_, settings().feed_max_mm_s, path, width, height, shown);
 }
 

@@ -1,7 +1,8 @@
 #include "cost_map_layer.h"
 
-#include <cmath>
 #include <qcustomplot.h>
+
+#include <cmath>
 
 namespace mx::widgets {
 
@@ -81,8 +82,10 @@ void CostMapLayer::setGridVisible(bool visible) {
   grid_visible_ = visible;
   if (grid_) {
     grid_->setVisible(visible);
-    if (visible) grid_->addToLegend();
-    else grid_->removeFromLegend();
+    if (visible)
+      grid_->addToLegend();
+    else
+      grid_->removeFromLegend();
   }
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }

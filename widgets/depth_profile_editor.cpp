@@ -55,8 +55,9 @@ DepthProfileEditor::DepthProfileEditor(QWidget* parent)
   table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 8);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setMinimumHeight(5 * (table_->fontMetrics().height() + 8));
-  table_->setToolTip(tr("Workpiece depth profile along the tool path; the tool position (the integral of the feed) "
-                        "decides the depth it sees."));
+  table_->setToolTip(
+      tr("Workpiece depth profile along the tool path; the tool position (the integral of the feed) "
+         "decides the depth it sees."));
   add_->setObjectName(QStringLiteral("depthProfileAdd"));
   add_->setToolTip(tr("Insert a copy of the current step after it"));
   remove_->setObjectName(QStringLiteral("depthProfileRemove"));

@@ -65,7 +65,8 @@ GrafcetChartEditor::GrafcetChartEditor(QWidget* parent)
     : QWidget(parent),
       name_(new QLineEdit(this)),
       steps_(makeTable({tr("Step"), tr("Name"), tr("Initial"), tr("Actions (A = level, L* = impulse)")}, this)),
-      transitions_(makeTable({tr("Transition"), tr("From steps"), tr("To steps"), tr("Receptivity"), tr("Priority")}, this)),
+      transitions_(
+          makeTable({tr("Transition"), tr("From steps"), tr("To steps"), tr("Receptivity"), tr("Priority")}, this)),
       add_step_(button(tr("Add step"), tr("Append a step with the next free number"), this)),
       remove_step_(button(tr("Remove step"), tr("Remove the selected step and its arcs"), this)),
       add_transition_(button(tr("Add transition"), tr("Append a transition leaving the selected step"), this)),
@@ -75,8 +76,9 @@ GrafcetChartEditor::GrafcetChartEditor(QWidget* parent)
       view_(new GrafcetChartView(this)) {
   setObjectName(QStringLiteral("grafcetChartEditor"));
   name_->setPlaceholderText(tr("Chart name"));
-  transitions_->setToolTip(tr("Receptivity: signals with and, or, not, parentheses and comparisons, e.g. "
-                              "\"b and not a\"; \"1\" is always true. Priority 1 is checked first."));
+  transitions_->setToolTip(
+      tr("Receptivity: signals with and, or, not, parentheses and comparisons, e.g. "
+         "\"b and not a\"; \"1\" is always true. Priority 1 is checked first."));
   issue_list_->setObjectName(QStringLiteral("grafcetIssueList"));
   issue_list_->setMaximumHeight(130);
   issue_list_->setToolTip(tr("Click an issue to select its element"));
@@ -125,7 +127,8 @@ GrafcetChartEditor::GrafcetChartEditor(QWidget* parent)
   connect(view_, &GrafcetChartView::stepClicked, this, [this](int id) { selectElement(id, -1); });
   connect(view_, &GrafcetChartView::transitionClicked, this, [this](int id) { selectElement(-1, id); });
   connect(steps_, &QTableWidget::currentCellChanged, this, [this](int row) {
-    if (!populating_ && row >= 0 && steps_->item(row, StepId)) view_->setSelected(steps_->item(row, StepId)->text().toInt(), -1);
+    if (!populating_ && row >= 0 && steps_->item(row, StepId))
+      view_->setSelected(steps_->item(row, StepId)->text().toInt(), -1);
   });
   connect(transitions_, &QTableWidget::currentCellChanged, this, [this](int row) {
     if (!populating_ && row >= 0 && transitions_->item(row, TransitionId))
@@ -190,7 +193,9 @@ void GrafcetChartEditor::edited() {
   GrafcetChartData c;
   c.name = name_->text().trimmed();
   format_issues_.clear();
-  auto text = [](QTableWidget* t, int r, int col) { return t->item(r, col) ? t->item(r, col)->text().trimmed() : QString(); };
+  auto text = [](QTableWidget* t, int r, int col) {
+    return t->item(r, col) ? t->item(r, col)->text().trimmed() : QString();
+  };
   auto number = [&](const QString& s, const QString& element, int sid, int tid, const QString& what) {
     bool ok = false;
     const int v = s.toInt(&ok);
@@ -207,17 +212,21 @@ void GrafcetChartEditor::edited() {
     s.actions = tokens(text(steps_, r, StepActions));
     for (const QString& a : std::as_const(s.actions))
       if (!action_re.match(a).hasMatch())
-        format_issues_ << ChartIssue{element, s.id, -1, tr("action \u201c%1\u201d is not a module name (A, L*)").arg(a)};
+        format_issues_ << ChartIssue{element, s.id, -1,
+                                     tr("action \u201c%1\u201d is not a module name (A, L*)").arg(a)};
     if (std::any_of(c.steps.begin(), c.steps.end(), [&](const auto& o) { return o.id == s.id; }))
       format_issues_ << ChartIssue{element, s.id, -1, tr("duplicate step number %1").arg(s.id)};
     c.steps << s;
   }
   for (int r = 0; r < transitions_->rowCount(); ++r) {
     GrafcetTransitionView t;
-    t.id = number(text(transitions_, r, TransitionId), tr("transition row %1").arg(r + 1), -1, -1, tr("transition number"));
+    t.id = number(text(transitions_, r, TransitionId), tr("transition row %1").arg(r + 1), -1, -1,
+                  tr("transition number"));
     const QString element = tr("transition %1").arg(t.id);
-    for (const QString& f : tokens(text(transitions_, r, TransitionFrom))) t.from << number(f, element, -1, t.id, tr("source step"));
-    for (const QString& s : tokens(text(transitions_, r, TransitionTo))) t.to << number(s, element, -1, t.id, tr("target step"));
+    for (const QString& f : tokens(text(transitions_, r, TransitionFrom)))
+      t.from << number(f, element, -1, t.id, tr("source step"));
+    for (const QString& s : tokens(text(transitions_, r, TransitionTo)))
+      t.to << number(s, element, -1, t.id, tr("target step"));
     t.receptivity = text(transitions_, r, TransitionReceptivity);
     t.priority = number(text(transitions_, r, TransitionPriority), element, -1, t.id, tr("priority"));
     if (std::any_of(c.transitions.begin(), c.transitions.end(), [&](const auto& o) { return o.id == t.id; }))
@@ -244,8 +253,8 @@ void GrafcetChartEditor::showIssues() {
       for (int c = 0; c < t->columnCount(); ++c)
         if (QTableWidgetItem* item = t->item(r, c)) item->setBackground(QBrush());
   for (const ChartIssue& issue : std::as_const(issues_)) {
-    auto* item = new QListWidgetItem(issue.element.isEmpty() ? issue.message : issue.element + QStringLiteral(": ") + issue.message,
-                                     issue_list_);
+    auto* item = new QListWidgetItem(
+        issue.element.isEmpty() ? issue.message : issue.element + QStringLiteral(": ") + issue.message, issue_list_);
     item->setForeground(QColor(180, 20, 20));
     item->setData(kStepRole, issue.step_id);
     item->setData(kTransitionRole, issue.transition_id);
@@ -260,8 +269,10 @@ void GrafcetChartEditor::showIssues() {
   steps_->blockSignals(blocked_s);
   transitions_->blockSignals(blocked_t);
   verdict_->setText(issues_.isEmpty() ? tr("\u2714 The chart is valid.")
-                                      : tr("\u2716 %n issue(s): the chart is not applied until fixed.", "", static_cast<int>(issues_.size())));
-  verdict_->setStyleSheet(issues_.isEmpty() ? QStringLiteral("color: #207020;") : QStringLiteral("color: #b41414; font-weight: bold;"));
+                                      : tr("\u2716 %n issue(s): the chart is not applied until fixed.", "",
+                                           static_cast<int>(issues_.size())));
+  verdict_->setStyleSheet(issues_.isEmpty() ? QStringLiteral("color: #207020;")
+                                            : QStringLiteral("color: #b41414; font-weight: bold;"));
 }
 
 void GrafcetChartEditor::selectElement(int step_id, int transition_id) {

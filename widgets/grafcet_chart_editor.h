@@ -51,8 +51,8 @@ class GrafcetChartEditor : public QWidget {
 
  private:
   void populate();
-  void edited();                            // tables -> chart, validate, show, maybe emit
-  void validate();                          // issues_ from format_issues_ + validator
+  void edited();    // tables -> chart, validate, show, maybe emit
+  void validate();  // issues_ from format_issues_ + validator
   void showIssues();
   void selectElement(int step_id, int transition_id);
   void addStep();

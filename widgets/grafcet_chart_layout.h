@@ -42,7 +42,7 @@ struct GrafcetLayout {
   static QColor activeFill() { return QColor(255, 236, 150); }
   static QColor token() { return QColor(200, 30, 30); }
   static QColor backArc() { return QColor(70, 70, 150); }
-  static void arrowUp(QPainter& p, QPointF tip);  // filled head in the pen colour
+  static void arrowUp(QPainter& p, QPointF tip);                                  // filled head in the pen colour
   static void paintHeader(QPainter& p, const QFont& base, const QString& title);  // title and legend row
 };
 

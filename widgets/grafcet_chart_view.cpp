@@ -1,7 +1,5 @@
 #include "grafcet_chart_view.h"
 
-#include "grafcet_chart_layout.h"
-
 #include <QFontMetricsF>
 #include <QHelpEvent>
 #include <QImage>
@@ -12,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
+
+#include "grafcet_chart_layout.h"
 
 namespace mx::widgets {
 
@@ -125,7 +125,8 @@ void GrafcetChartView::paintChart(QPainter& p) const {
   // Transitions: bar, "(n)" on the left, receptivity on the right.
   for (const GrafcetTransitionView& t : chart_.transitions) {
     const QRectF bar = layout_.transitions.value(t.id).bar;
-    if (t.id == selected_transition_) p.fillRect(bar.adjusted(-5, -5, 5, 5), QColor(kSelect.red(), kSelect.green(), kSelect.blue(), 70));
+    if (t.id == selected_transition_)
+      p.fillRect(bar.adjusted(-5, -5, 5, 5), QColor(kSelect.red(), kSelect.green(), kSelect.blue(), 70));
     p.fillRect(bar, kInk);
     p.setFont(text_font);
     p.setPen(kInk);
@@ -133,8 +134,8 @@ void GrafcetChartView::paintChart(QPainter& p) const {
     p.drawText(label, Qt::AlignRight | Qt::AlignVCenter, transitionLabel(t.id));
     const QFontMetricsF fm(text_font);
     const QString rec = fm.elidedText(t.receptivity, Qt::ElideRight, kReceptivityMaxW);
-    p.drawText(QRectF(bar.right() + 8, bar.center().y() - 10, kReceptivityMaxW + 4, 20), Qt::AlignLeft | Qt::AlignVCenter,
-               rec);
+    p.drawText(QRectF(bar.right() + 8, bar.center().y() - 10, kReceptivityMaxW + 4, 20),
+               Qt::AlignLeft | Qt::AlignVCenter, rec);
   }
   // Steps: box (double when initial), number, name on the left, actions on the right, token.
   for (const GrafcetStepView& s : chart_.steps) {
@@ -190,7 +191,8 @@ void GrafcetChartView::paintArcs(QPainter& p) const {
   for (const GrafcetTransitionView& t : chart_.transitions) {
     const QRectF bar = layout_.transitions.value(t.id).bar;
     for (int f : t.from)
-      if (layout_.steps.contains(f) && std::abs(layout_.steps[f].bottom() + kBarBelowStep - bar.top()) < 0.5) owned[f] << t.id;
+      if (layout_.steps.contains(f) && std::abs(layout_.steps[f].bottom() + kBarBelowStep - bar.top()) < 0.5)
+        owned[f] << t.id;
   }
   p.setBrush(Qt::NoBrush);
   for (auto it = owned.cbegin(); it != owned.cend(); ++it) {  // step -> bars (OR divergence)
@@ -202,7 +204,8 @@ void GrafcetChartView::paintArcs(QPainter& p) const {
     }
     p.setPen(QPen(kInk, 1.4));
     const double y_div = r.bottom() + 12;
-    p.drawLine(QPointF(r.center().x(), r.bottom()), QPointF(r.center().x(), hi > lo ? y_div : r.bottom() + kBarBelowStep));
+    p.drawLine(QPointF(r.center().x(), r.bottom()),
+               QPointF(r.center().x(), hi > lo ? y_div : r.bottom() + kBarBelowStep));
     if (hi > lo) {
       p.drawLine(QPointF(lo, y_div), QPointF(hi, y_div));
       for (int tid : it.value()) {
@@ -264,7 +267,8 @@ void GrafcetChartView::paintArcs(QPainter& p) const {
       p.drawLine(QPointF(lo, y), QPointF(hi, y));
       p.drawLine(QPointF(lo, y + 4), QPointF(hi, y + 4));
       for (int to : targets)
-        p.drawLine(QPointF(layout_.steps[to].center().x(), y + 4), QPointF(layout_.steps[to].center().x(), layout_.steps[to].top()));
+        p.drawLine(QPointF(layout_.steps[to].center().x(), y + 4),
+                   QPointF(layout_.steps[to].center().x(), layout_.steps[to].top()));
       continue;
     }
     const QRectF r = layout_.steps[targets.front()];

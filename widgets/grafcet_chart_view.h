@@ -36,8 +36,8 @@ class GrafcetChartView : public QWidget {
   // Laid-out geometry in widget coordinates; null rects for unknown ids.
   QRectF stepRect(int step_id) const;
   QRectF transitionRect(int transition_id) const;  // the bar
-  bool stepDrawnAsInitial(int step_id) const;       // double box
-  bool isBackArc(int transition_id) const;          // drawn upward on a left lane
+  bool stepDrawnAsInitial(int step_id) const;      // double box
+  bool isBackArc(int transition_id) const;         // drawn upward on a left lane
   QSizeF contentSize() const { return content_; }
 
   // Fit mode (the supervisor's Run tab): the drawing is scaled down to the widget (never up) and the

@@ -20,8 +20,7 @@ QString betaText(double beta) {
 }
 }  // namespace
 
-JcCurvePlot::JcCurvePlot(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)) {
+JcCurvePlot::JcCurvePlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
@@ -99,7 +98,7 @@ void JcCurvePlot::setCurve(const JcCurveView& c) {
     jc.push_back(c.jc_n_s[i]);
     top = std::max(top, c.jc_n_s[i]);
   }
-  curve_->setData(beta, jc);  // sorts by beta
+  curve_->setData(beta, jc);                                 // sorts by beta
   plot_->yAxis->setRange(0.0, top > 0.0 ? 1.5 * top : 1.0);  // room for the legend
 
   threshold_ = std::isfinite(c.threshold_beta) ? std::clamp(c.threshold_beta, kBetaMin, kBetaMax) : kBetaMin;
@@ -115,10 +114,9 @@ void JcCurvePlot::setCurve(const JcCurveView& c) {
   if (c.best_beta && std::isfinite(*c.best_beta) && curve_->dataCount() > 0) {
     const double b = *c.best_beta;
     // J_c at the best beta: the sweep point there (else the nearest one).
-    auto nearest = std::min_element(curve_->data()->constBegin(), curve_->data()->constEnd(),
-                                    [b](const QCPGraphData& l, const QCPGraphData& r) {
-                                      return std::abs(l.key - b) < std::abs(r.key - b);
-                                    });
+    auto nearest = std::min_element(
+        curve_->data()->constBegin(), curve_->data()->constEnd(),
+        [b](const QCPGraphData& l, const QCPGraphData& r) { return std::abs(l.key - b) < std::abs(r.key - b); });
     best_->addData(b, nearest->value);
     best_->setName(tr("Minimum: \u03b2 = %1, J_c = %2 N\u00b7s").arg(betaText(b)).arg(nearest->value, 0, 'g', 4));
   }

@@ -1,6 +1,6 @@
 #include "lobe_chart_view.h"
 
-#include "cost_map_layer.h"
+#include <qcustomplot.h>
 
 #include <QKeyEvent>
 #include <QPainter>
@@ -8,7 +8,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 #include <limits>
-#include <qcustomplot.h>
+
+#include "cost_map_layer.h"
 
 namespace mx::widgets {
 
@@ -19,10 +20,14 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 QColor verdictColor(PointVerdict v) {
   switch (v) {
-    case PointVerdict::Stable: return QColor(30, 150, 30);
-    case PointVerdict::Unstable: return QColor(200, 20, 20);
-    case PointVerdict::PowerExceeded: return QColor(230, 120, 0);
-    case PointVerdict::Unknown: break;
+    case PointVerdict::Stable:
+      return QColor(30, 150, 30);
+    case PointVerdict::Unstable:
+      return QColor(200, 20, 20);
+    case PointVerdict::PowerExceeded:
+      return QColor(230, 120, 0);
+    case PointVerdict::Unknown:
+      break;
   }
   return QColor(90, 90, 90);
 }
@@ -42,8 +47,9 @@ LobeChartView::LobeChartView(QWidget* parent)
   plot_->legend->setBrush(QColor(255, 255, 255, 220));
   plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
   plot_->setInteractions(QCP::iRangeZoom);  // left drag moves the point; right drag pans (below)
-  plot_->setToolTip(tr("Drag with the left button to pick the operating point; arrow keys nudge it "
-                       "(Shift snaps to the grid). Wheel zooms, right button pans."));
+  plot_->setToolTip(
+      tr("Drag with the left button to pick the operating point; arrow keys nudge it "
+         "(Shift snaps to the grid). Wheel zooms, right button pans."));
   marker_ = new QCPItemTracer(plot_);
   marker_->setLayer("overlay");
   marker_->setStyle(QCPItemTracer::tsCircle);
@@ -60,7 +66,9 @@ LobeChartView::LobeChartView(QWidget* parent)
   connect(plot_, &QCustomPlot::mouseRelease, this, &LobeChartView::onMouseRelease);
 }
 
-LobeChartView::~LobeChartView() { delete costs_; }
+LobeChartView::~LobeChartView() {
+  delete costs_;
+}
 
 void LobeChartView::setCostMap(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm,
                                const QVector<double>& cost) {
@@ -73,17 +81,25 @@ void LobeChartView::setGridPoints(const QVector<double>& speeds_rpm, const QVect
   costs_->setGridPoints(speeds_rpm, scaled(depths_mm));
 }
 
-void LobeChartView::setCostMapVisible(bool visible) { costs_->setCostMapVisible(visible); }
-void LobeChartView::setGridVisible(bool visible) { costs_->setGridVisible(visible); }
-int LobeChartView::costCellCount() const { return costs_->costCellCount(); }
+void LobeChartView::setCostMapVisible(bool visible) {
+  costs_->setCostMapVisible(visible);
+}
+void LobeChartView::setGridVisible(bool visible) {
+  costs_->setGridVisible(visible);
+}
+int LobeChartView::costCellCount() const {
+  return costs_->costCellCount();
+}
 
 QColor LobeChartView::toolColor(int index) {
-  static const QColor palette[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),
+  static const QColor palette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),  QColor(44, 160, 44),
                                    QColor(148, 103, 189), QColor(255, 127, 14), QColor(23, 190, 207)};
   return palette[index % 6];
 }
 
-QWidget* LobeChartView::plotWidget() const { return plot_; }
+QWidget* LobeChartView::plotWidget() const {
+  return plot_;
+}
 
 void LobeChartView::clear() {
   series_.clear();
@@ -188,14 +204,18 @@ void LobeChartView::setActiveTool(int index) {
 }
 
 void LobeChartView::setToolVisible(const QString& tool_id, bool visible) {
-  if (visible) hidden_.remove(tool_id);
-  else hidden_.insert(tool_id);
+  if (visible)
+    hidden_.remove(tool_id);
+  else
+    hidden_.insert(tool_id);
   for (int i = 0; i < series_.size() && i < tool_graphs_.size(); ++i) {
     if (series_[i].tool_id != tool_id) continue;
     for (QCPGraph* g : {tool_graphs_[i].first, tool_graphs_[i].second}) {
       g->setVisible(visible);
-      if (visible) g->addToLegend();
-      else g->removeFromLegend();
+      if (visible)
+        g->addToLegend();
+      else
+        g->removeFromLegend();
     }
   }
   plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -260,8 +280,10 @@ void LobeChartView::setOperatingPoint(double speed_rpm, double depth_mm, PointVe
   marker_->setPen(QPen(c.darker(130), 2.0));
   marker_->setBrush(c);
   marker_->setVisible(true);
-  marker_label_->setText(
-      QString("%1 rpm, %2 %3").arg(speed_rpm, 0, 'f', 0).arg(depth_mm * scale_, 0, 'f', scale_ == 1.0 ? 3 : 4).arg(unit_));
+  marker_label_->setText(QString("%1 rpm, %2 %3")
+                             .arg(speed_rpm, 0, 'f', 0)
+                             .arg(depth_mm * scale_, 0, 'f', scale_ == 1.0 ? 3 : 4)
+                             .arg(unit_));
   marker_label_->setColor(c.darker(150));
   marker_label_->setVisible(true);
   replotOverlay();
@@ -364,12 +386,24 @@ void LobeChartView::keyPressEvent(QKeyEvent* event) {
   const double step_mm = snap ? snap_mm_ : plot_->yAxis->range().size() / scale_ / 200.0;
   double n = point_rpm_, b = point_mm_;
   switch (event->key()) {
-    case Qt::Key_Left: n -= step_rpm; break;
-    case Qt::Key_Right: n += step_rpm; break;
-    case Qt::Key_Up: b += step_mm; break;
-    case Qt::Key_Down: b -= step_mm; break;
-    case Qt::Key_Home: resetView(); return;
-    default: QWidget::keyPressEvent(event); return;
+    case Qt::Key_Left:
+      n -= step_rpm;
+      break;
+    case Qt::Key_Right:
+      n += step_rpm;
+      break;
+    case Qt::Key_Up:
+      b += step_mm;
+      break;
+    case Qt::Key_Down:
+      b -= step_mm;
+      break;
+    case Qt::Key_Home:
+      resetView();
+      return;
+    default:
+      QWidget::keyPressEvent(event);
+      return;
   }
   movePointTo(n, b, snap);
   emit pointReleased(point_rpm_, point_mm_);

@@ -39,7 +39,7 @@ class LobeChartView : public QWidget {
   ~LobeChartView() override;
 
   void setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha);
-  void setActiveTool(int index);  // whose unstable region is shaded; -1 = none
+  void setActiveTool(int index);                              // whose unstable region is shaded; -1 = none
   void setToolVisible(const QString& tool_id, bool visible);  // hide or show a tool's lobes
   bool isToolVisible(const QString& tool_id) const { return !hidden_.contains(tool_id); }
   // Depth [mm] where peak power reaches the spindle limit, on the active tool's speeds; empty = none.

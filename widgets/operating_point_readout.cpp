@@ -77,7 +77,7 @@ void OperatingPointReadout::refresh() {
   values_["feed"]->setText(QString("%1 %2/tooth").arg(r.feed_mm_per_tooth * f, 0, 'f', dec).arg(u));
   values_["power"]->setText(QString("%1 W").arg(r.peak_power_w, 0, 'f', 1));
   values_["power_fraction"]->setText(r.power_limit_w > 0 ? QString("%1 %").arg(100.0 * r.powerFraction(), 0, 'f', 1)
-                                                          : tr("no spindle limit"));
+                                                         : tr("no spindle limit"));
   const QString volume = u + QStringLiteral("\u00b3/s");  // "%2\u00b3" would read as placeholder %23
   values_["mrr"]->setText(QString("%1 %2").arg(r.mrr_mm3_per_s * f * f * f, 0, 'f', f != 1.0 ? 4 : 1).arg(volume));
   const bool valid = r.valid;
@@ -100,7 +100,8 @@ void OperatingPointReadout::refresh() {
   }
   verdict_->setText(verdict);
   verdict_->setStyleSheet(QString("QLabel { color: white; background: %1; font-weight: bold; padding: 6px; "
-                                  "border-radius: 4px; }").arg(color));
+                                  "border-radius: 4px; }")
+                              .arg(color));
 }
 
 }  // namespace mx::widgets

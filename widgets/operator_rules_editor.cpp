@@ -33,9 +33,10 @@ OperatorRulesEditor::OperatorRulesEditor(QWidget* parent) : QWidget(parent) {
   edit_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
   edit_->setLineWrapMode(QPlainTextEdit::NoWrap);
   edit_->setPlaceholderText(tr("if tool.diameter_mm < 10 then speed_rpm <= 8000"));
-  edit_->setToolTip(tr("Operator rules, one per line: if <condition> then <bound> [because \"...\"]. "
-                       "Blank lines and # comments are ignored. Lines with errors are red; rules that "
-                       "fired for the current point are green."));
+  edit_->setToolTip(
+      tr("Operator rules, one per line: if <condition> then <bound> [because \"...\"]. "
+         "Blank lines and # comments are ignored. Lines with errors are red; rules that "
+         "fired for the current point are green."));
   errors_ = new QListWidget(this);
   errors_->setObjectName("operator_rules_errors");
   errors_->setMaximumHeight(110);
@@ -58,7 +59,8 @@ OperatorRulesEditor::OperatorRulesEditor(QWidget* parent) : QWidget(parent) {
   notes_->setObjectName("operator_rules_notes");
   notes_->setWordWrap(true);
   notes_->setTextFormat(Qt::PlainText);
-  notes_->setToolTip(tr("The rules evaluated at the current operating point: contradictions, violated constraints and advice"));
+  notes_->setToolTip(
+      tr("The rules evaluated at the current operating point: contradictions, violated constraints and advice"));
   notes_->setVisible(false);
   layout->addWidget(notes_);
   layout->addWidget(errors_);

@@ -44,7 +44,7 @@ class OperatorRulesEditor : public QWidget {
   QStringList notes() const { return notes_list_; }
 
   QList<int> errorLines() const { return error_lines_; }  // 1-based, ascending
-  QStringList errorMessages() const;                    // as listed
+  QStringList errorMessages() const;                      // as listed
   QPlainTextEdit* textEdit() const { return edit_; }
   QListWidget* errorList() const { return errors_; }
 

@@ -1,5 +1,7 @@
 #include "pareto_front_view.h"
 
+#include <qcustomplot.h>
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -8,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <qcustomplot.h>
 
 namespace mx::widgets {
 
@@ -25,27 +26,36 @@ QCPRange paddedRange(double lo, double hi) {
 
 double ParetoFrontView::value(const ParetoPointView& p, Axis axis) {
   switch (axis) {
-    case Axis::Tol: return p.tol;
-    case Axis::Mrr: return p.mrr_cm3_s;
-    case Axis::Surf: return p.surf;
-    case Axis::Ros: return p.ros;
+    case Axis::Tol:
+      return p.tol;
+    case Axis::Mrr:
+      return p.mrr_cm3_s;
+    case Axis::Surf:
+      return p.surf;
+    case Axis::Ros:
+      return p.ros;
   }
   return 0.0;
 }
 
 QString ParetoFrontView::axisLabel(Axis axis) {
   switch (axis) {
-    case Axis::Tol: return tr("TOL tool life [min]");
-    case Axis::Mrr: return tr("MRR removal rate [cm\u00b3/s]");
-    case Axis::Surf: return tr("SURF roughness [\u00b5m]");
-    case Axis::Ros: return tr("ROS robustness [\u2013]");
+    case Axis::Tol:
+      return tr("TOL tool life [min]");
+    case Axis::Mrr:
+      return tr("MRR removal rate [cm\u00b3/s]");
+    case Axis::Surf:
+      return tr("SURF roughness [\u00b5m]");
+    case Axis::Ros:
+      return tr("ROS robustness [\u2013]");
   }
   return {};
 }
 
 QString ParetoFrontView::defaultToolTip() {
-  return tr("The non-dominated (Pareto) set: no other admissible point is better in every objective. "
-            "Click a point to move the operating point and the weights to it.");
+  return tr(
+      "The non-dominated (Pareto) set: no other admissible point is better in every objective. "
+      "Click a point to move the operating point and the weights to it.");
 }
 
 QString ParetoFrontView::pointToolTip(const ParetoPointView& p) {
@@ -70,8 +80,8 @@ QString ParetoFrontView::pointToolTip(const ParetoPointView& p) {
 ParetoFrontView::ParetoFrontView(QWidget* parent) : QWidget(parent) {
   x_combo_ = makeCombo("pareto_x_axis", tr("Objective on the horizontal axis"), Axis::Mrr);
   y_combo_ = makeCombo("pareto_y_axis", tr("Objective on the vertical axis"), Axis::Tol);
-  colour_combo_ = makeCombo("pareto_colour_axis", tr("Objective shown as the colour of the points (scale on the right)"),
-                            Axis::Surf);
+  colour_combo_ = makeCombo("pareto_colour_axis",
+                            tr("Objective shown as the colour of the points (scale on the right)"), Axis::Surf);
   auto* controls = new QHBoxLayout;
   const std::array<std::pair<QString, QComboBox*>, 3> rows{
       {{tr("X:"), x_combo_}, {tr("Y:"), y_combo_}, {tr("Colour:"), colour_combo_}}};
@@ -139,8 +149,12 @@ QComboBox* ParetoFrontView::makeCombo(const QString& name, const QString& tip, A
   return combo;
 }
 
-ParetoFrontView::Axis ParetoFrontView::xAxis() const { return static_cast<Axis>(x_combo_->currentIndex()); }
-ParetoFrontView::Axis ParetoFrontView::yAxis() const { return static_cast<Axis>(y_combo_->currentIndex()); }
+ParetoFrontView::Axis ParetoFrontView::xAxis() const {
+  return static_cast<Axis>(x_combo_->currentIndex());
+}
+ParetoFrontView::Axis ParetoFrontView::yAxis() const {
+  return static_cast<Axis>(y_combo_->currentIndex());
+}
 ParetoFrontView::Axis ParetoFrontView::colourAxis() const {
   return static_cast<Axis>(colour_combo_->currentIndex());
 }
@@ -164,10 +178,18 @@ void ParetoFrontView::setSelectedIndex(int index) {
   rebuild();
 }
 
-QWidget* ParetoFrontView::plotWidget() const { return plot_; }
-QString ParetoFrontView::colourScaleLabel() const { return scale_->axis()->label(); }
-QString ParetoFrontView::xAxisLabel() const { return plot_->xAxis->label(); }
-QString ParetoFrontView::yAxisLabel() const { return plot_->yAxis->label(); }
+QWidget* ParetoFrontView::plotWidget() const {
+  return plot_;
+}
+QString ParetoFrontView::colourScaleLabel() const {
+  return scale_->axis()->label();
+}
+QString ParetoFrontView::xAxisLabel() const {
+  return plot_->xAxis->label();
+}
+QString ParetoFrontView::yAxisLabel() const {
+  return plot_->yAxis->label();
+}
 
 QPointF ParetoFrontView::plottedValue(int index) const {
   if (index < 0 || index >= points_.size()) return {};

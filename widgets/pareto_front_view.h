@@ -25,10 +25,10 @@ struct ParetoPointView {
   double speed_rpm = 0.0;
   double depth_mm = 0.0;
   double feed_mm_per_tooth = 0.0;
-  double tol = 0.0;        // tool life [min]
-  double mrr_cm3_s = 0.0;  // material removal rate [cm^3/s]
-  double surf = 0.0;       // surface roughness [um]
-  double ros = 0.0;        // robustness [-]
+  double tol = 0.0;                              // tool life [min]
+  double mrr_cm3_s = 0.0;                        // material removal rate [cm^3/s]
+  double surf = 0.0;                             // surface roughness [um]
+  double ros = 0.0;                              // robustness [-]
   std::optional<std::array<double, 4>> weights;  // (TOL, MRR, SURF, ROS) weights selecting it, if known
 };
 
@@ -55,7 +55,7 @@ class ParetoFrontView : public QWidget {
   int selectedIndex() const { return selected_; }
 
   static double value(const ParetoPointView& p, Axis axis);
-  static QString axisLabel(Axis axis);  // e.g. "MRR removal rate [cm³/s]"
+  static QString axisLabel(Axis axis);                    // e.g. "MRR removal rate [cm³/s]"
   static QString pointToolTip(const ParetoPointView& p);  // shown when hovering a point
 
   // Tests: the plotted (x, y) of point `index`, and its pixel in plotWidget() coordinates (valid

@@ -20,14 +20,18 @@ struct RowSpec {
 };
 
 constexpr RowSpec kRows[4] = {
-    {"w_TOL tool life", "w_TOL: weight of the tool-life score (Taylor model, eq. 10; higher is better) "
-                        "(dimensionless, 0..1)"},
-    {"w_MRR removal rate", "w_MRR: weight of the material-removal-rate score (eq. 11; higher is better) "
-                           "(dimensionless, 0..1)"},
-    {"w_SURF roughness", "w_SURF: weight of the surface-roughness score (eq. 12; lower roughness scores "
-                         "higher) (dimensionless, 0..1)"},
-    {"w_ROS robustness", "w_ROS: weight of the robustness score, the distance to the stability boundary "
-                         "(eq. 13; higher is better) (dimensionless, 0..1)"},
+    {"w_TOL tool life",
+     "w_TOL: weight of the tool-life score (Taylor model, eq. 10; higher is better) "
+     "(dimensionless, 0..1)"},
+    {"w_MRR removal rate",
+     "w_MRR: weight of the material-removal-rate score (eq. 11; higher is better) "
+     "(dimensionless, 0..1)"},
+    {"w_SURF roughness",
+     "w_SURF: weight of the surface-roughness score (eq. 12; lower roughness scores "
+     "higher) (dimensionless, 0..1)"},
+    {"w_ROS robustness",
+     "w_ROS: weight of the robustness score, the distance to the stability boundary "
+     "(eq. 13; higher is better) (dimensionless, 0..1)"},
 };
 
 }  // namespace
@@ -37,8 +41,9 @@ void ParetoWeightsPanel::moveWeight(Weights& weights, std::size_t index, double 
 }
 
 ParetoWeightsPanel::ParetoWeightsPanel(QWidget* parent) : QWidget(parent) {
-  setToolTip(tr("Weights of the Pareto cost J = sum w_i n_i over the normalised scores (Rule 9); they "
-                "always sum to 1 and choose the point of the Pareto set."));
+  setToolTip(
+      tr("Weights of the Pareto cost J = sum w_i n_i over the normalised scores (Rule 9); they "
+         "always sum to 1 and choose the point of the Pareto set."));
   auto* grid = new QGridLayout(this);
   for (std::size_t i = 0; i < 4; ++i) {
     const int row = static_cast<int>(i);
@@ -64,9 +69,8 @@ ParetoWeightsPanel::ParetoWeightsPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(spin, row, 2);
     sliders_[i] = slider;
     spins_[i] = spin;
-    connect(slider, &QSlider::valueChanged, this, [this, i, slider](int v) {
-      userSet(i, static_cast<double>(v) / kSliderSteps, !slider->isSliderDown());
-    });
+    connect(slider, &QSlider::valueChanged, this,
+            [this, i, slider](int v) { userSet(i, static_cast<double>(v) / kSliderSteps, !slider->isSliderDown()); });
     connect(slider, &QSlider::sliderReleased, this, &ParetoWeightsPanel::commitIfChanged);
     connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) { userSet(i, v, true); });
   }

@@ -19,7 +19,7 @@ namespace mx::widgets {
 class ParetoWeightsPanel : public QWidget {
   Q_OBJECT
  public:
-  using Weights = std::array<double, 4>;  // TOL, MRR, SURF, ROS
+  using Weights = std::array<double, 4>;     // TOL, MRR, SURF, ROS
   static constexpr int kSliderSteps = 1000;  // slider resolution: 0.001
 
   explicit ParetoWeightsPanel(QWidget* parent = nullptr);

@@ -11,14 +11,14 @@ struct PointReadout {
   double depth_mm = 0.0;
   double feed_mm_per_tooth = 0.0;
   double peak_power_w = 0.0;
-  double power_limit_w = 0.0;     // 0 = no machine section
+  double power_limit_w = 0.0;  // 0 = no machine section
   double mrr_mm3_per_s = 0.0;
-  double blim_mm = 0.0;           // alpha * delta-lobe at this speed; +inf: none below the cap
-  double delta_ns_rpm = 0.0;      // spindle speed security change (2006, section 3.B)
-  double ros = 0.0;               // normalised distance to the boundary (negative when unstable)
+  double blim_mm = 0.0;       // alpha * delta-lobe at this speed; +inf: none below the cap
+  double delta_ns_rpm = 0.0;  // spindle speed security change (2006, section 3.B)
+  double ros = 0.0;           // normalised distance to the boundary (negative when unstable)
   bool stable = false;
-  bool valid = false;             // false: no lobes yet, or the speed is outside the computed range
-  QString message;                // why not valid
+  bool valid = false;  // false: no lobes yet, or the speed is outside the computed range
+  QString message;     // why not valid
 
   double powerFraction() const { return power_limit_w > 0.0 ? peak_power_w / power_limit_w : 0.0; }
   bool powerOk() const { return power_limit_w <= 0.0 || peak_power_w <= power_limit_w; }

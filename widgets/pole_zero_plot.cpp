@@ -60,10 +60,10 @@ PoleZeroPlot::PoleZeroPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
     y << std::sin(phi);
   }
   circle_->setData(t, x, y);
-  poles_ = addScatter(plot_, tr("Poles \u00d7"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kPoleColor, 2.0),
-                                                                  Qt::NoBrush, 12));
-  zeros_ = addScatter(plot_, tr("Zeros \u25cb"), QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kZeroColor, 2.0),
-                                                                  Qt::NoBrush, 11));
+  poles_ = addScatter(plot_, tr("Poles \u00d7"),
+                      QCPScatterStyle(QCPScatterStyle::ssCross, QPen(kPoleColor, 2.0), Qt::NoBrush, 12));
+  zeros_ = addScatter(plot_, tr("Zeros \u25cb"),
+                      QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kZeroColor, 2.0), Qt::NoBrush, 11));
   unstable_zeros_ = addScatter(plot_, tr("Unstable zeros |z| > 1"),
                                QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(kUnstableColor, 2.5), Qt::NoBrush, 11));
   connect(plot_, &QCustomPlot::afterLayout, this, &PoleZeroPlot::applyEqualAspect);

@@ -37,11 +37,17 @@ void RankingTable::setRanking(const QVector<RankingRow>& rows, const QString& se
   model_->setRanking(rows, selected_tool);
 }
 
-const QVector<RankingRow>& RankingTable::rows() const { return model_->rows(); }
+const QVector<RankingRow>& RankingTable::rows() const {
+  return model_->rows();
+}
 
-QString RankingTable::selectedTool() const { return model_->selectedTool(); }
+QString RankingTable::selectedTool() const {
+  return model_->selectedTool();
+}
 
-void RankingTable::setUnits(DisplayUnits* units) { model_->setUnits(units); }
+void RankingTable::setUnits(DisplayUnits* units) {
+  model_->setUnits(units);
+}
 
 void RankingTable::onClicked(int row) {
   if (row < 0 || row >= model_->rows().size()) return;

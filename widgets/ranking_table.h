@@ -28,17 +28,17 @@ class RankingTableModel;
 struct RankingRow {
   static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
-  QString tool;                 // tool id
-  double min_cost = 0.0;        // C at q* (eq. 13)
-  double power_term = 0.0;      // c1 P / P_av
-  double mrr_term = 0.0;        // c2 MRR_max / MRR
-  double dns_term = 0.0;        // c3 Delta N_s,max / Delta N_s
-  double speed_rpm = 0.0;       // q*
+  QString tool;             // tool id
+  double min_cost = 0.0;    // C at q* (eq. 13)
+  double power_term = 0.0;  // c1 P / P_av
+  double mrr_term = 0.0;    // c2 MRR_max / MRR
+  double dns_term = 0.0;    // c3 Delta N_s,max / Delta N_s
+  double speed_rpm = 0.0;   // q*
   double depth_mm = 0.0;
   double feed_mm_per_tooth = 0.0;
-  double power_w = 0.0;         // peak cutting power at q*
-  double mrr_mm3_min = 0.0;     // MRR at q* [mm^3/min]
-  double dns_rpm = 0.0;         // Delta N_s at q* [rpm]
+  double power_w = 0.0;              // peak cutting power at q*
+  double mrr_mm3_min = 0.0;          // MRR at q* [mm^3/min]
+  double dns_rpm = 0.0;              // Delta N_s at q* [rpm]
   double time_cost = kUnknown;       // C_t at q** (eq. 18)
   double frequency_cost = kUnknown;  // C_f at q** (eq. 19)
   double resultant_cost = kUnknown;  // C_resultant at q** (eq. 20)

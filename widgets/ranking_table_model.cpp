@@ -83,20 +83,34 @@ void RankingTableModel::unitsChanged() {
 double RankingTableModel::value(const RankingRow& r, int column) const {
   const double f = units_ ? units_->fromMm(1.0) : 1.0;
   switch (column) {
-    case MinCost: return r.min_cost;
-    case PowerTerm: return r.power_term;
-    case MrrTerm: return r.mrr_term;
-    case DnsTerm: return r.dns_term;
-    case Speed: return r.speed_rpm;
-    case Depth: return r.depth_mm * f;
-    case Feed: return r.feed_mm_per_tooth * f;
-    case Power: return r.power_w;
-    case Mrr: return r.mrr_mm3_min * f * f * f;
-    case Dns: return r.dns_rpm;
-    case TimeCost: return r.time_cost;
-    case FrequencyCost: return r.frequency_cost;
-    case ResultantCost: return r.resultant_cost;
-    default: return RankingRow::kUnknown;
+    case MinCost:
+      return r.min_cost;
+    case PowerTerm:
+      return r.power_term;
+    case MrrTerm:
+      return r.mrr_term;
+    case DnsTerm:
+      return r.dns_term;
+    case Speed:
+      return r.speed_rpm;
+    case Depth:
+      return r.depth_mm * f;
+    case Feed:
+      return r.feed_mm_per_tooth * f;
+    case Power:
+      return r.power_w;
+    case Mrr:
+      return r.mrr_mm3_min * f * f * f;
+    case Dns:
+      return r.dns_rpm;
+    case TimeCost:
+      return r.time_cost;
+    case FrequencyCost:
+      return r.frequency_cost;
+    case ResultantCost:
+      return r.resultant_cost;
+    default:
+      return RankingRow::kUnknown;
   }
 }
 
@@ -106,12 +120,17 @@ QString RankingTableModel::text(const RankingRow& r, int column) const {
   const bool inch = units_ && units_->length() == DisplayUnits::Length::Inch;
   switch (column) {
     case Speed:
-    case Dns: return QString::number(v, 'f', 0);
+    case Dns:
+      return QString::number(v, 'f', 0);
     case Depth:
-    case Feed: return QString::number(v, 'f', units_ ? units_->lengthDecimals() : 4);
-    case Power: return QString::number(v, 'f', 1);
-    case Mrr: return QString::number(v, 'f', inch ? 3 : 0);
-    default: return QString::number(v, 'f', 4);
+    case Feed:
+      return QString::number(v, 'f', units_ ? units_->lengthDecimals() : 4);
+    case Power:
+      return QString::number(v, 'f', 1);
+    case Mrr:
+      return QString::number(v, 'f', inch ? 3 : 0);
+    default:
+      return QString::number(v, 'f', 4);
   }
 }
 
@@ -129,7 +148,8 @@ QVariant RankingTableModel::data(const QModelIndex& index, int role) const {
       if (column == Rank) return index.row() + 1;
       if (column == Tool) return r.tool;
       return value(r, column);
-    case SelectedRole: return selected;
+    case SelectedRole:
+      return selected;
     case Qt::FontRole:
       if (selected) {
         QFont font;
@@ -137,13 +157,16 @@ QVariant RankingTableModel::data(const QModelIndex& index, int role) const {
         return font;
       }
       return {};
-    case Qt::DecorationRole: return selected && column == Tool ? QVariant(mark_) : QVariant();
+    case Qt::DecorationRole:
+      return selected && column == Tool ? QVariant(mark_) : QVariant();
     case Qt::TextAlignmentRole:
       return QVariant::fromValue(column == Tool ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
     case Qt::ToolTipRole:
-      if (selected) return tr("%1: the selected tool (Rule 4: lowest minimum cost C). Click to show its lobes.").arg(r.tool);
+      if (selected)
+        return tr("%1: the selected tool (Rule 4: lowest minimum cost C). Click to show its lobes.").arg(r.tool);
       return tr("%1: rank %2. Click to show its lobes.").arg(r.tool).arg(index.row() + 1);
-    default: return {};
+    default:
+      return {};
   }
 }
 
@@ -156,22 +179,40 @@ QVariant RankingTableModel::headerData(int section, Qt::Orientation orientation,
   };
   auto header = [&]() -> Header {
     switch (section) {
-      case Rank: return {tr("Rank"), tr("Rule 4: tools by increasing minimum cost C (ties: higher MRR, lower power, lower speed)")};
-      case Tool: return {tr("Tool"), tr("Tool id; the check mark is the selected tool")};
-      case MinCost: return {tr("min C [\u2013]"), tr("Minimum tool cost C over the admissible space (eq. 13); lower is better")};
-      case PowerTerm: return {tr("c1\u00b7P/P_av [\u2013]"), tr("Power term of C at q*: c1 P / P_av")};
-      case MrrTerm: return {tr("c2\u00b7MRR_max/MRR [\u2013]"), tr("MRR term of C at q*: c2 MRR_max / MRR")};
-      case DnsTerm: return {tr("c3\u00b7\u0394N_s,max/\u0394N_s [\u2013]"), tr("Speed security term of C at q*: c3 \u0394N_s,max / \u0394N_s")};
-      case Speed: return {tr("N* [rpm]"), tr("Spindle speed of q*, the tool's cost-minimising point")};
-      case Depth: return {tr("b* [%1]").arg(u), tr("Axial depth of cut of q*")};
-      case Feed: return {tr("s_t* [%1/tooth]").arg(u), tr("Feed per tooth of q*")};
-      case Power: return {tr("P [W]"), tr("Peak cutting power at q*")};
-      case Mrr: return {tr("MRR [%1/min]").arg(u + QStringLiteral("\u00b3")), tr("Material removal rate at q*")};
-      case Dns: return {tr("\u0394N_s [rpm]"), tr("Spindle speed security change at q*: distance in speed to the lobes")};
-      case TimeCost: return {tr("C_t [\u2013]"), tr("Time-response cost at q** (eq. 18); \u2014 until simulated")};
-      case FrequencyCost: return {tr("C_f [\u2013]"), tr("Spectrum cost at q** (eq. 19); \u2014 until simulated")};
-      case ResultantCost: return {tr("C_resultant [\u2013]"), tr("Resultant cost at q** (eq. 20); \u2014 until simulated")};
-      default: return {};
+      case Rank:
+        return {tr("Rank"),
+                tr("Rule 4: tools by increasing minimum cost C (ties: higher MRR, lower power, lower speed)")};
+      case Tool:
+        return {tr("Tool"), tr("Tool id; the check mark is the selected tool")};
+      case MinCost:
+        return {tr("min C [\u2013]"), tr("Minimum tool cost C over the admissible space (eq. 13); lower is better")};
+      case PowerTerm:
+        return {tr("c1\u00b7P/P_av [\u2013]"), tr("Power term of C at q*: c1 P / P_av")};
+      case MrrTerm:
+        return {tr("c2\u00b7MRR_max/MRR [\u2013]"), tr("MRR term of C at q*: c2 MRR_max / MRR")};
+      case DnsTerm:
+        return {tr("c3\u00b7\u0394N_s,max/\u0394N_s [\u2013]"),
+                tr("Speed security term of C at q*: c3 \u0394N_s,max / \u0394N_s")};
+      case Speed:
+        return {tr("N* [rpm]"), tr("Spindle speed of q*, the tool's cost-minimising point")};
+      case Depth:
+        return {tr("b* [%1]").arg(u), tr("Axial depth of cut of q*")};
+      case Feed:
+        return {tr("s_t* [%1/tooth]").arg(u), tr("Feed per tooth of q*")};
+      case Power:
+        return {tr("P [W]"), tr("Peak cutting power at q*")};
+      case Mrr:
+        return {tr("MRR [%1/min]").arg(u + QStringLiteral("\u00b3")), tr("Material removal rate at q*")};
+      case Dns:
+        return {tr("\u0394N_s [rpm]"), tr("Spindle speed security change at q*: distance in speed to the lobes")};
+      case TimeCost:
+        return {tr("C_t [\u2013]"), tr("Time-response cost at q** (eq. 18); \u2014 until simulated")};
+      case FrequencyCost:
+        return {tr("C_f [\u2013]"), tr("Spectrum cost at q** (eq. 19); \u2014 until simulated")};
+      case ResultantCost:
+        return {tr("C_resultant [\u2013]"), tr("Resultant cost at q** (eq. 20); \u2014 until simulated")};
+      default:
+        return {};
     }
   };
   if (role == Qt::DisplayRole) return header().title;

@@ -18,8 +18,22 @@ class RankingTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
   enum Column {
-    Rank, Tool, MinCost, PowerTerm, MrrTerm, DnsTerm, Speed, Depth, Feed, Power, Mrr, Dns,
-    TimeCost, FrequencyCost, ResultantCost, ColumnCount
+    Rank,
+    Tool,
+    MinCost,
+    PowerTerm,
+    MrrTerm,
+    DnsTerm,
+    Speed,
+    Depth,
+    Feed,
+    Power,
+    Mrr,
+    Dns,
+    TimeCost,
+    FrequencyCost,
+    ResultantCost,
+    ColumnCount
   };
   static constexpr int ValueRole = Qt::UserRole + 1;     // the raw value (double; rank int; tool QString)
   static constexpr int SelectedRole = Qt::UserRole + 2;  // bool: the row of the selected tool

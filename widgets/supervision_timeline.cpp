@@ -14,10 +14,10 @@ namespace mx::widgets {
 namespace {
 const QColor kForce(31, 119, 180), kPower(255, 127, 14), kLimit(214, 39, 40), kReference(60, 60, 60);
 const char* const kLetters = "ABCDEFGHIJKL";
-const char* const kCaptions[] = {"feedrate routine",  "operator input",   "feed hold",          "operator chatter",
-                                 "auto chatter det.", "chatter suppr.",   "suppression routine", "parameter estim.",
-                                 "force processor",   "contact monitor",  "adaptive force ctrl", "model-based ctrl"};
-const QColor kModuleColors[] = {QColor(31, 119, 180), QColor(174, 199, 232), QColor(214, 39, 40),
+const char* const kCaptions[] = {"feedrate routine",  "operator input",  "feed hold",           "operator chatter",
+                                 "auto chatter det.", "chatter suppr.",  "suppression routine", "parameter estim.",
+                                 "force processor",   "contact monitor", "adaptive force ctrl", "model-based ctrl"};
+const QColor kModuleColors[] = {QColor(31, 119, 180),  QColor(174, 199, 232), QColor(214, 39, 40),
                                 QColor(255, 152, 150), QColor(148, 103, 189), QColor(197, 176, 213),
                                 QColor(140, 86, 75),   QColor(227, 119, 194), QColor(44, 160, 44),
                                 QColor(152, 223, 138), QColor(255, 127, 14),  QColor(188, 189, 34)};
@@ -43,8 +43,9 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
   setMinimumSize(520, 320);
-  plot_->setToolTip(tr("Wheel zooms and drag pans the shared time axis; a double click fits the data. Hover an "
-                       "event marker for its details."));
+  plot_->setToolTip(
+      tr("Wheel zooms and drag pans the shared time axis; a double click fits the data. Hover an "
+         "event marker for its details."));
   plot_->installEventFilter(this);
   plot_->plotLayout()->clear();
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -109,7 +110,8 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
   event_marks_ = plot_->addGraph(t_axis, m_axis);
   event_marks_->setName(tr("Event (hover for details)"));
   event_marks_->setLineStyle(QCPGraph::lsNone);
-  event_marks_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssTriangleInverted, QColor(60, 60, 60), QColor(60, 60, 60), 9));
+  event_marks_->setScatterStyle(
+      QCPScatterStyle(QCPScatterStyle::ssTriangleInverted, QColor(60, 60, 60), QColor(60, 60, 60), 9));
   if (plot_->legend) event_marks_->removeFromLegend(plot_->legend);
   event_marks_->addToLegend(legend);
   for (int i = 0; i < 12; ++i) moduleGraph(QString(QLatin1Char(kLetters[i])));
@@ -179,10 +181,14 @@ void SupervisionTimeline::setSeries(const SupervisionSeries& all) {
 void SupervisionTimeline::updateLimitLines() {
   const int n = force_->dataCount();
   const double t0 = n ? force_->data()->constBegin()->key : 0.0, t1 = n ? (force_->data()->constEnd() - 1)->key : 1.0;
-  if (power_limit_w_ > 0) limit_->setData({t0, t1}, {power_limit_w_, power_limit_w_}, true);
-  else limit_->data()->clear();
-  if (force_reference_n_ > 0) reference_->setData({t0, t1}, {force_reference_n_, force_reference_n_}, true);
-  else reference_->data()->clear();
+  if (power_limit_w_ > 0)
+    limit_->setData({t0, t1}, {power_limit_w_, power_limit_w_}, true);
+  else
+    limit_->data()->clear();
+  if (force_reference_n_ > 0)
+    reference_->setData({t0, t1}, {force_reference_n_, force_reference_n_}, true);
+  else
+    reference_->data()->clear();
 }
 
 void SupervisionTimeline::setModuleSpans(const QVector<ModuleSpan>& spans) {
@@ -290,7 +296,9 @@ QString SupervisionTimeline::eventToolTipAt(double t_s, double tolerance_s) cons
   QStringList lines;
   for (const SupervisionEventView& e : events_)
     if (std::abs(e.t_s - t_s) <= tolerance_s)
-      lines << tr("t = %1 s  %2%3").arg(e.t_s, 0, 'f', 3).arg(e.type, e.detail.isEmpty() ? QString() : QStringLiteral(": ") + e.detail);
+      lines << tr("t = %1 s  %2%3")
+                   .arg(e.t_s, 0, 'f', 3)
+                   .arg(e.type, e.detail.isEmpty() ? QString() : QStringLiteral(": ") + e.detail);
   return lines.join(QLatin1Char('\n'));
 }
 

@@ -36,11 +36,11 @@ class SupervisionTimeline : public QWidget {
   bool saveImage(const QString& path, int width, int height);
 
   // Tests / callers.
-  QStringList moduleRows() const;                 // row labels, top to bottom ("A feedrate routine", …)
+  QStringList moduleRows() const;                    // row labels, top to bottom ("A feedrate routine", …)
   double activeTimeOf(const QString& module) const;  // total span length [s]
   QPair<double, double> timeRange() const;
   QString eventToolTipAt(double t_s, double tolerance_s) const;  // empty when no event there
-  static QString moduleCaption(const QString& letter);          // "A feedrate routine"
+  static QString moduleCaption(const QString& letter);           // "A feedrate routine"
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;

@@ -66,7 +66,8 @@ QCustomPlot* SupervisorComparison::makePlot(const QString& controller) {
   plot->setMinimumSize(300, 260);
   const QFont small(font().family(), 8);
   plot->plotLayout()->insertRow(0);
-  plot->plotLayout()->addElement(0, 0, new QCPTextElement(plot, controllerCaption(controller), QFont(font().family(), 10, QFont::Bold)));
+  plot->plotLayout()->addElement(
+      0, 0, new QCPTextElement(plot, controllerCaption(controller), QFont(font().family(), 10, QFont::Bold)));
   QCPAxisRect* rect = plot->axisRect();
   rect->axis(QCPAxis::atBottom)->setLabel(tr("Time t [s]"));
   rect->axis(QCPAxis::atLeft)->setLabel(tr("F_Y [N]"));
@@ -123,8 +124,10 @@ void SupervisorComparison::showResult(int column) {
   plot->graph(0)->setData(t, f, true);
   plot->graph(1)->setData(t, p, true);
   const double t0 = n ? t.front() : 0.0, t1 = n && t.back() > t0 ? t.back() : t0 + 1.0;
-  if (s.power_limit_w > 0) plot->graph(2)->setData({t0, t1}, {s.power_limit_w, s.power_limit_w}, true);
-  else plot->graph(2)->data()->clear();
+  if (s.power_limit_w > 0)
+    plot->graph(2)->setData({t0, t1}, {s.power_limit_w, s.power_limit_w}, true);
+  else
+    plot->graph(2)->data()->clear();
   double f_hi = s.force_reference_n, p_hi = s.power_limit_w;
   for (qsizetype i = 0; i < n; ++i) {
     if (std::isfinite(f[i])) f_hi = std::max(f_hi, f[i]);

@@ -37,9 +37,10 @@ SupervisorView::SupervisorView(QWidget* parent)
       comparison_(new SupervisorComparison(this)),
       editor_(new GrafcetChartEditor(this)) {
   setObjectName(QStringLiteral("supervisorView"));
-  controller_->setToolTip(tr("Supervisory controller: none (constant feed), SMC I (transfer line: model-based force "
-                             "control, two 1 mm passes) or SMC II (job shop: adaptive force control with chatter "
-                             "detection and suppression)"));
+  controller_->setToolTip(
+      tr("Supervisory controller: none (constant feed), SMC I (transfer line: model-based force "
+         "control, two 1 mm passes) or SMC II (job shop: adaptive force control with chatter "
+         "detection and suppression)"));
   speed_->addItem(tr("1\u00d7 (real time)"), 1.0);
   speed_->addItem(tr("5\u00d7"), 5.0);
   speed_->addItem(tr("20\u00d7"), 20.0);
@@ -177,12 +178,13 @@ void SupervisorView::setMetrics(const SupervisionMetricsView& m) {
                                                   : tr("chatter detected"))
                               : tr("no chatter");
   const QString power = QString::number(m.max_power_pct_of_limit, 'f', 0);
-  metrics_->setText(tr("<b>%1</b>: max. power <span style='color:%2'>%3 % of the limit</span> \u00b7 force overshoot %4 % "
-                       "\u00b7 %5 \u00b7 %6 pass(es) \u00b7 cycle time %7 s")
-                        .arg(SupervisorComparison::controllerCaption(m.controller),
-                             m.max_power_pct_of_limit > 100.0 ? QStringLiteral("#b41414") : QStringLiteral("#207020"),
-                             power, QString::number(m.overshoot_pct, 'f', 0), chatter, QString::number(m.passes),
-                             QString::number(m.cycle_time_s, 'f', 2)));
+  metrics_->setText(
+      tr("<b>%1</b>: max. power <span style='color:%2'>%3 % of the limit</span> \u00b7 force overshoot %4 % "
+         "\u00b7 %5 \u00b7 %6 pass(es) \u00b7 cycle time %7 s")
+          .arg(SupervisorComparison::controllerCaption(m.controller),
+               m.max_power_pct_of_limit > 100.0 ? QStringLiteral("#b41414") : QStringLiteral("#207020"), power,
+               QString::number(m.overshoot_pct, 'f', 0), chatter, QString::number(m.passes),
+               QString::number(m.cycle_time_s, 'f', 2)));
 }
 
 QString SupervisorView::metricsText() const {

@@ -63,9 +63,12 @@ QPointF TernaryPicker::corner(int index) const {
   const double cx = width() / 2.0;
   const double top = label + (h - tri_h) / 2.0;
   switch (index) {
-    case 0: return {cx - side / 2.0, top + tri_h};
-    case 1: return {cx + side / 2.0, top + tri_h};
-    default: return {cx, top};
+    case 0:
+      return {cx - side / 2.0, top + tri_h};
+    case 1:
+      return {cx + side / 2.0, top + tri_h};
+    default:
+      return {cx, top};
   }
 }
 
@@ -87,10 +90,9 @@ TernaryPicker::Weights TernaryPicker::weightsAt(const QPointF& point) const {
   if (std::min({w[0], w[1], w[2]}) < 0.0) {  // outside: the nearest point of the boundary
     const QPointF candidates[] = {closestOnSegment(point, a, b), closestOnSegment(point, b, c),
                                   closestOnSegment(point, c, a)};
-    const QPointF* best = std::min_element(std::begin(candidates), std::end(candidates),
-                                           [&](const QPointF& x, const QPointF& y) {
-                                             return distance2(point, x) < distance2(point, y);
-                                           });
+    const QPointF* best =
+        std::min_element(std::begin(candidates), std::end(candidates),
+                         [&](const QPointF& x, const QPointF& y) { return distance2(point, x) < distance2(point, y); });
     w = barycentric(*best);
   }
   return normalised(w);

@@ -11,8 +11,8 @@
 #include <QWidget>
 
 #include "display_units.h"
-#include "mode_table_model.h"
 #include "document/project.h"
+#include "mode_table_model.h"
 #include "tool_table_model.h"
 
 class QGroupBox;
@@ -77,7 +77,7 @@ class ToolLibraryEditor : public QWidget {
   QPushButton* duplicate_;
   QPushButton* remove_;
   QString error_;
-  QString selected_;       // the tool id last announced by toolSelected
+  QString selected_;  // the tool id last announced by toolSelected
   QString pendingSelect_;
   bool refreshing_ = false;  // select this tool once the document shows it (after add / duplicate)
 };

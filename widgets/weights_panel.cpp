@@ -62,21 +62,24 @@ WeightsPanel::WeightsPanel(QWidget* parent) : QWidget(parent), committed_(weight
   connect(ternary_, &TernaryPicker::weightsCommitted, this, [this] { commitIfChanged(); });
 
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(addGroup(Group::Tool, tr("Tool cost weights c (eq. 13)"),
-                             tr("Weights of the tool cost C = c1 P/P_av + c2 MRR_max/MRR + c3 \u0394N_s,max/\u0394N_s; "
-                                "they rank the tools (Rule 4) and choose q*. Always summing to 1."),
-                             {{"c1 power", "c1: weight of the spindle power term P / P_av (dimensionless, 0..1)"},
-                              {"c2 MRR", "c2: weight of the material removal rate term MRR_max / MRR (dimensionless, 0..1)"},
-                              {"c3 \u0394N_s", "c3: weight of the speed security term \u0394N_s,max / \u0394N_s "
-                                               "(dimensionless, 0..1)"}},
-                             ternary_),
-                    1);
-  layout->addWidget(addGroup(Group::Resultant, tr("Resultant cost weights c_r (eq. 20)"),
-                             tr("Weights of C_resultant = c1r C + c2r C_t + c3r C_f, which chooses q** among the "
-                                "simulated points (Rule 5). Always summing to 1."),
-                             {{"c1r tool cost C", "c1r: weight of the tool cost C (eq. 13) (dimensionless, 0..1)"},
-                              {"c2r time cost C_t", "c2r: weight of the time-response cost C_t (eq. 18) (dimensionless, 0..1)"},
-                              {"c3r spectrum cost C_f", "c3r: weight of the spectrum cost C_f (eq. 19) (dimensionless, 0..1)"}}));
+  layout->addWidget(
+      addGroup(Group::Tool, tr("Tool cost weights c (eq. 13)"),
+               tr("Weights of the tool cost C = c1 P/P_av + c2 MRR_max/MRR + c3 \u0394N_s,max/\u0394N_s; "
+                  "they rank the tools (Rule 4) and choose q*. Always summing to 1."),
+               {{"c1 power", "c1: weight of the spindle power term P / P_av (dimensionless, 0..1)"},
+                {"c2 MRR", "c2: weight of the material removal rate term MRR_max / MRR (dimensionless, 0..1)"},
+                {"c3 \u0394N_s",
+                 "c3: weight of the speed security term \u0394N_s,max / \u0394N_s "
+                 "(dimensionless, 0..1)"}},
+               ternary_),
+      1);
+  layout->addWidget(
+      addGroup(Group::Resultant, tr("Resultant cost weights c_r (eq. 20)"),
+               tr("Weights of C_resultant = c1r C + c2r C_t + c3r C_f, which chooses q** among the "
+                  "simulated points (Rule 5). Always summing to 1."),
+               {{"c1r tool cost C", "c1r: weight of the tool cost C (eq. 13) (dimensionless, 0..1)"},
+                {"c2r time cost C_t", "c2r: weight of the time-response cost C_t (eq. 18) (dimensionless, 0..1)"},
+                {"c3r spectrum cost C_f", "c3r: weight of the spectrum cost C_f (eq. 19) (dimensionless, 0..1)"}}));
   layout->addWidget(addGroup(Group::Time, tr("Time cost weights c_t (eq. 18)"),
                              tr("Weights of C_t = c1t t_s/t_s,max + c2t M_p/M_p,max; the two sum to 1."),
                              {{"c1t settling t_s", "c1t: weight of the settling time t_s (dimensionless, 0..1)"},
@@ -138,10 +141,14 @@ QGroupBox* WeightsPanel::addGroup(Group group, const QString& title, const QStri
 
 std::span<double> WeightsPanel::values(Group group) {
   switch (group) {
-    case Group::Tool: return weights_.c;
-    case Group::Resultant: return weights_.cr;
-    case Group::Time: return weights_.ct;
-    case Group::Frequency: return weights_.cf;
+    case Group::Tool:
+      return weights_.c;
+    case Group::Resultant:
+      return weights_.cr;
+    case Group::Time:
+      return weights_.ct;
+    case Group::Frequency:
+      return weights_.cf;
   }
   return {};
 }

@@ -32,7 +32,7 @@ class WeightsPanel : public QWidget {
   Q_OBJECT
  public:
   enum class Group { Tool, Resultant, Time, Frequency };  // c, c_r, c_t, c_f
-  static constexpr int kSliderSteps = 1000;              // slider resolution: 0.001
+  static constexpr int kSliderSteps = 1000;               // slider resolution: 0.001
 
   explicit WeightsPanel(QWidget* parent = nullptr);
 

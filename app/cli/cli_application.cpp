@@ -6,8 +6,8 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "core/invalid_input.h"
-#include "services/service_errors.h"
 #include "document/project.h"
+#include "services/service_errors.h"
 
 namespace mx::app {
 
@@ -29,7 +29,9 @@ const char* kUsage =
     "  control   adaptive force control under beta-FROH (--beta B [--csv FILE] | --sweep-beta FROM:TO:STEP)\n"
     "Run 'millexpert-cli <command> --help' for the options of a command.\n";
 
-void printError(const QString& message) { QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl; }
+void printError(const QString& message) {
+  QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl;
+}
 }  // namespace
 
 int runCli(const QStringList& arguments) {

@@ -14,9 +14,11 @@ const CliCommand* findCommand(const QString& name) {
       {"weights-sweep", "minimum tool cost against the weights (figures 4, 5)", &runWeightsSweepCommand},
       {"history", "Rule 14 learning database: programmed points, newest first", &runHistoryCommand},
       {"pareto", "Pareto expert system: TOL, MRR, SURF, ROS objective and non-dominated set", &runParetoCommand},
-      {"control", "Adaptive force control under beta-FROH: closed loop over the workpiece, or a beta sweep", &runControlCommand},
+      {"control", "Adaptive force control under beta-FROH: closed loop over the workpiece, or a beta sweep",
+       &runControlCommand},
       {"sdnrp", "Cus & Zuperl surface-roughness control loop (SDNRP)", &runSdnrpCommand},
-      {"supervise", "supervisory machining control of a face-milling operation (none, SMC I, SMC II)", &runSuperviseCommand},
+      {"supervise", "supervisory machining control of a face-milling operation (none, SMC I, SMC II)",
+       &runSuperviseCommand},
       {"override", "optimise the feeds of a G-code program with a force controller", &runOverrideCommand},
   };
   for (const CliCommand& c : commands)

@@ -18,9 +18,9 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/control_request.h"
 #include "control/beta_sweep.h"
 #include "core/invalid_input.h"
+#include "services/control_request.h"
 
 namespace mx::app {
 
@@ -58,7 +58,8 @@ void writeSamples(const QString& path, const ClosedLoopResult& r) {
     out << '\n';
     for (const ClosedLoopSample& s : r.samples) {
       out << s.t << ',' << s.reference_N << ',' << s.model_N << ',' << s.force_N << ',' << s.error_N << ','
-          << s.feed_m_s * 1e3 << ',' << s.depth_m * 1e3 << ',' << int(s.rls_reset) << ',' << int(s.model_zeros_followed);
+          << s.feed_m_s * 1e3 << ',' << s.depth_m * 1e3 << ',' << int(s.rls_reset) << ','
+          << int(s.model_zeros_followed);
       for (std::size_t k = 0; k < n_theta; ++k) out << ',' << (k < s.theta.size() ? s.theta[k] : 0.0);
       out << '\n';
     }

@@ -15,8 +15,8 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/learning_database.h"
 #include "document/project.h"
+#include "services/learning_database.h"
 
 namespace mx::app {
 
@@ -94,8 +94,8 @@ int runHistoryCommand(const QStringList& arguments) {
   QJsonArray entries;
   try {
     if (add || parser.isSet("db") || QFileInfo::exists(dbPath)) {
-      LearningDatabase db(dbPath, add ? LearningDatabase::OpenMode::CreateIfMissing
-                                      : LearningDatabase::OpenMode::ExistingOnly);
+      LearningDatabase db(dbPath,
+                          add ? LearningDatabase::OpenMode::CreateIfMissing : LearningDatabase::OpenMode::ExistingOnly);
       if (record) db.insert(*record);
       for (const LearningRecord& r : db.history(query)) entries.append(learningEntryJson(r));
     }

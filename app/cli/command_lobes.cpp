@@ -75,10 +75,13 @@ int runLobesCommand(const QStringList& arguments) {
   // The grid in rpm as the user gave it (exact values in the output), converted once to SI.
   const std::vector<double> speeds = request.grid.values();
   std::vector<double> rpm_values;
-  for (size_t i = 0; i < speeds.size(); ++i) rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
+  for (size_t i = 0; i < speeds.size(); ++i)
+    rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
 
-  const StabilityMethod method = request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
-  const LobeDiagram diagram = computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps});
+  const StabilityMethod method =
+      request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  const LobeDiagram diagram =
+      computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps});
 
   QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
   for (size_t i = 0; i < speeds.size(); ++i) {

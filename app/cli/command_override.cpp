@@ -16,9 +16,9 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/part_program_request.h"
-#include "gcode/gcode_reader.h"
 #include "core/invalid_input.h"
+#include "gcode/gcode_reader.h"
+#include "services/part_program_request.h"
 
 namespace mx::app {
 
@@ -37,7 +37,8 @@ int runOverrideCommand(const QStringList& arguments) {
   if (!parser.parse(arguments)) throw CliError(parser.errorText(), kExitBadInput);
   const QStringList positional = parser.positionalArguments();
   if (positional.size() != 2)
-    throw CliError(QString("expected PROGRAM.nc and PROJECT, got %1 argument(s)").arg(positional.size()), kExitBadInput);
+    throw CliError(QString("expected PROGRAM.nc and PROJECT, got %1 argument(s)").arg(positional.size()),
+                   kExitBadInput);
   const QString out_path = requiredOption(parser, "out");
   const std::optional<double> speed = numberOption(parser, "speed", 1e-3, 1e6);
   const Project project = loadProject(positional[1]);
@@ -63,7 +64,8 @@ int runOverrideCommand(const QStringList& arguments) {
   const std::string text = r.writeProgram(header);
   writeTextFileAtomically("--out", out_path, [&](QTextStream& s) { s << QString::fromStdString(text); });
   if (parser.isSet("csv"))
-    writeTextFileAtomically("--csv", parser.value("csv"), [&](QTextStream& s) { s << QString::fromStdString(r.csv()); });
+    writeTextFileAtomically("--csv", parser.value("csv"),
+                            [&](QTextStream& s) { s << QString::fromStdString(r.csv()); });
 
   QJsonArray warnings;
   for (const GcodeWarning& w : r.warnings)

@@ -36,17 +36,17 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/expert_request.h"
-#include "services/pareto_request.h"
-#include "services/pareto_rules.h"
-#include "services/pareto_study.h"
-#include "services/learning_database.h"
+#include "document/project.h"
 #include "expert/admissible_grid.h"
 #include "pareto/objective_table.h"
 #include "pareto/pareto_front.h"
 #include "pareto/pareto_selector.h"
 #include "pareto/weight_modulation.h"
-#include "document/project.h"
+#include "services/expert_request.h"
+#include "services/learning_database.h"
+#include "services/pareto_request.h"
+#include "services/pareto_rules.h"
+#include "services/pareto_study.h"
 #include "simulation/simulation.h"
 #include "simulation/smith_tlusty.h"
 
@@ -54,7 +54,9 @@ namespace mx::app {
 
 namespace {
 
-double rounded(double value) { return QString::number(value, 'g', 12).toDouble(); }
+double rounded(double value) {
+  return QString::number(value, 'g', 12).toDouble();
+}
 
 QJsonObject qJson(const ParetoPoint& p) {
   return {{"speed_rpm", rounded(revPerSToRpm(p.speed_rev_per_s))},
@@ -62,7 +64,9 @@ QJsonObject qJson(const ParetoPoint& p) {
           {"feed_mm_per_tooth", rounded(p.feed_per_tooth_m * 1e3)}};
 }
 
-QJsonArray weightsJson(const ParetoWeights& w) { return {w[0], w[1], w[2], w[3]}; }
+QJsonArray weightsJson(const ParetoWeights& w) {
+  return {w[0], w[1], w[2], w[3]};
+}
 
 double operatorChatter(const QCommandLineParser& parser) {
   const std::optional<double> f = numberOption(parser, "chatter-hz", 1e-3, 1e6);
@@ -74,8 +78,9 @@ std::size_t frontLimit(const QCommandLineParser& parser) {
   bool ok = false;
   const int n = parser.value("front-limit").toInt(&ok);
   if (!ok || n < 0)
-    throw CliError(QString("--front-limit = %1: must be an integer >= 0 (0: no limit)").arg(parser.value("front-limit")),
-                   kExitBadInput);
+    throw CliError(
+        QString("--front-limit = %1: must be an integer >= 0 (0: no limit)").arg(parser.value("front-limit")),
+        kExitBadInput);
   return static_cast<std::size_t>(n);
 }
 
@@ -108,8 +113,7 @@ int runParetoCommand(const QStringList& arguments) {
   const std::optional<ParetoRules>& rules = study.rules();
   const ObjectiveTable& table = study.table();
 
-  const ParetoChoice choice =
-      study.choose({w_flag, requirement, parser.isSet("fine"), parser.isSet("auto-weights")});
+  const ParetoChoice choice = study.choose({w_flag, requirement, parser.isSet("fine"), parser.isSet("auto-weights")});
   const ParetoWeights weights = choice.weights;
   const ParetoSelection& chosen = choice.selection;
   const double coarse_j = choice.coarse_j;
@@ -123,7 +127,8 @@ int runParetoCommand(const QStringList& arguments) {
                                           {"weights_changed", choice.requirement_changed}});
   }
   if (choice.ascent)
-    out.insert("ascent", QJsonObject{{"iterations", choice.ascent->iterations}, {"converged", choice.ascent->converged}});
+    out.insert("ascent",
+               QJsonObject{{"iterations", choice.ascent->iterations}, {"converged", choice.ascent->converged}});
   if (choice.fine_rejected_by_rules) out.insert("fine_rejected_by_rules", true);
 
   // eta of q from the time-domain simulation (Rule 15's chip ratio is reported beside it).
@@ -131,8 +136,7 @@ int runParetoCommand(const QStringList& arguments) {
   options.revolutions = expert.settings.refinement.revolutions;
   options.evaluated_revolutions = expert.settings.refinement.evaluated_revolutions;
   const ParetoPoint& q = chosen.point;
-  const SimulationResult sim =
-      simulateMilling(setup, {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}, options);
+  const SimulationResult sim = simulateMilling(setup, {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}, options);
 
   if (rules) out.insert("rules", rulesJson(*rules, q, setup.teeth));
 
@@ -159,7 +163,8 @@ int runParetoCommand(const QStringList& arguments) {
       fb.insert("chatter", true);
       fb.insert("chatter_frequency_Hz", chatter_hz);
     }
-    if (const auto r = chatter_hz > 0.0 ? study.reselectAfterChatter(weights, requirement, chatter_hz, q) : std::nullopt) {
+    if (const auto r =
+            chatter_hz > 0.0 ? study.reselectAfterChatter(weights, requirement, chatter_hz, q) : std::nullopt) {
       fb.insert("suggested_speed_rpm", revPerSToRpm(r->suggested_rev_per_s));
       fb.insert("k", r->k);
       fb.insert("speed_window", r->within_window ? "within 2 %" : "nearest grid speed");
@@ -210,11 +215,8 @@ int runParetoCommand(const QStringList& arguments) {
   QJsonArray front;
   for (std::size_t i : shown) {
     const ParetoPoint& p = table.points()[i];
-    front.append(QJsonObject{{"q", qJson(p)},
-                             {"tol", p.tol()},
-                             {"mrr_cm3_s", p.mrr() * 1e6},
-                             {"surf", p.surf()},
-                             {"ros", p.ros()}});
+    front.append(QJsonObject{
+        {"q", qJson(p)}, {"tol", p.tol()}, {"mrr_cm3_s", p.mrr() * 1e6}, {"surf", p.surf()}, {"ros", p.ros()}});
   }
   out.insert("pareto_set_size", static_cast<qint64>(study.front().size()));
   out.insert("pareto_set_truncated", shown.size() < study.front().size());

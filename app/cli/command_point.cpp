@@ -10,8 +10,8 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "model/cutting_force.h"
 #include "document/project.h"
+#include "model/cutting_force.h"
 #include "stability/lobe_computation.h"
 #include "stability/stability_boundary.h"
 

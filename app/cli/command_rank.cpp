@@ -17,18 +17,20 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "document/project.h"
+#include "expert/expert_session.h"
 #include "services/expert_request.h"
 #include "services/pareto_request.h"
 #include "services/pareto_rules.h"
-#include "expert/expert_session.h"
-#include "document/project.h"
 
 namespace mx::app {
 
 namespace {
 
 // Grid values without the noise of the unit conversions: 12 significant digits.
-double rounded(double value) { return QString::number(value, 'g', 12).toDouble(); }
+double rounded(double value) {
+  return QString::number(value, 'g', 12).toDouble();
+}
 
 QJsonObject pointJson(const ExpertPoint& q) {
   return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s))},
@@ -91,9 +93,9 @@ int runRankCommand(const QStringList& arguments) {
       return toolRules[tool].admits(paretoPointOf(q), request.tools[tool].teeth);
     });
     bool any = false;
-    for (std::size_t t = 0; t < session.toolCount(); ++t) any = any || (!session.grid(t).empty() && !session.filteredOut(t));
-    if (!any)
-      throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
+    for (std::size_t t = 0; t < session.toolCount(); ++t)
+      any = any || (!session.grid(t).empty() && !session.filteredOut(t));
+    if (!any) throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
   }
   const ExpertResult result = session.run(request.weights, simulate);
 
@@ -109,20 +111,23 @@ int runRankCommand(const QStringList& arguments) {
   for (std::size_t t : result.ranking.excluded)
     excluded.append(QJsonObject{
         {"tool", request.tool_ids[static_cast<qsizetype>(t)]},
-        {"reason", session.filteredOut(t) ? QString("operator rules: no admissible point satisfies the fired constraints")
-                                          : QString::fromStdString(describeConstraint(
-                                                session.grid(t).funnel().emptiedBy(), request.settings))}});
+        {"reason",
+         session.filteredOut(t)
+             ? QString("operator rules: no admissible point satisfies the fired constraints")
+             : QString::fromStdString(describeConstraint(session.grid(t).funnel().emptiedBy(), request.settings))}});
   const ToolChoice& selected = result.ranking.selected();
-  QJsonObject out{{"selected", request.tool_ids[static_cast<qsizetype>(selected.tool)]},
-                  {"ranking", ranking},
-                  {"q_star", pointJson(selected.q)},
-                  {"q_star_star", result.refinement ? QJsonValue(pointJson(result.refinement->chosen().q)) : QJsonValue()},
-                  {"malfunction_iterations", result.malfunction_iterations},
-                  {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
-                  {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
-                  {"excluded", excluded}};
+  QJsonObject out{
+      {"selected", request.tool_ids[static_cast<qsizetype>(selected.tool)]},
+      {"ranking", ranking},
+      {"q_star", pointJson(selected.q)},
+      {"q_star_star", result.refinement ? QJsonValue(pointJson(result.refinement->chosen().q)) : QJsonValue()},
+      {"malfunction_iterations", result.malfunction_iterations},
+      {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
+      {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
+      {"excluded", excluded}};
   if (!toolRules.empty()) {
-    QJsonObject rules = rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);
+    QJsonObject rules =
+        rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);
     rules.insert("tool", out.value("selected"));
     out.insert("rules", rules);
   }

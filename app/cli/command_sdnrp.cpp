@@ -8,8 +8,8 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/sdnrp_request.h"
 #include "core/invalid_input.h"
+#include "services/sdnrp_request.h"
 
 namespace mx::app {
 
@@ -19,9 +19,9 @@ void writeSignals(const QString& path, const SdnrpResult& r) {
   writeTextFileAtomically("--csv", path, [&](QTextStream& out) {
     out << "t_s,Ra_um,Ra_dynamic_um,F_N,F_dynamic_N,feed_mm_min,speed_rpm,feed_command_mm_min,speed_command_rpm\n";
     for (const SdnrpSample& s : r.samples)
-      out << s.t_s << ',' << s.ra_m * 1e6 << ',' << s.ra_dynamic_m * 1e6 << ',' << s.force_N << ','
-          << s.force_dynamic_N << ',' << s.feed_m_per_s * 60e3 << ',' << s.speed_rev_per_s * 60.0 << ','
-          << s.feed_command_m_per_s * 60e3 << ',' << s.speed_command_rev_per_s * 60.0 << '\n';
+      out << s.t_s << ',' << s.ra_m * 1e6 << ',' << s.ra_dynamic_m * 1e6 << ',' << s.force_N << ',' << s.force_dynamic_N
+          << ',' << s.feed_m_per_s * 60e3 << ',' << s.speed_rev_per_s * 60.0 << ',' << s.feed_command_m_per_s * 60e3
+          << ',' << s.speed_command_rev_per_s * 60.0 << '\n';
   });
 }
 

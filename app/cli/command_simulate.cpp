@@ -65,22 +65,23 @@ int runSimulateCommand(const QStringList& arguments) {
     if (const auto s = smithTlustySpeed(*ind.chatter_frequency_hz, setup.teeth, point.spindle_rev_per_s, 0.0, max_rev))
       suggested = revPerSToRpm(*s);
   }
-  QJsonObject out{{"tool", tool},
-                  {"eta", ind.eta},
-                  {"chip_ratio", ind.chip_ratio},
-                  {"chatter", ind.chatter_by_eta},
-                  {"chatter_frequency_Hz",
-                   ind.chatter_by_eta && ind.chatter_frequency_hz ? QJsonValue(*ind.chatter_frequency_hz) : QJsonValue()},
-                  {"tooth_passing_Hz", ind.tooth_passing_hz},
-                  {"peak_force_N", ind.peak_force_n},
-                  {"peak_power_W", ind.peak_power_w},
-                  {"suggested_speed_rpm", suggested},
-                  {"A_chatter", ind.a_chatter},
-                  {"A_toothpass", ind.a_toothpass},
-                  {"chip_ratio_chatter", ind.chatter_by_chip_ratio},
-                  {"steps_per_tooth_period", result.steps_per_tooth_period},
-                  {"diverged", result.diverged},
-                  {"simulated_revolutions", result.simulated_revolutions}};
+  QJsonObject out{
+      {"tool", tool},
+      {"eta", ind.eta},
+      {"chip_ratio", ind.chip_ratio},
+      {"chatter", ind.chatter_by_eta},
+      {"chatter_frequency_Hz",
+       ind.chatter_by_eta && ind.chatter_frequency_hz ? QJsonValue(*ind.chatter_frequency_hz) : QJsonValue()},
+      {"tooth_passing_Hz", ind.tooth_passing_hz},
+      {"peak_force_N", ind.peak_force_n},
+      {"peak_power_W", ind.peak_power_w},
+      {"suggested_speed_rpm", suggested},
+      {"A_chatter", ind.a_chatter},
+      {"A_toothpass", ind.a_toothpass},
+      {"chip_ratio_chatter", ind.chatter_by_chip_ratio},
+      {"steps_per_tooth_period", result.steps_per_tooth_period},
+      {"diverged", result.diverged},
+      {"simulated_revolutions", result.simulated_revolutions}};
   if (project.machine) out.insert("power_fraction", ind.peak_power_w / project.machine->spindle_power_W);
   printJson(out);
   return kExitOk;

@@ -15,9 +15,9 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/supervisor_request.h"
 #include "core/invalid_input.h"
 #include "grafcet/grafcet_interpreter.h"
+#include "services/supervisor_request.h"
 #include "supervisor/marginal_depth.h"
 
 namespace mx::app {
@@ -37,8 +37,7 @@ int printMarginalDepth(const Project& project) {
   const SupervisorRequest request = supervisorRequestFromProject(project, "none");
   const SupervisionScenario& s = request.scenario;
   MarginalDepthSettings settings;
-  settings.feed_per_tooth_m =
-      s.programmed_feed_m_per_s / (s.process.teeth * s.process.spindle_speed_rpm / 60.0);
+  settings.feed_per_tooth_m = s.programmed_feed_m_per_s / (s.process.teeth * s.process.spindle_speed_rpm / 60.0);
   MarginalDepthResult r;
   try {
     r = MarginalDepthSearch(s.process, settings).search();
@@ -85,9 +84,8 @@ int runSuperviseCommand(const QStringList& arguments) {
   const SupervisionMetrics& m = r.metrics;
   QJsonArray events, program;
   for (const SupervisionEvent& e : r.events)
-    events.append(QJsonObject{{"t_s", e.t_s},
-                              {"type", QString::fromStdString(e.type)},
-                              {"detail", QString::fromStdString(e.detail)}});
+    events.append(QJsonObject{
+        {"t_s", e.t_s}, {"type", QString::fromStdString(e.type)}, {"detail", QString::fromStdString(e.detail)}});
   for (double d : r.final_program_m) program.append(d * 1e3);
   printJson({{"controller", controller},
              {"max_power_pct_of_limit", m.max_power_pct_of_limit},

@@ -12,9 +12,9 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
-#include "services/expert_request.h"
-#include "expert/expert_session.h"
 #include "document/project.h"
+#include "expert/expert_session.h"
+#include "services/expert_request.h"
 
 namespace mx::app {
 

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/milling_setup.h"
 #include "document/process_sections.h"
+#include "model/milling_setup.h"
 
 namespace mx::app {
 
@@ -34,9 +34,9 @@ struct ToolSpec {
   int teeth = 0;
   double diameter_mm = 0.0;
   double helix_deg = 0.0;
-  std::optional<double> Kt_N_mm2;        // overrides material.Kt_N_mm2
-  std::optional<double> Kr;              // overrides material.Kr
-  std::optional<double> radial_depth_mm; // overrides the operation's radial engagement
+  std::optional<double> Kt_N_mm2;         // overrides material.Kt_N_mm2
+  std::optional<double> Kr;               // overrides material.Kr
+  std::optional<double> radial_depth_mm;  // overrides the operation's radial engagement
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
   QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
@@ -84,8 +84,8 @@ struct ExpertSpec {
   std::vector<double> ct{0.5, 0.5};
   std::vector<double> cf{0.5, 0.5};
   std::optional<ExpertGridSpec> grid;
-  std::optional<QString> method;          // "zoa" (default) or "sdm"
-  std::optional<int> simulated_points;    // K of Rule 5, [1, 1000], default 12
+  std::optional<QString> method;        // "zoa" (default) or "sdm"
+  std::optional<int> simulated_points;  // K of Rule 5, [1, 1000], default 12
   bool operator==(const ExpertSpec&) const = default;
 };
 
@@ -112,7 +112,7 @@ struct Project {
   // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
   // missing tool or section ("tool 'X' not found", "section 'material' is missing", ...).
   MillingSetup setupFor(const QString& toolId) const;
-  const MachineSpec& requireMachine() const;    // throws ProjectError if the section is absent
+  const MachineSpec& requireMachine() const;  // throws ProjectError if the section is absent
   const ExpertSpec& requireExpert() const;
 };
 

@@ -23,7 +23,9 @@ std::optional<ControlSection> withoutBeta(std::optional<ControlSection> c) {
   return c;
 }
 
-std::optional<double> betaOf(const std::optional<ControlSection>& c) { return c ? c->beta : std::nullopt; }
+std::optional<double> betaOf(const std::optional<ControlSection>& c) {
+  return c ? c->beta : std::nullopt;
+}
 
 std::optional<ParetoSection> withoutWeights(std::optional<ParetoSection> p) {
   if (p) p->weights.reset();

@@ -14,18 +14,18 @@ enum class ProjectSection : unsigned {
   Machine = 1u << 2,
   Material = 1u << 3,
   Operation = 1u << 4,
-  Expert = 1u << 5,          // everything of "expert" but the cost weights
-  ExpertWeights = 1u << 6,   // expert.c, cr, ct, cf
-  Control = 1u << 7,         // everything of "control" but beta
+  Expert = 1u << 5,         // everything of "expert" but the cost weights
+  ExpertWeights = 1u << 6,  // expert.c, cr, ct, cf
+  Control = 1u << 7,        // everything of "control" but beta
   ControlBeta = 1u << 8,
   Sdnrp = 1u << 9,
   ForceControl = 1u << 10,
   PartProgram = 1u << 11,
   Supervisor = 1u << 12,
-  Pareto = 1u << 13,         // everything of "pareto" but the weights
+  Pareto = 1u << 13,  // everything of "pareto" but the weights
   ParetoWeights = 1u << 14,
-  Rules = 1u << 15,          // operator_rules
-  Unknown = 1u << 16,        // the file's keys this build does not know (Project::document)
+  Rules = 1u << 15,    // operator_rules
+  Unknown = 1u << 16,  // the file's keys this build does not know (Project::document)
 };
 Q_DECLARE_FLAGS(ProjectChanges, ProjectSection)
 Q_DECLARE_OPERATORS_FOR_FLAGS(ProjectChanges)

@@ -13,8 +13,8 @@ namespace mx::app {
 // are computed once; undo and redo emit the same ones.
 class SnapshotCommand : public QUndoCommand {
  public:
-  SnapshotCommand(ProjectDocument* doc, Project before, Project after, const QString& text,
-                  ProjectChanges sections, int gesture_id)
+  SnapshotCommand(ProjectDocument* doc, Project before, Project after, const QString& text, ProjectChanges sections,
+                  int gesture_id)
       : QUndoCommand(text),
         doc_(doc),
         before_(std::move(before)),
@@ -125,8 +125,8 @@ void ProjectDocument::recover(const QString& path) {
     emit filePathChanged(path_);
   }
   // Pushed even when equal to the file, so that the recovery stays one unsaved, undoable step.
-  undo_.push(new SnapshotCommand(this, project_, recovered, tr("Recover autosave"),
-                                 changedSections(project_, recovered), 0));
+  undo_.push(
+      new SnapshotCommand(this, project_, recovered, tr("Recover autosave"), changedSections(project_, recovered), 0));
 }
 
 void ProjectDocument::save(const QString& path) {

@@ -47,11 +47,11 @@ class ProjectDocument : public QObject {
   void recover(const QString& path);
 
   void newProject();
-  void load(const QString& path);          // throws ProjectError; clears undo history
-  void save(const QString& path = {});     // atomic (QSaveFile); throws ProjectError
-  void setAutosaveInterval(int ms);        // 0 disables; default 30 s
-  QString autosavePath() const;            // "<file>.autosave" or per-untitled file in AppDataLocation
-  void writeAutosave();                    // atomic; no-op when clean
+  void load(const QString& path);                         // throws ProjectError; clears undo history
+  void save(const QString& path = {});                    // atomic (QSaveFile); throws ProjectError
+  void setAutosaveInterval(int ms);                       // 0 disables; default 30 s
+  QString autosavePath() const;                           // "<file>.autosave" or per-untitled file in AppDataLocation
+  void writeAutosave();                                   // atomic; no-op when clean
   static QString recoveryCandidate(const QString& path);  // autosave newer than `path`, else ""
 
  signals:

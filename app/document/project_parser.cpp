@@ -100,8 +100,8 @@ ToolSpec readTool(const ObjectReader& r) {
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
   t.modes_x = readModes(r, "modes_x");
   t.modes_y = readModes(r, "modes_y");
-  t.unknown = withoutKeys(
-      r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm", "modes_x", "modes_y"});
+  t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm",
+                                       "modes_x", "modes_y"});
   return t;
 }
 

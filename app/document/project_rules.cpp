@@ -89,8 +89,8 @@ void checkNumber(const QString& path, double value, const NumberRule& rule, cons
 }
 
 void checkField(const QString& path, double value, const FieldRange& range) {
-  const bool ok = std::isfinite(value) && value >= range.lo && value <= range.hi &&
-                  (!range.integer || std::floor(value) == value);
+  const bool ok =
+      std::isfinite(value) && value >= range.lo && value <= range.hi && (!range.integer || std::floor(value) == value);
   if (!ok) throwBadField(path, QString::number(value, 'g', 10), range.text);
 }
 

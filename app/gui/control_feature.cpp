@@ -26,7 +26,9 @@ ControlFeature::ControlFeature(QMainWindow* window, const app::ProjectDocument& 
   connectRunner();
 }
 
-void ControlFeature::stop() { runner_->cancel(); }
+void ControlFeature::stop() {
+  runner_->cancel();
+}
 
 void ControlFeature::connectView() {
   connect(view_, &widgets::ControlView::betaChanged, this, [this](double beta) {

@@ -1,10 +1,10 @@
 #include "control_figures.h"
 
-#include "services/control_request.h"
 #include "control/beta_sweep.h"
 #include "control_view.h"
 #include "control_view_data.h"
 #include "document/project.h"
+#include "services/control_request.h"
 
 namespace mx::gui {
 

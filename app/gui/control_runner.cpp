@@ -12,7 +12,9 @@ ControlRunner::ControlRunner(QThreadPool* engine_pool, QObject* parent) : QObjec
   qRegisterMetaType<mx::gui::SweepOutcome>();
 }
 
-ControlRunner::~ControlRunner() { cancel(); }
+ControlRunner::~ControlRunner() {
+  cancel();
+}
 
 void ControlRunner::cancel() {
   if (run_cancel_) run_cancel_->store(true);

@@ -76,7 +76,9 @@ void applyControllerSettings(const widgets::ControllerSettingsView& v, app::Cont
   s.rls.forgetting_factor = v.lambda;
   s.rls.initial_covariance = v.p0;
   s.rls.initial_parameter = v.theta0;
-  s.rls.reset = v.reset == 0 ? CovarianceReset::None : v.reset == 1 ? CovarianceReset::ErrorFraction : CovarianceReset::Trace;
+  s.rls.reset = v.reset == 0   ? CovarianceReset::None
+                : v.reset == 1 ? CovarianceReset::ErrorFraction
+                               : CovarianceReset::Trace;
   s.rls.reset_error_fraction = v.reset_fraction;
   s.damping_ratio = v.xi;
   s.rise_time_periods = v.tr_periods;

@@ -1,10 +1,10 @@
 #pragma once
 // Conversions between the adaptive controller (engine SI structs, the project's control section) and
 // the control view's display structs (shop units). Used by the main window and millexpert-plot.
-#include "services/control_request.h"
 #include "control/beta_sweep.h"
 #include "control/closed_loop.h"
 #include "control_view.h"
+#include "services/control_request.h"
 
 namespace mx::gui {
 

@@ -19,7 +19,9 @@ void EngineRunner::cancelAll() {
   if (cancel_) cancel_->store(true);
 }
 
-bool EngineRunner::busy() const { return running_ > 0; }
+bool EngineRunner::busy() const {
+  return running_ > 0;
+}
 
 quint64 EngineRunner::submitLobes(LobeJobInput input) {
   cancelAll();

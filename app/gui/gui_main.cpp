@@ -2,8 +2,9 @@
 // "--point RPM,MM[,MM_PER_TOOTH]" picks the initial operating point; "--screenshot FILE" saves the
 // window once the lobes and the point's simulation are shown, then quits (docs, scripts).
 #include <QApplication>
-#include <QDockWidget>
+#include <QComboBox>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QFile>
 #include <QTextStream>
 #include <QTimer>
@@ -13,7 +14,6 @@
 #include "main_window.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
-#include <QComboBox>
 
 namespace {
 QString defaultProject() {
@@ -34,15 +34,20 @@ int main(int argc, char** argv) {
   parser.addPositionalArgument("project", "Project file (.mxproj); default: the bundled example.");
   parser.addOption({"point", "Initial operating point: speed [rpm], depth [mm] and optionally feed [mm/tooth].",
                     "RPM,MM[,MM_PER_TOOTH]"});
-  parser.addOption({"screenshot", "Save a screenshot of the window to FILE once the lobes and the point's "
-                                  "simulation are shown, then quit.", "FILE"});
+  parser.addOption({"screenshot",
+                    "Save a screenshot of the window to FILE once the lobes and the point's "
+                    "simulation are shown, then quit.",
+                    "FILE"});
   parser.addOption({"docks", "Raise these docks (object names, e.g. paretoFrontDock,paretoWeightsDock).", "NAMES"});
-  parser.addOption({"supervise", "Run the supervisor with this controller (none, smc1, smc2) as fast as possible; "
-                                 "with --screenshot, the shot waits for its end.", "CONTROLLER"});
+  parser.addOption({"supervise",
+                    "Run the supervisor with this controller (none, smc1, smc2) as fast as possible; "
+                    "with --screenshot, the shot waits for its end.",
+                    "CONTROLLER"});
   parser.addOption({"sdnrp", "Run the surface-finish (SDNRP) loop of the project once it is open."});
   parser.addOption({"program", "Open this G-code part program in the part-program panel.", "FILE"});
-  parser.addOption({"pareto", "Once the Pareto study is ready, move the operating point to the Pareto choice "
-                              "and simulate it."});
+  parser.addOption({"pareto",
+                    "Once the Pareto study is ready, move the operating point to the Pareto choice "
+                    "and simulate it."});
   parser.process(app);
 
   const QString path = parser.positionalArguments().value(0, defaultProject());
@@ -63,14 +68,17 @@ int main(int argc, char** argv) {
                           << "': expected RPM,MM[,MM_PER_TOOTH] with RPM > 0, MM >= 0\n";
       return 2;
     }
-    QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, [&window, n, b, f] {
-      mx::app::PickedPoint p = window.document()->point();
-      p.speed_rpm = n;
-      p.depth_mm = b;
-      if (f > 0.0) p.feed_mm_per_tooth = f;
-      window.document()->initPoint(p);
-      window.startSimulation();
-    }, Qt::SingleShotConnection);
+    QObject::connect(
+        &window, &mx::gui::MainWindow::lobesShown, &window,
+        [&window, n, b, f] {
+          mx::app::PickedPoint p = window.document()->point();
+          p.speed_rpm = n;
+          p.depth_mm = b;
+          if (f > 0.0) p.feed_mm_per_tooth = f;
+          window.document()->initPoint(p);
+          window.startSimulation();
+        },
+        Qt::SingleShotConnection);
   }
   for (const QString& name : parser.value("docks").split(',', Qt::SkipEmptyParts))
     if (auto* dock = window.findChild<QDockWidget*>(name)) {
@@ -104,7 +112,7 @@ int main(int argc, char** argv) {
     };
     if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
     QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
-      if (supervise) return;                    // the supervised run decides
+      if (supervise) return;                   // the supervised run decides
       if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
       QTimer::singleShot(300, &window, [&window, screenshot] {
         window.grab().save(screenshot);

@@ -11,7 +11,8 @@ namespace {
 QVector<double> toMillimetres(const std::vector<double>& depth_m, double factor) {
   QVector<double> out;
   out.reserve(static_cast<qsizetype>(depth_m.size()));
-  for (double b : depth_m) out.push_back(std::isfinite(b) ? b * factor * 1e3 : std::numeric_limits<double>::quiet_NaN());
+  for (double b : depth_m)
+    out.push_back(std::isfinite(b) ? b * factor * 1e3 : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
 }  // namespace

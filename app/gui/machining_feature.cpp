@@ -17,7 +17,9 @@ namespace mx::gui {
 
 namespace {
 
-std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+std::optional<double> finiteOr(double v) {
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
 
 // One display row per block: F in the program's units per minute, S in rpm.
 QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult& r) {
@@ -61,8 +63,7 @@ bool writeAtomically(const QString& path, const QByteArray& bytes, QString* erro
 
 }  // namespace
 
-MachiningFeature::MachiningFeature(QMainWindow* window, const app::ProjectDocument& document,
-                                   QThreadPool* engine_pool)
+MachiningFeature::MachiningFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool)
     : WindowFeature(window),
       window_(window),
       document_(document),
@@ -135,15 +136,16 @@ void MachiningFeature::runSurfaceFinish() {
   s.duration_s = surface_panel_->durationS();
   const quint64 generation = ++sdnrp_generation_;
   surface_panel_->setBusy(true);
-  runEngineTask<SdnrpResult>(pool_, this, [s] { return SdnrpSimulator(s).run(); },
-                             [this, generation](TaskResult<SdnrpResult> r) {
-                               if (generation != sdnrp_generation_) return;
-                               surface_panel_->setBusy(false);
-                               if (r.value)
-                                 showSurfaceFinish(*r.value);
-                               else
-                                 emit errorRaised(tr("Surface finish"), r.error);
-                             });
+  runEngineTask<SdnrpResult>(
+      pool_, this, [s] { return SdnrpSimulator(s).run(); },
+      [this, generation](TaskResult<SdnrpResult> r) {
+        if (generation != sdnrp_generation_) return;
+        surface_panel_->setBusy(false);
+        if (r.value)
+          showSurfaceFinish(*r.value);
+        else
+          emit errorRaised(tr("Surface finish"), r.error);
+      });
 }
 
 // Shop units on the panel: Ra in um, feed in mm/min, speed in rpm.
@@ -189,8 +191,8 @@ void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome ou
   override_path_ = path;
   QVector<widgets::PartProgramWarningView> warnings;
   for (const GcodeWarning& w : override_->result.warnings)
-    warnings.append({w.line, static_cast<int>(w.column), QString::fromStdString(w.text),
-                     QString::fromStdString(w.message)});
+    warnings.append(
+        {w.line, static_cast<int>(w.column), QString::fromStdString(w.text), QString::fromStdString(w.message)});
   const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
   program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
                              override_->controller);

@@ -27,9 +27,9 @@ class MachiningFeature : public WindowFeature {
   // The panel takes sdnrp.ra_um, disturbance and duration; an open program is overridden again when
   // the inputs of its controllers changed.
   void projectChanged(const app::Project& project, Features recompute) override;
-  void runSurfaceFinish();                       // SDNRP with the panel's Ra, disturbance, duration
-  void openPartProgram(const QString& path);     // override with the project's controller
-  bool exportPartProgram(const QString& path);   // the optimised program
+  void runSurfaceFinish();                         // SDNRP with the panel's Ra, disturbance, duration
+  void openPartProgram(const QString& path);       // override with the project's controller
+  bool exportPartProgram(const QString& path);     // the optimised program
   bool exportPartProgramCsv(const QString& path);  // the per-block feed-override table
   widgets::SurfaceFinishPanel* surfacePanel() const { return surface_panel_; }
   widgets::PartProgramPanel* programPanel() const { return program_panel_; }

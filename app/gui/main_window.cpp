@@ -3,26 +3,26 @@
 #include <QCloseEvent>
 #include <QFile>
 #include <QMenu>
-#include <QSettings>
-#include <limits>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "control_feature.h"
-#include "machining_feature.h"
-#include "supervisor_feature.h"
+#include "document/lobe_inputs.h"
 #include "expert_runner.h"
+#include "machine_operation_panel.h"
+#include "machining_feature.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
-#include "machine_operation_panel.h"
-#include "weights_panel.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
-#include "document/lobe_inputs.h"
 #include "stability/lobe_diagram.h"
+#include "supervisor_feature.h"
 #include "tool_library_editor.h"
+#include "weights_panel.h"
 
 namespace mx::gui {
 
@@ -124,8 +124,8 @@ void MainWindow::addFeature(WindowFeature* feature) {
 }
 
 // The edits of one gesture of a feature (a slider drag) merge into one undo step.
-void MainWindow::applyFeatureEdit(const WindowFeature* feature, const app::Project& edited,
-                                  const QString& description, int gesture) {
+void MainWindow::applyFeatureEdit(const WindowFeature* feature, const app::Project& edited, const QString& description,
+                                  int gesture) {
   if (std::pair(feature, gesture) != feature_gesture_) {
     feature_gesture_ = {feature, gesture};
     document_gesture_ = gesture > 0 ? doc_.newGesture() : 0;
@@ -206,7 +206,8 @@ void MainWindow::recomputeLobes() {
   input.delta_per_s = lobes.delta_per_s;
   input.alpha = lobes.alpha;
   // The SDM envelope uses 200 speeds.
-  if (method_ == LobeMethod::SemiDiscretization) lobes.step_rpm = std::max((lobes.to_rpm - lobes.from_rpm) / 199.0, 1.0);
+  if (method_ == LobeMethod::SemiDiscretization)
+    lobes.step_rpm = std::max((lobes.to_rpm - lobes.from_rpm) / 199.0, 1.0);
   input.speeds_rev_per_s = lobes.grid().values();
   try {
     for (const app::ToolSpec& t : p.tools) input.tools.push_back(p.setupFor(t.id));
@@ -259,9 +260,10 @@ void MainWindow::onLobesReady(const LobeJobResult& result) {
     onPointChanged(doc_.point());
   }
   updatePowerLimit();
-  status_engine_->setText(tr("Lobes: %1, %2 tool(s)")
-                              .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))
-                              .arg(snapshot_->tools.size()));
+  status_engine_->setText(
+      tr("Lobes: %1, %2 tool(s)")
+          .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))
+          .arg(snapshot_->tools.size()));
   updateExpertOverlays();  // the chart was rebuilt: markers and heat map again
   emit lobesShown();
 }
@@ -272,10 +274,10 @@ void MainWindow::updatePowerLimit() {
   power_limit_feed_ = feed;
   const app::Project& p = doc_.project();
   const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
-  chart_->setPowerLimit(limit, p.machine ? tr("power limit %1 W at s_t = %2 mm/tooth")
-                                               .arg(p.machine->spindle_power_W)
-                                               .arg(feed, 0, 'f', 3)
-                                         : QString());
+  chart_->setPowerLimit(
+      limit, p.machine
+                 ? tr("power limit %1 W at s_t = %2 mm/tooth").arg(p.machine->spindle_power_W).arg(feed, 0, 'f', 3)
+                 : QString());
 }
 
 void MainWindow::onPointChanged(const app::PickedPoint& point) {
@@ -284,9 +286,10 @@ void MainWindow::onPointChanged(const app::PickedPoint& point) {
   const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
   readout_->setReadout(r);
   widgets::PointVerdict verdict = widgets::PointVerdict::Unknown;
-  if (r.valid) verdict = !r.stable ? widgets::PointVerdict::Unstable
-                         : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
-                                        : widgets::PointVerdict::Stable;
+  if (r.valid)
+    verdict = !r.stable      ? widgets::PointVerdict::Unstable
+              : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
+                             : widgets::PointVerdict::Stable;
   chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
   updateFiredRules();
   updateMonitoring();

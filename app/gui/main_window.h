@@ -17,14 +17,14 @@
 #include <vector>
 
 #include "display_units.h"
-#include "services/pareto_study.h"
-#include "expert/expert_session.h"
+#include "document/project_document.h"
 #include "engine_runner.h"
+#include "expert/expert_session.h"
 #include "feature_recompute.h"
 #include "lobe_chart_view.h"
 #include "operating_point_readout.h"
 #include "point_evaluator.h"
-#include "document/project_document.h"
+#include "services/pareto_study.h"
 
 namespace mx::widgets {
 class HistoryView;
@@ -86,20 +86,21 @@ class MainWindow : public QMainWindow {
   widgets::HistoryView* historyView() const { return history_; }
   widgets::OperatorRulesEditor* rulesEditor() const { return rules_editor_; }
   const std::optional<app::ParetoChoice>& paretoChoice() const { return pareto_choice_; }
-  QString learningDatabasePath() const;            // default: LearningDatabase::defaultPath()
+  QString learningDatabasePath() const;  // default: LearningDatabase::defaultPath()
   void setLearningDatabasePath(const QString& path);
-  void recordOperatingPoint();                     // Rule 14, source operator or automatic
-  void moveToParetoChoice();                       // the operating point := the Pareto choice (undoable)
-  void reportChatter(double chatter_hz);           // Module VI: Rule 16 speed, re-selection, record, simulate
-  void setQuiet(bool quiet) { quiet_ = quiet; }                     // no modal dialogs (tests, scripts)
+  void recordOperatingPoint();                   // Rule 14, source operator or automatic
+  void moveToParetoChoice();                     // the operating point := the Pareto choice (undoable)
+  void reportChatter(double chatter_hz);         // Module VI: Rule 16 speed, re-selection, record, simulate
+  void setQuiet(bool quiet) { quiet_ = quiet; }  // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
   void setMethod(LobeMethod method);
   void startSimulation();
-  void setActiveTool(const QString& id);  // the tool of the readouts, shading and markers  // time-domain simulation of the current point on the engine thread
+  void setActiveTool(const QString& id);  // the tool of the readouts, shading and markers  // time-domain simulation of
+                                          // the current point on the engine thread
 
  signals:
   void lobesShown();
-  void rankingShown();  // the ranking table was refreshed (after a weight change or a new session)
+  void rankingShown();     // the ranking table was refreshed (after a weight change or a new session)
   void refinementShown();  // q** (Rules 5-6) arrived
   void simulationFinished();
   void paretoShown();   // the Pareto choice was recomputed (study ready, weights or requirement changed)

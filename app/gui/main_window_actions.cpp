@@ -50,8 +50,9 @@ void MainWindow::buildDocks() {
   auto* form = new QFormLayout;
   tool_combo_->setToolTip(tr("The tool whose lobes, power limit and readouts are shown"));
   method_combo_->addItems({tr("Zeroth-order approximation"), tr("Semi-discretization")});
-  method_combo_->setToolTip(tr("Stability method: ZOA (fast, accurate at high immersion) or first-order "
-                               "semi-discretization (low immersion, few teeth)"));
+  method_combo_->setToolTip(
+      tr("Stability method: ZOA (fast, accurate at high immersion) or first-order "
+         "semi-discretization (low immersion, few teeth)"));
   feed_spin_->setRange(0.001, 5.0);
   feed_spin_->setDecimals(4);
   feed_spin_->setSingleStep(0.01);
@@ -111,14 +112,18 @@ void MainWindow::buildActions() {
     return a;
   };
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  add(file, tr("&New project"), QKeySequence::New, tr("Start an empty project"), [this] { onNew(); }, true);
-  add(file, tr("&Open project..."), QKeySequence::Open, tr("Open a MillExpert project (.mxproj)"), [this] { onOpen(); },
+  add(
+      file, tr("&New project"), QKeySequence::New, tr("Start an empty project"), [this] { onNew(); }, true);
+  add(
+      file, tr("&Open project..."), QKeySequence::Open, tr("Open a MillExpert project (.mxproj)"), [this] { onOpen(); },
       true);
   recent_menu_ = file->addMenu(tr("Open &recent"));
-  add(file, tr("&Save"), QKeySequence::Save, tr("Save the project (atomically)"), [this] { onSave(); }, true);
+  add(
+      file, tr("&Save"), QKeySequence::Save, tr("Save the project (atomically)"), [this] { onSave(); }, true);
   add(file, tr("Save &as..."), QKeySequence::SaveAs, tr("Save the project under a new name"), [this] { onSaveAs(); });
   file->addSeparator();
-  add(file, tr("&Export chart..."), QKeySequence(tr("Ctrl+E")), tr("Save the lobe chart as PNG, SVG or PDF"),
+  add(
+      file, tr("&Export chart..."), QKeySequence(tr("Ctrl+E")), tr("Save the lobe chart as PNG, SVG or PDF"),
       [this] { onExportChart(); }, true);
   add(file, tr("Export &report..."), QKeySequence(tr("Ctrl+R")),
       tr("Write the expert report (project, ranking, q* and q**, cost terms, figures) as PDF or HTML"),
@@ -140,9 +145,11 @@ void MainWindow::buildActions() {
   bar->addAction(redo);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  add(view, tr("&Reset chart view"), QKeySequence(tr("Ctrl+0")), tr("Show the whole speed range"),
+  add(
+      view, tr("&Reset chart view"), QKeySequence(tr("Ctrl+0")), tr("Show the whole speed range"),
       [this] { chart_->resetView(); }, true);
-  add(view, tr("Simulate the &point"), QKeySequence(tr("F5")), tr("Run the time-domain simulation of the point"),
+  add(
+      view, tr("Simulate the &point"), QKeySequence(tr("F5")), tr("Run the time-domain simulation of the point"),
       [this] { startSimulation(); }, true);
   QAction* heat = view->addAction(tr("Show tool-cost &heat map"));
   heat->setCheckable(true);

@@ -6,12 +6,12 @@
 #include <QScrollArea>
 #include <QStatusBar>
 
-#include "services/expert_request.h"
 #include "expert_overlays.h"
 #include "expert_runner.h"
-#include "pareto_runner.h"
 #include "main_window.h"
+#include "pareto_runner.h"
 #include "ranking_table.h"
+#include "services/expert_request.h"
 #include "weights_panel.h"
 
 namespace mx::gui {

@@ -1,8 +1,8 @@
 // MainWindow: new, open (with autosave recovery), save, save as, export, title and dirty marker.
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QProcess>
 #include <QStandardPaths>
@@ -69,11 +69,13 @@ void MainWindow::onOpen() {
   if (!path.isEmpty()) openProject(path);
 }
 
-bool MainWindow::onSave() { return doc_.filePath().isEmpty() ? onSaveAs() : saveProject(); }
+bool MainWindow::onSave() {
+  return doc_.filePath().isEmpty() ? onSaveAs() : saveProject();
+}
 
 bool MainWindow::onSaveAs() {
-  QString path = QFileDialog::getSaveFileName(this, tr("Save project as"), doc_.filePath(),
-                                              tr("MillExpert projects (*.mxproj)"));
+  QString path =
+      QFileDialog::getSaveFileName(this, tr("Save project as"), doc_.filePath(), tr("MillExpert projects (*.mxproj)"));
   if (path.isEmpty()) return false;
   if (!path.endsWith(".mxproj")) path += ".mxproj";
   return saveProject(path);
@@ -100,7 +102,8 @@ void MainWindow::onExportReport() {
   if (path.isEmpty()) return;
   // The report tool reads a project file: hand it the current (possibly unsaved) snapshot.
   const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
-  const QString snapshot = QDir(dir).filePath(QString("millexpert-report-%1.mxproj").arg(QCoreApplication::applicationPid()));
+  const QString snapshot =
+      QDir(dir).filePath(QString("millexpert-report-%1.mxproj").arg(QCoreApplication::applicationPid()));
   try {
     app::saveProject(doc_.project(), snapshot);
   } catch (const app::ProjectError& e) {
@@ -115,8 +118,10 @@ void MainWindow::onExportReport() {
     QFile::remove(snapshot);
     const QString err = QString::fromUtf8(process->readAllStandardError()).trimmed();
     process->deleteLater();
-    if (status == QProcess::NormalExit && code == 0) statusBar()->showMessage(tr("Report written to %1").arg(path), 8000);
-    else showError(tr("Export report"), err.isEmpty() ? tr("millexpert-report failed (exit %1)").arg(code) : err);
+    if (status == QProcess::NormalExit && code == 0)
+      statusBar()->showMessage(tr("Report written to %1").arg(path), 8000);
+    else
+      showError(tr("Export report"), err.isEmpty() ? tr("millexpert-report failed (exit %1)").arg(code) : err);
   });
   statusBar()->showMessage(tr("Writing the report (expert system, simulations, figures)..."));
   process->start(QCoreApplication::applicationDirPath() + "/millexpert-report", args);

@@ -5,14 +5,14 @@
 #include <QStatusBar>
 #include <cmath>
 
-#include "services/pareto_rules.h"
 #include "history_view.h"
-#include "services/learning_database.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
+#include "services/learning_database.h"
+#include "services/pareto_rules.h"
 #include "simulation/frequency_peaks.h"
 #include "simulation_data.h"
 
@@ -20,9 +20,13 @@ namespace mx::gui {
 
 namespace {
 
-QStringList rulesOf(const app::Project& p) { return p.operator_rules.value_or(QStringList{}); }
+QStringList rulesOf(const app::Project& p) {
+  return p.operator_rules.value_or(QStringList{});
+}
 
-std::optional<double> finiteOrNone(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+std::optional<double> finiteOrNone(double v) {
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
 
 widgets::HistoryRow historyRow(const app::LearningRecord& r) {
   widgets::HistoryRow row;
@@ -61,20 +65,22 @@ void MainWindow::recordOperatingPoint() {
   const auto& study = pareto_->study();
   const auto q = currentParetoPoint();
   if (!study || !q) {
-    showError(tr("Learning database"), tr("Pick an operating point of the Pareto tool '%1' first")
-                                           .arg(study ? study->request().tool : QString()));
+    showError(
+        tr("Learning database"),
+        tr("Pick an operating point of the Pareto tool '%1' first").arg(study ? study->request().tool : QString()));
     return;
   }
   // Automatic when the point is the system's Pareto choice, operator otherwise.
-  const bool automatic = pareto_choice_ && std::abs(pareto_choice_->point().speed_rev_per_s - q->speed_rev_per_s) < 1e-9 &&
+  const bool automatic = pareto_choice_ &&
+                         std::abs(pareto_choice_->point().speed_rev_per_s - q->speed_rev_per_s) < 1e-9 &&
                          std::abs(pareto_choice_->point().depth_m - q->depth_m) < 1e-12 &&
                          std::abs(pareto_choice_->point().feed_per_tooth_m - q->feed_per_tooth_m) < 1e-12;
   try {
     app::LearningDatabase db(learningDatabasePath());
     const double eta = last_summary_eta_.value_or(std::numeric_limits<double>::quiet_NaN());
-    const qint64 id = db.insert(study->learningRecord(pareto_weights_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
-                                                      automatic ? app::LearningSource::Automatic
-                                                                : app::LearningSource::Operator));
+    const qint64 id =
+        db.insert(study->learningRecord(pareto_weights_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
+                                        automatic ? app::LearningSource::Automatic : app::LearningSource::Operator));
     statusBar()->showMessage(tr("Recorded point %1 in %2").arg(id).arg(db.path()), 8000);
   } catch (const std::exception& e) {
     showError(tr("Learning database"), QString::fromStdString(e.what()));

@@ -11,17 +11,15 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
-#include <QLabel>
 #include <QJsonArray>
+#include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "services/pareto_rules.h"
 #include "history_view.h"
-#include "services/learning_database.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
@@ -29,14 +27,15 @@
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
+#include "services/learning_database.h"
+#include "services/pareto_rules.h"
 #include "simulation/frequency_peaks.h"
 
 namespace mx::gui {
 
 namespace {
 
-QDockWidget* makeDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content,
-                      bool scroll) {
+QDockWidget* makeDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content, bool scroll) {
   auto* dock = new QDockWidget(title, window);
   dock->setObjectName(name);
   if (scroll) {
@@ -69,7 +68,6 @@ widgets::ParetoPointView pointView(const ParetoPoint& p) {
   return v;
 }
 
-
 }  // namespace
 
 ParetoWeights projectParetoWeightsOf(const app::Project& p) {
@@ -85,8 +83,9 @@ void MainWindow::buildParetoDocks() {
   requirements_ = new widgets::RequirementsPanel;
   record_button_ = new QPushButton(tr("Record point in learning database"));
   record_button_->setObjectName("record_point_button");
-  record_button_->setToolTip(tr("Rule 14: store the operating point with the Pareto weights, tool, material, "
-                                "machine and objectives in the learning database"));
+  record_button_->setToolTip(
+      tr("Rule 14: store the operating point with the Pareto weights, tool, material, "
+         "machine and objectives in the learning database"));
   chatter_hz_ = new QDoubleSpinBox;
   chatter_hz_->setObjectName("reported_chatter_hz");
   chatter_hz_->setRange(1.0, 20000.0);
@@ -96,9 +95,10 @@ void MainWindow::buildParetoDocks() {
   chatter_hz_->setToolTip(tr("Chatter frequency heard or measured at the machine [Hz]"));
   report_chatter_ = new QPushButton(tr("Report chatter (Rule 16)"));
   report_chatter_->setObjectName("report_chatter_button");
-  report_chatter_->setToolTip(tr("Module VI: chatter at this frequency at the operating point. The Smith-Tlusty "
-                                 "speed N = 60 f_c / (n_t k) nearest it is computed, the point is re-selected "
-                                 "within +-2 % of N, moved there and recorded (source feedback)"));
+  report_chatter_->setToolTip(
+      tr("Module VI: chatter at this frequency at the operating point. The Smith-Tlusty "
+         "speed N = 60 f_c / (n_t k) nearest it is computed, the point is re-selected "
+         "within +-2 % of N, moved there and recorded (source feedback)"));
   auto* chatter_row = new QHBoxLayout;
   chatter_row->addWidget(new QLabel(tr("Chatter frequency [Hz]")));
   chatter_row->addWidget(chatter_hz_);

@@ -3,7 +3,6 @@
 #include <QFutureWatcher>
 #include <QtConcurrent>
 
-
 namespace mx::gui {
 
 ParetoRunner::ParetoRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {}

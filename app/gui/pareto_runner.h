@@ -11,14 +11,14 @@
 #include <optional>
 #include <vector>
 
-#include "services/pareto_study.h"
 #include "document/project.h"
+#include "services/pareto_study.h"
 
 namespace mx::gui {
 
 struct ParetoOutcome {
   quint64 generation = 0;
-  std::shared_ptr<const app::ParetoStudy> study;             // null on error
+  std::shared_ptr<const app::ParetoStudy> study;            // null on error
   std::vector<std::optional<ParetoWeights>> front_weights;  // aligned with study->front()
   QString error;
 };

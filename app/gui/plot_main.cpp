@@ -3,6 +3,8 @@
 //   millexpert-plot OUT.png [--title T] [--max-depth MM] FILE.json[=LABEL] ...
 //   millexpert-plot OUT.png --control PROJECT --beta B          figures 9-12 (2006 paper) for one beta
 //   millexpert-plot OUT.png --control PROJECT --jc FROM:TO:STEP figure 13, J_c(beta)
+#include <qcustomplot.h>
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFile>
@@ -13,7 +15,6 @@
 #include <clocale>
 #include <cmath>
 #include <limits>
-#include <qcustomplot.h>
 
 #include "control_figures.h"
 #include "lobe_chart_view.h"
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
         QTextStream(stderr) << "millexpert-plot: --jc = '" << parser.value("jc") << "': expected FROM:TO:STEP\n";
         return 2;
       }
-      error = mx::gui::renderControlJc(parser.value("control"), p[0].toDouble(), p[1].toDouble(), p[2].toDouble(), args[0]);
+      error =
+          mx::gui::renderControlJc(parser.value("control"), p[0].toDouble(), p[1].toDouble(), p[2].toDouble(), args[0]);
     } else {
       error = mx::gui::renderControlResponse(parser.value("control"), parser.value("beta").toDouble(), args[0]);
     }
@@ -108,10 +110,13 @@ int main(int argc, char** argv) {
     }
   }
   plot.rescaleAxes();
-  if (parser.isSet("max-depth")) plot.yAxis->setRange(0.0, parser.value("max-depth").toDouble());
-  else plot.yAxis->setRangeLower(0.0);
+  if (parser.isSet("max-depth"))
+    plot.yAxis->setRange(0.0, parser.value("max-depth").toDouble());
+  else
+    plot.yAxis->setRangeLower(0.0);
   const QString out = args.front();
-  const bool ok = out.endsWith(".pdf", Qt::CaseInsensitive) ? plot.savePdf(out, 1200, 700) : plot.savePng(out, 1200, 700);
+  const bool ok =
+      out.endsWith(".pdf", Qt::CaseInsensitive) ? plot.savePdf(out, 1200, 700) : plot.savePng(out, 1200, 700);
   if (!ok) {
     QTextStream(stderr) << "millexpert-plot: cannot write " << out << '\n';
     return 1;

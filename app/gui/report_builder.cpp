@@ -15,11 +15,19 @@ const char* kStyle =
     "p.figcaption { text-align: center; margin-bottom: 12px; }\n"
     "p.footer { color: #555555; font-size: 8pt; border-top: 1px solid #999999; }\n";
 
-QString esc(const QString& s) { return s.toHtmlEscaped(); }
+QString esc(const QString& s) {
+  return s.toHtmlEscaped();
+}
 
-QString rpm(double rev_per_s) { return ReportBuilder::formatNumber(revPerSToRpm(rev_per_s), 0); }
-QString mm(double m) { return ReportBuilder::formatNumber(m * 1e3, 3); }
-QString mrr(double m3_per_s) { return ReportBuilder::formatNumber(m3_per_s * 1e9 * 60.0, 0); }
+QString rpm(double rev_per_s) {
+  return ReportBuilder::formatNumber(revPerSToRpm(rev_per_s), 0);
+}
+QString mm(double m) {
+  return ReportBuilder::formatNumber(m * 1e3, 3);
+}
+QString mrr(double m3_per_s) {
+  return ReportBuilder::formatNumber(m3_per_s * 1e9 * 60.0, 0);
+}
 QString weights(const double* v, std::size_t n) {
   QStringList parts;
   for (std::size_t i = 0; i < n; ++i) parts << QString::number(v[i], 'g', 6);
@@ -38,7 +46,9 @@ QString ReportBuilder::formatNumber(double value, int decimals) {
   return std::isfinite(value) ? QString::number(value, 'f', decimals) : QString("\u2014");
 }
 
-QString ReportBuilder::formatCost(double cost) { return formatNumber(cost, 4); }
+QString ReportBuilder::formatCost(double cost) {
+  return formatNumber(cost, 4);
+}
 
 QString ReportBuilder::footer() const {
   return QString("MillExpert %1 \u00b7 report generated %2 \u00b7 %3")
@@ -51,7 +61,8 @@ QString ReportBuilder::table(const QString& caption, const QStringList& head, co
   if (flavour_ == ReportFlavour::Browser) out += "<caption>" + title + "</caption>\n<thead>";
   // QTextDocument has no <caption>: a header row spanning the table keeps the caption with the table
   // (and repeats it, with the column heads, on every page the table spans).
-  else out += QString("<thead><tr><td colspan=\"%1\"><b>%2</b></td></tr>").arg(head.size()).arg(title);
+  else
+    out += QString("<thead><tr><td colspan=\"%1\"><b>%2</b></td></tr>").arg(head.size()).arg(title);
   out += "<tr>";
   for (const QString& h : head) out += "<th bgcolor=\"#dde6f0\">" + h + "</th>";
   out += "</tr></thead>\n<tbody>\n";
@@ -65,8 +76,9 @@ QString ReportBuilder::table(const QString& caption, const QStringList& head, co
 
 QString ReportBuilder::figure(const QString& image, const QString& caption) const {
   const QString title = QString("Figure %1.").arg(++figures_);
-  return QString("<p align=\"center\"><img src=\"%1\" width=\"640\" alt=\"%2\"></p>\n"
-                 "<p class=\"figcaption\" align=\"center\"><b>%2</b> %3</p>\n")
+  return QString(
+             "<p align=\"center\"><img src=\"%1\" width=\"640\" alt=\"%2\"></p>\n"
+             "<p class=\"figcaption\" align=\"center\"><b>%2</b> %3</p>\n")
       .arg(esc(source_(image)), title, caption);
 }
 
@@ -90,16 +102,22 @@ QString ReportBuilder::projectSection() const {
       rows << QStringList{"Radial immersion a/D", formatNumber(*p.operation->radial_immersion, 3), "\u2013"};
     if (p.operation->radial_depth_mm)
       rows << QStringList{"Radial depth of cut a", formatNumber(*p.operation->radial_depth_mm, 3), "mm"};
-    rows << QStringList{"Maximum feed per tooth",
-                        p.operation->max_feed_per_tooth_mm > 0 ? formatNumber(p.operation->max_feed_per_tooth_mm, 3) : "no limit",
-                        "mm/tooth"};
+    rows << QStringList{
+        "Maximum feed per tooth",
+        p.operation->max_feed_per_tooth_mm > 0 ? formatNumber(p.operation->max_feed_per_tooth_mm, 3) : "no limit",
+        "mm/tooth"};
   }
   const ExpertGrid& g = d_.settings.grid;
-  rows << QStringList{"Speed grid", QString("%1 to %2, step %3").arg(rpm(g.speed_from_rev_per_s), rpm(g.speed_to_rev_per_s), rpm(g.speed_step_rev_per_s)), "rpm"};
+  rows << QStringList{"Speed grid",
+                      QString("%1 to %2, step %3")
+                          .arg(rpm(g.speed_from_rev_per_s), rpm(g.speed_to_rev_per_s), rpm(g.speed_step_rev_per_s)),
+                      "rpm"};
   rows << QStringList{"Depth grid", QString("b<sub>min</sub>/%1 steps").arg(g.depth_divisions), "mm"};
   rows << QStringList{"Feed step", formatNumber(g.feed_step_m * 1e3, 3), "mm/tooth"};
-  rows << QStringList{"Stability method",
-                      d_.settings.stability.method == StabilityMethod::ZeroOrder ? "zeroth-order approximation" : "semi-discretization", ""};
+  rows << QStringList{
+      "Stability method",
+      d_.settings.stability.method == StabilityMethod::ZeroOrder ? "zeroth-order approximation" : "semi-discretization",
+      ""};
   QString out = "<h2>1 Project, machine and tools</h2>\n";
   out += table("Project, machine, material and operation", {"Quantity", "Value", "Unit"}, rows);
 
@@ -109,8 +127,14 @@ QString ReportBuilder::projectSection() const {
     const auto addModes = [&](const char* axis, const std::vector<app::ModeSpec>& modes) {
       for (std::size_t m = 0; m < modes.size(); ++m) {
         QStringList row;
-        if (first) row << esc(t.id) << QString::number(t.teeth) << formatNumber(t.diameter_mm, 2) << formatNumber(t.helix_deg, 1);
-        else row << "" << "" << "" << "";
+        if (first)
+          row << esc(t.id) << QString::number(t.teeth) << formatNumber(t.diameter_mm, 2)
+              << formatNumber(t.helix_deg, 1);
+        else
+          row << ""
+              << ""
+              << ""
+              << "";
         first = false;
         row << QString("%1%2").arg(axis).arg(m + 1) << formatNumber(modes[m].freq_Hz, 2)
             << formatNumber(modes[m].damping_pct, 2) << formatNumber(modes[m].stiffness_N_per_um, 3);
@@ -127,10 +151,13 @@ QString ReportBuilder::projectSection() const {
   const CostWeights& after = d_.result.weights;
   const CostNormalisation& nf = d_.normalisation;
   QList<QStringList> rows3{
-      {"c = (c1, c2, c3)", "tool cost weights: power, MRR, \u0394N<sub>s</sub> (eq. 13), requested", weights(w.c.data(), 3)},
+      {"c = (c1, c2, c3)", "tool cost weights: power, MRR, \u0394N<sub>s</sub> (eq. 13), requested",
+       weights(w.c.data(), 3)},
       {"c after Rule 6", "after the malfunction loop", weights(after.c.data(), 3)},
-      {"c<sub>r</sub> = (c1r, c2r, c3r)", "resultant cost weights: C, C<sub>t</sub>, C<sub>f</sub> (eq. 20)", weights(w.cr.data(), 3)},
-      {"c<sub>t</sub> = (c1t, c2t)", "time-domain cost weights: t<sub>s</sub>, M<sub>p</sub> (eq. 18)", weights(w.ct.data(), 2)},
+      {"c<sub>r</sub> = (c1r, c2r, c3r)", "resultant cost weights: C, C<sub>t</sub>, C<sub>f</sub> (eq. 20)",
+       weights(w.cr.data(), 3)},
+      {"c<sub>t</sub> = (c1t, c2t)", "time-domain cost weights: t<sub>s</sub>, M<sub>p</sub> (eq. 18)",
+       weights(w.ct.data(), 2)},
       {"c<sub>f</sub> = (c1f, c2f)", "frequency cost weights: R12h, R1ch (eq. 19)", weights(w.cf.data(), 2)},
       {"\u03b4 [1/s]", "lobe margin, Rule 1.1", formatNumber(d_.settings.stability.delta_per_s, 4)},
       {"\u03b1 [\u2013]", "depth margin, Rule 1.2", formatNumber(d_.settings.stability.alpha, 3)},
@@ -146,19 +173,21 @@ QString ReportBuilder::rankingSection() const {
   QList<QStringList> rows;
   int rank = 0;
   for (const ToolChoice& t : r.tools)
-    rows << QStringList{QString::number(++rank), esc(d_.toolId(t.tool)), "<b>" + formatCost(t.min_cost) + "</b>",
-                        formatCost(t.terms.power), formatCost(t.terms.mrr), formatCost(t.terms.speed_security),
-                        rpm(t.q.speed_rev_per_s), mm(t.q.depth_m), mm(t.q.feed_per_tooth_m),
-                        formatNumber(t.q.power_w, 1), mrr(t.q.mrr_m3_per_s), rpm(t.q.speed_security)};
+    rows << QStringList{QString::number(++rank),      esc(d_.toolId(t.tool)),  "<b>" + formatCost(t.min_cost) + "</b>",
+                        formatCost(t.terms.power),    formatCost(t.terms.mrr), formatCost(t.terms.speed_security),
+                        rpm(t.q.speed_rev_per_s),     mm(t.q.depth_m),         mm(t.q.feed_per_tooth_m),
+                        formatNumber(t.q.power_w, 1), mrr(t.q.mrr_m3_per_s),   rpm(t.q.speed_security)};
   QString out = "<h2>2 Ranking of the tools (Rule 4)</h2>\n";
-  out += QString("<p>Tools ranked by their minimum tool cost C (eq. 13) over the admissible space Q, at c = %1. "
-                 "q* = (N, b, s<sub>t</sub>) is each tool's cost-minimising point. Selected tool: <b>%2</b>.</p>\n")
+  out += QString(
+             "<p>Tools ranked by their minimum tool cost C (eq. 13) over the admissible space Q, at c = %1. "
+             "q* = (N, b, s<sub>t</sub>) is each tool's cost-minimising point. Selected tool: <b>%2</b>.</p>\n")
              .arg(weights(r.c.data(), 3), esc(d_.selectedId()));
-  out += table(QString("Ranking of the candidate tools by minimum cost C (c = %1)").arg(weights(r.c.data(), 3)),
-               {"Rank", "Tool", "Min cost C [\u2013]", "c1 P/P<sub>av</sub> [\u2013]", "c2 MRR<sub>max</sub>/MRR [\u2013]",
-                "c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub> [\u2013]", "q* N [rpm]", "q* b [mm]", "q* s<sub>t</sub> [mm/tooth]",
-                "Peak power [W]", "MRR [mm\u00b3/min]", "\u0394N<sub>s</sub> [rpm]"},
-               rows);
+  out +=
+      table(QString("Ranking of the candidate tools by minimum cost C (c = %1)").arg(weights(r.c.data(), 3)),
+            {"Rank", "Tool", "Min cost C [\u2013]", "c1 P/P<sub>av</sub> [\u2013]", "c2 MRR<sub>max</sub>/MRR [\u2013]",
+             "c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub> [\u2013]", "q* N [rpm]", "q* b [mm]",
+             "q* s<sub>t</sub> [mm/tooth]", "Peak power [W]", "MRR [mm\u00b3/min]", "\u0394N<sub>s</sub> [rpm]"},
+            rows);
   for (std::size_t t : r.excluded) out += "<p>Excluded (empty admissible space): " + esc(d_.toolId(t)) + "</p>\n";
   return out;
 }
@@ -169,7 +198,8 @@ QString ReportBuilder::selectionSection() const {
   const RefinementCandidate* star = nullptr;
   if (ref)
     for (const RefinementCandidate& c : ref->candidates)
-      if (c.q.speed_rev_per_s == sel.q.speed_rev_per_s && c.q.depth_m == sel.q.depth_m && c.q.feed_per_tooth_m == sel.q.feed_per_tooth_m)
+      if (c.q.speed_rev_per_s == sel.q.speed_rev_per_s && c.q.depth_m == sel.q.depth_m &&
+          c.q.feed_per_tooth_m == sel.q.feed_per_tooth_m)
         star = &c;
   const RefinementCandidate* chosen = ref ? &ref->chosen() : nullptr;
   const auto terms = [&](const ExpertPoint& q) {
@@ -184,28 +214,51 @@ QString ReportBuilder::selectionSection() const {
     return QStringList{name, unit, a, b};
   };
   QList<QStringList> rows{
-      row("Spindle speed N", "rpm", rpm(sel.q.speed_rev_per_s), col2([](const RefinementCandidate& c) { return rpm(c.q.speed_rev_per_s); })),
+      row("Spindle speed N", "rpm", rpm(sel.q.speed_rev_per_s),
+          col2([](const RefinementCandidate& c) { return rpm(c.q.speed_rev_per_s); })),
       row("Axial depth b", "mm", mm(sel.q.depth_m), col2([](const RefinementCandidate& c) { return mm(c.q.depth_m); })),
-      row("Feed per tooth s<sub>t</sub>", "mm/tooth", mm(sel.q.feed_per_tooth_m), col2([](const RefinementCandidate& c) { return mm(c.q.feed_per_tooth_m); })),
-      row("Peak power P", "W", formatNumber(sel.q.power_w, 1), col2([](const RefinementCandidate& c) { return formatNumber(c.q.power_w, 1); })),
-      row("MRR", "mm\u00b3/min", mrr(sel.q.mrr_m3_per_s), col2([](const RefinementCandidate& c) { return mrr(c.q.mrr_m3_per_s); })),
-      row("\u0394N<sub>s</sub>", "rpm", rpm(sel.q.speed_security), col2([](const RefinementCandidate& c) { return rpm(c.q.speed_security); })),
+      row("Feed per tooth s<sub>t</sub>", "mm/tooth", mm(sel.q.feed_per_tooth_m),
+          col2([](const RefinementCandidate& c) { return mm(c.q.feed_per_tooth_m); })),
+      row("Peak power P", "W", formatNumber(sel.q.power_w, 1),
+          col2([](const RefinementCandidate& c) { return formatNumber(c.q.power_w, 1); })),
+      row("MRR", "mm\u00b3/min", mrr(sel.q.mrr_m3_per_s),
+          col2([](const RefinementCandidate& c) { return mrr(c.q.mrr_m3_per_s); })),
+      row("\u0394N<sub>s</sub>", "rpm", rpm(sel.q.speed_security),
+          col2([](const RefinementCandidate& c) { return rpm(c.q.speed_security); })),
       row("Tool cost C (eq. 13)", "\u2013", formatCost(t1.total()), chosen ? formatCost(t2.total()) : none),
       row("&nbsp;&nbsp;c1 P/P<sub>av</sub>", "\u2013", formatCost(t1.power), chosen ? formatCost(t2.power) : none),
       row("&nbsp;&nbsp;c2 MRR<sub>max</sub>/MRR", "\u2013", formatCost(t1.mrr), chosen ? formatCost(t2.mrr) : none),
-      row("&nbsp;&nbsp;c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub>", "\u2013", formatCost(t1.speed_security), chosen ? formatCost(t2.speed_security) : none),
-      row("Time-domain cost C<sub>t</sub> (eq. 18)", "\u2013", col1([](const RefinementCandidate& c) { return formatCost(c.time_cost); }), col2([](const RefinementCandidate& c) { return formatCost(c.time_cost); })),
-      row("Frequency cost C<sub>f</sub> (eq. 19)", "\u2013", col1([](const RefinementCandidate& c) { return formatCost(c.frequency_cost); }), col2([](const RefinementCandidate& c) { return formatCost(c.frequency_cost); })),
-      row("Resultant cost C<sub>resultant</sub> (eq. 20)", "\u2013", col1([](const RefinementCandidate& c) { return formatCost(c.resultant); }), col2([](const RefinementCandidate& c) { return formatCost(c.resultant); })),
-      row("Settling time t<sub>s</sub>", "ms", col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.settling_time_s * 1e3, 2); }), col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.settling_time_s * 1e3, 2); })),
-      row("Overshoot M<sub>p</sub>", "%", col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.overshoot * 100.0, 2); }), col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.overshoot * 100.0, 2); })),
-      row("R12h = A(2f<sub>tp</sub>)/A(f<sub>tp</sub>)", "\u2013", col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.r12h, 4); }), col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.r12h, 4); })),
-      row("R1ch = A<sub>chatter</sub>/A(f<sub>tp</sub>)", "\u2013", col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.r1ch, 4); }), col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.r1ch, 4); })),
-      row("Chatter (simulation verdict)", "", col1([](const RefinementCandidate& c) { return QString(c.metrics.chatter ? "yes" : "no"); }), col2([](const RefinementCandidate& c) { return QString(c.metrics.chatter ? "yes" : "no"); }))};
+      row("&nbsp;&nbsp;c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub>", "\u2013", formatCost(t1.speed_security),
+          chosen ? formatCost(t2.speed_security) : none),
+      row("Time-domain cost C<sub>t</sub> (eq. 18)", "\u2013",
+          col1([](const RefinementCandidate& c) { return formatCost(c.time_cost); }),
+          col2([](const RefinementCandidate& c) { return formatCost(c.time_cost); })),
+      row("Frequency cost C<sub>f</sub> (eq. 19)", "\u2013",
+          col1([](const RefinementCandidate& c) { return formatCost(c.frequency_cost); }),
+          col2([](const RefinementCandidate& c) { return formatCost(c.frequency_cost); })),
+      row("Resultant cost C<sub>resultant</sub> (eq. 20)", "\u2013",
+          col1([](const RefinementCandidate& c) { return formatCost(c.resultant); }),
+          col2([](const RefinementCandidate& c) { return formatCost(c.resultant); })),
+      row("Settling time t<sub>s</sub>", "ms",
+          col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.settling_time_s * 1e3, 2); }),
+          col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.settling_time_s * 1e3, 2); })),
+      row("Overshoot M<sub>p</sub>", "%",
+          col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.overshoot * 100.0, 2); }),
+          col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.overshoot * 100.0, 2); })),
+      row("R12h = A(2f<sub>tp</sub>)/A(f<sub>tp</sub>)", "\u2013",
+          col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.r12h, 4); }),
+          col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.r12h, 4); })),
+      row("R1ch = A<sub>chatter</sub>/A(f<sub>tp</sub>)", "\u2013",
+          col1([](const RefinementCandidate& c) { return formatNumber(c.metrics.r1ch, 4); }),
+          col2([](const RefinementCandidate& c) { return formatNumber(c.metrics.r1ch, 4); })),
+      row("Chatter (simulation verdict)", "",
+          col1([](const RefinementCandidate& c) { return QString(c.metrics.chatter ? "yes" : "no"); }),
+          col2([](const RefinementCandidate& c) { return QString(c.metrics.chatter ? "yes" : "no"); }))};
 
   QString out = "<h2>3 Selected cutting parameters (Rules 5 and 6)</h2>\n";
-  out += QString("<p>Tool <b>%1</b>. q* minimises the tool cost C; q** minimises the resultant cost C<sub>resultant</sub> "
-                 "over the %2 best points by C, each simulated in the time domain (c<sub>r</sub> = %3).</p>\n")
+  out += QString(
+             "<p>Tool <b>%1</b>. q* minimises the tool cost C; q** minimises the resultant cost C<sub>resultant</sub> "
+             "over the %2 best points by C, each simulated in the time domain (c<sub>r</sub> = %3).</p>\n")
              .arg(esc(d_.selectedId()))
              .arg(ref ? ref->candidates.size() : 0)
              .arg(weights(d_.weights.cr.data(), 3));
@@ -215,16 +268,24 @@ QString ReportBuilder::selectionSection() const {
     QList<QStringList> cands;
     for (std::size_t i = 0; i < ref->candidates.size(); ++i) {
       const RefinementCandidate& c = ref->candidates[i];
-      QStringList r{QString::number(i + 1), rpm(c.q.speed_rev_per_s), mm(c.q.depth_m), mm(c.q.feed_per_tooth_m),
-                    formatCost(c.cost), formatCost(c.time_cost), formatCost(c.frequency_cost), formatCost(c.resultant),
-                    formatNumber(c.metrics.settling_time_s * 1e3, 2), formatNumber(c.metrics.overshoot * 100.0, 2)};
+      QStringList r{QString::number(i + 1),
+                    rpm(c.q.speed_rev_per_s),
+                    mm(c.q.depth_m),
+                    mm(c.q.feed_per_tooth_m),
+                    formatCost(c.cost),
+                    formatCost(c.time_cost),
+                    formatCost(c.frequency_cost),
+                    formatCost(c.resultant),
+                    formatNumber(c.metrics.settling_time_s * 1e3, 2),
+                    formatNumber(c.metrics.overshoot * 100.0, 2)};
       if (i == ref->best) r[0] += " (q**)";
       cands << r;
     }
-    out += table("Simulated candidate points (Rule 5), best first by C",
-                 {"#", "N [rpm]", "b [mm]", "s<sub>t</sub> [mm/tooth]", "C [\u2013]", "C<sub>t</sub> [\u2013]",
-                  "C<sub>f</sub> [\u2013]", "C<sub>resultant</sub> [\u2013]", "t<sub>s</sub> [ms]", "M<sub>p</sub> [%]"},
-                 cands);
+    out +=
+        table("Simulated candidate points (Rule 5), best first by C",
+              {"#", "N [rpm]", "b [mm]", "s<sub>t</sub> [mm/tooth]", "C [\u2013]", "C<sub>t</sub> [\u2013]",
+               "C<sub>f</sub> [\u2013]", "C<sub>resultant</sub> [\u2013]", "t<sub>s</sub> [ms]", "M<sub>p</sub> [%]"},
+              cands);
   }
   out += QString("<p><b>Rule 6 (malfunction loop):</b> %1 iteration(s)%2; c = %3 \u2192 %4.</p>\n")
              .arg(d_.result.malfunction_iterations)
@@ -235,17 +296,19 @@ QString ReportBuilder::selectionSection() const {
 
 QString ReportBuilder::figureSection() const {
   QString out = "<h2>4 Figures</h2>\n";
-  out += figure(d_.lobe_image,
-                QString("Stability lobes of tool %1: nominal (solid) and margined (dashed, \u03b4 = %2 1/s, \u03b1 = %3), "
-                        "with q* and q** marked. Spindle speed N in rpm, axial depth b in mm.")
-                    .arg(esc(d_.selectedId()))
-                    .arg(d_.settings.stability.delta_per_s)
-                    .arg(d_.settings.stability.alpha));
+  out +=
+      figure(d_.lobe_image,
+             QString("Stability lobes of tool %1: nominal (solid) and margined (dashed, \u03b4 = %2 1/s, \u03b1 = %3), "
+                     "with q* and q** marked. Spindle speed N in rpm, axial depth b in mm.")
+                 .arg(esc(d_.selectedId()))
+                 .arg(d_.settings.stability.delta_per_s)
+                 .arg(d_.settings.stability.alpha));
   if (!d_.simulation_image.isEmpty())
-    out += figure(d_.simulation_image,
-                  QString("Time-domain simulation of q** (%1 revolutions from rest): tool displacement x, y in \u00b5m, "
-                          "resultant cutting force in N and cutting power in W against time in ms.")
-                      .arg(d_.simulation_revolutions));
+    out +=
+        figure(d_.simulation_image,
+               QString("Time-domain simulation of q** (%1 revolutions from rest): tool displacement x, y in \u00b5m, "
+                       "resultant cutting force in N and cutting power in W against time in ms.")
+                   .arg(d_.simulation_revolutions));
   out += figure(d_.sweep_image,
                 QString("Minimum tool cost C of every tool against c1 with c2 = 1 \u2212 c1 \u2212 c3 at c3 = %1 "
                         "(figure 4 of Rubio et al. 2006); the dashed line marks the weights used.")
@@ -256,15 +319,17 @@ QString ReportBuilder::figureSection() const {
 QString ReportBuilder::html() const {
   tables_ = 0;
   figures_ = 0;
-  QString out = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n<title>MillExpert report: " + esc(d_.project.name) +
-                "</title>\n<style>\n" + kStyle + "</style></head>\n<body>\n";
-  out += "<h1>MillExpert expert report</h1>\n<p><b>" + esc(d_.project.name) + "</b><br>Project file: " +
-         esc(d_.project_path) + "</p>\n";
+  QString out =
+      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n<title>MillExpert report: " + esc(d_.project.name) +
+      "</title>\n<style>\n" + kStyle + "</style></head>\n<body>\n";
+  out += "<h1>MillExpert expert report</h1>\n<p><b>" + esc(d_.project.name) +
+         "</b><br>Project file: " + esc(d_.project_path) + "</p>\n";
   out += projectSection();  // one by one: the tables and figures are numbered in order
   out += rankingSection();
   out += selectionSection();
   out += figureSection();
-  if (flavour_ == ReportFlavour::Browser) out += "<p class=\"footer\">" + esc(footer()) + "</p>\n";  // PDF: on every page
+  if (flavour_ == ReportFlavour::Browser)
+    out += "<p class=\"footer\">" + esc(footer()) + "</p>\n";  // PDF: on every page
   out += "</body></html>\n";
   return out;
 }

@@ -25,7 +25,7 @@ class ReportBuilder {
   QString footer() const;  // "MillExpert <version> · generated <date> · <project file>"
 
   // Number formats of the report (C locale; "—" for non-finite values). The test compares against them.
-  static QString formatCost(double cost);                   // 4 decimals
+  static QString formatCost(double cost);  // 4 decimals
   static QString formatNumber(double value, int decimals);
 
  private:

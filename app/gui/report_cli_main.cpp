@@ -10,13 +10,13 @@
 #include <QTextStream>
 #include <clocale>
 
-#include "services/exit_code.h"
-#include "services/expert_request.h"
-#include "services/service_errors.h"
 #include "core/invalid_input.h"
 #include "document/project.h"
 #include "report_data.h"
 #include "report_writer.h"
+#include "services/exit_code.h"
+#include "services/expert_request.h"
+#include "services/service_errors.h"
 
 namespace {
 
@@ -48,7 +48,8 @@ int run(const QApplication& app) {
   }
   const QStringList positional = parser.positionalArguments();
   if (positional.size() != 1) return fail("expected exactly one PROJECT argument", mx::app::kExitBadInput);
-  if (!parser.isSet("pdf") && !parser.isSet("html")) return fail("nothing to write: give --pdf and/or --html", mx::app::kExitBadInput);
+  if (!parser.isSet("pdf") && !parser.isSet("html"))
+    return fail("nothing to write: give --pdf and/or --html", mx::app::kExitBadInput);
 
   mx::gui::ReportOptions options;
   if (parser.isSet("c")) {

@@ -14,7 +14,9 @@ namespace mx::gui {
 
 namespace {
 
-QVector<double> toQVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+QVector<double> toQVector(const std::vector<double>& v) {
+  return QVector<double>(v.begin(), v.end());
+}
 
 LobeFigureInput lobeFigure(const ReportData& d) {
   LobeFigureInput in;

@@ -13,7 +13,7 @@ using ReportData = app::ReportData;
 
 struct ReportOptions {
   std::optional<std::array<double, 3>> c;  // overrides the project's c (must lie on the simplex)
-  QString image_dir;                        // existing directory for the figures
+  QString image_dir;                       // existing directory for the figures
   double sweep_step = 0.025;
   int image_width = 1200;
   int image_height = 675;

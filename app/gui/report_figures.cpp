@@ -1,10 +1,11 @@
 #include "report_figures.h"
 
+#include <qcustomplot.h>
+
 #include <QPen>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <qcustomplot.h>
 
 namespace mx::gui {
 
@@ -12,7 +13,9 @@ namespace {
 
 constexpr std::size_t kMaxSamples = 6000;
 
-QFont plotFont(int point_size) { return QFont("DejaVu Sans", point_size); }
+QFont plotFont(int point_size) {
+  return QFont("DejaVu Sans", point_size);
+}
 
 void styleAxes(QCPAxisRect* rect) {
   for (QCPAxis* axis : rect->axes()) {
@@ -52,8 +55,7 @@ bool ReportFigureRenderer::renderLobes(const LobeFigureInput& in, const QString&
   if (auto* plot = qobject_cast<QCustomPlot*>(view.plotWidget())) plot->replot();  // paint buffers for the overlay
   if (!in.power_limit_mm.isEmpty()) view.setPowerLimit(in.power_limit_mm, in.power_limit_label);
   view.setMarker("q*", in.q_star_rpm, in.q_star_mm, QColor(0, 90, 200));
-  if (in.has_q_star_star)
-    view.setMarker("q**", in.q_star_star_rpm, in.q_star_star_mm, QColor(200, 60, 0));
+  if (in.has_q_star_star) view.setMarker("q**", in.q_star_star_rpm, in.q_star_star_mm, QColor(200, 60, 0));
   return view.saveImage(path, width, height);
 }
 
@@ -96,7 +98,8 @@ bool ReportFigureRenderer::renderSimulation(const SimulationTrace& trace, double
     rects[row]->axis(QCPAxis::atBottom)->setLabel(row == 2 ? "Time t [ms]" : "");
     QCPLegend* legend = addLegend(rects[row]);
     for (int g = 0; g < plot.graphCount(); ++g)
-      if (plot.graph(g)->valueAxis() == rects[row]->axis(QCPAxis::atLeft)) legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(g)));
+      if (plot.graph(g)->valueAxis() == rects[row]->axis(QCPAxis::atLeft))
+        legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(g)));
   }
   plot.rescaleAxes();
   for (QCPAxisRect* rect : rects) {
@@ -131,11 +134,11 @@ bool ReportFigureRenderer::renderSweep(const SweepFigureInput& in, const QString
     plot.yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
   }
   plot.rescaleAxes();
-  if (std::isfinite(lo))
-    plot.yAxis->setRange(log ? lo / 1.5 : 0.0, log ? hi * 3.0 : hi * 1.15);
+  if (std::isfinite(lo)) plot.yAxis->setRange(log ? lo / 1.5 : 0.0, log ? hi * 3.0 : hi * 1.15);
   if (in.current_c1 >= 0.0 && std::isfinite(lo)) {
-    addCurve(plot, plot.axisRect(), {in.current_c1, in.current_c1}, {plot.yAxis->range().lower, plot.yAxis->range().upper},
-             QString("weights used (c1 = %1)").arg(in.current_c1, 0, 'g', 4), QPen(QColor(60, 60, 60), 1.2, Qt::DashLine));
+    addCurve(
+        plot, plot.axisRect(), {in.current_c1, in.current_c1}, {plot.yAxis->range().lower, plot.yAxis->range().upper},
+        QString("weights used (c1 = %1)").arg(in.current_c1, 0, 'g', 4), QPen(QColor(60, 60, 60), 1.2, Qt::DashLine));
   }
   return plot.savePng(path, width_, height_);
 }

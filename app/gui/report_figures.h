@@ -15,10 +15,10 @@
 namespace mx::gui {
 
 struct LobeFigureInput {
-  widgets::ToolLobeSeries series;   // nominal and margined envelopes of the selected tool
+  widgets::ToolLobeSeries series;  // nominal and margined envelopes of the selected tool
   double delta_per_s = 0.0;
   double alpha = 1.0;
-  QVector<double> power_limit_mm;   // on series.speed_rpm; empty = none
+  QVector<double> power_limit_mm;  // on series.speed_rpm; empty = none
   QString power_limit_label;
   double q_star_rpm = 0.0, q_star_mm = 0.0;
   bool has_q_star_star = false;
@@ -27,10 +27,10 @@ struct LobeFigureInput {
 
 struct SweepFigureInput {
   double c3 = 0.0;
-  double current_c1 = -1.0;                // vertical marker; < 0 = none
+  double current_c1 = -1.0;  // vertical marker; < 0 = none
   std::vector<double> c1;
   QStringList tool_ids;
-  std::vector<std::vector<double>> cost;   // [tool][i], NaN where the tool has no admissible point
+  std::vector<std::vector<double>> cost;  // [tool][i], NaN where the tool has no admissible point
 };
 
 class ReportFigureRenderer {

@@ -19,7 +19,9 @@ namespace mx::gui {
 
 namespace {
 
-[[noreturn]] void fail(const QString& what) { throw std::runtime_error(what.toStdString()); }
+[[noreturn]] void fail(const QString& what) {
+  throw std::runtime_error(what.toStdString());
+}
 
 QByteArray readFile(const QString& path) {
   QFile file(path);
@@ -39,9 +41,11 @@ QString ReportWriter::imageFolder(const QString& html_path) {
 void ReportWriter::writeHtml(const QString& path, HtmlImages images) const {
   const QString folder = imageFolder(path);
   const QString folder_name = QFileInfo(folder).fileName();
-  if (images == HtmlImages::SiblingFolder && !QDir().mkpath(folder)) fail(QString("cannot create the folder '%1'").arg(folder));
+  if (images == HtmlImages::SiblingFolder && !QDir().mkpath(folder))
+    fail(QString("cannot create the folder '%1'").arg(folder));
   const ReportBuilder builder(data_, ReportFlavour::Browser, [&](const QString& image) -> QString {
-    if (images == HtmlImages::Embedded) return "data:image/png;base64," + QString::fromLatin1(readFile(image).toBase64());
+    if (images == HtmlImages::Embedded)
+      return "data:image/png;base64," + QString::fromLatin1(readFile(image).toBase64());
     const QString name = QFileInfo(image).fileName();
     const QString target = QDir(folder).filePath(name);
     if (QFileInfo(image).absoluteFilePath() != QFileInfo(target).absoluteFilePath()) {
@@ -97,7 +101,8 @@ void ReportWriter::writePdf(const QString& path) const {
     painter.restore();
     painter.setFont(footer_font);
     painter.setPen(QPen(QColor(120, 120, 120), 0.0));
-    painter.drawLine(QPointF(0.0, page.height() - 1.6 * metrics.height()), QPointF(page.width(), page.height() - 1.6 * metrics.height()));
+    painter.drawLine(QPointF(0.0, page.height() - 1.6 * metrics.height()),
+                     QPointF(page.width(), page.height() - 1.6 * metrics.height()));
     painter.setPen(QColor(70, 70, 70));
     const QRectF footer_rect(0.0, page.height() - 1.3 * metrics.height(), page.width(), 1.3 * metrics.height());
     painter.drawText(footer_rect, Qt::AlignLeft | Qt::AlignBottom, footer);

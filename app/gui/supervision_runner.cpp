@@ -38,7 +38,9 @@ SupervisionRunner::SupervisionRunner(QThreadPool* engine_pool, QObject* parent) 
   qRegisterMetaType<mx::gui::SupervisionOutcome>();
 }
 
-SupervisionRunner::~SupervisionRunner() { stop(); }
+SupervisionRunner::~SupervisionRunner() {
+  stop();
+}
 
 void SupervisionRunner::stop() {
   if (live_) live_->cancel.store(true);
@@ -91,9 +93,12 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
       n_modules = r.modules.size();
       n_events = r.events.size();
       if (self)
-        QMetaObject::invokeMethod(self, [self, c = std::move(c)] {
-          if (self) emit self->chunkReady(c);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            self,
+            [self, c = std::move(c)] {
+              if (self) emit self->chunkReady(c);
+            },
+            Qt::QueuedConnection);
     };
     scenario.poll_events = [live](double t_s, std::vector<OperatorEvent>& events) {
       std::lock_guard<std::mutex> lock(live->mutex);

@@ -33,15 +33,16 @@ SupervisorFeature::SupervisorFeature(QMainWindow* window, const app::ProjectDocu
   connectRunner();
 }
 
-void SupervisorFeature::stop() { runner_->stop(); }
+void SupervisorFeature::stop() {
+  runner_->stop();
+}
 
 void SupervisorFeature::connectView() {
   connect(view_, &widgets::SupervisorView::controllerChanged, this, [this] { refresh(document_.project()); });
   connect(view_, &widgets::SupervisorView::runRequested, this, &SupervisorFeature::start);
   connect(view_, &widgets::SupervisorView::stopRequested, runner_, &SupervisionRunner::stop);
-  connect(view_, &widgets::SupervisorView::feedHoldToggled, this, [this](bool on) {
-    runner_->inject(on ? OperatorEventType::FeedHoldOn : OperatorEventType::FeedHoldOff);
-  });
+  connect(view_, &widgets::SupervisorView::feedHoldToggled, this,
+          [this](bool on) { runner_->inject(on ? OperatorEventType::FeedHoldOn : OperatorEventType::FeedHoldOff); });
   connect(view_, &widgets::SupervisorView::chatterSignalled, this,
           [this] { runner_->inject(OperatorEventType::ChatterSignal); });
   connect(view_, &widgets::SupervisorView::compareRequested, this, &SupervisorFeature::compare);

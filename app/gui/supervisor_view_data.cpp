@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "services/supervisor_request.h"
 #include "grafcet/grafcet_validation.h"
+#include "services/supervisor_request.h"
 
 namespace mx::gui {
 

@@ -4,9 +4,9 @@
 #include <QVector>
 #include <vector>
 
+#include "grafcet/grafcet_chart.h"
 #include "grafcet_chart_data.h"
 #include "supervision_data.h"
-#include "grafcet/grafcet_chart.h"
 #include "supervisor/supervision_run.h"
 
 namespace mx::gui {

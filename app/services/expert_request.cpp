@@ -85,5 +85,4 @@ std::vector<double> parseWeightList(const QString& flag, const QString& text, st
   return values;
 }
 
-
 }  // namespace mx::app

@@ -7,10 +7,10 @@
 #include <array>
 #include <vector>
 
+#include "document/project.h"
 #include "expert/cost_weights.h"
 #include "expert/expert_settings.h"
 #include "model/milling_setup.h"
-#include "document/project.h"
 
 namespace mx::app {
 

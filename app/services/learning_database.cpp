@@ -52,7 +52,9 @@ const char* const kEntryColumns =
     "id, time_utc, source, tool_id, tool_diameter_mm, tool_teeth, material, spindle_power_w, max_spindle_rpm,"
     " speed_rpm, depth_mm, feed_mm_per_tooth, objectives_json, weight_count, checksum";
 
-QString num(double v) { return QString::number(v, 'g', 17); }
+QString num(double v) {
+  return QString::number(v, 'g', 17);
+}
 
 // SHA-256 over every stored field of a record, in a fixed text form (doubles with 17 digits, which
 // round-trip exactly through SQLite REAL).
@@ -102,7 +104,9 @@ LearningDatabase::LearningDatabase(const QString& path, OpenMode mode) : path_(p
   }
 }
 
-LearningDatabase::~LearningDatabase() { closeConnection(); }
+LearningDatabase::~LearningDatabase() {
+  closeConnection();
+}
 
 void LearningDatabase::closeConnection() {
   {
@@ -112,7 +116,9 @@ void LearningDatabase::closeConnection() {
   if (QSqlDatabase::contains(connection_)) QSqlDatabase::removeDatabase(connection_);
 }
 
-void LearningDatabase::fail(const QString& what) const { throw LearningDatabaseError(path_, what); }
+void LearningDatabase::fail(const QString& what) const {
+  throw LearningDatabaseError(path_, what);
+}
 
 void LearningDatabase::open(OpenMode mode) {
   const QFileInfo info(path_);
@@ -183,11 +189,17 @@ void LearningDatabase::migrate() {
   }
 }
 
-int LearningDatabase::schemaVersion() const { return scalar("PRAGMA user_version").toInt(); }
+int LearningDatabase::schemaVersion() const {
+  return scalar("PRAGMA user_version").toInt();
+}
 
-QString LearningDatabase::journalMode() const { return scalar("PRAGMA journal_mode").toString(); }
+QString LearningDatabase::journalMode() const {
+  return scalar("PRAGMA journal_mode").toString();
+}
 
-qint64 LearningDatabase::count() const { return scalar("SELECT COUNT(*) FROM learning_entry").toLongLong(); }
+qint64 LearningDatabase::count() const {
+  return scalar("SELECT COUNT(*) FROM learning_entry").toLongLong();
+}
 
 qint64 LearningDatabase::insert(const LearningRecord& input) {
   try {
@@ -204,14 +216,14 @@ qint64 LearningDatabase::insert(const LearningRecord& input) {
 
   run("BEGIN IMMEDIATE");
   try {
-    const QSqlQuery entry = run(
-        "INSERT INTO learning_entry (time_utc, source, tool_id, tool_diameter_mm, tool_teeth, material,"
-        " spindle_power_w, max_spindle_rpm, speed_rpm, depth_mm, feed_mm_per_tooth, mrr_cm3_s, objectives_json,"
-        " weight_count, checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-        {timeText, learningSourceName(r.source), r.tool.id, r.tool.diameter_mm, r.tool.teeth, r.material,
-         r.machine.spindle_power_W, nullableDouble(r.machine.max_spindle_rpm), r.q.speed_rpm, r.q.depth_mm,
-         r.q.feed_mm_per_tooth, mrrValue, objectivesJson, static_cast<qlonglong>(r.weights.size()),
-         checksumOf(r, timeText, objectivesJson)});
+    const QSqlQuery entry =
+        run("INSERT INTO learning_entry (time_utc, source, tool_id, tool_diameter_mm, tool_teeth, material,"
+            " spindle_power_w, max_spindle_rpm, speed_rpm, depth_mm, feed_mm_per_tooth, mrr_cm3_s, objectives_json,"
+            " weight_count, checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            {timeText, learningSourceName(r.source), r.tool.id, r.tool.diameter_mm, r.tool.teeth, r.material,
+             r.machine.spindle_power_W, nullableDouble(r.machine.max_spindle_rpm), r.q.speed_rpm, r.q.depth_mm,
+             r.q.feed_mm_per_tooth, mrrValue, objectivesJson, static_cast<qlonglong>(r.weights.size()),
+             checksumOf(r, timeText, objectivesJson)});
     const qint64 id = entry.lastInsertId().toLongLong();
     for (std::size_t i = 0; i < r.weights.size(); ++i)
       run("INSERT INTO learning_weight (entry_id, position, value) VALUES (?, ?, ?)",

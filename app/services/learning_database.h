@@ -33,16 +33,16 @@ struct LearningHistoryQuery {
 // Result of checkConsistency(): SQLite's integrity_check and foreign_key_check, plus every entry
 // checked for completeness (its weight rows = weight_count) and its per-row SHA-256 checksum.
 struct LearningConsistency {
-  QString integrity;    // "ok" when PRAGMA integrity_check is clean
+  QString integrity;  // "ok" when PRAGMA integrity_check is clean
   qint64 entries = 0;
-  QStringList problems; // empty when consistent
+  QStringList problems;  // empty when consistent
   bool ok() const { return integrity == QLatin1String("ok") && problems.isEmpty(); }
 };
 
 class LearningDatabase {
  public:
   enum class OpenMode { CreateIfMissing, ExistingOnly };
-  static constexpr int kSchemaVersion = 1;        // PRAGMA user_version
+  static constexpr int kSchemaVersion = 1;           // PRAGMA user_version
   static constexpr int kApplicationId = 0x4D584C44;  // PRAGMA application_id, "MXLD"
 
   // learning.sqlite in the AppDataLocation of the MillExpert application (organisation and

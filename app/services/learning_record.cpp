@@ -20,7 +20,9 @@ void require(bool condition, const QString& message) {
   if (!condition) throw std::invalid_argument(message.toStdString());
 }
 
-bool positive(double value) { return std::isfinite(value) && value > 0.0; }
+bool positive(double value) {
+  return std::isfinite(value) && value > 0.0;
+}
 
 }  // namespace
 
@@ -56,8 +58,7 @@ void validateLearningRecord(const LearningRecord& r) {
           "machine.max_spindle_rpm: must be > 0 when given");
   require(positive(r.q.speed_rpm), QString("q.speed_rpm = %1: must be > 0").arg(r.q.speed_rpm));
   require(positive(r.q.depth_mm), QString("q.depth_mm = %1: must be > 0").arg(r.q.depth_mm));
-  require(positive(r.q.feed_mm_per_tooth),
-          QString("q.feed_mm_per_tooth = %1: must be > 0").arg(r.q.feed_mm_per_tooth));
+  require(positive(r.q.feed_mm_per_tooth), QString("q.feed_mm_per_tooth = %1: must be > 0").arg(r.q.feed_mm_per_tooth));
   for (auto it = r.objectives.begin(); it != r.objectives.end(); ++it)
     require(it.value().isDouble() || it.value().isNull(),
             QString("objectives.%1: must be a number or null").arg(it.key()));
@@ -70,13 +71,15 @@ QJsonObject learningEntryJson(const LearningRecord& r) {
           {"tool", r.tool.id},
           {"material", r.material},
           {"weights", weights},
-          {"q", QJsonObject{{"speed_rpm", r.q.speed_rpm},
-                            {"depth_mm", r.q.depth_mm},
-                            {"feed_mm_per_tooth", r.q.feed_mm_per_tooth}}},
+          {"q",
+           QJsonObject{
+               {"speed_rpm", r.q.speed_rpm}, {"depth_mm", r.q.depth_mm}, {"feed_mm_per_tooth", r.q.feed_mm_per_tooth}}},
           {"objectives", r.objectives},
           {"source", learningSourceName(r.source)}};
 }
 
-QString learningTimeText(const QDateTime& time) { return time.toUTC().toString(Qt::ISODateWithMs); }
+QString learningTimeText(const QDateTime& time) {
+  return time.toUTC().toString(Qt::ISODateWithMs);
+}
 
 }  // namespace mx::app

@@ -36,8 +36,8 @@ struct LearningPoint {
 };
 
 struct LearningRecord {
-  qint64 id = 0;        // assigned by the database
-  QDateTime time;       // UTC; "now" when left invalid at insertion
+  qint64 id = 0;                // assigned by the database
+  QDateTime time;               // UTC; "now" when left invalid at insertion
   std::vector<double> weights;  // on the simplex (>= 0, sum 1)
   LearningTool tool;
   QString material;

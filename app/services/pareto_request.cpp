@@ -38,8 +38,12 @@ ParetoWeights checkedWeights(const QString& name, const std::vector<double>& val
   return w;
 }
 
-[[noreturn]] void raiseProject(const QString& message) { throw ProjectError(message); }
-[[noreturn]] void raiseFlag(const QString& message) { throw InputError(message); }
+[[noreturn]] void raiseProject(const QString& message) {
+  throw ProjectError(message);
+}
+[[noreturn]] void raiseFlag(const QString& message) {
+  throw InputError(message);
+}
 
 }  // namespace
 
@@ -70,15 +74,16 @@ ParetoRequest paretoRequestFromProject(const Project& project) {
   return paretoRequestFrom(*project.pareto, project);
 }
 
-QStringList operatorRulesFromProject(const Project& project) { return project.operator_rules.value_or(QStringList{}); }
+QStringList operatorRulesFromProject(const Project& project) {
+  return project.operator_rules.value_or(QStringList{});
+}
 
 ParetoWeights parseParetoWeights(const QString& text) {
   std::vector<double> values;
   for (const QString& item : text.split(',')) {
     bool ok = false;
     const double v = item.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(v))
-      throw InputError(QString("--w = '%1': '%2' is not a finite number").arg(text, item));
+    if (!ok || !std::isfinite(v)) throw InputError(QString("--w = '%1': '%2' is not a finite number").arg(text, item));
     values.push_back(v);
   }
   return checkedWeights(QString("--w = '%1'").arg(text), values, raiseFlag);

@@ -17,11 +17,11 @@
 #include <QStringList>
 #include <optional>
 
+#include "document/project.h"
 #include "pareto/empirical_models.h"
 #include "pareto/pareto_selector.h"
 #include "pareto/pareto_weights.h"
 #include "pareto/weight_modulation.h"
-#include "document/project.h"
 
 namespace mx::app {
 

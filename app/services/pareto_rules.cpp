@@ -15,12 +15,14 @@ namespace mx::app {
 
 namespace {
 
-const std::array<const char*, 6> kPointVariables{"speed_rpm",         "depth_mm",  "feed_mm_per_tooth",
+const std::array<const char*, 6> kPointVariables{"speed_rpm",          "depth_mm",  "feed_mm_per_tooth",
                                                  "feed_velocity_mm_s", "mrr_cm3_s", "power_W"};
 const std::array<const char*, kObjectiveCount> kWeightVariables{"weight.tol", "weight.mrr", "weight.surf",
                                                                 "weight.ros"};
 
-QString qs(const std::string& s) { return QString::fromStdString(s); }
+QString qs(const std::string& s) {
+  return QString::fromStdString(s);
+}
 
 }  // namespace
 
@@ -94,8 +96,9 @@ ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project
   if (!r.outcome.consistent()) {
     QStringList messages;
     for (const RuleContradiction& c : r.outcome.contradictions)
-      messages << QString("operator_rules: contradictory rules: operator_rules[%1] (line %2) '%3' and "
-                          "operator_rules[%4] (line %5) '%6': %7")
+      messages << QString(
+                      "operator_rules: contradictory rules: operator_rules[%1] (line %2) '%3' and "
+                      "operator_rules[%4] (line %5) '%6': %7")
                       .arg(c.first.line - 1)
                       .arg(c.first.line)
                       .arg(qs(c.first.text))
@@ -131,18 +134,18 @@ std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& out
       }
     if (lo[i] > hi[i])
       throw ProjectError(QString("operator_rules: %1 has no admissible value in [0, 1] (bounds [%2, %3])")
-                         .arg(qs(names[i]))
-                         .arg(lo[i])
-                         .arg(hi[i]));
+                             .arg(qs(names[i]))
+                             .arg(lo[i])
+                             .arg(hi[i]));
     sum_lo += lo[i];
     sum_hi += hi[i];
   }
   if (!any) return w;
   if (sum_lo > 1.0 + 1e-12 || sum_hi < 1.0 - 1e-12)
     throw ProjectError(QString("operator_rules: the weight bounds leave no weights on the simplex (sum of lower "
-                           "bounds %1, sum of upper bounds %2)")
-                       .arg(sum_lo)
-                       .arg(sum_hi));
+                               "bounds %1, sum of upper bounds %2)")
+                           .arg(sum_lo)
+                           .arg(sum_hi));
   auto total = [&](double lambda) {
     double s = 0.0;
     for (std::size_t i = 0; i < n; ++i) s += std::clamp(w[i] + lambda, lo[i], hi[i]);
@@ -168,8 +171,8 @@ std::vector<double> applyWeightBounds(const std::vector<const RuleOutcome*>& out
 }
 
 ParetoWeights applyWeightRules(const RuleOutcome& outcome, const ParetoWeights& w) {
-  const std::vector<double> out = applyWeightBounds({&outcome}, {kWeightVariables.begin(), kWeightVariables.end()},
-                                                    {w.begin(), w.end()});
+  const std::vector<double> out =
+      applyWeightBounds({&outcome}, {kWeightVariables.begin(), kWeightVariables.end()}, {w.begin(), w.end()});
   return {out[0], out[1], out[2], out[3]};
 }
 
@@ -207,10 +210,8 @@ QJsonObject rulesJson(const ParetoRules& rules, const ParetoPoint& chosen, int t
     else if (rule != nullptr && rule->bound)
       reason = qs(rule->bound->toString());
     if (rule != nullptr && rule->condition) reason += QString(" (since %1)").arg(qs(toString(rule->condition)));
-    fired.append(QJsonObject{{"line", ref.line},
-                             {"text", qs(ref.text)},
-                             {"kind", isAdvice ? "advice" : "constraint"},
-                             {"reason", reason}});
+    fired.append(QJsonObject{
+        {"line", ref.line}, {"text", qs(ref.text)}, {"kind", isAdvice ? "advice" : "constraint"}, {"reason", reason}});
   }
   for (const RuleAdvice& a : rules.outcome.advice) {
     QJsonValue followed;

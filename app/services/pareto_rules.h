@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "document/project.h"
 #include "pareto/objective_table.h"
 #include "pareto/pareto_selector.h"
 #include "pareto/pareto_weights.h"
-#include "document/project.h"
 #include "rules/rule_ast.h"
 #include "rules/rule_context.h"
 #include "rules/rule_outcome.h"

@@ -19,8 +19,8 @@ ParetoStudy::ParetoStudy(Project project)
   grid_ = std::make_unique<AdmissibleGrid>(setup_, expert_.settings);
   if (grid_->empty())
     throw ComputationError(QString("the admissible space of tool '%1' is empty: %2")
-                       .arg(request_.tool, QString::fromStdString(
-                                               describeConstraint(grid_->funnel().emptiedBy(), expert_.settings))));
+                               .arg(request_.tool, QString::fromStdString(describeConstraint(
+                                                       grid_->funnel().emptiedBy(), expert_.settings))));
   table_ = std::make_unique<ObjectiveTable>(*grid_, request_.models);
   front_ = nonDominated(table_->scores());
 }
@@ -47,16 +47,17 @@ ParetoChoice ParetoStudy::choose(const ParetoChoiceOptions& options) const {
   if (!rules_ || !rules_->restrictsPoint()) {
     out.selection = sel.coarse(w, requirement);
   } else {
-    std::optional<ParetoSelection> s =
-        selectWhere(*table_, w, [&](const ParetoPoint& p) { return admits(p) && (!requirement || requirement->satisfiedBy(p)); });
+    std::optional<ParetoSelection> s = selectWhere(
+        *table_, w, [&](const ParetoPoint& p) { return admits(p) && (!requirement || requirement->satisfiedBy(p)); });
     if (!s && requirement) {
       s = selectWhere(*table_, w, admits);
       if (s) s->filtered = false;
     }
     if (!s)
-      throw ComputationError(QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
-                         .arg(request_.tool)
-                         .arg(table_->size()));
+      throw ComputationError(
+          QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
+              .arg(request_.tool)
+              .arg(table_->size()));
     out.selection = *s;
   }
   out.coarse_j = out.selection.j;

@@ -16,27 +16,27 @@
 #include <optional>
 #include <vector>
 
-#include "services/expert_request.h"
-#include "services/pareto_request.h"
-#include "services/pareto_rules.h"
+#include "document/project.h"
 #include "expert/admissible_grid.h"
-#include "services/learning_record.h"
 #include "pareto/objective_table.h"
 #include "pareto/pareto_selector.h"
 #include "pareto/weight_modulation.h"
-#include "document/project.h"
+#include "services/expert_request.h"
+#include "services/learning_record.h"
+#include "services/pareto_request.h"
+#include "services/pareto_rules.h"
 
 namespace mx::app {
 
 struct ParetoChoiceOptions {
-  std::optional<ParetoWeights> weights;            // default: pareto.weights of the project
+  std::optional<ParetoWeights> weights;             // default: pareto.weights of the project
   std::optional<ObjectiveRequirement> requirement;  // Rule 11
   bool fine = false;                                // Rule 10.2
   bool auto_weights = false;                        // Rule 12
 };
 
 struct ParetoChoice {
-  ParetoWeights weights{};   // final weights (after rules, Rule 11 and Rule 12)
+  ParetoWeights weights{};  // final weights (after rules, Rule 11 and Rule 12)
   ParetoSelection selection;
   double coarse_j = 0.0;
   bool requirement_changed = false;    // Rule 11 moved the weights
@@ -52,8 +52,8 @@ struct ParetoChoice {
 // (dropped when no such point meets it).
 struct ChatterReselection {
   double suggested_rev_per_s = 0.0;
-  int k = 0;                    // lobe number of N_s = f_c / (n_t k)
-  bool within_window = false;   // false: the nearest grid speed was used
+  int k = 0;                                 // lobe number of N_s = f_c / (n_t k)
+  bool within_window = false;                // false: the nearest grid speed was used
   std::optional<ParetoSelection> selection;  // nullopt when no admissible point is left
 };
 

@@ -1,9 +1,9 @@
 #include "services/part_program_request.h"
 
-#include "machining/adaptive_path_feeds.h"
 #include "document/project_rules.h"
-#include "machining/depth_profile.h"
 #include "gcode/gcode_interpreter.h"
+#include "machining/adaptive_path_feeds.h"
+#include "machining/depth_profile.h"
 #include "services/service_errors.h"
 
 namespace mx::app {

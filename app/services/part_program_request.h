@@ -21,19 +21,19 @@
 #include <QString>
 #include <optional>
 
-#include "services/control_request.h"
 #include "control/model_based_force_controller.h"
-#include "machining/part_program_override.h"
-#include "gcode/gcode_program.h"
 #include "document/project.h"
+#include "gcode/gcode_program.h"
+#include "machining/part_program_override.h"
+#include "services/control_request.h"
 
 namespace mx::app {
 
 struct OverrideRequest {
   PartProgramOverrideSettings settings;
   bool adaptive = false;
-  std::optional<ControlRequest> control;          // adaptive
-  std::optional<ModelBasedForceSettings> model;   // model-based
+  std::optional<ControlRequest> control;         // adaptive
+  std::optional<ModelBasedForceSettings> model;  // model-based
   QString controllerName() const;
 };
 

@@ -69,7 +69,8 @@ void simulateQStarStar(ReportData& d, const MillingSetup& setup) {
   SimulationOptions sim;
   sim.revolutions = d.settings.refinement.revolutions;
   sim.evaluated_revolutions = d.settings.refinement.evaluated_revolutions;
-  SimulationResult run = simulateMilling(setup, OperatingPoint{qq.speed_rev_per_s, qq.depth_m, qq.feed_per_tooth_m}, sim);
+  SimulationResult run =
+      simulateMilling(setup, OperatingPoint{qq.speed_rev_per_s, qq.depth_m, qq.feed_per_tooth_m}, sim);
   d.simulation_revolutions = run.simulated_revolutions;
   d.simulation = std::move(run.trace);
   d.simulation_title = QString("%1 at q**: N = %2 rpm, b = %3 mm, s_t = %4 mm/tooth")

@@ -18,35 +18,35 @@ namespace mx::app {
 
 struct ReportSweep {
   double c3 = 0.0;
-  std::vector<double> c1;                    // 0, step, ... 1 - c3
+  std::vector<double> c1;                     // 0, step, ... 1 - c3
   std::vector<std::vector<double>> min_cost;  // [tool][i]; NaN where the tool has no admissible point
 };
 
 // Figure 1: nominal and margined ZOA envelopes of the selected tool, and the power limit at q*'s feed.
 struct ReportLobes {
   std::vector<double> speed_rpm;
-  std::vector<double> nominal_mm;       // NaN where unbounded
-  std::vector<double> margined_mm;      // alpha * b_lim at the margin delta
-  std::vector<double> power_limit_mm;   // on speed_rpm; empty = none
+  std::vector<double> nominal_mm;      // NaN where unbounded
+  std::vector<double> margined_mm;     // alpha * b_lim at the margin delta
+  std::vector<double> power_limit_mm;  // on speed_rpm; empty = none
   QString power_limit_label;
 };
 
 struct ReportData {
   Project project;
   QString project_path;
-  QStringList tool_ids;               // in project order; ToolChoice::tool indexes it
+  QStringList tool_ids;  // in project order; ToolChoice::tool indexes it
   ExpertSettings settings;
-  CostWeights weights;                // requested (the project's, or --c), before Rule 6
-  ExpertResult result;                // result.weights: after Rule 6
+  CostWeights weights;  // requested (the project's, or --c), before Rule 6
+  ExpertResult result;  // result.weights: after Rule 6
   CostNormalisation normalisation;
   ReportSweep sweep;
   ReportLobes lobes;
   std::optional<SimulationTrace> simulation;  // at q**; none without a refinement
   double simulation_revolutions = 0;
   QString simulation_title;
-  QString lobe_image;                 // Figure 1 (PNG), set by the renderer
-  QString simulation_image;           // Figure 2 (PNG); empty when there is no q**
-  QString sweep_image;                // Figure 3 (PNG)
+  QString lobe_image;        // Figure 1 (PNG), set by the renderer
+  QString simulation_image;  // Figure 2 (PNG); empty when there is no q**
+  QString sweep_image;       // Figure 3 (PNG)
   QString version;
   QDateTime generated;
 

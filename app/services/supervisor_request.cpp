@@ -1,8 +1,8 @@
 #include "services/supervisor_request.h"
 
+#include "core/invalid_input.h"
 #include "document/project_grafcet_io.h"
 #include "document/project_rules.h"
-#include "core/invalid_input.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -12,10 +12,11 @@ const std::set<std::string>& supervisionSignals() {
   return names;
 }
 
-QStringList supervisorControllers() { return {"none", "smc1", "smc2"}; }
+QStringList supervisorControllers() {
+  return {"none", "smc1", "smc2"};
+}
 
-SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Project& project,
-                                        const QString& controller) {
+SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Project& project, const QString& controller) {
   if (!supervisorControllers().contains(controller))
     throw InputError(QString("--controller = '%1': must be one of none, smc1, smc2").arg(controller));
   SupervisorRequest r;

@@ -35,8 +35,7 @@ std::optional<WeightSuggestion> suggestWeights(const std::vector<LearningRecord>
   };
   std::vector<Ranked> ranked;
   for (const LearningRecord& r : candidates)
-    if (r.material == job.material && r.weights.size() == job.weight_count)
-      ranked.push_back({&r, jobDistance(r, job)});
+    if (r.material == job.material && r.weights.size() == job.weight_count) ranked.push_back({&r, jobDistance(r, job)});
   if (ranked.empty()) return std::nullopt;
   std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
     if (a.distance != b.distance) return a.distance < b.distance;

@@ -24,9 +24,9 @@ struct JobFeatures {
 };
 
 struct WeightSuggestion {
-  std::vector<double> weights;     // on the simplex
-  std::vector<qint64> from_ids;    // the k nearest records, nearest first
-  std::vector<double> distances;   // their distances d
+  std::vector<double> weights;    // on the simplex
+  std::vector<qint64> from_ids;   // the k nearest records, nearest first
+  std::vector<double> distances;  // their distances d
 };
 
 double jobDistance(const LearningRecord& past, const JobFeatures& job);

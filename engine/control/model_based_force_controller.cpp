@@ -51,7 +51,8 @@ ForceControlDecision ModelBasedForceController::feed(double d, double N) const {
 ForceControlDecision ModelBasedForceController::feed(double d, double N, double F_ref) const {
   requirePositive("spindle_speed", N, "rev/s");
   requirePositive("reference_force", F_ref, "N");
-  if (!std::isfinite(d)) throw InvalidInput("model-based force controller: depth = " + std::to_string(d) + " m: must be finite");
+  if (!std::isfinite(d))
+    throw InvalidInput("model-based force controller: depth = " + std::to_string(d) + " m: must be finite");
   const double per_rev = settings_.teeth * N;  // feed rate per unit feed per tooth
   ForceControlDecision out;
   const double f_force = feedPerToothForForce(d, F_ref);
@@ -68,9 +69,12 @@ ForceControlDecision ModelBasedForceController::feed(double d, double N, double 
 
 std::string ModelBasedForceController::limitName(FeedLimit l) {
   switch (l) {
-    case FeedLimit::Force: return "force limit";
-    case FeedLimit::FeedDrive: return "feed-drive max";
-    case FeedLimit::FeedPerTooth: return "feed-per-tooth max";
+    case FeedLimit::Force:
+      return "force limit";
+    case FeedLimit::FeedDrive:
+      return "feed-drive max";
+    case FeedLimit::FeedPerTooth:
+      return "feed-per-tooth max";
   }
   return "";
 }

@@ -12,18 +12,18 @@
 namespace mx {
 
 struct PowerLawForceModel {
-  double K_N = 760.0;              // 0.76 kN
-  double depth_exponent = 0.65;    // b
-  double feed_exponent = 0.63;     // a
-  double length_unit_m = 1e-3;     // d and f are divided by this before the power law
+  double K_N = 760.0;            // 0.76 kN
+  double depth_exponent = 0.65;  // b
+  double feed_exponent = 0.63;   // a
+  double length_unit_m = 1e-3;   // d and f are divided by this before the power law
 };
 
 struct ModelBasedForceSettings {
   PowerLawForceModel model;
   double reference_force_N = std::numeric_limits<double>::quiet_NaN();  // required, > 0
   int teeth = 4;
-  double max_feed_rate_m_per_s = 36e-3;     // feed drive (Landers & Ulsoy: 36 mm/s)
-  double max_feed_per_tooth_m = 0.6e-3;     // tool / handbook (0.6 mm/tooth)
+  double max_feed_rate_m_per_s = 36e-3;  // feed drive (Landers & Ulsoy: 36 mm/s)
+  double max_feed_per_tooth_m = 0.6e-3;  // tool / handbook (0.6 mm/tooth)
 };
 
 enum class FeedLimit { Force, FeedDrive, FeedPerTooth };

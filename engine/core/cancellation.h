@@ -7,8 +7,8 @@
 namespace mx {
 
 struct JobControl {
-  const std::atomic<bool>* cancel = nullptr;      // polled between chunks
-  std::function<void(double)> progress;           // fraction done in [0, 1]
+  const std::atomic<bool>* cancel = nullptr;  // polled between chunks
+  std::function<void(double)> progress;       // fraction done in [0, 1]
 
   bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
   void report(double fraction) const {

@@ -5,14 +5,14 @@
 #include <limits>
 #include <sstream>
 
+#include "core/invalid_input.h"
 #include "expert/candidate_speeds.h"
 #include "model/cutting_force.h"
-#include "core/invalid_input.h"
 
 namespace mx {
 
 namespace {
-constexpr double kEps = 1e-9;                       // relative slack of the grid comparisons
+constexpr double kEps = 1e-9;  // relative slack of the grid comparisons
 constexpr std::int64_t kUnbounded = std::int64_t{1} << 40;
 constexpr std::int64_t kMaxFeedsPerCell = 1000000;
 
@@ -37,12 +37,16 @@ QConstraint ConstraintFunnel::emptiedBy() const {
 std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
   std::ostringstream out;
   switch (c) {
-    case QConstraint::None: out << "no constraint"; break;
+    case QConstraint::None:
+      out << "no constraint";
+      break;
     case QConstraint::SpindleSpeed:
       out << "the spindle speed maximum (" << s.limits.max_spindle_rev_per_s * 60.0 << " rpm, grid from "
           << s.grid.speed_from_rev_per_s * 60.0 << " rpm)";
       break;
-    case QConstraint::Stability: out << "the margined stability lobes (Rule 1)"; break;
+    case QConstraint::Stability:
+      out << "the margined stability lobes (Rule 1)";
+      break;
     case QConstraint::FeedPerTooth:
       out << "the feed per tooth maximum (" << s.limits.max_feed_per_tooth_m * 1e3 << " mm, feed step "
           << s.grid.feed_step_m * 1e3 << " mm)";
@@ -50,8 +54,12 @@ std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
     case QConstraint::FeedDrive:
       out << "the feed-drive maximum (" << s.limits.max_feed_velocity_m_per_s * 1e3 << " mm/s)";
       break;
-    case QConstraint::SpindlePower: out << "the spindle power limit (" << s.limits.spindle_power_w << " W)"; break;
-    case QConstraint::SpeedSecurity: out << "Delta N_s > 0 (every remaining point lies on the lobe boundary)"; break;
+    case QConstraint::SpindlePower:
+      out << "the spindle power limit (" << s.limits.spindle_power_w << " W)";
+      break;
+    case QConstraint::SpeedSecurity:
+      out << "Delta N_s > 0 (every remaining point lies on the lobe boundary)";
+      break;
   }
   return out.str();
 }
@@ -69,9 +77,9 @@ std::vector<double> AdmissibleGrid::lobeSpeeds(const ExpertSettings& s) {
 }
 
 LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s) {
-  return mx::computeLobes(setup, lobeSpeeds(s),
-                         {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m,
-                          s.stability.sdm_steps_per_period});
+  return mx::computeLobes(
+      setup, lobeSpeeds(s),
+      {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m, s.stability.sdm_steps_per_period});
 }
 
 AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings)
@@ -127,11 +135,11 @@ void AdmissibleGrid::build() {
     const std::int64_t drive_feeds =
         std::min(grid_feeds, countUpTo(lim.max_feed_velocity_m_per_s / (setup_.teeth * n), feed_step_));
     if (drive_feeds >= kUnbounded && !std::isfinite(lim.spindle_power_w))
-      throw InvalidInput("expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum "
-                         "or a spindle power limit");
-    funnel_.feed_drive_points = drive_feeds >= kUnbounded
-                                    ? kUnbounded
-                                    : std::min(kUnbounded, funnel_.feed_drive_points + depths * drive_feeds);
+      throw InvalidInput(
+          "expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum "
+          "or a spindle power limit");
+    funnel_.feed_drive_points =
+        drive_feeds >= kUnbounded ? kUnbounded : std::min(kUnbounded, funnel_.feed_drive_points + depths * drive_feeds);
     if (drive_feeds == 0) continue;
     const double power_per_depth_feed = power_per_depth_feed_per_speed * n;
     for (std::int64_t j = 1; j <= depths; ++j) {

@@ -21,10 +21,10 @@ namespace mx {
 struct GridCell {
   double speed_rev_per_s = 0.0;
   double depth_m = 0.0;
-  double power_per_feed = 0.0;   // peak power [W] per metre of feed per tooth
-  double mrr_per_feed = 0.0;     // MRR [m^3/s] per metre of feed per tooth: a b n_t N
-  double speed_security = 0.0;   // Delta N_s [rev/s], > 0
-  int feed_count = 0;            // admissible feeds: i * feed_step, i = 1 .. feed_count
+  double power_per_feed = 0.0;  // peak power [W] per metre of feed per tooth
+  double mrr_per_feed = 0.0;    // MRR [m^3/s] per metre of feed per tooth: a b n_t N
+  double speed_security = 0.0;  // Delta N_s [rev/s], > 0
+  int feed_count = 0;           // admissible feeds: i * feed_step, i = 1 .. feed_count
 };
 
 // A point of Q with its cost-function inputs. SI.
@@ -75,8 +75,8 @@ class AdmissibleGrid {
   double depthStep() const { return depth_step_; }      // b_min / depth_divisions
   double feedStep() const { return feed_step_; }
   std::int64_t pointCount() const { return funnel_.admissible_points; }
-  double maxMrr() const { return max_mrr_; }             // over Q
-  double maxSpeedSecurity() const { return max_dns_; }   // over Q
+  double maxMrr() const { return max_mrr_; }            // over Q
+  double maxSpeedSecurity() const { return max_dns_; }  // over Q
 
   ExpertPoint point(std::size_t cell, int feed_index) const;  // feed_index in 1 .. feed_count
 

@@ -15,10 +15,10 @@ inline constexpr double kWeightSumTolerance = 1e-6;
 void validateSimplexWeights(const std::string& name, const std::vector<double>& values, std::size_t count);
 
 struct CostWeights {
-  std::array<double, 3> c{0.2, 0.725, 0.075};    // power, MRR, Delta N_s (eq. 13)
-  std::array<double, 3> cr{0.8, 0.1, 0.1};       // C, C_t, C_f (eq. 20)
-  std::array<double, 2> ct{0.5, 0.5};            // t_s, M_p (eq. 18)
-  std::array<double, 2> cf{0.5, 0.5};            // R12h, R1ch (eq. 19)
+  std::array<double, 3> c{0.2, 0.725, 0.075};  // power, MRR, Delta N_s (eq. 13)
+  std::array<double, 3> cr{0.8, 0.1, 0.1};     // C, C_t, C_f (eq. 20)
+  std::array<double, 2> ct{0.5, 0.5};          // t_s, M_p (eq. 18)
+  std::array<double, 2> cf{0.5, 0.5};          // R12h, R1ch (eq. 19)
 
   void validate() const;  // all four on the simplex, else InvalidInput
 };

@@ -1,13 +1,13 @@
 #include "expert/expert_session.h"
-#include "model/vector_state.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "core/parallel_for.h"
 #include "core/invalid_input.h"
+#include "core/parallel_for.h"
+#include "model/vector_state.h"
 
 namespace mx {
 
@@ -161,7 +161,8 @@ std::vector<ToolChoice> ExpertSession::bestPoints(std::size_t tool, const std::a
   forEachPoint(grid, c, nf_, admitFor(tool), [&](std::size_t cell, int feed, double cost) {
     if (best.size() == count) {
       const ExpertPoint p = grid.point(cell, feed);
-      if (!rankBefore({cost, p.mrr_m3_per_s, p.power_w, p.speed_rev_per_s, p.depth_m}, keyOf(best.back(), best.back().min_cost)))
+      if (!rankBefore({cost, p.mrr_m3_per_s, p.power_w, p.speed_rev_per_s, p.depth_m},
+                      keyOf(best.back(), best.back().min_cost)))
         return;
       best.pop_back();
     }

@@ -37,8 +37,8 @@ struct ToolChoice {
 
 struct Ranking {
   std::array<double, 3> c{};
-  std::vector<ToolChoice> tools;       // tools with a non-empty Q, best first (rankBefore on min cost)
-  std::vector<std::size_t> excluded;   // tools whose Q is empty, by index
+  std::vector<ToolChoice> tools;      // tools with a non-empty Q, best first (rankBefore on min cost)
+  std::vector<std::size_t> excluded;  // tools whose Q is empty, by index
   const ToolChoice& selected() const { return tools.front(); }  // Rule 4 (requires !tools.empty())
 };
 
@@ -50,7 +50,7 @@ struct Refinement {
 };
 
 struct ExpertResult {
-  CostWeights weights;       // after Rule 6
+  CostWeights weights;  // after Rule 6
   Ranking ranking;
   std::optional<Refinement> refinement;  // absent without simulation
   int malfunction_iterations = 0;

@@ -22,7 +22,7 @@ struct ExpertGrid {
 
 // Constraints of the admissible space besides the lobes. +inf = no limit.
 struct MachineLimits {
-  double spindle_power_w = std::numeric_limits<double>::infinity();      // peak cutting power (Pareto eq. 8)
+  double spindle_power_w = std::numeric_limits<double>::infinity();  // peak cutting power (Pareto eq. 8)
   double max_spindle_rev_per_s = std::numeric_limits<double>::infinity();
   double max_feed_velocity_m_per_s = std::numeric_limits<double>::infinity();  // feed drive (Pareto Rule 6)
   double max_feed_per_tooth_m = std::numeric_limits<double>::infinity();       // operation maximum
@@ -30,12 +30,12 @@ struct MachineLimits {
 
 struct StabilitySettings {
   StabilityMethod method = StabilityMethod::ZeroOrder;
-  double delta_per_s = 0.0;         // Rule 1.1
-  double alpha = 1.0;               // Rule 1.2
+  double delta_per_s = 0.0;                       // Rule 1.1
+  double alpha = 1.0;                             // Rule 1.2
   double lobe_step_rev_per_s = 10.0 / 60.0;       // speed resolution of the lobes used for b_lim and Delta N_s (ZOA)
   double sdm_lobe_step_rev_per_s = 100.0 / 60.0;  // the same for semi-discretization (cost ~2 ms per speed)
   int sdm_steps_per_period = 40;
-  double max_depth_m = 0.02;        // depth cap where no lobe lies below
+  double max_depth_m = 0.02;  // depth cap where no lobe lies below
   // The lobes are computed over [low_factor * from, high_factor * to] so that the lobe minima that
   // bound Delta N_s at the ends of the speed range are known (a minimum beyond 2 * to can never be the
   // nearer side of a point at or below `to`).
@@ -45,12 +45,12 @@ struct StabilitySettings {
 
 // Rule 5 refinement and Rule 6 malfunction loop.
 struct RefinementSettings {
-  int simulated_points = 12;           // K: the best K points by C of the selected tool are simulated
-  int revolutions = 60;                // per simulation, from rest
-  int evaluated_revolutions = 20;      // spectra over the last ones
-  int threads = 0;                     // 0 = std::thread::hardware_concurrency()
+  int simulated_points = 12;             // K: the best K points by C of the selected tool are simulated
+  int revolutions = 60;                  // per simulation, from rest
+  int evaluated_revolutions = 20;        // spectra over the last ones
+  int threads = 0;                       // 0 = std::thread::hardware_concurrency()
   int max_malfunction_iterations = 200;  // Rule 6
-  double malfunction_ratio = 1.0;      // Rule 6 fires while A_chatter > ratio * A_toothpass (1 = as printed)
+  double malfunction_ratio = 1.0;        // Rule 6 fires while A_chatter > ratio * A_toothpass (1 = as printed)
 };
 
 struct ExpertSettings {

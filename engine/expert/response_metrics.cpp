@@ -44,8 +44,8 @@ ResponseMetrics responseMetrics(const MillingSetup& setup, const OperatingPoint&
   // Resultant-force spectrum over the evaluated window.
   const double t_end = trace.time_s.back();
   const double t_from = t_end - evaluated_revolutions / point.spindle_rev_per_s;
-  const auto first = static_cast<std::size_t>(
-      std::lower_bound(trace.time_s.begin(), trace.time_s.end(), t_from) - trace.time_s.begin());
+  const auto first = static_cast<std::size_t>(std::lower_bound(trace.time_s.begin(), trace.time_s.end(), t_from) -
+                                              trace.time_s.begin());
   if (trace.size() - first < 8 || !(result.dt_s > 0.0)) return m;
   const AmplitudeSpectrum spectrum(std::span<const double>(trace.force_n).subspan(first), 1.0 / result.dt_s);
   const double ftp = setup.teeth * point.spindle_rev_per_s;

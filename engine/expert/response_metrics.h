@@ -14,12 +14,12 @@ namespace mx {
 
 struct ResponseMetrics {
   double settling_time_s = 0.0;
-  double overshoot = 0.0;          // fraction of the final value
+  double overshoot = 0.0;  // fraction of the final value
   double r12h = 0.0;
   double r1ch = 0.0;
   double a_chatter = 0.0;
-  double a_toothpass_max = 0.0;    // max over h f_tp, h = 1 .. below Nyquist (at most 50)
-  bool chatter = false;            // the simulation's own verdict (eta / chip ratio), or diverged
+  double a_toothpass_max = 0.0;  // max over h f_tp, h = 1 .. below Nyquist (at most 50)
+  bool chatter = false;          // the simulation's own verdict (eta / chip ratio), or diverged
   bool malfunction(double ratio = 1.0) const { return a_chatter > ratio * a_toothpass_max; }
 };
 

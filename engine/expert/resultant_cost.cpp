@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "expert/tool_cost.h"
 #include "core/invalid_input.h"
+#include "expert/tool_cost.h"
 
 namespace mx {
 
@@ -11,7 +11,9 @@ namespace {
 // Below this the figures are round-off (a stable cut's R1ch is ~1e-17): a term whose maximum over the
 // set is below it is zero instead of a ratio of noise.
 constexpr double kNoiseFloor = 1e-9;
-double ratio(double value, double max) { return max > kNoiseFloor ? value / max : 0.0; }
+double ratio(double value, double max) {
+  return max > kNoiseFloor ? value / max : 0.0;
+}
 }  // namespace
 
 std::size_t selectByResultantCost(std::vector<RefinementCandidate>& candidates, const CostWeights& w) {

@@ -16,7 +16,7 @@ namespace mx {
 
 struct RefinementCandidate {
   ExpertPoint q;
-  double cost = 0.0;            // C (eq. 13)
+  double cost = 0.0;  // C (eq. 13)
   ResponseMetrics metrics;
   double time_cost = 0.0;       // C_t
   double frequency_cost = 0.0;  // C_f

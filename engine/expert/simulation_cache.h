@@ -19,7 +19,7 @@ class SimulationCache {
   explicit SimulationCache(const RefinementSettings& settings) : settings_(settings) {}
 
   struct Request {
-    std::size_t tool = 0;            // the cache key is (tool, N, b, s_t), exactly
+    std::size_t tool = 0;  // the cache key is (tool, N, b, s_t), exactly
     const MillingSetup* setup = nullptr;
     OperatingPoint point;
   };

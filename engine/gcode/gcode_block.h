@@ -11,11 +11,11 @@ namespace mx {
 
 // A letter-number word ("G1", "F250.5", "x-1.2"). Letters are stored upper-case; the text keeps the case.
 struct GcodeWord {
-  char letter = 0;           // 'G', 'F', ... upper-case
-  double value = 0.0;        // the number as written (program units)
-  std::size_t column = 0;    // 1-based byte column of the letter
-  std::size_t length = 0;    // bytes of letter + number (spaces between them included)
-  bool known = false;        // a word of the supported subset
+  char letter = 0;         // 'G', 'F', ... upper-case
+  double value = 0.0;      // the number as written (program units)
+  std::size_t column = 0;  // 1-based byte column of the letter
+  std::size_t length = 0;  // bytes of letter + number (spaces between them included)
+  bool known = false;      // a word of the supported subset
 };
 
 struct GcodeComment {
@@ -25,19 +25,19 @@ struct GcodeComment {
 };
 
 struct GcodeWarning {
-  int line = 0;              // 1-based line number
-  std::size_t column = 0;    // 1-based byte column (0: the whole line)
-  std::string text;          // the offending text, verbatim
-  std::string message;       // what is wrong
+  int line = 0;            // 1-based line number
+  std::size_t column = 0;  // 1-based byte column (0: the whole line)
+  std::string text;        // the offending text, verbatim
+  std::string message;     // what is wrong
 };
 
 struct GcodeBlock {
-  int line = 0;                          // 1-based line number in the file
-  std::string text;                      // the line's bytes without the line end
-  std::string eol;                       // "\n", "\r\n" or "" (last line without line end)
-  std::vector<GcodeWord> words;          // in order of appearance (known and unknown letter words)
-  std::vector<GcodeComment> comments;    // in order of appearance
-  std::size_t words_end = 0;             // byte offset just after the last word (insertion point)
+  int line = 0;                        // 1-based line number in the file
+  std::string text;                    // the line's bytes without the line end
+  std::string eol;                     // "\n", "\r\n" or "" (last line without line end)
+  std::vector<GcodeWord> words;        // in order of appearance (known and unknown letter words)
+  std::vector<GcodeComment> comments;  // in order of appearance
+  std::size_t words_end = 0;           // byte offset just after the last word (insertion point)
 
   // The first word with this letter (upper-case), or nullptr.
   const GcodeWord* find(char letter) const;

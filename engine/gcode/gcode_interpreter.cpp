@@ -40,13 +40,29 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
       if (!w.known || w.letter != 'G') continue;
       const int g = static_cast<int>(std::lround(w.value));
       switch (g) {
-        case 20: inch = true; break;
-        case 21: inch = false; break;
-        case 90: incremental = false; break;
-        case 91: incremental = true; break;
-        case 4: dwell = true; break;
-        case 0: case 1: case 2: case 3: block_mode = g; break;
-        default: break;  // G17: the only plane supported
+        case 20:
+          inch = true;
+          break;
+        case 21:
+          inch = false;
+          break;
+        case 90:
+          incremental = false;
+          break;
+        case 91:
+          incremental = true;
+          break;
+        case 4:
+          dwell = true;
+          break;
+        case 0:
+        case 1:
+        case 2:
+        case 3:
+          block_mode = g;
+          break;
+        default:
+          break;  // G17: the only plane supported
       }
     }
     const double unit = inch ? kInch : 1e-3;
@@ -100,8 +116,7 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
       m.kind = MotionKind::Rapid;
       m.length_m = std::sqrt(dx * dx + dy * dy + dz * dz);
     } else if (mode == 1 || (!wi && !wj)) {
-      if (mode != 1)
-        out.warnings.push_back({b.line, 0, b.text, "arc without I or J: treated as a straight feed move"});
+      if (mode != 1) out.warnings.push_back({b.line, 0, b.text, "arc without I or J: treated as a straight feed move"});
       m.kind = MotionKind::Linear;
       m.length_m = std::sqrt(dx * dx + dy * dy + dz * dz);
     } else {

@@ -23,19 +23,21 @@ enum class MotionKind { None, Rapid, Linear, ArcCw, ArcCcw, Dwell };
 
 struct GcodeMotion {
   MotionKind kind = MotionKind::None;
-  std::array<double, 3> start_m{};  // X, Y, Z at the start of the block [m]
-  std::array<double, 3> end_m{};    // at the end [m]
-  double length_m = 0.0;            // path length [m]
-  double feed_m_per_s = std::numeric_limits<double>::quiet_NaN();   // modal feed in effect
+  std::array<double, 3> start_m{};                                    // X, Y, Z at the start of the block [m]
+  std::array<double, 3> end_m{};                                      // at the end [m]
+  double length_m = 0.0;                                              // path length [m]
+  double feed_m_per_s = std::numeric_limits<double>::quiet_NaN();     // modal feed in effect
   double speed_rev_per_s = std::numeric_limits<double>::quiet_NaN();  // modal spindle speed in effect
-  bool feed_word = false;     // the block carries its own F word
-  bool speed_word = false;    // the block carries its own S word
-  bool feed_missing = false;  // feed move without any F so far
-  bool inch = false;          // G20 in effect for this block
-  bool incremental = false;   // G91 in effect for this block
-  double dwell_s = 0.0;       // G4 P
+  bool feed_word = false;                                             // the block carries its own F word
+  bool speed_word = false;                                            // the block carries its own S word
+  bool feed_missing = false;                                          // feed move without any F so far
+  bool inch = false;                                                  // G20 in effect for this block
+  bool incremental = false;                                           // G91 in effect for this block
+  double dwell_s = 0.0;                                               // G4 P
 
-  bool isFeedMove() const { return kind == MotionKind::Linear || kind == MotionKind::ArcCw || kind == MotionKind::ArcCcw; }
+  bool isFeedMove() const {
+    return kind == MotionKind::Linear || kind == MotionKind::ArcCw || kind == MotionKind::ArcCcw;
+  }
   double minZ() const { return start_m[2] < end_m[2] ? start_m[2] : end_m[2]; }
 };
 
@@ -45,7 +47,7 @@ struct GcodeInterpreterSettings {
 };
 
 struct GcodeRun {
-  std::vector<GcodeMotion> motions;   // one per block, same order
+  std::vector<GcodeMotion> motions;    // one per block, same order
   std::vector<GcodeWarning> warnings;  // modal problems (missing F, arc radius mismatch, ...)
 };
 

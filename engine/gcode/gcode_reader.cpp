@@ -11,10 +11,18 @@
 namespace mx {
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+bool isLetter(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+char upper(char c) {
+  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
 
 bool knownG(double v) {
   static constexpr int kG[] = {0, 1, 2, 3, 4, 17, 20, 21, 90, 91};
@@ -25,7 +33,16 @@ bool knownG(double v) {
 
 bool knownLetter(char l) {
   switch (l) {
-    case 'F': case 'S': case 'X': case 'Y': case 'Z': case 'I': case 'J': case 'P': case 'N': case 'G':
+    case 'F':
+    case 'S':
+    case 'X':
+    case 'Y':
+    case 'Z':
+    case 'I':
+    case 'J':
+    case 'P':
+    case 'N':
+    case 'G':
       return true;
     default:
       return false;

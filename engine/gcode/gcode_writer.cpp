@@ -24,9 +24,12 @@ std::string GcodeWriter::formatNumber(double value, int decimals) {
 std::string GcodeWriter::sanitizeComment(const std::string& text) {
   std::string s = text;
   for (char& c : s) {
-    if (c == '(') c = '[';
-    else if (c == ')') c = ']';
-    else if (c == '\n' || c == '\r') c = ' ';
+    if (c == '(')
+      c = '[';
+    else if (c == ')')
+      c = ']';
+    else if (c == '\n' || c == '\r')
+      c = ' ';
   }
   return s;
 }

@@ -20,7 +20,9 @@ int GrafcetChart::stepIndex(int id) const {
   return -1;
 }
 
-bool isImpulseAction(std::string_view action) { return !action.empty() && action.back() == '*'; }
+bool isImpulseAction(std::string_view action) {
+  return !action.empty() && action.back() == '*';
+}
 
 std::string_view actionVariable(std::string_view action) {
   if (isImpulseAction(action)) action.remove_suffix(1);

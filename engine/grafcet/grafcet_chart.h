@@ -21,11 +21,11 @@ struct GrafcetStep {
 };
 
 struct GrafcetTransition {
-  int id = 0;                // unique among the chart's transitions; the "(n)" of the drawing
-  std::vector<int> from;     // source step ids (more than one: synchronisation)
-  std::vector<int> to;       // target step ids (more than one: parallel divergence)
-  std::string receptivity;   // e.g. "b and a'" (grafcet_expression.h)
-  int priority = 1;          // conflicts on a shared source step: the lowest number fires, then the lowest id
+  int id = 0;               // unique among the chart's transitions; the "(n)" of the drawing
+  std::vector<int> from;    // source step ids (more than one: synchronisation)
+  std::vector<int> to;      // target step ids (more than one: parallel divergence)
+  std::string receptivity;  // e.g. "b and a'" (grafcet_expression.h)
+  int priority = 1;         // conflicts on a shared source step: the lowest number fires, then the lowest id
 
   bool operator==(const GrafcetTransition&) const = default;
 };

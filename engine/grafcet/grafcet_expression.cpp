@@ -30,8 +30,12 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool identStart(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool identChar(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 class Lexer {
  public:
@@ -54,8 +58,12 @@ class Lexer {
         while (i_ < s_.size() && identChar(s_[i_])) advance();
         t.text = std::string(s_.substr(start, i_ - start));
         const std::string k = lower(t.text);
-        t.kind = k == "and" ? Tok::And : k == "or" ? Tok::Or : k == "not" ? Tok::Not
-               : k == "true" ? Tok::True : k == "false" ? Tok::False : Tok::Ident;
+        t.kind = k == "and"     ? Tok::And
+                 : k == "or"    ? Tok::Or
+                 : k == "not"   ? Tok::Not
+                 : k == "true"  ? Tok::True
+                 : k == "false" ? Tok::False
+                                : Tok::Ident;
       } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                  (c == '.' && i_ + 1 < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_ + 1])))) {
         number(t);
@@ -69,20 +77,46 @@ class Lexer {
         t.kind = Tok::Prime;
       } else {
         auto two = [&](char a, char b) { return c == a && i_ + 1 < s_.size() && s_[i_ + 1] == b; };
-        if (two('&', '&')) { advance(2); t.kind = Tok::And; }
-        else if (two('|', '|')) { advance(2); t.kind = Tok::Or; }
-        else if (two('<', '=')) { advance(2); t.kind = Tok::Le; }
-        else if (two('>', '=')) { advance(2); t.kind = Tok::Ge; }
-        else if (two('=', '=')) { advance(2); t.kind = Tok::Eq; }
-        else if (two('!', '=')) { advance(2); t.kind = Tok::Ne; }
-        else if (c == '<') { advance(); t.kind = Tok::Lt; }
-        else if (c == '>') { advance(); t.kind = Tok::Gt; }
-        else if (c == '=') { advance(); t.kind = Tok::Eq; }
-        else if (c == '!') { advance(); t.kind = Tok::Not; }
-        else if (c == '(') { advance(); t.kind = Tok::LParen; }
-        else if (c == ')') { advance(); t.kind = Tok::RParen; }
-        else if (c == '-') { advance(); t.kind = Tok::Minus; }
-        else {
+        if (two('&', '&')) {
+          advance(2);
+          t.kind = Tok::And;
+        } else if (two('|', '|')) {
+          advance(2);
+          t.kind = Tok::Or;
+        } else if (two('<', '=')) {
+          advance(2);
+          t.kind = Tok::Le;
+        } else if (two('>', '=')) {
+          advance(2);
+          t.kind = Tok::Ge;
+        } else if (two('=', '=')) {
+          advance(2);
+          t.kind = Tok::Eq;
+        } else if (two('!', '=')) {
+          advance(2);
+          t.kind = Tok::Ne;
+        } else if (c == '<') {
+          advance();
+          t.kind = Tok::Lt;
+        } else if (c == '>') {
+          advance();
+          t.kind = Tok::Gt;
+        } else if (c == '=') {
+          advance();
+          t.kind = Tok::Eq;
+        } else if (c == '!') {
+          advance();
+          t.kind = Tok::Not;
+        } else if (c == '(') {
+          advance();
+          t.kind = Tok::LParen;
+        } else if (c == ')') {
+          advance();
+          t.kind = Tok::RParen;
+        } else if (c == '-') {
+          advance();
+          t.kind = Tok::Minus;
+        } else {
           std::string shown(1, c);
           if (static_cast<unsigned char>(c) >= 0x80 || !std::isprint(static_cast<unsigned char>(c))) {
             char buf[8];
@@ -146,10 +180,14 @@ class Lexer {
 
 const char* describe(Tok k) {
   switch (k) {
-    case Tok::End: return "the end of the expression";
-    case Tok::RParen: return "')'";
-    case Tok::LParen: return "'('";
-    default: return nullptr;
+    case Tok::End:
+      return "the end of the expression";
+    case Tok::RParen:
+      return "')'";
+    case Tok::LParen:
+      return "'('";
+    default:
+      return nullptr;
   }
 }
 
@@ -190,10 +228,15 @@ class GrafcetExpressionParser {
     out_.code_.push_back({op, index, value});
     switch (op) {
       case Op::Const:
-      case Op::Signal: ++depth_; break;
+      case Op::Signal:
+        ++depth_;
+        break;
       case Op::Not:
-      case Op::Neg: break;
-      default: --depth_; break;
+      case Op::Neg:
+        break;
+      default:
+        --depth_;
+        break;
     }
     out_.max_stack_ = std::max(out_.max_stack_, depth_);
   }
@@ -240,8 +283,12 @@ class GrafcetExpressionParser {
     if (!isComparison(peek().kind)) return;
     const Tok k = next().kind;
     postfix();
-    emit(k == Tok::Lt ? Op::Lt : k == Tok::Le ? Op::Le : k == Tok::Gt ? Op::Gt
-         : k == Tok::Ge ? Op::Ge : k == Tok::Eq ? Op::Eq : Op::Ne);
+    emit(k == Tok::Lt   ? Op::Lt
+         : k == Tok::Le ? Op::Le
+         : k == Tok::Gt ? Op::Gt
+         : k == Tok::Ge ? Op::Ge
+         : k == Tok::Eq ? Op::Eq
+                        : Op::Ne);
     if (isComparison(peek().kind)) fail(peek(), "comparisons cannot be chained; use 'and'");
   }
   void postfix() {
@@ -263,9 +310,18 @@ class GrafcetExpressionParser {
         emit(Op::Signal, index);
         return;
       }
-      case Tok::Number: next(); emit(Op::Const, 0, t.number); return;
-      case Tok::True: next(); emit(Op::Const, 0, 1.0); return;
-      case Tok::False: next(); emit(Op::Const, 0, 0.0); return;
+      case Tok::Number:
+        next();
+        emit(Op::Const, 0, t.number);
+        return;
+      case Tok::True:
+        next();
+        emit(Op::Const, 0, 1.0);
+        return;
+      case Tok::False:
+        next();
+        emit(Op::Const, 0, 0.0);
+        return;
       case Tok::Minus: {
         Nest n(*this);
         next();
@@ -323,18 +379,50 @@ double GrafcetExpression::run(Fetch fetch) const {
   int sp = -1;
   for (const Instr& in : code_) {
     switch (in.op) {
-      case Op::Const: st[++sp] = in.value; break;
-      case Op::Signal: st[++sp] = fetch(in.index); break;
-      case Op::Not: st[sp] = truth(st[sp]) ? 0.0 : 1.0; break;
-      case Op::Neg: st[sp] = -st[sp]; break;
-      case Op::And: --sp; st[sp] = (truth(st[sp]) && truth(st[sp + 1])) ? 1.0 : 0.0; break;
-      case Op::Or: --sp; st[sp] = (truth(st[sp]) || truth(st[sp + 1])) ? 1.0 : 0.0; break;
-      case Op::Lt: --sp; st[sp] = st[sp] < st[sp + 1] ? 1.0 : 0.0; break;
-      case Op::Le: --sp; st[sp] = st[sp] <= st[sp + 1] ? 1.0 : 0.0; break;
-      case Op::Gt: --sp; st[sp] = st[sp] > st[sp + 1] ? 1.0 : 0.0; break;
-      case Op::Ge: --sp; st[sp] = st[sp] >= st[sp + 1] ? 1.0 : 0.0; break;
-      case Op::Eq: --sp; st[sp] = st[sp] == st[sp + 1] ? 1.0 : 0.0; break;
-      case Op::Ne: --sp; st[sp] = st[sp] != st[sp + 1] ? 1.0 : 0.0; break;
+      case Op::Const:
+        st[++sp] = in.value;
+        break;
+      case Op::Signal:
+        st[++sp] = fetch(in.index);
+        break;
+      case Op::Not:
+        st[sp] = truth(st[sp]) ? 0.0 : 1.0;
+        break;
+      case Op::Neg:
+        st[sp] = -st[sp];
+        break;
+      case Op::And:
+        --sp;
+        st[sp] = (truth(st[sp]) && truth(st[sp + 1])) ? 1.0 : 0.0;
+        break;
+      case Op::Or:
+        --sp;
+        st[sp] = (truth(st[sp]) || truth(st[sp + 1])) ? 1.0 : 0.0;
+        break;
+      case Op::Lt:
+        --sp;
+        st[sp] = st[sp] < st[sp + 1] ? 1.0 : 0.0;
+        break;
+      case Op::Le:
+        --sp;
+        st[sp] = st[sp] <= st[sp + 1] ? 1.0 : 0.0;
+        break;
+      case Op::Gt:
+        --sp;
+        st[sp] = st[sp] > st[sp + 1] ? 1.0 : 0.0;
+        break;
+      case Op::Ge:
+        --sp;
+        st[sp] = st[sp] >= st[sp + 1] ? 1.0 : 0.0;
+        break;
+      case Op::Eq:
+        --sp;
+        st[sp] = st[sp] == st[sp + 1] ? 1.0 : 0.0;
+        break;
+      case Op::Ne:
+        --sp;
+        st[sp] = st[sp] != st[sp + 1] ? 1.0 : 0.0;
+        break;
     }
   }
   return st[0];
@@ -347,12 +435,16 @@ double GrafcetExpression::value(const SignalValues& values) const {
   });
 }
 
-bool GrafcetExpression::evaluate(const SignalValues& values) const { return truth(value(values)); }
+bool GrafcetExpression::evaluate(const SignalValues& values) const {
+  return truth(value(values));
+}
 
 double GrafcetExpression::value(const double* cells) const {
   return run([&](int i) { return cells[slot_of_[static_cast<std::size_t>(i)]]; });
 }
 
-bool GrafcetExpression::evaluate(const double* cells) const { return truth(value(cells)); }
+bool GrafcetExpression::evaluate(const double* cells) const {
+  return truth(value(cells));
+}
 
 }  // namespace mx

@@ -47,7 +47,8 @@ GrafcetInterpreter::GrafcetInterpreter(GrafcetChart chart, GrafcetSettings setti
     return ta.priority != tb.priority ? ta.priority < tb.priority : ta.id < tb.id;
   });
   transitions_.resize(chart_.transitions.size());
-  for (std::size_t r = 0; r < order.size(); ++r) transitions_[static_cast<std::size_t>(order[r])].rank = static_cast<int>(r);
+  for (std::size_t r = 0; r < order.size(); ++r)
+    transitions_[static_cast<std::size_t>(order[r])].rank = static_cast<int>(r);
   for (std::size_t i = 0; i < chart_.transitions.size(); ++i) {
     const GrafcetTransition& t = chart_.transitions[i];
     Transition& c = transitions_[i];

@@ -9,9 +9,15 @@ namespace mx {
 std::string GrafcetIssue::describe() const {
   std::string where;
   switch (element) {
-    case GrafcetElement::Chart: where = "chart"; break;
-    case GrafcetElement::Step: where = "step " + std::to_string(id); break;
-    case GrafcetElement::Transition: where = "transition " + std::to_string(id); break;
+    case GrafcetElement::Chart:
+      where = "chart";
+      break;
+    case GrafcetElement::Step:
+      where = "step " + std::to_string(id);
+      break;
+    case GrafcetElement::Transition:
+      where = "transition " + std::to_string(id);
+      break;
   }
   if (!field.empty()) where += " (" + field + ")";
   return where + ": " + message;
@@ -24,8 +30,8 @@ GrafcetIssue stepIssue(GrafcetIssueKind kind, std::size_t index, const GrafcetSt
   return {kind, GrafcetElement::Step, static_cast<int>(index), s.id, std::move(field), std::move(message)};
 }
 
-GrafcetIssue transitionIssue(GrafcetIssueKind kind, std::size_t index, const GrafcetTransition& t,
-                             std::string field, std::string message) {
+GrafcetIssue transitionIssue(GrafcetIssueKind kind, std::size_t index, const GrafcetTransition& t, std::string field,
+                             std::string message) {
   return {kind, GrafcetElement::Transition, static_cast<int>(index), t.id, std::move(field), std::move(message)};
 }
 
@@ -54,8 +60,9 @@ std::vector<GrafcetIssue> validate(const GrafcetChart& chart, const std::set<std
     if (s.name.empty()) {
       issues.push_back(stepIssue(GrafcetIssueKind::EmptyStepName, i, s, "name", "the step has no name"));
     } else if (auto [it, fresh] = stepByName.emplace(s.name, s.id); !fresh) {
-      issues.push_back(stepIssue(GrafcetIssueKind::DuplicateStepName, i, s, "name",
-                                 "duplicate step name '" + s.name + "' (also step " + std::to_string(it->second) + ")"));
+      issues.push_back(
+          stepIssue(GrafcetIssueKind::DuplicateStepName, i, s, "name",
+                    "duplicate step name '" + s.name + "' (also step " + std::to_string(it->second) + ")"));
     }
     for (const std::string& a : s.actions)
       if (badAction(a))
@@ -79,20 +86,20 @@ std::vector<GrafcetIssue> validate(const GrafcetChart& chart, const std::set<std
       issues.push_back(transitionIssue(GrafcetIssueKind::TransitionWithoutSource, i, t, "from",
                                        "the transition has no source step"));
     if (t.to.empty())
-      issues.push_back(transitionIssue(GrafcetIssueKind::TransitionWithoutTarget, i, t, "to",
-                                       "the transition has no target step"));
+      issues.push_back(
+          transitionIssue(GrafcetIssueKind::TransitionWithoutTarget, i, t, "to", "the transition has no target step"));
     for (const char* field : {"from", "to"})
       for (int id : std::string(field) == "from" ? t.from : t.to)
         if (!stepById.count(id))
-          issues.push_back(transitionIssue(GrafcetIssueKind::UnknownStep, i, t, field,
-                                           "unknown step " + std::to_string(id)));
+          issues.push_back(
+              transitionIssue(GrafcetIssueKind::UnknownStep, i, t, field, "unknown step " + std::to_string(id)));
     try {
       const GrafcetExpression e = GrafcetExpression::parse(t.receptivity);
       if (known)
         for (const std::string& s : e.signalNames())
           if (!known->count(s))
-            issues.push_back(transitionIssue(GrafcetIssueKind::UnknownSignal, i, t, "receptivity",
-                                             "unknown signal '" + s + "'"));
+            issues.push_back(
+                transitionIssue(GrafcetIssueKind::UnknownSignal, i, t, "receptivity", "unknown signal '" + s + "'"));
     } catch (const GrafcetParseError& e) {
       issues.push_back(transitionIssue(GrafcetIssueKind::BadReceptivity, i, t, "receptivity", e.what()));
     }
@@ -120,16 +127,18 @@ std::vector<GrafcetIssue> validate(const GrafcetChart& chart, const std::set<std
     }
     for (std::size_t i = 0; i < chart.steps.size(); ++i)
       if (!reach[i] && stepById[chart.steps[i].id] == i)
-        issues.push_back(stepIssue(GrafcetIssueKind::UnreachableStep, i, chart.steps[i], "",
-                                   "unreachable step '" + chart.steps[i].name +
-                                       "': no transition from the initial situation leads to it"));
+        issues.push_back(stepIssue(
+            GrafcetIssueKind::UnreachableStep, i, chart.steps[i], "",
+            "unreachable step '" + chart.steps[i].name + "': no transition from the initial situation leads to it"));
   }
   return issues;
 }
 
 }  // namespace
 
-std::vector<GrafcetIssue> validateGrafcetChart(const GrafcetChart& chart) { return validate(chart, nullptr); }
+std::vector<GrafcetIssue> validateGrafcetChart(const GrafcetChart& chart) {
+  return validate(chart, nullptr);
+}
 
 std::vector<GrafcetIssue> validateGrafcetChart(const GrafcetChart& chart, const std::set<std::string>& knownSignals) {
   return validate(chart, &knownSignals);

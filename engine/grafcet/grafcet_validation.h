@@ -11,19 +11,19 @@
 namespace mx {
 
 enum class GrafcetIssueKind {
-  NoSteps,                 // chart: no step at all
-  EmptyInitialSituation,   // chart: no initial step
-  DuplicateStepId,         // step: id already used by an earlier step
-  DuplicateStepName,       // step: name already used by an earlier step
-  EmptyStepName,           // step: name is empty
-  BadAction,               // step: empty action, "*" alone, or whitespace in an action
-  UnreachableStep,         // step: no evolution from the initial situation can activate it
-  DuplicateTransitionId,   // transition: id already used by an earlier transition
-  TransitionWithoutSource, // transition: "from" is empty
-  TransitionWithoutTarget, // transition: "to" is empty
-  UnknownStep,             // transition: "from"/"to" names a step id the chart does not have
-  BadReceptivity,          // transition: receptivity syntax error (message has line and column)
-  UnknownSignal,           // transition: the receptivity reads a signal that is not known
+  NoSteps,                  // chart: no step at all
+  EmptyInitialSituation,    // chart: no initial step
+  DuplicateStepId,          // step: id already used by an earlier step
+  DuplicateStepName,        // step: name already used by an earlier step
+  EmptyStepName,            // step: name is empty
+  BadAction,                // step: empty action, "*" alone, or whitespace in an action
+  UnreachableStep,          // step: no evolution from the initial situation can activate it
+  DuplicateTransitionId,    // transition: id already used by an earlier transition
+  TransitionWithoutSource,  // transition: "from" is empty
+  TransitionWithoutTarget,  // transition: "to" is empty
+  UnknownStep,              // transition: "from"/"to" names a step id the chart does not have
+  BadReceptivity,           // transition: receptivity syntax error (message has line and column)
+  UnknownSignal,            // transition: the receptivity reads a signal that is not known
 };
 
 enum class GrafcetElement { Chart, Step, Transition };
@@ -31,9 +31,9 @@ enum class GrafcetElement { Chart, Step, Transition };
 struct GrafcetIssue {
   GrafcetIssueKind kind;
   GrafcetElement element;
-  int index = -1;     // position in chart.steps / chart.transitions; -1 for the chart
-  int id = 0;         // the step's or transition's id
-  std::string field;  // "id", "name", "initial", "actions", "from", "to", "receptivity", "steps"
+  int index = -1;       // position in chart.steps / chart.transitions; -1 for the chart
+  int id = 0;           // the step's or transition's id
+  std::string field;    // "id", "name", "initial", "actions", "from", "to", "receptivity", "steps"
   std::string message;  // e.g. "line 1, column 5: expected ')'" or "unknown signal 'z'"
 
   // "transition 3 (receptivity): line 1, column 5: expected ')'", "step 6: unreachable ...".

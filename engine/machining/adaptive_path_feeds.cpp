@@ -69,8 +69,8 @@ double AdaptivePathFeeds::timeAtPosition(double x) const {
   if (d.empty() || x > d.back().position_m) return std::numeric_limits<double>::infinity();
   if (x <= d.front().position_m) return d.front().t;
   // The position is non-decreasing (the feed is >= 0).
-  const auto it = std::lower_bound(d.begin(), d.end(), x,
-                                   [](const ClosedLoopDensePoint& p, double v) { return p.position_m < v; });
+  const auto it =
+      std::lower_bound(d.begin(), d.end(), x, [](const ClosedLoopDensePoint& p, double v) { return p.position_m < v; });
   const ClosedLoopDensePoint& b = *it;
   const ClosedLoopDensePoint& a = *(it - 1);
   const double span = b.position_m - a.position_m;

@@ -22,7 +22,9 @@ std::string FeedOverrideTable::quote(const std::string& f) {
 }
 
 std::string FeedOverrideTable::csv(const std::vector<FeedOverrideRow>& rows) {
-  auto num = [](double v, int decimals) { return std::isfinite(v) ? GcodeWriter::formatNumber(v, decimals) : std::string(); };
+  auto num = [](double v, int decimals) {
+    return std::isfinite(v) ? GcodeWriter::formatNumber(v, decimals) : std::string();
+  };
   std::string out = header();
   out.reserve(out.size() + rows.size() * 48);
   for (const auto& r : rows) {

@@ -11,8 +11,8 @@
 namespace mx {
 
 struct FeedOverrideRow {
-  std::size_t block = 0;  // 1-based
-  int line = 0;           // 1-based
+  std::size_t block = 0;                                                    // 1-based
+  int line = 0;                                                             // 1-based
   double original_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();  // NaN: no F in effect
   double new_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();
   double speed_rev_per_s = std::numeric_limits<double>::quiet_NaN();

@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 
-#include "gcode/gcode_reader.h"
 #include "core/invalid_input.h"
+#include "gcode/gcode_reader.h"
 
 namespace mx {
 
@@ -27,7 +27,9 @@ PartProgramOverrider::PartProgramOverrider(BlockFeedController controller, PartP
     throw InvalidInput("part-program override: speed = " + std::to_string(n * 60.0) + " rpm: must be > 0");
 }
 
-PartProgramOverrideResult PartProgramOverrider::run(std::string_view text) const { return run(GcodeReader::parse(text)); }
+PartProgramOverrideResult PartProgramOverrider::run(std::string_view text) const {
+  return run(GcodeReader::parse(text));
+}
 
 namespace {
 
@@ -39,7 +41,9 @@ double written(double v, int decimals) {
   return out;
 }
 
-bool sameFeed(double a, double b) { return a == a && b == b && std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+bool sameFeed(double a, double b) {
+  return a == a && b == b && std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
 
 }  // namespace
 

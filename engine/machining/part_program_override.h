@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "control/model_based_force_controller.h"
-#include "machining/depth_profile.h"
-#include "machining/feed_override_table.h"
 #include "gcode/gcode_interpreter.h"
 #include "gcode/gcode_program.h"
 #include "gcode/gcode_writer.h"
+#include "machining/depth_profile.h"
+#include "machining/feed_override_table.h"
 
 namespace mx {
 
@@ -29,10 +29,10 @@ struct CutState {
   std::size_t block = 0;  // 0-based index
   int line = 0;
   double depth_m = 0.0;
-  double speed_rev_per_s = 0.0;                                                    // in effect (after S override)
-  double programmed_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();       // NaN when missing
-  double path_position_m = 0.0;  // feed-path length before this block
-  double length_m = 0.0;         // this block's path length
+  double speed_rev_per_s = 0.0;                                               // in effect (after S override)
+  double programmed_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();  // NaN when missing
+  double path_position_m = 0.0;                                               // feed-path length before this block
+  double length_m = 0.0;                                                      // this block's path length
 };
 
 struct FeedDecision {
@@ -51,19 +51,19 @@ struct PartProgramOverrideSettings {
   double stock_top_z_m = 0.0;               // used when depth_profile is empty
   std::vector<DepthSegment> depth_profile;  // project profile along the feed path; empty: from Z
   double speed_rev_per_s = std::numeric_limits<double>::quiet_NaN();  // expert system's speed; NaN: keep S
-  bool keep_plunge_feed = true;  // pure -Z feed moves keep the programmed feed
-  int feed_decimals_mm = 1;    // F resolution written for G21 blocks (mm/min)
-  int feed_decimals_inch = 2;  // for G20 blocks (in/min)
+  bool keep_plunge_feed = true;                                       // pure -Z feed moves keep the programmed feed
+  int feed_decimals_mm = 1;                                           // F resolution written for G21 blocks (mm/min)
+  int feed_decimals_inch = 2;                                         // for G20 blocks (in/min)
   GcodeInterpreterSettings interpreter;
 };
 
 struct PartProgramOverrideResult {
   GcodeProgram program;
   GcodeRun run;
-  std::vector<double> depths_m;         // per block
-  std::vector<GcodeBlockEdit> edits;    // per block
-  std::vector<FeedOverrideRow> rows;    // one per feed move
-  std::vector<GcodeWarning> warnings;   // reader, interpreter and overrider, by line
+  std::vector<double> depths_m;        // per block
+  std::vector<GcodeBlockEdit> edits;   // per block
+  std::vector<FeedOverrideRow> rows;   // one per feed move
+  std::vector<GcodeWarning> warnings;  // reader, interpreter and overrider, by line
   std::size_t changed_blocks = 0;
 
   std::string writeProgram(const GcodeHeader& header) const { return GcodeWriter::write(program, edits, &header); }

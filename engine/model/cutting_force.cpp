@@ -33,7 +33,9 @@ ToothForce toothForce(const MillingSetup& setup, double depth_m, double phi_rad,
   return {ft, -ft * c - fr * s, ft * s - fr * c};
 }
 
-double StaticForce::resultant() const { return std::hypot(fx_n, fy_n); }
+double StaticForce::resultant() const {
+  return std::hypot(fx_n, fy_n);
+}
 
 StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad) {
   StaticForce total;
@@ -63,8 +65,8 @@ CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& poin
   out.peak_power_w = out.cutting_speed_m_per_s * peak_tangential;
   out.mean_power_w = out.cutting_speed_m_per_s * sum_tangential / kSamplesPerToothPeriod;
   out.peak_torque_nm = 0.5 * setup.diameter_m * peak_tangential;
-  out.mrr_m3_per_s = setup.radial_depth_m * point.axial_depth_m * point.feed_per_tooth_m * setup.teeth *
-                     point.spindle_rev_per_s;
+  out.mrr_m3_per_s =
+      setup.radial_depth_m * point.axial_depth_m * point.feed_per_tooth_m * setup.teeth * point.spindle_rev_per_s;
   return out;
 }
 

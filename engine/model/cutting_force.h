@@ -32,11 +32,11 @@ struct StaticForce {
 StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad);
 
 struct CutPerformance {
-  double peak_power_w = 0.0;      // max over a tooth period of v * sum F_t
+  double peak_power_w = 0.0;  // max over a tooth period of v * sum F_t
   double mean_power_w = 0.0;
-  double peak_torque_nm = 0.0;    // max of (D/2) sum F_t
-  double peak_force_n = 0.0;      // max resultant |F|
-  double mrr_m3_per_s = 0.0;      // a b s_t n_t N
+  double peak_torque_nm = 0.0;  // max of (D/2) sum F_t
+  double peak_force_n = 0.0;    // max resultant |F|
+  double mrr_m3_per_s = 0.0;    // a b s_t n_t N
   double cutting_speed_m_per_s = 0.0;
 };
 CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& point);

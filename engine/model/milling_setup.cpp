@@ -19,6 +19,8 @@ bool Immersion::contains(double phi_rad) const {
   return phi >= entry_rad && phi <= exit_rad;
 }
 
-double MillingSetup::toothPitchRad() const { return 2.0 * std::numbers::pi / teeth; }
+double MillingSetup::toothPitchRad() const {
+  return 2.0 * std::numbers::pi / teeth;
+}
 
 }  // namespace mx

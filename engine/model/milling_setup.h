@@ -23,14 +23,14 @@ struct MillingSetup {
   std::string tool_id;
   int teeth = 1;
   double diameter_m = 0.0;
-  double helix_rad = 0.0;             // carried, not modelled (straight-tooth model, docs/fidelity.md)
+  double helix_rad = 0.0;                  // carried, not modelled (straight-tooth model, docs/fidelity.md)
   double tangential_coefficient_pa = 0.0;  // K_t [N/m^2] (eq. 2)
   double radial_ratio = 0.0;               // K_r = F_r / F_t (eq. 3)
   ModalAxis modes_x;
   ModalAxis modes_y;
   MillingDirection direction = MillingDirection::Up;
   double radial_depth_m = 0.0;
-  Immersion immersion;                // derived from radial depth and diameter
+  Immersion immersion;  // derived from radial depth and diameter
 
   double toothPitchRad() const;
 };
@@ -44,7 +44,11 @@ struct OperatingPoint {
 };
 
 inline constexpr double kRpmPerRevPerS = 60.0;
-inline double rpmToRevPerS(double rpm) { return rpm / kRpmPerRevPerS; }
-inline double revPerSToRpm(double rev_per_s) { return rev_per_s * kRpmPerRevPerS; }
+inline double rpmToRevPerS(double rpm) {
+  return rpm / kRpmPerRevPerS;
+}
+inline double revPerSToRpm(double rev_per_s) {
+  return rev_per_s * kRpmPerRevPerS;
+}
 
 }  // namespace mx

@@ -7,14 +7,18 @@
 
 namespace mx {
 
-double Mode::angularFrequency() const { return 2.0 * std::numbers::pi * natural_frequency_hz; }
+double Mode::angularFrequency() const {
+  return 2.0 * std::numbers::pi * natural_frequency_hz;
+}
 
 double Mode::modalMass() const {
   const double w = angularFrequency();
   return stiffness_n_per_m / (w * w);
 }
 
-double Mode::decayRate() const { return damping_ratio * angularFrequency(); }
+double Mode::decayRate() const {
+  return damping_ratio * angularFrequency();
+}
 
 std::complex<double> receptance(const ModalAxis& axis, std::complex<double> s) {
   std::complex<double> g{0.0, 0.0};

@@ -8,12 +8,12 @@ namespace mx {
 
 struct Mode {
   double natural_frequency_hz = 0.0;
-  double damping_ratio = 0.0;        // zeta, dimensionless (0, 1)
-  double stiffness_n_per_m = 0.0;    // modal stiffness k
+  double damping_ratio = 0.0;      // zeta, dimensionless (0, 1)
+  double stiffness_n_per_m = 0.0;  // modal stiffness k
 
-  double angularFrequency() const;   // omega_n [rad/s]
-  double modalMass() const;          // m = k / omega_n^2 [kg]
-  double decayRate() const;          // zeta * omega_n [1/s]
+  double angularFrequency() const;  // omega_n [rad/s]
+  double modalMass() const;         // m = k / omega_n^2 [kg]
+  double decayRate() const;         // zeta * omega_n [1/s]
 };
 
 using ModalAxis = std::vector<Mode>;  // empty axis = rigid

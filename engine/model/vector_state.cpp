@@ -4,7 +4,9 @@ namespace mx {
 
 #if defined(__x86_64__) || defined(__i386__)
 namespace {
-__attribute__((target("avx"))) void zeroUpper() { __builtin_ia32_vzeroupper(); }
+__attribute__((target("avx"))) void zeroUpper() {
+  __builtin_ia32_vzeroupper();
+}
 const bool kHasAvx = __builtin_cpu_supports("avx");
 }  // namespace
 

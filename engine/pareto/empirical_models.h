@@ -22,7 +22,7 @@ struct PowerLawModel {
 };
 
 struct ParetoModels {
-  PowerLawModel tool_life{1.53e7, -3.02, -1.14, -0.54};  // TOL [min]
+  PowerLawModel tool_life{1.53e7, -3.02, -1.14, -0.54};   // TOL [min]
   PowerLawModel roughness{0.980, 0.4638, 1.129, 0.4461};  // SURF [um]
 };
 

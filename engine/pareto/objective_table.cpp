@@ -24,8 +24,7 @@ ParetoPoint makePoint(const MillingSetup& setup, const ParetoModels& m, double n
 }
 }  // namespace
 
-ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& models)
-    : grid_(&grid), models_(models) {
+ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& models) : grid_(&grid), models_(models) {
   models_.tool_life.validate("taylor");
   models_.roughness.validate("roughness");
   const std::vector<GridCell>& cells = grid.cells();

@@ -12,10 +12,16 @@ enum class Objective : std::size_t { ToolLife = 0, Mrr = 1, Roughness = 2, Robus
 inline constexpr std::size_t kObjectiveCount = 4;
 using ObjectiveVector = std::array<double, kObjectiveCount>;
 
-inline constexpr std::size_t index(Objective o) { return static_cast<std::size_t>(o); }
+inline constexpr std::size_t index(Objective o) {
+  return static_cast<std::size_t>(o);
+}
 // SURF is the one objective where lower is better.
-inline constexpr bool isMinimised(Objective o) { return o == Objective::Roughness; }
-inline constexpr bool isMinimised(std::size_t i) { return i == index(Objective::Roughness); }
+inline constexpr bool isMinimised(Objective o) {
+  return o == Objective::Roughness;
+}
+inline constexpr bool isMinimised(std::size_t i) {
+  return i == index(Objective::Roughness);
+}
 
 // One point of Q with its raw objective values: tol in the Taylor model's unit (min), mrr in m^3/s,
 // surf in the roughness model's unit (um), ros non-dimensional (StabilityBoundary::robustness).

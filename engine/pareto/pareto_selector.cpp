@@ -9,7 +9,8 @@
 
 namespace mx {
 
-ParetoSelection ParetoSelector::coarse(const ParetoWeights& w, const std::optional<ObjectiveRequirement>& filter) const {
+ParetoSelection ParetoSelector::coarse(const ParetoWeights& w,
+                                       const std::optional<ObjectiveRequirement>& filter) const {
   validateParetoWeights(w);
   const ObjectiveTable& t = *table_;
   if (t.empty()) throw InvalidInput("the admissible space Q is empty: no Pareto selection");

@@ -24,11 +24,11 @@ struct FineSearchSettings {
 
 struct ParetoSelection {
   ParetoPoint point;
-  ObjectiveVector scores{};  // Rule 9 scores of point
-  double j = 0.0;            // eq. 9
+  ObjectiveVector scores{};                // Rule 9 scores of point
+  double j = 0.0;                          // eq. 9
   std::optional<std::size_t> table_index;  // index in the table (coarse) or nullopt (fine, off-grid)
-  bool filtered = true;      // false: the filter rejected every point and was ignored
-  std::size_t candidates = 0;  // points scored
+  bool filtered = true;                    // false: the filter rejected every point and was ignored
+  std::size_t candidates = 0;              // points scored
 };
 
 // Requirement bounds on raw objective values (Rule 11): value in [lo, hi].

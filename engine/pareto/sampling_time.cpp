@@ -22,7 +22,9 @@ SamplingTimeSelector::SamplingTimeSelector(SamplingTimeSettings settings) : sett
 }
 
 double SamplingTimeSelector::update(double n, double b) {
-  auto same = [&](double a, double c) { return std::abs(a - c) <= settings_.relative_tolerance * std::max(std::abs(a), std::abs(c)); };
+  auto same = [&](double a, double c) {
+    return std::abs(a - c) <= settings_.relative_tolerance * std::max(std::abs(a), std::abs(c));
+  };
   steady_ = has_previous_ && same(n, speed_) && same(b, depth_);
   speed_ = n;
   depth_ = b;

@@ -8,7 +8,7 @@
 namespace mx {
 
 struct SamplingTimeSettings {
-  int steady_state_periods = 1;     // k >= 1
+  int steady_state_periods = 1;      // k >= 1
   double relative_tolerance = 1e-9;  // N and b count as constant within this relative change
 };
 

@@ -30,8 +30,8 @@ RequirementResult applyRequirement(const ParetoSelector& selector, const ParetoW
     if (raise) return isMinimised(k) ? v <= r.hi : v >= r.lo;
     return isMinimised(k) ? v >= r.lo : v <= r.hi;
   };
-  double bad = w[k];                     // t where the bound is not reached
-  double good = raise ? 1.0 : 0.0;       // candidate where it is
+  double bad = w[k];                // t where the bound is not reached
+  double good = raise ? 1.0 : 0.0;  // candidate where it is
   ParetoSelection at_good = selector.coarse(withWeight(w, r.objective, good));
   ++out.evaluations;
   if (reached(at_good)) {

@@ -46,8 +46,8 @@ struct GradientAscentResult {
   ParetoWeights weights{};
   ParetoSelection selection;
   int iterations = 0;
-  bool converged = false;               // stopped by a tolerance, not by max_iterations
-  std::vector<ParetoWeights> history;   // weights after each step (history[0] = start)
+  bool converged = false;              // stopped by a tolerance, not by max_iterations
+  std::vector<ParetoWeights> history;  // weights after each step (history[0] = start)
 };
 
 // Throws InvalidInput for step not in (0, 1], tolerance not in (0, 1) or max_iterations not in [1, 1e5].

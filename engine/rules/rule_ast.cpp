@@ -8,26 +8,37 @@ namespace mx {
 
 const char* toString(CompareOp op) {
   switch (op) {
-    case CompareOp::Less: return "<";
-    case CompareOp::LessEq: return "<=";
-    case CompareOp::Greater: return ">";
-    case CompareOp::GreaterEq: return ">=";
-    case CompareOp::Equal: return "==";
-    case CompareOp::NotEqual: return "!=";
+    case CompareOp::Less:
+      return "<";
+    case CompareOp::LessEq:
+      return "<=";
+    case CompareOp::Greater:
+      return ">";
+    case CompareOp::GreaterEq:
+      return ">=";
+    case CompareOp::Equal:
+      return "==";
+    case CompareOp::NotEqual:
+      return "!=";
   }
   return "?";
 }
 
 const char* toString(BoundOp op) {
   switch (op) {
-    case BoundOp::LessEq: return "<=";
-    case BoundOp::GreaterEq: return ">=";
-    case BoundOp::Equal: return "==";
+    case BoundOp::LessEq:
+      return "<=";
+    case BoundOp::GreaterEq:
+      return ">=";
+    case BoundOp::Equal:
+      return "==";
   }
   return "?";
 }
 
-const char* toString(RuleKind kind) { return kind == RuleKind::Constraint ? "constraint" : "advice"; }
+const char* toString(RuleKind kind) {
+  return kind == RuleKind::Constraint ? "constraint" : "advice";
+}
 
 Condition makeComparison(Comparison c) {
   auto node = std::make_shared<ConditionNode>();
@@ -72,10 +83,14 @@ namespace {
 // Binding strength: or < and < not < comparison.
 int precedence(const ConditionNode& node) {
   switch (node.kind) {
-    case ConditionNode::Kind::Or: return 1;
-    case ConditionNode::Kind::And: return 2;
-    case ConditionNode::Kind::Not: return 3;
-    case ConditionNode::Kind::Compare: return 4;
+    case ConditionNode::Kind::Or:
+      return 1;
+    case ConditionNode::Kind::And:
+      return 2;
+    case ConditionNode::Kind::Not:
+      return 3;
+    case ConditionNode::Kind::Compare:
+      return 4;
   }
   return 0;
 }
@@ -121,7 +136,9 @@ double Bound::upper() const {
   return op == BoundOp::GreaterEq ? std::numeric_limits<double>::infinity() : value;
 }
 
-std::string Bound::toString() const { return variable + " " + mx::toString(op) + " " + formatNumber(value); }
+std::string Bound::toString() const {
+  return variable + " " + mx::toString(op) + " " + formatNumber(value);
+}
 
 const Rule* RuleSet::findLine(int line) const {
   for (const Rule& rule : rules)

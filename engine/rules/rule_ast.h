@@ -60,12 +60,12 @@ struct Bound {
 };
 
 struct Rule {
-  int line = 0;           // 1-based line in the rule list
-  std::string text;       // the line as written, trimmed
-  Condition condition;    // null: unconditional
+  int line = 0;                // 1-based line in the rule list
+  std::string text;            // the line as written, trimmed
+  Condition condition;         // null: unconditional
   std::optional<Bound> bound;  // absent only for message-only advice (`advise "TEXT"`)
   RuleKind kind = RuleKind::Constraint;
-  std::string message;    // the advice / because text ("" when not given)
+  std::string message;  // the advice / because text ("" when not given)
 
   bool unconditional() const { return condition == nullptr; }
 };

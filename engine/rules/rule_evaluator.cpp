@@ -5,17 +5,25 @@
 namespace mx {
 namespace {
 
-Truth fromBool(bool b) { return b ? Truth::True : Truth::False; }
+Truth fromBool(bool b) {
+  return b ? Truth::True : Truth::False;
+}
 
 template <typename T>
 bool compare(CompareOp op, const T& lhs, const T& rhs) {
   switch (op) {
-    case CompareOp::Less: return lhs < rhs;
-    case CompareOp::LessEq: return lhs <= rhs;
-    case CompareOp::Greater: return lhs > rhs;
-    case CompareOp::GreaterEq: return lhs >= rhs;
-    case CompareOp::Equal: return lhs == rhs;
-    case CompareOp::NotEqual: return lhs != rhs;
+    case CompareOp::Less:
+      return lhs < rhs;
+    case CompareOp::LessEq:
+      return lhs <= rhs;
+    case CompareOp::Greater:
+      return lhs > rhs;
+    case CompareOp::GreaterEq:
+      return lhs >= rhs;
+    case CompareOp::Equal:
+      return lhs == rhs;
+    case CompareOp::NotEqual:
+      return lhs != rhs;
   }
   return false;
 }
@@ -26,11 +34,14 @@ Truth evaluateComparison(const Comparison& c, const RuleContext& context, std::v
     if (missing && std::find(missing->begin(), missing->end(), c.path) == missing->end()) missing->push_back(c.path);
     return Truth::Unknown;
   }
-  if (const auto* number = std::get_if<double>(actual)) return fromBool(compare(c.op, *number, std::get<double>(c.value)));
+  if (const auto* number = std::get_if<double>(actual))
+    return fromBool(compare(c.op, *number, std::get<double>(c.value)));
   return fromBool(compare(c.op, std::get<std::string>(*actual), std::get<std::string>(c.value)));
 }
 
-RuleRef refOf(const Rule& rule) { return RuleRef{rule.line, rule.text}; }
+RuleRef refOf(const Rule& rule) {
+  return RuleRef{rule.line, rule.text};
+}
 
 bool disjoint(const Bound& a, const Bound& b) {
   return a.lower() > b.upper() + ruleTolerance(b.upper()) || b.lower() > a.upper() + ruleTolerance(a.upper());
@@ -48,7 +59,9 @@ RuleContradiction contradiction(const Rule& a, const Rule& b, const std::string&
   return c;
 }
 
-bool isConstraint(const Rule& r) { return r.kind == RuleKind::Constraint && r.bound.has_value(); }
+bool isConstraint(const Rule& r) {
+  return r.kind == RuleKind::Constraint && r.bound.has_value();
+}
 
 void addBound(VariableBounds& vb, const Rule& rule) {
   const Bound& b = *rule.bound;
@@ -134,8 +147,8 @@ std::vector<RuleContradiction> staticContradictions(const RuleSet& rules) {
         out.push_back(contradiction(a, b, "both are unconditional, so they contradict for every context"));
       } else if (a.unconditional() || b.unconditional()) {
         const Rule& conditional = a.unconditional() ? b : a;
-        out.push_back(contradiction(
-            a, b, "they contradict whenever line " + std::to_string(conditional.line) + " fires"));
+        out.push_back(
+            contradiction(a, b, "they contradict whenever line " + std::to_string(conditional.line) + " fires"));
       } else if (toString(a.condition) == toString(b.condition)) {
         out.push_back(contradiction(a, b, "they have the same condition, so they contradict whenever they fire"));
       }

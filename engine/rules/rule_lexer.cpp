@@ -7,10 +7,18 @@
 namespace mx {
 namespace {
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isIdentChar(char c) { return isIdentStart(c) || isDigit(c); }
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool isIdentStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool isIdentChar(char c) {
+  return isIdentStart(c) || isDigit(c);
+}
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
 
 }  // namespace
 
@@ -91,8 +99,7 @@ bool RuleLexer::tokenize(std::vector<RuleToken>& tokens, RuleError& error) {
     const char c = text_[i];
     const char next = i + 1 < text_.size() ? text_[i + 1] : '\0';
     RuleToken token;
-    if (isDigit(c) || (c == '.' && isDigit(next)) ||
-        ((c == '-' || c == '+') && (isDigit(next) || next == '.'))) {
+    if (isDigit(c) || (c == '.' && isDigit(next)) || ((c == '-' || c == '+') && (isDigit(next) || next == '.'))) {
       if (!lexNumber(i, token, error)) return false;
     } else if (c == '"') {
       if (!lexString(i, token, error)) return false;

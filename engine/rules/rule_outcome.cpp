@@ -5,14 +5,19 @@
 
 namespace mx {
 
-double ruleTolerance(double bound) { return 1e-9 * std::max(1.0, std::isfinite(bound) ? std::abs(bound) : 1.0); }
+double ruleTolerance(double bound) {
+  return 1e-9 * std::max(1.0, std::isfinite(bound) ? std::abs(bound) : 1.0);
+}
 
 bool boundHolds(const Bound& bound, double value) {
   const double tol = ruleTolerance(bound.value);
   switch (bound.op) {
-    case BoundOp::LessEq: return value <= bound.value + tol;
-    case BoundOp::GreaterEq: return value >= bound.value - tol;
-    case BoundOp::Equal: return std::abs(value - bound.value) <= tol;
+    case BoundOp::LessEq:
+      return value <= bound.value + tol;
+    case BoundOp::GreaterEq:
+      return value >= bound.value - tol;
+    case BoundOp::Equal:
+      return std::abs(value - bound.value) <= tol;
   }
   return false;
 }
@@ -44,7 +49,8 @@ std::vector<BoundReason> RuleOutcome::violations(const std::map<std::string, dou
     for (const BoundReason& reason : vb.reasons)
       if (!boundHolds(reason.bound, it->second)) out.push_back(reason);
   }
-  std::sort(out.begin(), out.end(), [](const BoundReason& a, const BoundReason& b) { return a.rule.line < b.rule.line; });
+  std::sort(out.begin(), out.end(),
+            [](const BoundReason& a, const BoundReason& b) { return a.rule.line < b.rule.line; });
   return out;
 }
 

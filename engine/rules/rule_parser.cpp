@@ -15,7 +15,9 @@ std::string trim(const std::string& s) {
 }
 
 // Built with append: GCC 12 reports a false -Wrestrict for `"'" + std::string(...)` at -O3.
-std::string quoted(const std::string& text) { return std::string(1, '\'').append(text).append(1, '\''); }
+std::string quoted(const std::string& text) {
+  return std::string(1, '\'').append(text).append(1, '\'');
+}
 
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -25,12 +27,18 @@ std::string joined(const std::vector<std::string>& items) {
 
 CompareOp compareOp(RuleTokenKind kind) {
   switch (kind) {
-    case RuleTokenKind::Less: return CompareOp::Less;
-    case RuleTokenKind::LessEq: return CompareOp::LessEq;
-    case RuleTokenKind::Greater: return CompareOp::Greater;
-    case RuleTokenKind::GreaterEq: return CompareOp::GreaterEq;
-    case RuleTokenKind::NotEqual: return CompareOp::NotEqual;
-    default: return CompareOp::Equal;
+    case RuleTokenKind::Less:
+      return CompareOp::Less;
+    case RuleTokenKind::LessEq:
+      return CompareOp::LessEq;
+    case RuleTokenKind::Greater:
+      return CompareOp::Greater;
+    case RuleTokenKind::GreaterEq:
+      return CompareOp::GreaterEq;
+    case RuleTokenKind::NotEqual:
+      return CompareOp::NotEqual;
+    default:
+      return CompareOp::Equal;
   }
 }
 
@@ -42,7 +50,9 @@ bool RuleParser::accept(RuleTokenKind kind) {
   return true;
 }
 
-void RuleParser::fail(const RuleToken& at, std::string message) const { throw Failure{at.column, std::move(message)}; }
+void RuleParser::fail(const RuleToken& at, std::string message) const {
+  throw Failure{at.column, std::move(message)};
+}
 
 void RuleParser::failExpected(const std::string& what, const std::string& after) const {
   fail(peek(), "expected " + what + (after.empty() ? "" : " after " + after) + ", got " + peek().describe());
@@ -64,8 +74,7 @@ bool RuleParser::parseLine(const std::string& text, int line, Rule& rule, bool& 
       rule.condition = parseOr();
       if (!accept(RuleTokenKind::Then)) {
         const bool inside = peek().is(RuleTokenKind::RParen);
-        failExpected(inside ? "'then' (this ')' has no matching '(')" : "'then', 'and' or 'or'",
-                     "the condition");
+        failExpected(inside ? "'then' (this ')' has no matching '(')" : "'then', 'and' or 'or'", "the condition");
       }
     }
     parseConsequence(rule);
@@ -118,8 +127,8 @@ Bound RuleParser::parseBound() {
   bound.column = name.column;
   if (!schema_.hasVariable(name.text)) {
     if (schema_.pathType(name.text))
-      fail(name, quoted(name.text) + " is a context path, not a decision variable; bound one of: " +
-                     joined(schema_.variables()));
+      fail(name, quoted(name.text) +
+                     " is a context path, not a decision variable; bound one of: " + joined(schema_.variables()));
     fail(name, "unknown decision variable '" + name.text + "' (one of: " + joined(schema_.variables()) + ")");
   }
   const RuleToken& op = peek();
@@ -184,8 +193,7 @@ Condition RuleParser::parseComparison() {
     fail(name, "unknown path '" + name.text + "' (known: " + schema_.describeNear(name.text) + ")");
   }
   const RuleToken& op = peek();
-  if (!op.isComparison())
-    failExpected("a comparison operator (<, <=, >, >=, ==, !=)", quoted(name.text));
+  if (!op.isComparison()) failExpected("a comparison operator (<, <=, >, >=, ==, !=)", quoted(name.text));
   advance();
   c.op = compareOp(op.kind);
   const bool ordering = c.op != CompareOp::Equal && c.op != CompareOp::NotEqual;
@@ -201,8 +209,7 @@ Condition RuleParser::parseComparison() {
       fail(value, "type mismatch: '" + name.text + "' is a number, compared with the string " + value.describe());
     c.value = value.text;
   } else {
-    failExpected(*type == RuleValueType::Number ? "a number" : "a \"string\"",
-                 quoted(name.text + " " + op.text));
+    failExpected(*type == RuleValueType::Number ? "a number" : "a \"string\"", quoted(name.text + " " + op.text));
   }
   advance();
   return makeComparison(std::move(c));

@@ -20,8 +20,7 @@ struct RuleParseResult {
 };
 
 // lines[i] is line i + 1.
-RuleParseResult parseRules(const std::vector<std::string>& lines,
-                           const RuleSchema& schema = RuleSchema::standard());
+RuleParseResult parseRules(const std::vector<std::string>& lines, const RuleSchema& schema = RuleSchema::standard());
 // Splits on '\n' first.
 RuleParseResult parseRuleText(const std::string& text, const RuleSchema& schema = RuleSchema::standard());
 // Throws RuleSyntaxError listing every error.

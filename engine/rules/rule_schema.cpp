@@ -32,9 +32,9 @@ const RuleSchema& RuleSchema::standard() {
     s.addPath("machine.max_spindle_rpm", N);
     s.addPath("machine.max_feed_mm_s", N);
     // Decision variables: the cutting point and the cost weights.
-    for (const char* v : {"speed_rpm", "depth_mm", "feed_mm_per_tooth", "feed_velocity_mm_s", "mrr_cm3_s",
-                          "power_W", "weight.c1", "weight.c2", "weight.c3", "weight.tol", "weight.mrr",
-                          "weight.surf", "weight.ros"})
+    for (const char* v :
+         {"speed_rpm", "depth_mm", "feed_mm_per_tooth", "feed_velocity_mm_s", "mrr_cm3_s", "power_W", "weight.c1",
+          "weight.c2", "weight.c3", "weight.tol", "weight.mrr", "weight.surf", "weight.ros"})
       s.addVariable(v);
     return s;
   }();

@@ -22,8 +22,8 @@ class RuleSchema {
   std::optional<RuleValueType> pathType(const std::string& path) const;
   bool hasVariable(const std::string& variable) const { return variables_.count(variable) != 0; }
 
-  std::vector<std::string> paths() const;          // sorted
-  std::vector<std::string> variables() const;      // sorted
+  std::vector<std::string> paths() const;      // sorted
+  std::vector<std::string> variables() const;  // sorted
   // The known paths that share the first component of `path` ("tool.teeth, tool.diameter_mm, ..."),
   // or the known roots when the root itself is unknown; used in error messages.
   std::string describeNear(const std::string& path) const;

@@ -5,15 +5,15 @@
 namespace mx {
 
 enum class RuleTokenKind {
-  Name,      // an identifier or dotted path: tool.diameter_mm, speed_rpm, weight.c3
-  Number,    // 10, 0.2, -1.5e3
-  String,    // "Ti6Al4V" (text holds the decoded value)
-  Less,      // <
-  LessEq,    // <=
-  Greater,   // >
-  GreaterEq, // >=
-  Equal,     // ==
-  NotEqual,  // !=
+  Name,       // an identifier or dotted path: tool.diameter_mm, speed_rpm, weight.c3
+  Number,     // 10, 0.2, -1.5e3
+  String,     // "Ti6Al4V" (text holds the decoded value)
+  Less,       // <
+  LessEq,     // <=
+  Greater,    // >
+  GreaterEq,  // >=
+  Equal,      // ==
+  NotEqual,   // !=
   LParen,
   RParen,
   If,
@@ -21,10 +21,10 @@ enum class RuleTokenKind {
   And,
   Or,
   Not,
-  Advise,    // advise ACTION | advise "TEXT"
-  Advice,    // ACTION advice "TEXT"
-  Because,   // ACTION because "TEXT"
-  End,       // end of the line (a '#' comment also ends it)
+  Advise,   // advise ACTION | advise "TEXT"
+  Advice,   // ACTION advice "TEXT"
+  Because,  // ACTION because "TEXT"
+  End,      // end of the line (a '#' comment also ends it)
 };
 
 struct RuleToken {

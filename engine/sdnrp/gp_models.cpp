@@ -38,8 +38,12 @@ double SdnrpModels::roughness(double F) {
   return 0.0254 * q * q;
 }
 
-double SdnrpModels::cuttingForceFeedSensitivity(double f) { return 8973.0 * (std::log(0.039 * f) - 1.0) / (f * f); }
+double SdnrpModels::cuttingForceFeedSensitivity(double f) {
+  return 8973.0 * (std::log(0.039 * f) - 1.0) / (f * f);
+}
 
-double SdnrpModels::turningFeed() { return std::numbers::e / 0.039; }
+double SdnrpModels::turningFeed() {
+  return std::numbers::e / 0.039;
+}
 
 }  // namespace mx

@@ -13,11 +13,11 @@ namespace mx {
 class SdnrpModels {
  public:
   // Paper units. Each throws InvalidInput (naming the quantity, value and domain) outside its domain.
-  static double desiredForce(double ra_um);                        // K1
-  static double feedCommand(double force_N);                       // K2, may be negative
-  static double speedCommand(double force_N);                      // K3
+  static double desiredForce(double ra_um);                          // K1
+  static double feedCommand(double force_N);                         // K2, may be negative
+  static double speedCommand(double force_N);                        // K3
   static double cuttingForce(double speed_rpm, double feed_mm_min);  // K4
-  static double roughness(double force_N);                         // K5
+  static double roughness(double force_N);                           // K5
   // dK4/df [N per mm/min], > 0 for f > 69.7 mm/min.
   static double cuttingForceFeedSensitivity(double feed_mm_min);
   // The feed where K4 turns (its minimum over f): e / 0.039 mm/min.

@@ -23,7 +23,8 @@ constexpr double kRpm = 1.0 / 60.0;     // 1 rpm in rev/s
 SdnrpSimulator::SdnrpSimulator(SdnrpSettings s) : settings_(s) {
   const double ra_um = s.ra_desired_m * 1e6;
   if (!(ra_um >= 0.25 && ra_um <= 2.5))
-    throw InvalidInput("sdnrp: Ra = " + std::to_string(ra_um) + " um: must be in [0.25, 2.5] um (where K1-K4 are defined and F_d reachable)");
+    throw InvalidInput("sdnrp: Ra = " + std::to_string(ra_um) +
+                       " um: must be in [0.25, 2.5] um (where K1-K4 are defined and F_d reachable)");
   requirePositive("duration", s.duration_s, "s");
   requirePositive("time_step", s.time_step_s, "s");
   requirePositive("output_period", s.output_period_s, "s");
@@ -33,10 +34,12 @@ SdnrpSimulator::SdnrpSimulator(SdnrpSettings s) : settings_(s) {
   requirePositive("feed_damping", s.drives.feed_damping, "");
   requirePositive("spindle_time_constant", s.drives.spindle_time_constant_s, "s");
   if (s.time_step_s > s.output_period_s || s.final_window_s > s.duration_s)
-    throw InvalidInput("sdnrp: time_step = " + std::to_string(s.time_step_s) + " s: must be <= output_period and final_window <= duration");
+    throw InvalidInput("sdnrp: time_step = " + std::to_string(s.time_step_s) +
+                       " s: must be <= output_period and final_window <= duration");
   if (!(s.min_feed_m_per_s >= SdnrpModels::turningFeed() * kMmMin) || !(s.max_feed_m_per_s > s.min_feed_m_per_s))
     throw InvalidInput("sdnrp: feed limits = [" + std::to_string(s.min_feed_m_per_s / kMmMin) + ", " +
-                       std::to_string(s.max_feed_m_per_s / kMmMin) + "] mm/min: need 69.7 <= min < max (K4 turns at 69.7)");
+                       std::to_string(s.max_feed_m_per_s / kMmMin) +
+                       "] mm/min: need 69.7 <= min < max (K4 turns at 69.7)");
   if (!(s.min_speed_rev_per_s > 0.0) || !(s.max_speed_rev_per_s > s.min_speed_rev_per_s))
     throw InvalidInput("sdnrp: speed limits = [" + std::to_string(s.min_speed_rev_per_s / kRpm) + ", " +
                        std::to_string(s.max_speed_rev_per_s / kRpm) + "] rpm: need 0 < min < max");
@@ -129,11 +132,14 @@ SdnrpResult SdnrpSimulator::run(const JobControl& job) const {
     // RK4, disturbance held over the step
     const State k1 = deriv(y, dist);
     State tmp;
-    for (int i = 0; i < 4; ++i) tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + 0.5 * dt * k1[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 4; ++i)
+      tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + 0.5 * dt * k1[static_cast<std::size_t>(i)];
     const State k2 = deriv(tmp, dist);
-    for (int i = 0; i < 4; ++i) tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + 0.5 * dt * k2[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 4; ++i)
+      tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + 0.5 * dt * k2[static_cast<std::size_t>(i)];
     const State k3 = deriv(tmp, dist);
-    for (int i = 0; i < 4; ++i) tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + dt * k3[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 4; ++i)
+      tmp[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(i)] + dt * k3[static_cast<std::size_t>(i)];
     const State k4 = deriv(tmp, dist);
     for (std::size_t i = 0; i < 4; ++i) y[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
   }

@@ -35,9 +35,9 @@ struct SdnrpSettings {
   double time_step_s = 1e-3;
   double output_period_s = 0.01;  // one sample of the six signals every output_period_s
   double final_window_s = 1.0;    // final values: means over the last final_window_s
-  double initial_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();   // NaN: start at f_ff
+  double initial_feed_m_per_s = std::numeric_limits<double>::quiet_NaN();     // NaN: start at f_ff
   double initial_speed_rev_per_s = std::numeric_limits<double>::quiet_NaN();  // NaN: start at n_c
-  double min_feed_m_per_s = 100e-3 / 60.0;   // above K4's turning feed (69.7 mm/min)
+  double min_feed_m_per_s = 100e-3 / 60.0;                                    // above K4's turning feed (69.7 mm/min)
   double max_feed_m_per_s = 2000e-3 / 60.0;
   double min_speed_rev_per_s = 500.0 / 60.0;
   double max_speed_rev_per_s = 6000.0 / 60.0;
@@ -49,12 +49,12 @@ struct SdnrpSettings {
 // The six console signals of the paper's section 5, plus the two commands.
 struct SdnrpSample {
   double t_s = 0.0;
-  double ra_m = 0.0;               // actual surface roughness, K5(F)
-  double ra_dynamic_m = 0.0;       // with the machine-tool dynamics, K5(F + disturbance)
-  double force_N = 0.0;            // maximal cutting force, K4
-  double force_dynamic_N = 0.0;    // with the dynamical component
-  double feed_m_per_s = 0.0;       // actual feed f_a
-  double speed_rev_per_s = 0.0;    // actual spindle speed n_a
+  double ra_m = 0.0;             // actual surface roughness, K5(F)
+  double ra_dynamic_m = 0.0;     // with the machine-tool dynamics, K5(F + disturbance)
+  double force_N = 0.0;          // maximal cutting force, K4
+  double force_dynamic_N = 0.0;  // with the dynamical component
+  double feed_m_per_s = 0.0;     // actual feed f_a
+  double speed_rev_per_s = 0.0;  // actual spindle speed n_a
   double feed_command_m_per_s = 0.0;
   double speed_command_rev_per_s = 0.0;
 };
@@ -66,7 +66,7 @@ struct SdnrpResult {
   double f_final_N = 0.0;           // mean measured force (with disturbance) over the final window
   double feed_final_m_per_s = 0.0;  // mean f_a over the final window
   double speed_final_rev_per_s = 0.0;
-  double ra_produced_m = 0.0;       // mean K5(F + disturbance) over the final window
+  double ra_produced_m = 0.0;                 // mean K5(F + disturbance) over the final window
   double feed_feedforward_raw_m_per_s = 0.0;  // K2(F_d) before clamping (may be negative)
   double speed_command_rev_per_s = 0.0;       // clamped K3(F_d)
   double initial_feed_m_per_s = 0.0;

@@ -11,8 +11,8 @@ namespace mx {
 struct UnmodelledDynamicsSettings {
   bool enabled = true;
   std::uint64_t seed = 2008;
-  double sigma_N = 3.0;   // standard deviation of the force oscillation
-  double hold_s = 0.01;   // a new value every hold_s
+  double sigma_N = 3.0;  // standard deviation of the force oscillation
+  double hold_s = 0.01;  // a new value every hold_s
 };
 
 class UnmodelledDynamics {

@@ -40,8 +40,8 @@ struct CvodeIntegrator::Impl {
   N_Vector abstol = nullptr;
   void* memory = nullptr;
   SUNNonlinearSolver solver = nullptr;
-  SUNMatrix matrix = nullptr;          // BDF only
-  SUNLinearSolver linear = nullptr;    // BDF only
+  SUNMatrix matrix = nullptr;        // BDF only
+  SUNLinearSolver linear = nullptr;  // BDF only
   double t = 0.0;
   std::exception_ptr rhs_error;
   std::string last_message;

@@ -1,8 +1,8 @@
 #pragma once
 // RAII wrapper around SUNDIALS 6.4 CVODE (Adams-Moulton with the fixed-point nonlinear solver, for the
 // non-stiff reference integrations; or, on request, BDF with Newton and a dense direct linear solver with a
-// difference-quotient Jacobian, for stiff systems such as the feed drive + cutting process of the adaptive force controller).
-// Every SUNDIALS return flag is checked; a failure throws CvodeError naming the call and the flag.
+// difference-quotient Jacobian, for stiff systems such as the feed drive + cutting process of the adaptive force
+// controller). Every SUNDIALS return flag is checked; a failure throws CvodeError naming the call and the flag.
 // SUNDIALS types stay out of this header.
 #include <functional>
 #include <memory>

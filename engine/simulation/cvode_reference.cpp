@@ -6,8 +6,8 @@
 #include <sstream>
 #include <vector>
 
-#include "model/cutting_force.h"
 #include "core/invalid_input.h"
+#include "model/cutting_force.h"
 #include "simulation/cvode_integrator.h"
 #include "simulation/time_domain_simulator.h"
 

@@ -40,18 +40,20 @@ std::vector<FrequencyPeak> identifyPeaks(std::span<const double> f, std::span<co
     }
     peaks.push_back(p);
   }
-  std::sort(peaks.begin(), peaks.end(), [](const FrequencyPeak& x, const FrequencyPeak& y) {
-    return x.amplitude > y.amplitude;
-  });
+  std::sort(peaks.begin(), peaks.end(),
+            [](const FrequencyPeak& x, const FrequencyPeak& y) { return x.amplitude > y.amplitude; });
   if (peaks.size() > settings.max_peaks) peaks.resize(settings.max_peaks);
   return peaks;
 }
 
 std::string describe(PeakKind kind) {
   switch (kind) {
-    case PeakKind::ToothPassing: return "tooth passing (forced)";
-    case PeakKind::Spindle: return "spindle (run-out)";
-    case PeakKind::NonHarmonic: break;
+    case PeakKind::ToothPassing:
+      return "tooth passing (forced)";
+    case PeakKind::Spindle:
+      return "spindle (run-out)";
+    case PeakKind::NonHarmonic:
+      break;
   }
   return "non-harmonic (chatter)";
 }

@@ -1,10 +1,10 @@
 #include "simulation/milling_simulation.h"
-#include "model/vector_state.h"
 
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "model/vector_state.h"
 #include "simulation/chatter_detection.h"
 #include "simulation/time_domain_simulator.h"
 

@@ -13,9 +13,9 @@ enum class StabilityMethod { ZeroOrder, SemiDiscretization };
 
 struct LobeSettings {
   StabilityMethod method = StabilityMethod::ZeroOrder;
-  double delta_per_s = 0.0;      // Rule 1.1
-  double max_depth_m = 0.02;     // envelope = kNone where no lobe lies below
-  int sdm_steps_per_period = 40; // semi-discretization only
+  double delta_per_s = 0.0;       // Rule 1.1
+  double max_depth_m = 0.02;      // envelope = kNone where no lobe lies below
+  int sdm_steps_per_period = 40;  // semi-discretization only
 };
 
 LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,

@@ -14,7 +14,7 @@ struct SpeedGrid {
 };
 
 struct LobeCurve {
-  int index = 0;                     // k in omega_c T = eps + 2 k pi (eq. 9)
+  int index = 0;  // k in omega_c T = eps + 2 k pi (eq. 9)
   std::vector<double> speed_rev_per_s;
   std::vector<double> depth_m;
   std::vector<double> chatter_hz;
@@ -23,16 +23,16 @@ struct LobeCurve {
 struct LobeMinimum {
   double speed_rev_per_s = 0.0;
   double depth_m = 0.0;
-  double chatter_hz = 0.0;           // 0 where the method does not give it
+  double chatter_hz = 0.0;  // 0 where the method does not give it
 };
 
 struct LobeDiagram {
-  std::vector<LobeCurve> lobes;                 // may be empty for methods without lobe curves
-  std::vector<double> speed_rev_per_s;          // the requested grid
-  std::vector<double> envelope_depth_m;         // b_lim at each speed; +inf where none below the cap
-  std::vector<double> envelope_chatter_hz;      // chatter frequency on the envelope (0 if unknown)
-  std::vector<LobeMinimum> minima;              // local minima of the envelope, by speed
-  double delta_per_s = 0.0;                     // margin used (Rule 1.1)
+  std::vector<LobeCurve> lobes;             // may be empty for methods without lobe curves
+  std::vector<double> speed_rev_per_s;      // the requested grid
+  std::vector<double> envelope_depth_m;     // b_lim at each speed; +inf where none below the cap
+  std::vector<double> envelope_chatter_hz;  // chatter frequency on the envelope (0 if unknown)
+  std::vector<LobeMinimum> minima;          // local minima of the envelope, by speed
+  double delta_per_s = 0.0;                 // margin used (Rule 1.1)
 
   static constexpr double kNone = std::numeric_limits<double>::infinity();
 };

@@ -1,11 +1,11 @@
 #include "stability/semi_discretization.h"
-#include "model/vector_state.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
+#include "model/vector_state.h"
 #include "stability/sdm_arnoldi.h"
 #include "stability/sdm_boundary.h"
 #include "stability/sdm_model.h"

@@ -34,13 +34,15 @@ StabilityBoundary::StabilityBoundary(const LobeDiagram& diagram, double alpha)
   minima_ = envelopeMinima(speed_, depth_, diagram.envelope_chatter_hz);
 }
 
-bool StabilityBoundary::covers(double speed) const { return speed >= speed_.front() && speed <= speed_.back(); }
+bool StabilityBoundary::covers(double speed) const {
+  return speed >= speed_.front() && speed <= speed_.back();
+}
 
 double StabilityBoundary::depthLimit(double speed) const {
   if (!covers(speed)) {
     std::ostringstream msg;
-    msg << "spindle speed " << speed * 60.0 << " rpm is outside the computed lobes [" << speed_.front() * 60.0
-        << ", " << speed_.back() * 60.0 << "] rpm";
+    msg << "spindle speed " << speed * 60.0 << " rpm is outside the computed lobes [" << speed_.front() * 60.0 << ", "
+        << speed_.back() * 60.0 << "] rpm";
     throw InvalidInput(msg.str());
   }
   const auto it = std::upper_bound(speed_.begin(), speed_.end(), speed);
@@ -51,7 +53,9 @@ double StabilityBoundary::depthLimit(double speed) const {
   return depth_[i] + t * (depth_[j] - depth_[i]);
 }
 
-bool StabilityBoundary::isStable(double speed, double depth) const { return depth < depthLimit(speed); }
+bool StabilityBoundary::isStable(double speed, double depth) const {
+  return depth < depthLimit(speed);
+}
 
 // Nearest speed left of `speed` (not beyond `stop`) where the envelope falls to `depth`.
 double StabilityBoundary::crossingLeft(double speed, double depth, double stop) const {
@@ -93,8 +97,8 @@ double StabilityBoundary::speedSecurity(double speed, double depth) const {
   auto side = [&](const LobeMinimum* m, bool is_left) {
     if (m == nullptr) return kInf;
     if (depth <= m->depth_m) return std::abs(speed - m->speed_rev_per_s);
-    const double crossing = is_left ? crossingLeft(speed, depth, m->speed_rev_per_s)
-                                    : crossingRight(speed, depth, m->speed_rev_per_s);
+    const double crossing =
+        is_left ? crossingLeft(speed, depth, m->speed_rev_per_s) : crossingRight(speed, depth, m->speed_rev_per_s);
     return std::abs(speed - crossing);
   };
   const double d_left = side(left, true);

@@ -190,8 +190,8 @@ void validate(const MillingSetup& setup, const std::vector<double>& speeds, doub
 
 }  // namespace
 
-LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds,
-                            const ZoaOptions& options, const JobControl& control) {
+LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds, const ZoaOptions& options,
+                            const JobControl& control) {
   clearUpperVectorState();
   LobeDiagram out;
   out.delta_per_s = options.delta_per_s;

@@ -11,10 +11,10 @@
 namespace mx {
 
 struct ZoaOptions {
-  double delta_per_s = 0.0;     // Rule 1.1; must stay below the smallest modal decay rate
-  double max_depth_m = 0.02;    // envelope = kNone where no lobe lies below this depth
-  int lobe_count = 0;           // number of lobes k = 0..count-1; 0 = enough to cover the lowest speed
-  int frequency_samples = 1200; // chatter-frequency samples (plus a dense band around every mode)
+  double delta_per_s = 0.0;      // Rule 1.1; must stay below the smallest modal decay rate
+  double max_depth_m = 0.02;     // envelope = kNone where no lobe lies below this depth
+  int lobe_count = 0;            // number of lobes k = 0..count-1; 0 = enough to cover the lowest speed
+  int frequency_samples = 1200;  // chatter-frequency samples (plus a dense band around every mode)
 };
 
 // Throws InvalidInput for delta >= smallest decay rate (the message names delta and the bound),

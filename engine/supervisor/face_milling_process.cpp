@@ -16,8 +16,8 @@ void require(bool ok, const std::string& field, double value, const std::string&
 }
 
 void validateMode(const StructuralMode& m, const std::string& name) {
-  require(std::isfinite(m.natural_frequency_rad_s) && m.natural_frequency_rad_s > 0.0, name + ".natural_frequency_rad_s",
-          m.natural_frequency_rad_s, "> 0");
+  require(std::isfinite(m.natural_frequency_rad_s) && m.natural_frequency_rad_s > 0.0,
+          name + ".natural_frequency_rad_s", m.natural_frequency_rad_s, "> 0");
   require(std::isfinite(m.damping_ratio) && m.damping_ratio > 0.0 && m.damping_ratio < 1.0, name + ".damping_ratio",
           m.damping_ratio, "in (0, 1)");
   require(std::isfinite(m.stiffness_N_per_m) && m.stiffness_N_per_m > 0.0, name + ".stiffness_N_per_m",
@@ -63,8 +63,7 @@ void validateFaceMillingParameters(const FaceMillingParameters& p) {
 }
 
 FaceMillingProcess::FaceMillingProcess(FaceMillingParameters parameters)
-    : p_((validateFaceMillingParameters(parameters), parameters)),
-      history_(1.0, delaySteps(parameters) + 4) {
+    : p_((validateFaceMillingParameters(parameters), parameters)), history_(1.0, delaySteps(parameters) + 4) {
   omega_ = 2.0 * std::numbers::pi * p_.spindle_speed_rpm / 60.0;
   period_s_ = 60.0 / p_.spindle_speed_rpm;
   v_cut_ = omega_ * p_.tool_radius_m;
@@ -96,7 +95,8 @@ double FaceMillingProcess::pressureCoeff(const PressureLaw& law) const {
   const double v_m_min = v_cut_ * 60.0;
   const double d_mm = depth_ * 1e3;
   if (d_mm <= 0.0) return 0.0;
-  return 1000.0 * law.coefficient * std::pow(v_m_min / 1000.0, law.speed_exponent) * std::pow(d_mm, 1.0 + law.depth_exponent);
+  return 1000.0 * law.coefficient * std::pow(v_m_min / 1000.0, law.speed_exponent) *
+         std::pow(d_mm, 1.0 + law.depth_exponent);
 }
 
 void FaceMillingProcess::setDepth(double m) {
@@ -135,8 +135,8 @@ FaceMillingProcess::Forces FaceMillingProcess::forces(double t, double tool_x, d
   return f;
 }
 
-FaceMillingProcess::State FaceMillingProcess::derivative(const State& s, double t, double tool_x, const AxisPosition& past,
-                                                          Forces* out) const {
+FaceMillingProcess::State FaceMillingProcess::derivative(const State& s, double t, double tool_x,
+                                                         const AxisPosition& past, Forces* out) const {
   const double rel_x = s[0] - s[4], rel_y = s[2] - s[6];
   const Forces f = forces(t, tool_x, rel_x - past.x, rel_y - past.y, false);
   if (out) *out = f;
@@ -145,7 +145,7 @@ FaceMillingProcess::State FaceMillingProcess::derivative(const State& s, double 
     return -2.0 * m.damping_ratio * w * v - w * w * q + w * w / m.stiffness_N_per_m * force;
   };
   // Force on the tool F; the part carries the reaction -F (docs: sign convention of A6-A9).
-  return {s[1], mode(p_.tool_x, s[0], s[1], f.fx), s[3], mode(p_.tool_y, s[2], s[3], f.fy),
+  return {s[1], mode(p_.tool_x, s[0], s[1], f.fx),  s[3], mode(p_.tool_y, s[2], s[3], f.fy),
           s[5], mode(p_.part_x, s[4], s[5], -f.fx), s[7], mode(p_.part_y, s[6], s[7], -f.fy)};
 }
 

@@ -41,8 +41,8 @@ struct FaceMillingParameters {
   double lead_angle_rad = 0.2617993877991494;  // 15 deg (not given by the paper; docs)
   PressureLaw cutting{0.29, -0.25, -0.13, -0.72};
   PressureLaw thrust{0.16, -0.40, -0.41, -0.58};
-  StructuralMode tool_x{4500.0, 0.07, 14e6};  // A6: 14 kN/mm
-  StructuralMode tool_y{4100.0, 0.11, 14e6};  // A7
+  StructuralMode tool_x{4500.0, 0.07, 14e6};   // A6: 14 kN/mm
+  StructuralMode tool_y{4100.0, 0.11, 14e6};   // A7
   StructuralMode part_x{2600.0, 0.09, 9.5e6};  // A8: 9.5 kN/mm
   StructuralMode part_y{2100.0, 0.22, 9.5e6};  // A9
   // Part: a rectangle [start, start + length] along the feed axis x, width across it centred at center_y.
@@ -58,15 +58,15 @@ void validateFaceMillingParameters(const FaceMillingParameters& p);  // InvalidI
 
 struct FaceMillingOutput {
   double t_s = 0.0;
-  double fx_N = 0.0, fy_N = 0.0;     // forces on the tool (A3-A4)
-  double power_W = 0.0;              // V sum of tangential forces: instantaneous spindle cutting power
-  double tool_x_m = 0.0;             // tool centre along the feed axis
-  double regen_m = 0.0;              // |relative displacement change over the delay|
+  double fx_N = 0.0, fy_N = 0.0;  // forces on the tool (A3-A4)
+  double power_W = 0.0;           // V sum of tangential forces: instantaneous spindle cutting power
+  double tool_x_m = 0.0;          // tool centre along the feed axis
+  double regen_m = 0.0;           // |relative displacement change over the delay|
   int teeth_in_cut = 0;
 };
 
 struct RigidRevolution {  // static (rigid-structure) forces over one revolution in the full cut
-  double fy_max_N = 0.0;             // F_Y = max |F_y|
+  double fy_max_N = 0.0;  // F_Y = max |F_y|
   double power_mean_W = 0.0;
   double power_max_W = 0.0;
 };
@@ -75,18 +75,18 @@ class FaceMillingProcess {
  public:
   explicit FaceMillingProcess(FaceMillingParameters parameters);  // throws InvalidInput
 
-  void reset(double tool_x_m = 0.0);       // rest state, empty history, time 0, tool centre at tool_x_m
-  void setFeedRate(double m_per_s);         // >= 0
-  void setDepth(double m);                  // >= 0
-  void step();                              // one integration step
-  void advance(double duration_s);          // whole steps covering duration_s (rounded to nearest)
+  void reset(double tool_x_m = 0.0);  // rest state, empty history, time 0, tool centre at tool_x_m
+  void setFeedRate(double m_per_s);   // >= 0
+  void setDepth(double m);            // >= 0
+  void step();                        // one integration step
+  void advance(double duration_s);    // whole steps covering duration_s (rounded to nearest)
 
   const FaceMillingOutput& output() const { return out_; }
   double time() const { return out_.t_s; }
   double stepSize() const { return dt_; }
   double delay() const { return delay_s_; }
-  double cuttingSpeed() const { return v_cut_; }        // m/s
-  double spindlePeriod() const { return period_s_; }    // s
+  double cuttingSpeed() const { return v_cut_; }      // m/s
+  double spindlePeriod() const { return period_s_; }  // s
   double feedRate() const { return feed_rate_; }
   double depth() const { return depth_; }
   const FaceMillingParameters& parameters() const { return p_; }

@@ -12,16 +12,20 @@
 namespace mx {
 
 double MachiningContext::currentDepth() const {
-  return current_pass >= 0 && current_pass < static_cast<int>(passes_m.size()) ? passes_m[static_cast<std::size_t>(current_pass)]
-                                                                                : 0.0;
+  return current_pass >= 0 && current_pass < static_cast<int>(passes_m.size())
+             ? passes_m[static_cast<std::size_t>(current_pass)]
+             : 0.0;
 }
 
 void FeedrateRoutine::run(MachiningContext& ctx) {
   // Programmed feed, zero under a feed hold, or the force controller's override.
-  ctx.commanded_feed_m_per_s = ctx.feed_hold ? 0.0 : (ctx.override_valid ? ctx.override_feed_m_per_s : ctx.programmed_feed_m_per_s);
+  ctx.commanded_feed_m_per_s =
+      ctx.feed_hold ? 0.0 : (ctx.override_valid ? ctx.override_feed_m_per_s : ctx.programmed_feed_m_per_s);
 }
 
-void OperatorInputMonitor::run(MachiningContext& ctx) { ctx.a = ctx.operator_feed_hold; }
+void OperatorInputMonitor::run(MachiningContext& ctx) {
+  ctx.a = ctx.operator_feed_hold;
+}
 
 void OperatorChatterDetector::run(MachiningContext& ctx) {
   if (ctx.operator_chatter_key && !ctx.c) ctx.report("chatter_manual", "operator signalled chatter");
@@ -72,7 +76,8 @@ void AutomaticChatterDetector::reset(MachiningContext& ctx) {
 void ChatterSuppressor::run(MachiningContext& ctx) {
   const auto from = static_cast<std::size_t>(std::max(0, ctx.current_pass));
   if (from >= ctx.passes_m.size()) return;
-  const double remaining = std::accumulate(ctx.passes_m.begin() + static_cast<std::ptrdiff_t>(from), ctx.passes_m.end(), 0.0);
+  const double remaining =
+      std::accumulate(ctx.passes_m.begin() + static_cast<std::ptrdiff_t>(from), ctx.passes_m.end(), 0.0);
   const std::size_t count = ctx.passes_m.size() - from + 1;
   ctx.passes_m.resize(from);
   ctx.passes_m.insert(ctx.passes_m.end(), count, remaining / static_cast<double>(count));
@@ -177,7 +182,8 @@ void ModelBasedForceModule::run(MachiningContext& ctx) {
   ctx.override_valid = true;
 }
 
-std::vector<std::unique_ptr<MachiningModule>> makeStandardModules(ChatterDetectorSettings chatter, PowerLawForceModel model) {
+std::vector<std::unique_ptr<MachiningModule>> makeStandardModules(ChatterDetectorSettings chatter,
+                                                                  PowerLawForceModel model) {
   std::vector<std::unique_ptr<MachiningModule>> m;
   m.push_back(std::make_unique<OperatorInputMonitor>());
   m.push_back(std::make_unique<OperatorChatterDetector>());

@@ -40,20 +40,20 @@ struct MachiningContext {
   bool operator_chatter_key = false;  // latched until the suppression routine completes
   // Signals of the state supervisor.
   bool a = false, b = false, c = false, d = false, e = false;
-  double F_Y_N = 0.0;                 // force signal processor output
-  double chatter_indicator = 0.0;     // automatic chatter detector: peak non-harmonic amplitude [N]
-  double estimated_gain = 0.0;        // H: K d^b of F_Y = K d^b f^a [N / mm^a]
+  double F_Y_N = 0.0;              // force signal processor output
+  double chatter_indicator = 0.0;  // automatic chatter detector: peak non-harmonic amplitude [N]
+  double estimated_gain = 0.0;     // H: K d^b of F_Y = K d^b f^a [N / mm^a]
   bool gain_valid = false;
-  bool estimator_restart = false;     // K* asks H to start its estimate afresh
+  bool estimator_restart = false;  // K* asks H to start its estimate afresh
   // Feed.
-  bool feed_hold = false;             // C, or the hold of G
-  bool override_valid = false;        // a force controller has set override_feed
+  bool feed_hold = false;       // C, or the hold of G
+  bool override_valid = false;  // a force controller has set override_feed
   double override_feed_m_per_s = 0.0;
   double commanded_feed_m_per_s = 10e-3;  // A's output, applied to the feed drive
   // Part program: remaining pass depths; the current pass is passes[current_pass].
   std::vector<double> passes_m;
   int current_pass = 0;
-  bool replanned = false;             // F rewrote the program (the driver adapts the process depth)
+  bool replanned = false;  // F rewrote the program (the driver adapts the process depth)
   // Event log hook (t, type, detail).
   std::function<void(double, const std::string&, const std::string&)> log;
 
@@ -65,7 +65,8 @@ struct MachiningContext {
 
 class MachiningModule {
  public:
-  MachiningModule(char letter, std::string name, double period_s) : letter_(letter), name_(std::move(name)), period_(period_s) {}
+  MachiningModule(char letter, std::string name, double period_s)
+      : letter_(letter), name_(std::move(name)), period_(period_s) {}
   virtual ~MachiningModule() = default;
   char letter() const { return letter_; }
   const std::string& name() const { return name_; }
@@ -131,7 +132,8 @@ class ChatterSuppressor : public MachiningModule {  // F, invoked by G
 
 class ChatterSuppressionRoutine : public MachiningModule {  // G, event-driven
  public:
-  explicit ChatterSuppressionRoutine(double hold_s = 0.2) : MachiningModule('G', "chatter suppression routine", 0.0), hold_s_(hold_s) {}
+  explicit ChatterSuppressionRoutine(double hold_s = 0.2)
+      : MachiningModule('G', "chatter suppression routine", 0.0), hold_s_(hold_s) {}
   void run(MachiningContext& ctx) override;
   void reset(MachiningContext& ctx) override;
   void deactivate(MachiningContext& ctx) override;
@@ -168,7 +170,8 @@ class ForceSignalProcessor : public MachiningModule {  // I, 40 ms
 
 class ContactMonitor : public MachiningModule {  // J, 40 ms
  public:
-  explicit ContactMonitor(double threshold_N = 50.0) : MachiningModule('J', "contact monitor", 0.040), threshold_(threshold_N) {}
+  explicit ContactMonitor(double threshold_N = 50.0)
+      : MachiningModule('J', "contact monitor", 0.040), threshold_(threshold_N) {}
   void run(MachiningContext& ctx) override { ctx.b = ctx.F_Y_N > threshold_; }
 
  private:
@@ -177,7 +180,8 @@ class ContactMonitor : public MachiningModule {  // J, 40 ms
 
 class AdaptiveForceController : public MachiningModule {  // K, 40 ms
  public:
-  explicit AdaptiveForceController(double feed_exponent = 0.63) : MachiningModule('K', "adaptive force controller", 0.040), a_(feed_exponent) {}
+  explicit AdaptiveForceController(double feed_exponent = 0.63)
+      : MachiningModule('K', "adaptive force controller", 0.040), a_(feed_exponent) {}
   void run(MachiningContext& ctx) override;
   void reset(MachiningContext& ctx) override {  // K*: the controller and its estimate start afresh
     ctx.override_valid = false;
@@ -192,7 +196,8 @@ class AdaptiveForceController : public MachiningModule {  // K, 40 ms
 
 class ModelBasedForceModule : public MachiningModule {  // L, 40 ms
  public:
-  explicit ModelBasedForceModule(PowerLawForceModel model = {}) : MachiningModule('L', "model-based force controller", 0.040), model_(model) {}
+  explicit ModelBasedForceModule(PowerLawForceModel model = {})
+      : MachiningModule('L', "model-based force controller", 0.040), model_(model) {}
   void run(MachiningContext& ctx) override;
   void reset(MachiningContext& ctx) override { ctx.override_valid = false; }
   void deactivate(MachiningContext& ctx) override { ctx.override_valid = false; }

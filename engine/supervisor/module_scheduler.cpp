@@ -12,7 +12,8 @@ ModuleScheduler::ModuleScheduler(std::vector<std::unique_ptr<MachiningModule>> m
     if (!m) throw InvalidInput("module scheduler: module = null: must be a module");
     if (!seen.insert(m->letter()).second)
       throw InvalidInput(std::string("module scheduler: letter = ") + m->letter() + ": must be unique");
-    if (!(m->period() >= 0.0)) throw InvalidInput(std::string("module scheduler: period of ") + m->letter() + ": must be >= 0");
+    if (!(m->period() >= 0.0))
+      throw InvalidInput(std::string("module scheduler: period of ") + m->letter() + ": must be >= 0");
     slots_.push_back(Slot{std::move(m)});
   }
 }

@@ -25,10 +25,10 @@ class ModuleScheduler {
   void resetCounters();
 
   bool isActive(char letter) const { return active_.count(letter) > 0; }
-  std::string activeLetters() const;            // e.g. "ABIJ"
-  long long runs(char letter) const;            // calls of run() since construction / resetCounters
-  long long resets(char letter) const;          // impulse resets
-  MachiningModule* module(char letter) const;   // nullptr when absent
+  std::string activeLetters() const;           // e.g. "ABIJ"
+  long long runs(char letter) const;           // calls of run() since construction / resetCounters
+  long long resets(char letter) const;         // impulse resets
+  MachiningModule* module(char letter) const;  // nullptr when absent
 
  private:
   struct Slot {

@@ -18,9 +18,12 @@ void require(bool ok, const std::string& field, double value, const std::string&
 
 std::string controllerName(SupervisionController c) {
   switch (c) {
-    case SupervisionController::SmcI: return "smc1";
-    case SupervisionController::SmcII: return "smc2";
-    default: return "none";
+    case SupervisionController::SmcI:
+      return "smc1";
+    case SupervisionController::SmcII:
+      return "smc2";
+    default:
+      return "none";
   }
 }
 
@@ -49,8 +52,8 @@ void validateSupervisionScenario(const SupervisionScenario& s) {
   require(s.limits.spindle_power_limit_W > 0.0, "limits.spindle_power_limit_W", s.limits.spindle_power_limit_W, "> 0");
   require(std::isnan(s.reference_force_N) || s.reference_force_N > 0.0, "reference_force_N", s.reference_force_N,
           "> 0 (or NaN: derived)");
-  require(std::isfinite(s.power_margin) && s.power_margin > 0.0 && s.power_margin <= 1.5, "power_margin", s.power_margin,
-          "in (0, 1.5]");
+  require(std::isfinite(s.power_margin) && s.power_margin > 0.0 && s.power_margin <= 1.5, "power_margin",
+          s.power_margin, "in (0, 1.5]");
   require(std::isfinite(s.sample_period_s) && s.sample_period_s >= 1e-4 && s.sample_period_s <= 0.01, "sample_period_s",
           s.sample_period_s, "in [1e-4, 0.01]");
   require(std::isfinite(s.scan_period_s) && s.scan_period_s >= s.sample_period_s && s.scan_period_s <= 1.0,
@@ -97,7 +100,9 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
   ctx.programmed_feed_m_per_s = sc.programmed_feed_m_per_s;
   ctx.commanded_feed_m_per_s = sc.programmed_feed_m_per_s;
   ctx.passes_m = sc.pass_depths_m;
-  ctx.log = [&res](double t, const std::string& type, const std::string& detail) { res.events.push_back({t, type, detail}); };
+  ctx.log = [&res](double t, const std::string& type, const std::string& detail) {
+    res.events.push_back({t, type, detail});
+  };
   m.reference_force_N = ctx.reference_force_N;
   ModuleScheduler scheduler(makeStandardModules(sc.chatter_detector, sc.force_model));
   logic.reset();
@@ -126,7 +131,8 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
     proc = FaceMillingProcess(pass_p);
     proc.setDepth(ctx.currentDepth());
     proc.reset(x_begin);
-    res.events.push_back({t, "pass_start", "pass " + std::to_string(k + 1) + " at " + std::to_string(ctx.currentDepth() * 1e3) + " mm"});
+    res.events.push_back(
+        {t, "pass_start", "pass " + std::to_string(k + 1) + " at " + std::to_string(ctx.currentDepth() * 1e3) + " mm"});
     ++m.passes;
     while (proc.output().tool_x_m < x_end) {
       proc.setFeedRate(ctx.commanded_feed_m_per_s);
@@ -155,11 +161,14 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
       }
       const double power = std::max(0.0, power_sum / static_cast<double>(power_window.size()));
       m.max_power_W = std::max(m.max_power_W, power);
-      const bool fully_engaged = o.tool_x_m > sc.part_start_x_m + R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m - R;
+      const bool fully_engaged =
+          o.tool_x_m > sc.part_start_x_m + R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m - R;
       if (fully_engaged && ctx.current_pass + 1 == static_cast<int>(ctx.passes_m.size()))
-        m.steady_max_power_pct_of_limit = std::max(m.steady_max_power_pct_of_limit, 100.0 * power / sc.limits.spindle_power_limit_W);
+        m.steady_max_power_pct_of_limit =
+            std::max(m.steady_max_power_pct_of_limit, 100.0 * power / sc.limits.spindle_power_limit_W);
       const double regen_rms = std::sqrt(std::max(0.0, regen_sum2) / static_cast<double>(regen_window.size()));
-      const bool over_part = o.tool_x_m > sc.part_start_x_m - R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m + R;
+      const bool over_part =
+          o.tool_x_m > sc.part_start_x_m - R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m + R;
       const bool feeding = *std::min_element(ctx.feed_samples.begin(), ctx.feed_samples.end()) > 0.0;
       if (over_part && feeding && regen_rms / f_nominal > sc.chatter_indicator_threshold) {
         m.tds_chatter_s += Ts;
@@ -182,8 +191,10 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
         if (e.type == OperatorEventType::FeedHoldOn) ctx.operator_feed_hold = true;
         if (e.type == OperatorEventType::FeedHoldOff) ctx.operator_feed_hold = false;
         if (e.type == OperatorEventType::ChatterSignal) ctx.operator_chatter_key = true;
-        res.events.push_back({t, "operator", e.type == OperatorEventType::FeedHoldOn ? "feed hold on"
-                                             : e.type == OperatorEventType::FeedHoldOff ? "feed hold off" : "chatter key"});
+        res.events.push_back({t, "operator",
+                              e.type == OperatorEventType::FeedHoldOn    ? "feed hold on"
+                              : e.type == OperatorEventType::FeedHoldOff ? "feed hold off"
+                                                                         : "chatter key"});
       }
       if ((sample - 1) % samples_per_scan == 0) {
         if (job.cancelled()) throw Cancelled();
@@ -225,9 +236,11 @@ SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic&
       }
       if (sample % record_every == 0)
         res.series.push_back({t, o.fy_N, ctx.F_Y_N, power, proc.feedRate(), proc.depth(), ctx.current_pass + 1});
-      if (t > sc.max_time_s) throw std::runtime_error("supervision: run exceeded max_time_s = " + std::to_string(sc.max_time_s) + " s");
+      if (t > sc.max_time_s)
+        throw std::runtime_error("supervision: run exceeded max_time_s = " + std::to_string(sc.max_time_s) + " s");
     }
-    if (ctx.current_pass + 1 < static_cast<int>(ctx.passes_m.size())) t += (x_end - x_begin) / sc.limits.max_feed_rate_m_per_s;
+    if (ctx.current_pass + 1 < static_cast<int>(ctx.passes_m.size()))
+      t += (x_end - x_begin) / sc.limits.max_feed_rate_m_per_s;
   }
   res.events.push_back({t, "end", "part program complete"});
   res.final_program_m = ctx.passes_m;

@@ -19,7 +19,7 @@
 namespace mx {
 
 enum class SupervisionController { None, SmcI, SmcII };
-std::string controllerName(SupervisionController c);           // "none", "smc1", "smc2"
+std::string controllerName(SupervisionController c);             // "none", "smc1", "smc2"
 SupervisionController parseController(const std::string& name);  // throws InvalidInput
 std::vector<double> defaultPassDepths(SupervisionController c);  // none, SMC II: {2 mm}; SMC I: {1, 1 mm}
 
@@ -35,19 +35,19 @@ struct SupervisionResult;
 struct SupervisionScenario {
   SupervisionController controller = SupervisionController::None;  // reported; the logic is passed in
   std::vector<double> pass_depths_m{2e-3};
-  FaceMillingParameters process;          // tool, structure, part width/position (part start is set here)
-  double part_start_x_m = 0.0;            // leading edge of the part on the feed axis
-  double part_length_m = 0.1;             // 100 mm bar, 50 mm wide (process.part_width_m)
-  double approach_m = 2e-3;               // clearance between the tool edge and the part at start and end
+  FaceMillingParameters process;  // tool, structure, part width/position (part start is set here)
+  double part_start_x_m = 0.0;    // leading edge of the part on the feed axis
+  double part_length_m = 0.1;     // 100 mm bar, 50 mm wide (process.part_width_m)
+  double approach_m = 2e-3;       // clearance between the tool edge and the part at start and end
   double programmed_feed_m_per_s = 10e-3;
   MachiningLimits limits;
   double reference_force_N = std::numeric_limits<double>::quiet_NaN();  // NaN: derived from the power limit
-  double power_margin = 0.95;             // F_ref keeps the mean cutting power at this fraction of the limit
-  PowerLawForceModel force_model;         // F_Y = 0.76 d^0.65 f^0.63 kN (SMC I's model; a for SMC II)
+  double power_margin = 0.95;      // F_ref keeps the mean cutting power at this fraction of the limit
+  PowerLawForceModel force_model;  // F_Y = 0.76 d^0.65 f^0.63 kN (SMC I's model; a for SMC II)
   ChatterDetectorSettings chatter_detector;
-  double scan_period_s = 0.010;           // supervisor scan (not given by the paper; = the fastest module)
-  double sample_period_s = 5e-4;          // force sampling (Table 1)
-  double record_period_s = 2e-3;          // time-series decimation
+  double scan_period_s = 0.010;               // supervisor scan (not given by the paper; = the fastest module)
+  double sample_period_s = 5e-4;              // force sampling (Table 1)
+  double record_period_s = 2e-3;              // time-series decimation
   double chatter_indicator_threshold = 0.02;  // TDS ground truth: RMS regen / f_t over a revolution
   double max_time_s = 300.0;
   std::vector<OperatorEvent> events;
@@ -81,22 +81,22 @@ struct SupervisionEvent {
 struct SupervisionMetrics {
   double reference_force_N = 0.0;
   double max_power_W = 0.0;
-  double max_power_pct_of_limit = 0.0;     // 100 P_max / P_limit, P = tooth-period mean cutting power
+  double max_power_pct_of_limit = 0.0;         // 100 P_max / P_limit, P = tooth-period mean cutting power
   double steady_max_power_pct_of_limit = 0.0;  // same, last pass, tool fully over the part
   double max_F_Y_N = 0.0;
-  double overshoot_pct = 0.0;              // 100 (max F_Y in contact - F_ref) / F_ref
-  bool chatter_detected = false;           // by the supervisor (D, E) or, without detector, by the TDS
-  double chatter_time_s = -1.0;            // first detection, -1 if none
-  bool detector_fired = false;             // E or D signalled chatter
-  double tds_chatter_s = 0.0;              // time with the TDS chatter indicator above threshold
-  int passes = 0;                          // passes executed
+  double overshoot_pct = 0.0;     // 100 (max F_Y in contact - F_ref) / F_ref
+  bool chatter_detected = false;  // by the supervisor (D, E) or, without detector, by the TDS
+  double chatter_time_s = -1.0;   // first detection, -1 if none
+  bool detector_fired = false;    // E or D signalled chatter
+  double tds_chatter_s = 0.0;     // time with the TDS chatter indicator above threshold
+  int passes = 0;                 // passes executed
   double cycle_time_s = 0.0;
-  double run_seconds = 0.0;                // wall-clock time of the run
+  double run_seconds = 0.0;  // wall-clock time of the run
 };
 
 struct SupervisionResult {
   std::string controller;
-  std::vector<double> final_program_m;     // pass depths after any re-planning
+  std::vector<double> final_program_m;  // pass depths after any re-planning
   std::vector<SupervisionSample> series;
   std::vector<ActiveStepsRecord> steps;
   std::vector<ModuleActivityRecord> modules;
@@ -111,6 +111,7 @@ double referenceForceFromPower(const SupervisionScenario& s);
 
 // Runs the scenario; logic.reset() first. Throws InvalidInput, Cancelled (job), or runtime_error
 // when the run exceeds max_time_s.
-SupervisionResult runSupervision(const SupervisionScenario& scenario, SupervisorLogic& logic, const JobControl& job = {});
+SupervisionResult runSupervision(const SupervisionScenario& scenario, SupervisorLogic& logic,
+                                 const JobControl& job = {});
 
 }  // namespace mx

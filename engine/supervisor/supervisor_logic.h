@@ -16,18 +16,18 @@ namespace mx {
 using SignalValues = std::map<std::string, double>;
 
 struct ScanOutput {
-  std::vector<std::string> active_steps;       // step names, in chart order
-  std::set<std::string> level_actions;         // e.g. {"A", "B", "I", "J"}
-  std::vector<std::string> impulse_actions;    // e.g. {"L*"}, fired at this scan
-  bool stable = true;                          // false: no stable situation within the iteration limit
-  int iterations = 0;                          // evolution iterations of this scan
+  std::vector<std::string> active_steps;     // step names, in chart order
+  std::set<std::string> level_actions;       // e.g. {"A", "B", "I", "J"}
+  std::vector<std::string> impulse_actions;  // e.g. {"L*"}, fired at this scan
+  bool stable = true;                        // false: no stable situation within the iteration limit
+  int iterations = 0;                        // evolution iterations of this scan
 };
 
 class SupervisorLogic {
  public:
   virtual ~SupervisorLogic() = default;
-  virtual void reset() = 0;                                  // back to the initial situation
-  virtual ScanOutput scan(const SignalValues& values) = 0;    // one scan
+  virtual void reset() = 0;                                 // back to the initial situation
+  virtual ScanOutput scan(const SignalValues& values) = 0;  // one scan
 };
 
 }  // namespace mx

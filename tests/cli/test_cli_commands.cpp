@@ -15,7 +15,9 @@ const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection
 const QString kInsperger = QStringLiteral(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj");
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) { return mx::test::runCli(args); }
+Run cli(const QStringList& args) {
+  return mx::test::runCli(args);
+}
 }  // namespace
 
 class TestCliCommands : public QObject {
@@ -62,8 +64,8 @@ class TestCliCommands : public QObject {
   }
 
   void lobesSdmMatchesZoaAtFullImmersion() {
-    const QStringList base{"lobes", kRubio, "--tool", "R1", "--from", "7000", "--to", "8500", "--step", "100",
-                           "--delta", "0", "--alpha", "1"};
+    const QStringList base{"lobes", kRubio,   "--tool", "R1",      "--from", "7000",    "--to",
+                           "8500",  "--step", "100",    "--delta", "0",      "--alpha", "1"};
     const Run zoa = cli(base);
     const Run sdm = cli(base + QStringList{"--method", "sdm", "--steps", "40"});
     QCOMPARE(sdm.code, 0);
@@ -76,8 +78,8 @@ class TestCliCommands : public QObject {
   void simulateJsonInterfaceAndCsv() {
     QTemporaryDir dir;
     const QString csv = dir.filePath("trace.csv");
-    const Run r = cli({"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "0.4924", "--feed", "0.2722",
-                       "--csv", csv});
+    const Run r = cli(
+        {"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "0.4924", "--feed", "0.2722", "--csv", csv});
     QCOMPARE(r.code, 0);
     for (const char* key : {"eta", "chip_ratio", "chatter", "chatter_frequency_Hz", "tooth_passing_Hz", "peak_force_N",
                             "peak_power_W", "suggested_speed_rpm"})
@@ -97,8 +99,8 @@ class TestCliCommands : public QObject {
 
   // A chattering cut: the chatter frequency and a Smith-Tlusty speed N = 60 f_c / (n_t k) come back.
   void simulateChatterSuggestsSpeed() {
-    const Run r = cli({"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "3", "--feed", "0.1",
-                       "--passes", "4"});
+    const Run r =
+        cli({"simulate", kRubio, "--tool", "R1", "--speed", "5800", "--depth", "3", "--feed", "0.1", "--passes", "4"});
     QCOMPARE(r.code, 0);
     QVERIFY(r.json["chatter"].toBool());
     QVERIFY(r.json["eta"].toDouble() >= 1.3);
@@ -125,16 +127,18 @@ class TestCliCommands : public QObject {
     QTest::newRow("unknown tool") << QStringList{"lobes", kRubio, "--tool", "X9"} << "X9";
     QTest::newRow("missing tool flag") << QStringList{"lobes", kRubio} << "--tool";
     QTest::newRow("bad method") << QStringList{"lobes", kRubio, "--tool", "R1", "--method", "fem"} << "--method";
-    QTest::newRow("delta above decay rate") << QStringList{"lobes", kRubio, "--tool", "R1", "--delta", "500"} << "delta";
+    QTest::newRow("delta above decay rate")
+        << QStringList{"lobes", kRubio, "--tool", "R1", "--delta", "500"} << "delta";
     QTest::newRow("alpha > 1") << QStringList{"lobes", kRubio, "--tool", "R1", "--alpha", "1.5"} << "--alpha";
-    QTest::newRow("to < from") << QStringList{"lobes", kRubio, "--tool", "R1", "--from", "9000", "--to", "100"} << "--to";
+    QTest::newRow("to < from") << QStringList{"lobes", kRubio, "--tool", "R1", "--from", "9000", "--to", "100"}
+                               << "--to";
     QTest::newRow("steps too few") << QStringList{"lobes", kRubio, "--tool", "R1", "--method", "sdm", "--steps", "2"}
                                    << "--steps";
-    QTest::newRow("nan speed") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "nan", "--depth", "1",
-                                              "--feed", "0.1"}
+    QTest::newRow("nan speed") << QStringList{"simulate", kRubio,    "--tool", "R1",     "--speed",
+                                              "nan",      "--depth", "1",      "--feed", "0.1"}
                                << "--speed";
-    QTest::newRow("negative depth") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "5000", "--depth",
-                                                   "-1", "--feed", "0.1"}
+    QTest::newRow("negative depth") << QStringList{"simulate", kRubio,    "--tool", "R1",     "--speed",
+                                                   "5000",     "--depth", "-1",     "--feed", "0.1"}
                                     << "--depth";
     QTest::newRow("missing feed") << QStringList{"simulate", kRubio, "--tool", "R1", "--speed", "5000", "--depth", "1"}
                                   << "--feed";
@@ -151,8 +155,8 @@ class TestCliCommands : public QObject {
   }
 
   void inspergerLowImmersionSdmRuns() {
-    const Run r = cli({"lobes", kInsperger, "--tool", "LOW", "--method", "sdm", "--from", "9000", "--to", "12000",
-                       "--step", "500"});
+    const Run r = cli(
+        {"lobes", kInsperger, "--tool", "LOW", "--method", "sdm", "--from", "9000", "--to", "12000", "--step", "500"});
     QCOMPARE(r.code, 0);
     for (const QJsonValue& v : r.json["blim_mm"].toArray()) QVERIFY(v.isNull() || v.toDouble() > 0.0);
   }

@@ -61,7 +61,8 @@ class TestCliControl : public QObject {
   void sweep() {
     const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--sweep-beta=-1:1:0.1"});
     QCOMPARE(r.code, 0);
-    const QJsonArray beta = r.json["beta"].toArray(), jc = r.json["Jc"].toArray(), unstable = r.json["unstable_zero"].toArray();
+    const QJsonArray beta = r.json["beta"].toArray(), jc = r.json["Jc"].toArray(),
+                     unstable = r.json["unstable_zero"].toArray();
     QCOMPARE(beta.size(), 21);
     QCOMPARE(jc.size(), 21);
     const double threshold = r.json["threshold_beta"].toDouble();

@@ -13,7 +13,9 @@ namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");  // Aluminium; R1, R2
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) { return mx::test::runCli(args); }
+Run cli(const QStringList& args) {
+  return mx::test::runCli(args);
+}
 
 QString point(const QString& tool, const QString& time, const QString& source = "operator", double mrr = 1.5) {
   return QString(R"({"tool":"%1","time":"%2","source":"%3","weights":[0.25,0.25,0.25,0.25],)"
@@ -37,8 +39,10 @@ class TestCliHistory : public QObject {
   void entriesHaveTheFixedKeys() {
     const QString db = dir_.filePath("h.sqlite");
     QCOMPARE(cli({"history", kRubio, "--db", db, "--add-json", point("R1", "2024-05-01T08:00:00.000Z")}).code, 0);
-    QCOMPARE(cli({"history", kRubio, "--db", db, "--add-json", point("R2", "2024-05-01T09:00:00.000Z", "rule")}).code, 0);
-    const Run r = cli({"history", kRubio, "--db", db, "--add-json", point("R1", "2024-05-01T10:00:00.000Z", "feedback", 2.5)});
+    QCOMPARE(cli({"history", kRubio, "--db", db, "--add-json", point("R2", "2024-05-01T09:00:00.000Z", "rule")}).code,
+             0);
+    const Run r =
+        cli({"history", kRubio, "--db", db, "--add-json", point("R1", "2024-05-01T10:00:00.000Z", "feedback", 2.5)});
     QCOMPARE(r.code, 0);
     QCOMPARE(keys(r.json), (QSet<QString>{"entries"}));
     const QJsonArray entries = r.json["entries"].toArray();

@@ -49,8 +49,8 @@ class TestCliPareto : public QObject {
     QFETCH(QStringList, flags);
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", kCase} + flags);
     QVERIFY2(r.code == 0, qPrintable(r.err));
-    for (const char* key : {"q", "feed_velocity_mm_s", "mrr_cm3_s", "tol", "surf", "ros", "eta", "power_W", "weights",
-                            "pareto_set"})
+    for (const char* key :
+         {"q", "feed_velocity_mm_s", "mrr_cm3_s", "tol", "surf", "ros", "eta", "power_W", "weights", "pareto_set"})
       QVERIFY2(r.json.contains(key), key);
     const QJsonObject q = r.json["q"].toObject();
     for (const char* key : {"speed_rpm", "depth_mm", "feed_mm_per_tooth"}) QVERIFY2(q.contains(key), key);
@@ -153,7 +153,8 @@ class TestCliPareto : public QObject {
   void operatorRulesRestrictSpeed() {
     QTemporaryDir dir, free_dir;
     const QStringList weights{"--w", "0.1,0.6,0.1,0.2"};
-    QJsonArray rules_json{"# shop rules", "# (speed rule)", "if material.name == \"Aluminium\" then advise \"use coolant\"",
+    QJsonArray rules_json{"# shop rules", "# (speed rule)",
+                          "if material.name == \"Aluminium\" then advise \"use coolant\"",
                           "if machine.max_spindle_rpm < 3000 then depth_mm <= 0.1", "weight.ros >= 0.3"};
     auto rulesMutation = [&] {
       return "operator_rules=" + QString::fromUtf8(QJsonDocument(rules_json).toJson(QJsonDocument::Compact));
@@ -203,9 +204,10 @@ class TestCliPareto : public QObject {
     QTest::newRow("syntax") << R"(["speed_rpm <= 9000", "if tool.diameter_mm < 10 speed_rpm <= 8000"])"
                             << QStringList{"operator_rules[1]: line 2, column 26: expected 'then'"};
     QTest::newRow("contradiction") << R"(["speed_rpm <= 3000", "if tool.teeth >= 3 then speed_rpm >= 4000"])"
-                                   << QStringList{"operator_rules[0] (line 1) 'speed_rpm <= 3000'",
-                                                  "operator_rules[1] (line 2) 'if tool.teeth >= 3 then speed_rpm >= 4000'",
-                                                  "no speed_rpm satisfies both"};
+                                   << QStringList{
+                                          "operator_rules[0] (line 1) 'speed_rpm <= 3000'",
+                                          "operator_rules[1] (line 2) 'if tool.teeth >= 3 then speed_rpm >= 4000'",
+                                          "no speed_rpm satisfies both"};
     QTest::newRow("not an array") << R"("speed_rpm <= 9000")" << QStringList{"operator_rules: must be an array"};
   }
   void operatorRuleErrors() {
@@ -221,12 +223,11 @@ class TestCliPareto : public QObject {
   // (chip ratio ~1.45); the Smith-Tlusty speed is 60 f_c / (n_t k) and the re-selection is recorded.
   void feedbackOnChatter() {
     QTemporaryDir dir;
-    const QString path = caseWith(dir, {"tools/0/modes_x/0/damping_pct=1.0", "tools/0/modes_y/0/damping_pct=1.0",
-                                        "expert/alpha=1.0", "expert/delta_per_s=0.0",
-                                        "operation/radial_immersion=0.1"});
+    const QString path =
+        caseWith(dir, {"tools/0/modes_x/0/damping_pct=1.0", "tools/0/modes_y/0/damping_pct=1.0", "expert/alpha=1.0",
+                       "expert/delta_per_s=0.0", "operation/radial_immersion=0.1"});
     const QString db = dir.filePath("learning.sqlite");
-    const mx::test::CliRun r =
-        mx::test::runCli({"pareto", path, "--w", "0,1,0,0", "--feedback", "--db", db}, 600000);
+    const mx::test::CliRun r = mx::test::runCli({"pareto", path, "--w", "0,1,0,0", "--feedback", "--db", db}, 600000);
     QVERIFY2(r.code == 0, qPrintable(r.err));
     const QJsonObject fb = r.json["feedback"].toObject();
     QVERIFY2(fb["chatter"].toBool(), qPrintable(QJsonDocument(fb).toJson()));

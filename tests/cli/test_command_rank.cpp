@@ -14,7 +14,9 @@ namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) { return mx::test::runCli(args); }
+Run cli(const QStringList& args) {
+  return mx::test::runCli(args);
+}
 
 // The Rubio project with one machine value replaced, written to dir.
 QString rubioWith(const QTemporaryDir& dir, const QString& key, double value) {
@@ -69,8 +71,9 @@ class TestCliRank : public QObject {
     QVERIFY(first["power_W"].toDouble() <= 745.3);
     QCOMPARE(first["q"].toObject(), q);
     // mm^3/min = a b s_t n_t N
-    QCOMPARE_LE(std::abs(first["mrr_mm3_min"].toDouble() / (30.0 * q["depth_mm"].toDouble() *
-                                                             q["feed_mm_per_tooth"].toDouble() * 3 * 5800.0) - 1),
+    QCOMPARE_LE(std::abs(first["mrr_mm3_min"].toDouble() /
+                             (30.0 * q["depth_mm"].toDouble() * q["feed_mm_per_tooth"].toDouble() * 3 * 5800.0) -
+                         1),
                 1e-9);
     const QJsonObject qss = r.json["q_star_star"].toObject();
     for (const char* key : {"speed_rpm", "depth_mm", "feed_mm_per_tooth"}) QVERIFY2(qss.contains(key), key);
@@ -157,9 +160,9 @@ class TestCliRank : public QObject {
   // excludes the tool with the reason.
   void operatorRulesInRank() {
     QTemporaryDir dir;
-    const QString path = rubioWithRules(dir, {"if tool.id == \"R1\" then speed_rpm <= 3000",
-                                              "if material.name != \"none\" then weight.c3 >= 0.5",
-                                              "if tool.teeth >= 2 then advise depth_mm <= 0.3 because \"light cuts\""});
+    const QString path = rubioWithRules(
+        dir, {"if tool.id == \"R1\" then speed_rpm <= 3000", "if material.name != \"none\" then weight.c3 >= 0.5",
+              "if tool.teeth >= 2 then advise depth_mm <= 0.3 because \"light cuts\""});
     const Run r = cli({"rank", path, "--no-simulation"});
     QCOMPARE(r.code, 0);
     const QJsonArray c = r.json["c"].toArray();
@@ -175,7 +178,8 @@ class TestCliRank : public QObject {
     const double depth = r.json["q_star"].toObject()["depth_mm"].toDouble();
     QCOMPARE(advice["followed"].toBool(), depth <= 0.3);
 
-    const Run excluded = cli({"rank", rubioWithRules(dir, {"if tool.teeth == 2 then speed_rpm <= 10"}), "--no-simulation"});
+    const Run excluded =
+        cli({"rank", rubioWithRules(dir, {"if tool.teeth == 2 then speed_rpm <= 10"}), "--no-simulation"});
     QCOMPARE(excluded.code, 0);
     QCOMPARE(excluded.json["ranking"].toArray().size(), 1);
     QCOMPARE(excluded.json["excluded"].toArray()[0].toObject()["tool"].toString(), QString("R2"));

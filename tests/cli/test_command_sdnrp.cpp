@@ -3,8 +3,8 @@
 // writes a program that differs from the input only in F/S words and comments, with a header, and the
 // CSV table; the adaptive controller is used when the project has a control section; bad input exits 2.
 #include <QFile>
-#include <QRegularExpression>
 #include <QJsonArray>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <cmath>
 
@@ -62,7 +62,8 @@ class TestCliSdnrp : public QObject {
   }
   void sdnrpCsvAndErrors() {
     QTemporaryDir dir;
-    const mx::test::CliRun r = mx::test::runCli({"sdnrp", kSdnrp, "--ra", "0.81", "--seconds", "2", "--csv", dir.filePath("s.csv")});
+    const mx::test::CliRun r =
+        mx::test::runCli({"sdnrp", kSdnrp, "--ra", "0.81", "--seconds", "2", "--csv", dir.filePath("s.csv")});
     QCOMPARE(r.code, 0);
     const QStringList rows = lines(dir.filePath("s.csv"));
     QVERIFY(rows[0].startsWith("t_s,Ra_um,Ra_dynamic_um,F_N,F_dynamic_N,feed_mm_min,speed_rpm"));
@@ -90,7 +91,8 @@ class TestCliSdnrp : public QObject {
     const QString out = dir.filePath("out.nc"), csv = dir.filePath("out.csv");
     const mx::test::CliRun r = mx::test::runCli({"override", program, project, "--out", out, "--csv", csv});
     QCOMPARE(r.code, 0);
-    for (const char* key : {"controller", "blocks", "changed_blocks", "warnings", "feed_moves"}) QVERIFY2(r.json.contains(key), key);
+    for (const char* key : {"controller", "blocks", "changed_blocks", "warnings", "feed_moves"})
+      QVERIFY2(r.json.contains(key), key);
     QVERIFY(r.json["changed_blocks"].toInt() >= 1);
     QCOMPARE(r.json.contains("closed_loop"), project == kAdaptive);
     const QStringList in = lines(program), res = lines(out);
@@ -109,13 +111,14 @@ class TestCliSdnrp : public QObject {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message");
     QTest::newRow("no --out") << QStringList{"override", kPocket, kSdnrp} << "--out";
-    QTest::newRow("one positional") << QStringList{"override", kSdnrp, "--out", "OUT"} << "expected PROGRAM.nc and PROJECT";
+    QTest::newRow("one positional") << QStringList{"override", kSdnrp, "--out", "OUT"}
+                                    << "expected PROGRAM.nc and PROJECT";
     QTest::newRow("controller") << QStringList{"override", kPocket, kSdnrp, "--out", "OUT", "--controller", "pid"}
                                 << "--controller = 'pid': must be adaptive or model-based";
-    QTest::newRow("missing program") << QStringList{"override", "MISSING", kSdnrp, "--out", "OUT"}
-                                     << "missing.nc";
-    QTest::newRow("adaptive without control") << QStringList{"override", kPocket, kSdnrp, "--out", "OUT", "--controller", "adaptive"}
-                                              << "section 'control' is missing";
+    QTest::newRow("missing program") << QStringList{"override", "MISSING", kSdnrp, "--out", "OUT"} << "missing.nc";
+    QTest::newRow("adaptive without control")
+        << QStringList{"override", kPocket, kSdnrp, "--out", "OUT", "--controller", "adaptive"}
+        << "section 'control' is missing";
   }
   void overrideErrors() {
     QFETCH(QStringList, args);

@@ -86,7 +86,8 @@ class TestCliSupervise : public QObject {
     const mx::test::CliRun r = mx::test::runCli({"supervise", path, "--controller", "smc1"}, 300000);
     QCOMPARE(r.code, 0);
     int unstable = 0;
-    for (const QJsonValue& e : r.json["events"].toArray()) unstable += e.toObject()["type"].toString() == "logic_unstable";
+    for (const QJsonValue& e : r.json["events"].toArray())
+      unstable += e.toObject()["type"].toString() == "logic_unstable";
     QVERIFY(unstable >= 1);
     QVERIFY(unstable <= 10);
   }
@@ -94,16 +95,18 @@ class TestCliSupervise : public QObject {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QString>("controller");
     QTest::addColumn<QString>("message");
-    QTest::newRow("controller") << QStringList{} << "pid" << "--controller = 'pid': must be one of none, smc1, smc2";
-    QTest::newRow("receptivity") << QStringList{"supervisor/charts/smc1/transitions/2/receptivity=\"(b and\""}
-                                 << "smc1" << "supervisor.charts.smc1.transitions[2].receptivity";
-    QTest::newRow("unknown signal") << QStringList{"supervisor/charts/smc1/transitions/2/receptivity=\"z\""}
-                                    << "smc1" << "supervisor.charts.smc1.transitions[2]";
+    QTest::newRow("controller") << QStringList{} << "pid"
+                                << "--controller = 'pid': must be one of none, smc1, smc2";
+    QTest::newRow("receptivity") << QStringList{"supervisor/charts/smc1/transitions/2/receptivity=\"(b and\""} << "smc1"
+                                 << "supervisor.charts.smc1.transitions[2].receptivity";
+    QTest::newRow("unknown signal") << QStringList{"supervisor/charts/smc1/transitions/2/receptivity=\"z\""} << "smc1"
+                                    << "supervisor.charts.smc1.transitions[2]";
     QTest::newRow("no target") << QStringList{"supervisor/charts/smc2/transitions/8/to=[]"} << "smc2"
                                << "supervisor.charts.smc2.transitions[8]";
     QTest::newRow("event type") << QStringList{"supervisor/events/0/type=\"lunch\""} << "smc1"
                                 << "supervisor.events[0].type = 'lunch'";
-    QTest::newRow("no section") << QStringList{"-supervisor"} << "none" << "section 'supervisor' is missing";
+    QTest::newRow("no section") << QStringList{"-supervisor"} << "none"
+                                << "section 'supervisor' is missing";
     QTest::newRow("pass depth") << QStringList{"supervisor/passes_mm/smc1/0=50"} << "smc1"
                                 << "supervisor.passes_mm.smc1[0] = 50: must be a depth in (0, 20] mm";
   }

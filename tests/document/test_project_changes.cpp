@@ -13,7 +13,9 @@ namespace {
 
 using S = ProjectSection;
 
-Project example(const char* name) { return loadProject(QString(MX_PROJECTS_DIR "/") + name); }
+Project example(const char* name) {
+  return loadProject(QString(MX_PROJECTS_DIR "/") + name);
+}
 
 // One project with every section: the Pareto case plus the other examples' process sections.
 Project everySection() {
@@ -45,8 +47,16 @@ const std::vector<Edit>& edits() {
       {"material Kt", [](Project& p) { p.material->Kt_N_mm2 += 10.0; }, S::Material},
       {"operation feed", [](Project& p) { p.operation->max_feed_per_tooth_mm += 0.01; }, S::Operation},
       {"expert alpha", [](Project& p) { p.expert->alpha = 0.9; }, S::Expert},
-      {"expert c", [](Project& p) { p.expert->c = {0.5, 0.25, 0.25}; }, S::ExpertWeights},
-      {"expert cf", [](Project& p) { p.expert->cf = {0.9, 0.1}; }, S::ExpertWeights},
+      {"expert c",
+       [](Project& p) {
+         p.expert->c = {0.5, 0.25, 0.25};
+       },
+       S::ExpertWeights},
+      {"expert cf",
+       [](Project& p) {
+         p.expert->cf = {0.9, 0.1};
+       },
+       S::ExpertWeights},
       {"expert removed", [](Project& p) { p.expert.reset(); }, S::Expert | S::ExpertWeights},
       {"control rpm", [](Project& p) { *p.control->spindle_rpm += 100.0; }, S::Control},
       {"control beta", [](Project& p) { p.control->beta = 0.5; }, S::ControlBeta},
@@ -55,7 +65,10 @@ const std::vector<Edit>& edits() {
       {"part_program speed", [](Project& p) { p.part_program->speed_rpm = 4321.0; }, S::PartProgram},
       {"supervisor rpm", [](Project& p) { p.supervisor->spindle_rpm = 777.0; }, S::Supervisor},
       {"pareto taylor", [](Project& p) { p.pareto->taylor->K *= 2.0; }, S::Pareto},
-      {"pareto weights", [](Project& p) { p.pareto->weights = std::vector<double>{0.1, 0.2, 0.3, 0.4}; },
+      {"pareto weights",
+       [](Project& p) {
+         p.pareto->weights = std::vector<double>{0.1, 0.2, 0.3, 0.4};
+       },
        S::ParetoWeights},
       {"operator rules", [](Project& p) { p.operator_rules->append("IF tool.teeth >= 4 THEN depth_mm <= 2"); },
        S::Rules},

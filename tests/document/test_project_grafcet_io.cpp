@@ -30,7 +30,9 @@ const char* kSmc1 = R"({"name": "SMC I",
   {"id": 6, "from": [4], "to": [2], "receptivity": "b'", "priority": 2},
   {"id": 7, "from": [5], "to": [2], "receptivity": "a'"}]})";
 
-QJsonObject parse(const char* text) { return QJsonDocument::fromJson(text).object(); }
+QJsonObject parse(const char* text) {
+  return QJsonDocument::fromJson(text).object();
+}
 
 // Reads and checks, as the project load and the supervised run do.
 GrafcetChart loadChart(const QJsonValue& v, const QString& path, const std::optional<std::set<std::string>>& known) {
@@ -165,10 +167,11 @@ class TestGrafcetJson : public QObject {
         {"name", ""},
         {"steps", QJsonArray{QJsonObject{{"id", 1}, {"name", "S1"}, {"initial", true}},
                              QJsonObject{{"id", 2}, {"name", "S2"}, {"initial", false}, {"actions", QJsonArray()}}}},
-        {"transitions", QJsonArray{QJsonObject{{"id", 1}, {"from", QJsonArray{1}}, {"to", QJsonArray{2}},
-                                               {"receptivity", "a"}},
-                                   QJsonObject{{"id", 2}, {"from", QJsonArray{2}}, {"to", QJsonArray{1}},
-                                               {"receptivity", "a'"}, {"priority", 1}}}}};
+        {"transitions",
+         QJsonArray{
+             QJsonObject{{"id", 1}, {"from", QJsonArray{1}}, {"to", QJsonArray{2}}, {"receptivity", "a"}},
+             QJsonObject{
+                 {"id", 2}, {"from", QJsonArray{2}}, {"to", QJsonArray{1}}, {"receptivity", "a'"}, {"priority", 1}}}}};
     const GrafcetChartSpec read = grafcetChartFromJson(chart, "c");
     QCOMPARE(grafcetChartToJson(read), chart);
     QCOMPARE(read.steps[1].defaults_written, (QStringList{"initial", "actions"}));
@@ -234,38 +237,60 @@ class TestGrafcetJson : public QObject {
     QTest::addColumn<QString>("json");     // the new value, as JSON (empty: remove the key)
     QTest::addColumn<QString>("error");
     const QString p = "supervisor.charts.smc1";
-    QTest::newRow("receptivity syntax") << "transitions/3/receptivity" << "\"(a b\""
+    QTest::newRow("receptivity syntax") << "transitions/3/receptivity"
+                                        << "\"(a b\""
                                         << p + ".transitions[3].receptivity: line 1, column 4: expected ')'";
-    QTest::newRow("unknown signal") << "transitions/6/receptivity" << "\"z'\""
-                                    << p + ".transitions[6].receptivity: unknown signal 'z'";
-    QTest::newRow("no source") << "transitions/2/from" << "[]" << p + ".transitions[2].from: the transition has no source step";
-    QTest::newRow("no target") << "transitions/2/to" << "[]" << p + ".transitions[2].to: the transition has no target step";
-    QTest::newRow("unknown target step") << "transitions/2/to" << "[3, 12]" << p + ".transitions[2].to: unknown step 12";
-    QTest::newRow("empty initial situation") << "steps/0/initial" << "false"
-                                             << p + ".steps: empty initial situation: no step is marked initial";
-    QTest::newRow("duplicate step id") << "steps/4/id" << "3" << p + ".steps[4].id: duplicate step id 3 (also step #3 in the list)";
-    QTest::newRow("duplicate transition id") << "transitions/6/id" << "1"
-                                             << p + ".transitions[6].id: duplicate transition id 1 (also transition #1 in the list)";
-    QTest::newRow("unreachable") << "transitions/0/to" << "[1]"
-                                 << p + ".steps[1]: unreachable step 'No Contact and No Chatter': no transition from the initial situation leads to it";
-    QTest::newRow("id not an integer") << "steps/1/id" << "1.5" << p + ".steps[1].id = 1.5: must be an integer in [0, 1000000000]";
-    QTest::newRow("negative id") << "transitions/0/id" << "-1" << p + ".transitions[0].id = -1: must be an integer in [0, 1000000000]";
-    QTest::newRow("id missing") << "steps/2/id" << "" << p + ".steps[2].id: missing";
-    QTest::newRow("name missing") << "steps/2/name" << "" << p + ".steps[2].name: missing";
-    QTest::newRow("initial not bool") << "steps/0/initial" << "1" << p + ".steps[0].initial = 1: must be true or false";
-    QTest::newRow("action not a string") << "steps/1/actions" << "[\"A\", 3]"
-                                         << p + ".steps[1].actions[1] = 3: must be a string (\"A\", or \"L*\" for an impulse)";
-    QTest::newRow("from entry not an id") << "transitions/4/from" << "[\"4\"]"
-                                          << p + ".transitions[4].from[0] = \"4\": must be an integer in [0, 1000000000]";
-    QTest::newRow("receptivity not a string") << "transitions/4/receptivity" << "true"
-                                              << p + ".transitions[4].receptivity = true: must be a string";
-    QTest::newRow("priority") << "transitions/4/priority" << "\"high\""
+    QTest::newRow("unknown signal") << "transitions/6/receptivity"
+                                    << "\"z'\"" << p + ".transitions[6].receptivity: unknown signal 'z'";
+    QTest::newRow("no source") << "transitions/2/from"
+                               << "[]" << p + ".transitions[2].from: the transition has no source step";
+    QTest::newRow("no target") << "transitions/2/to"
+                               << "[]" << p + ".transitions[2].to: the transition has no target step";
+    QTest::newRow("unknown target step") << "transitions/2/to"
+                                         << "[3, 12]" << p + ".transitions[2].to: unknown step 12";
+    QTest::newRow("empty initial situation")
+        << "steps/0/initial"
+        << "false" << p + ".steps: empty initial situation: no step is marked initial";
+    QTest::newRow("duplicate step id") << "steps/4/id"
+                                       << "3" << p + ".steps[4].id: duplicate step id 3 (also step #3 in the list)";
+    QTest::newRow("duplicate transition id")
+        << "transitions/6/id"
+        << "1" << p + ".transitions[6].id: duplicate transition id 1 (also transition #1 in the list)";
+    QTest::newRow("unreachable") << "transitions/0/to"
+                                 << "[1]"
+                                 << p + ".steps[1]: unreachable step 'No Contact and No Chatter': no transition from "
+                                        "the initial situation leads to it";
+    QTest::newRow("id not an integer") << "steps/1/id"
+                                       << "1.5" << p + ".steps[1].id = 1.5: must be an integer in [0, 1000000000]";
+    QTest::newRow("negative id") << "transitions/0/id"
+                                 << "-1" << p + ".transitions[0].id = -1: must be an integer in [0, 1000000000]";
+    QTest::newRow("id missing") << "steps/2/id"
+                                << "" << p + ".steps[2].id: missing";
+    QTest::newRow("name missing") << "steps/2/name"
+                                  << "" << p + ".steps[2].name: missing";
+    QTest::newRow("initial not bool") << "steps/0/initial"
+                                      << "1" << p + ".steps[0].initial = 1: must be true or false";
+    QTest::newRow("action not a string")
+        << "steps/1/actions"
+        << "[\"A\", 3]" << p + ".steps[1].actions[1] = 3: must be a string (\"A\", or \"L*\" for an impulse)";
+    QTest::newRow("from entry not an id")
+        << "transitions/4/from"
+        << "[\"4\"]" << p + ".transitions[4].from[0] = \"4\": must be an integer in [0, 1000000000]";
+    QTest::newRow("receptivity not a string") << "transitions/4/receptivity"
+                                              << "true" << p + ".transitions[4].receptivity = true: must be a string";
+    QTest::newRow("priority") << "transitions/4/priority"
+                              << "\"high\""
                               << p + ".transitions[4].priority = \"high\": must be an integer in [0, 1000000000]";
-    QTest::newRow("steps not an array") << "steps" << "{}" << p + ".steps = (an object): must be an array";
-    QTest::newRow("steps missing") << "steps" << "" << p + ".steps: missing";
-    QTest::newRow("step not an object") << "steps/2" << "7" << p + ".steps[2] = 7: must be an object";
-    QTest::newRow("bad action") << "steps/3/actions" << "[\"L **\"]"
-                                << p + ".steps[3].actions: bad action 'L **': a name, with a trailing '*' for an impulse action";
+    QTest::newRow("steps not an array") << "steps"
+                                        << "{}" << p + ".steps = (an object): must be an array";
+    QTest::newRow("steps missing") << "steps"
+                                   << "" << p + ".steps: missing";
+    QTest::newRow("step not an object") << "steps/2"
+                                        << "7" << p + ".steps[2] = 7: must be an object";
+    QTest::newRow("bad action")
+        << "steps/3/actions"
+        << "[\"L **\"]"
+        << p + ".steps[3].actions: bad action 'L **': a name, with a trailing '*' for an impulse action";
   }
   void errorsNameTheJsonPath() {
     QFETCH(QString, pointer);
@@ -276,7 +301,10 @@ class TestGrafcetJson : public QObject {
                                             : QJsonDocument::fromJson(("[" + json + "]").toUtf8()).array().at(0);
     const QStringList parts = pointer.split('/');
     if (parts.size() == 1) {
-      if (json.isEmpty()) root.remove(parts[0]); else root[parts[0]] = value;
+      if (json.isEmpty())
+        root.remove(parts[0]);
+      else
+        root[parts[0]] = value;
     } else {
       QJsonArray list = root[parts[0]].toArray();
       const int i = parts[1].toInt();
@@ -284,7 +312,10 @@ class TestGrafcetJson : public QObject {
         list[i] = value;
       } else {
         QJsonObject element = list[i].toObject();
-        if (json.isEmpty()) element.remove(parts[2]); else element[parts[2]] = value;
+        if (json.isEmpty())
+          element.remove(parts[2]);
+        else
+          element[parts[2]] = value;
         list[i] = element;
       }
       root[parts[0]] = list;
@@ -305,10 +336,11 @@ class TestGrafcetJson : public QObject {
     root["transitions"] = t;
     const GrafcetChart c = grafcetChartFromJson(root, "c").chart;
     const QStringList errors = grafcetChartErrors(c, "c", std::set<std::string>{"b"});
-    QCOMPARE(errors, (QStringList{
-        "c.transitions[0].receptivity: line 1, column 6: expected a signal, a number or '(', found the end of the expression",
-        "c.transitions[1].receptivity: unknown signal 'a'", "c.transitions[4].receptivity: unknown signal 'a'",
-        "c.transitions[6].receptivity: unknown signal 'a'"}));
+    QCOMPARE(errors, (QStringList{"c.transitions[0].receptivity: line 1, column 6: expected a signal, a number or '(', "
+                                  "found the end of the expression",
+                                  "c.transitions[1].receptivity: unknown signal 'a'",
+                                  "c.transitions[4].receptivity: unknown signal 'a'",
+                                  "c.transitions[6].receptivity: unknown signal 'a'"}));
     QVERIFY(grafcetChartErrors(c, "c").size() == 1);  // without the signal check
   }
 };

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "document/project.h"
 #include "services/control_request.h"
 #include "services/sdnrp_request.h"
-#include "document/project.h"
 #include "support/project_files.h"
 #include "test_registry.h"
 

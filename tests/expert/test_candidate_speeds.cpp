@@ -1,10 +1,9 @@
 // Rule 7.2 candidate speeds N = 60 f_n / (n_t k) merged into the regular grid.
+#include <algorithm>
 #include <cmath>
 
-#include <algorithm>
-
-#include "expert/candidate_speeds.h"
 #include "core/invalid_input.h"
+#include "expert/candidate_speeds.h"
 #include "support/fixtures.h"
 #include "test_registry.h"
 
@@ -25,7 +24,7 @@ class TestCandidateSpeeds : public QObject {
   void mergedGrid_data() {
     QTest::addColumn<bool>("modal");
     QTest::addColumn<int>("count");
-    QTest::newRow("regular only") << false << 6;     // 800, 1800, ..., 5800
+    QTest::newRow("regular only") << false << 6;       // 800, 1800, ..., 5800
     QTest::newRow("with Rule 7.2") << true << 6 + 27;  // plus 60 f / (3 k) of 603 and 666 Hz in [800, 6000]
   }
   void mergedGrid() {

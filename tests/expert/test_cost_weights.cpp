@@ -1,8 +1,8 @@
 // Weights on the simplex (validation messages) and the Rule 6 step.
 #include <cmath>
 
-#include "expert/cost_weights.h"
 #include "core/invalid_input.h"
+#include "expert/cost_weights.h"
 #include "test_registry.h"
 
 using namespace mx;

@@ -3,8 +3,8 @@
 // and the invariants of the ranking (admissible points, MRR monotone in c2).
 #include <cmath>
 
-#include "expert/expert_session.h"
 #include "core/invalid_input.h"
+#include "expert/expert_session.h"
 #include "expert_fixtures.h"
 #include "test_registry.h"
 

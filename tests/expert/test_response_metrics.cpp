@@ -23,11 +23,10 @@ class TestResponseMetrics : public QObject {
   // q* of the example: stable, settles within a few tooth periods, no malfunction.
   void stablePoint() {
     const ResponseMetrics m = run(5800.0, 0.5048, 0.27);
-    qInfo("stable: t_s = %.4f s, M_p = %.4f, R12h = %.4f, R1ch = %.2e", m.settling_time_s, m.overshoot, m.r12h,
-          m.r1ch);
+    qInfo("stable: t_s = %.4f s, M_p = %.4f, R12h = %.4f, R1ch = %.2e", m.settling_time_s, m.overshoot, m.r12h, m.r1ch);
     QVERIFY(!m.chatter);
     QVERIFY(!m.malfunction());
-        QVERIFY(m.settling_time_s <= 2.0 / 290.0);  // within two tooth periods (0 here: within 5 % from the first)
+    QVERIFY(m.settling_time_s <= 2.0 / 290.0);  // within two tooth periods (0 here: within 5 % from the first)
     QVERIFY(m.overshoot >= 0.0 && m.overshoot < 0.05);
     QVERIFY(m.r12h > 0.0 && m.r12h < 2.0);
     QVERIFY(m.r1ch < 0.05);  // the non-harmonic content of a stable cut is a decayed transient

@@ -1,8 +1,8 @@
 // Eq. 18-20 over a candidate set: normalisation by the set's maxima, weights, and the choice of q**.
 #include <cmath>
 
-#include "expert/resultant_cost.h"
 #include "core/invalid_input.h"
+#include "expert/resultant_cost.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -29,8 +29,8 @@ class TestResultantCost : public QObject {
                                         candidate(1.01, 0.01, 0.25, 0.2, 0.02, 95)};
     CostWeights w;  // cr (0.8, 0.1, 0.1), ct = cf = (0.5, 0.5)
     const std::size_t best = selectByResultantCost(cs, w);
-    QCOMPARE_LE(std::abs(cs[0].time_cost - 1.0), 1e-15);      // 0.5 * 1 + 0.5 * 1
-    QCOMPARE_LE(std::abs(cs[1].time_cost - 0.5), 1e-15);      // 0.5 * 0.5 + 0.5 * 0.5
+    QCOMPARE_LE(std::abs(cs[0].time_cost - 1.0), 1e-15);        // 0.5 * 1 + 0.5 * 1
+    QCOMPARE_LE(std::abs(cs[1].time_cost - 0.5), 1e-15);        // 0.5 * 0.5 + 0.5 * 0.5
     QCOMPARE_LE(std::abs(cs[0].frequency_cost - 0.75), 1e-15);  // 0.5 * 1 + 0.5 * 0.5
     QCOMPARE_LE(std::abs(cs[1].frequency_cost - 0.75), 1e-15);  // 0.5 * 0.5 + 0.5 * 1
     QCOMPARE_LE(std::abs(cs[0].resultant - (0.8 + 0.1 + 0.075)), 1e-12);

@@ -27,8 +27,8 @@ class TestToolCost : public QObject {
     QTest::addColumn<bool>("aFirst");
     QTest::addColumn<bool>("bFirst");
     QTest::newRow("lower cost") << QList<double>{1.0, 1, 1, 1, 1} << QList<double>{1.1, 9, 0, 0, 0} << true << false;
-    QTest::newRow("cost tie, higher MRR") << QList<double>{1.0, 2, 9, 9, 9} << QList<double>{1.0 + 1e-12, 1, 1, 1, 1}
-                                          << true << false;
+    QTest::newRow("cost tie, higher MRR")
+        << QList<double>{1.0, 2, 9, 9, 9} << QList<double>{1.0 + 1e-12, 1, 1, 1, 1} << true << false;
     QTest::newRow("then lower power") << QList<double>{1.0, 2, 1, 9, 9} << QList<double>{1.0, 2, 2, 1, 1} << true
                                       << false;
     QTest::newRow("then lower speed") << QList<double>{1.0, 2, 1, 5, 9} << QList<double>{1.0, 2, 1, 6, 1} << true
@@ -36,8 +36,8 @@ class TestToolCost : public QObject {
     QTest::newRow("then lower depth") << QList<double>{1.0, 2, 1, 5, 1} << QList<double>{1.0, 2, 1, 5, 2} << true
                                       << false;
     QTest::newRow("all equal") << QList<double>{1.0, 2, 1, 5, 1} << QList<double>{1.0, 2, 1, 5, 1} << false << false;
-    QTest::newRow("cost beyond tolerance") << QList<double>{1.0 + 1e-8, 9, 0, 0, 0} << QList<double>{1.0, 1, 1, 1, 1}
-                                           << false << true;
+    QTest::newRow("cost beyond tolerance")
+        << QList<double>{1.0 + 1e-8, 9, 0, 0, 0} << QList<double>{1.0, 1, 1, 1, 1} << false << true;
   }
   void tieRule() {
     QFETCH(QList<double>, a);

@@ -13,8 +13,12 @@ constexpr double kPi = std::numbers::pi;
 GcodeRun runFile(const char* name) {
   return GcodeInterpreter().run(GcodeReader::readFile(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name));
 }
-GcodeRun runText(const char* text) { return GcodeInterpreter().run(GcodeReader::parse(text)); }
-bool near(double a, double b, double tol) { return std::abs(a - b) <= tol; }
+GcodeRun runText(const char* text) {
+  return GcodeInterpreter().run(GcodeReader::parse(text));
+}
+bool near(double a, double b, double tol) {
+  return std::abs(a - b) <= tol;
+}
 }  // namespace
 
 class TestGcodeInterpreter : public QObject {

@@ -2,8 +2,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "gcode/gcode_reader.h"
 #include "core/invalid_input.h"
+#include "gcode/gcode_reader.h"
 #include "support/gcode_samples.h"
 #include "test_registry.h"
 
@@ -25,8 +25,9 @@ class TestGcodeReader : public QObject {
     const std::string text = gcodeSample(file.toStdString());
     const auto p = GcodeReader::readFile(std::string(MX_TEST_DATA_DIR) + "/gcode/" + file.toStdString());
     QCOMPARE(p.text(), text);
-    QCOMPARE(static_cast<qsizetype>(p.blocks.size()),
-             static_cast<qsizetype>(std::count(text.begin(), text.end(), '\n') + (!text.empty() && text.back() != '\n')));
+    QCOMPARE(
+        static_cast<qsizetype>(p.blocks.size()),
+        static_cast<qsizetype>(std::count(text.begin(), text.end(), '\n') + (!text.empty() && text.back() != '\n')));
   }
   void emptyFile() {
     const auto p = GcodeReader::parse("");
@@ -88,10 +89,9 @@ class TestGcodeReader : public QObject {
       std::size_t column;
       const char* text;
     };
-    const W expected[] = {{1, 9, "G54"},  {2, 1, "T1"},       {2, 4, "M6"},       {3, 13, "M3"},
-                          {4, 13, "G40"}, {5, 1, "#100=2.5"}, {6, 4, "X[#100*2]"}, {7, 8, "R5"},
-                          {7, 11, "Q2"},  {8, 1, "G18"},      {9, 1, "@@"},       {9, 4, "garbage"},
-                          {9, 12, "line"}};
+    const W expected[] = {{1, 9, "G54"},      {2, 1, "T1"},        {2, 4, "M6"},   {3, 13, "M3"}, {4, 13, "G40"},
+                          {5, 1, "#100=2.5"}, {6, 4, "X[#100*2]"}, {7, 8, "R5"},   {7, 11, "Q2"}, {8, 1, "G18"},
+                          {9, 1, "@@"},       {9, 4, "garbage"},   {9, 12, "line"}};
     QCOMPARE(p.warnings.size(), std::size(expected));
     for (std::size_t i = 0; i < std::size(expected); ++i) {
       QCOMPARE(p.warnings[i].line, expected[i].line);
@@ -127,7 +127,9 @@ class TestGcodeReader : public QObject {
   void nonAsciiCommentsKept() {
     const auto p = GcodeReader::readFile(std::string(MX_TEST_DATA_DIR) + "/gcode/utf8_comments.nc");
     QVERIFY(p.warnings.empty());
-    QCOMPARE(p.blocks[0].comments[0].text, std::string("Tasche fr\xC3\xA4sen \xE2\x80\x93 Werkst\xC3\xBC" "ck \xC3\x98 80 mm, Spannung pr\xC3\xBC" "fen"));
+    QCOMPARE(p.blocks[0].comments[0].text, std::string("Tasche fr\xC3\xA4sen \xE2\x80\x93 Werkst\xC3\xBC"
+                                                       "ck \xC3\x98 80 mm, Spannung pr\xC3\xBC"
+                                                       "fen"));
     QCOMPARE(p.blocks[4].comments[0].text, std::string("\xE5\x88\x87\xE5\x89\x8A cutting"));
     QCOMPARE(p.blocks[4].find('F')->value, 700.0);
   }

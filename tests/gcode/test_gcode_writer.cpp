@@ -2,9 +2,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/invalid_input.h"
 #include "gcode/gcode_reader.h"
 #include "gcode/gcode_writer.h"
-#include "core/invalid_input.h"
 #include "support/gcode_samples.h"
 #include "test_registry.h"
 

@@ -29,7 +29,7 @@ class TestGrafcetExpression : public QObject {
     QTest::newRow("||") << "b || b" << false;
     QTest::newRow("not") << "not b" << true;
     QTest::newRow("!") << "!a" << false;
-    QTest::newRow("and before or") << "a or b and b" << true;          // a or (b and b)
+    QTest::newRow("and before or") << "a or b and b" << true;  // a or (b and b)
     QTest::newRow("parentheses") << "(a or b) and b" << false;
     QTest::newRow("not binds tighter than and") << "not b and a" << true;
     QTest::newRow("not of comparison") << "not x > 3" << true;
@@ -116,8 +116,8 @@ class TestGrafcetExpression : public QObject {
     QTest::newRow("unmatched )") << "a)" << 1 << 2 << "line 1, column 2: unmatched ')'";
     QTest::newRow("empty") << "" << 1 << 1 << "line 1, column 1: empty receptivity";
     QTest::newRow("blank") << "   " << 1 << 4 << "line 1, column 4: empty receptivity";
-    QTest::newRow("dangling and") << "a and" << 1 << 6
-                                  << "line 1, column 6: expected a signal, a number or '(', found the end of the expression";
+    QTest::newRow("dangling and")
+        << "a and" << 1 << 6 << "line 1, column 6: expected a signal, a number or '(', found the end of the expression";
     QTest::newRow("two operands") << "a b" << 1 << 3 << "line 1, column 3: expected an operator, found 'b'";
     QTest::newRow("bad character") << "a # b" << 1 << 3 << "line 1, column 3: unexpected character '#'";
     QTest::newRow("single &") << "a & b" << 1 << 3 << "line 1, column 3: unexpected character '&'";
@@ -125,8 +125,9 @@ class TestGrafcetExpression : public QObject {
                                         << "line 1, column 7: comparisons cannot be chained; use 'and'";
     QTest::newRow("prime first") << "'a" << 1 << 1 << "line 1, column 1: expected a signal, a number or '(', found '''";
     QTest::newRow("bad number") << "x > 3abc" << 1 << 6 << "line 1, column 6: unexpected 'a' in a number";
-    QTest::newRow("second line") << "a and\n   (b or" << 2 << 9
-                                 << "line 2, column 9: expected a signal, a number or '(', found the end of the expression";
+    QTest::newRow("second line")
+        << "a and\n   (b or" << 2 << 9
+        << "line 2, column 9: expected a signal, a number or '(', found the end of the expression";
     QTest::newRow("after typographic prime") << "a\u2019 )" << 1 << 4 << "line 1, column 4: unmatched ')'";
   }
   void parseErrors() {

@@ -19,7 +19,8 @@ using Actions = std::set<std::string>;
 GrafcetStep step(int id, const std::string& name, std::vector<std::string> actions = {}, bool initial = false) {
   return {id, name, initial, std::move(actions)};
 }
-GrafcetTransition transition(int id, std::vector<int> from, std::vector<int> to, const std::string& r, int priority = 1) {
+GrafcetTransition transition(int id, std::vector<int> from, std::vector<int> to, const std::string& r,
+                             int priority = 1) {
   return {id, std::move(from), std::move(to), r, priority};
 }
 
@@ -29,17 +30,12 @@ GrafcetTransition transition(int id, std::vector<int> from, std::vector<int> to,
 GrafcetChart smc1() {
   GrafcetChart c;
   c.name = "SMC I";
-  c.steps = {step(1, "Initialize Modules", {"L*"}, true),
-             step(2, "No Contact and No Chatter", {"A", "B", "I", "J"}),
+  c.steps = {step(1, "Initialize Modules", {"L*"}, true), step(2, "No Contact and No Chatter", {"A", "B", "I", "J"}),
              step(3, "Reset Modules", {"A", "B", "I", "J", "L*"}),
              step(4, "Contact and No Chatter", {"A", "B", "I", "J", "L"}),
              step(5, "Operator Feed Hold Active", {"A", "B", "C"})};
-  c.transitions = {transition(1, {1}, {2}, "true"),
-                   transition(2, {2}, {5}, "a", 1),
-                   transition(3, {2}, {3}, "b", 2),
-                   transition(4, {3}, {4}, "true"),
-                   transition(5, {4}, {5}, "a", 1),
-                   transition(6, {4}, {2}, "b'", 2),
+  c.transitions = {transition(1, {1}, {2}, "true"), transition(2, {2}, {5}, "a", 1), transition(3, {2}, {3}, "b", 2),
+                   transition(4, {3}, {4}, "true"), transition(5, {4}, {5}, "a", 1), transition(6, {4}, {2}, "b'", 2),
                    transition(7, {5}, {2}, "a'")};
   return c;
 }
@@ -138,8 +134,8 @@ class TestGrafcetInterpreter : public QObject {
   void independentTransitionsFireSimultaneously() {
     // 1 -> {2, 3} (divergence), 2 -> 4 on x, 3 -> 5 on y, {4, 5} -> 6 (synchronisation) on z.
     GrafcetChart c;
-    c.steps = {step(1, "S1", {}, true), step(2, "S2"), step(3, "S3"), step(4, "S4", {"P*"}), step(5, "S5", {"Q"}),
-               step(6, "S6", {"R"})};
+    c.steps = {step(1, "S1", {}, true), step(2, "S2"),        step(3, "S3"),
+               step(4, "S4", {"P*"}),   step(5, "S5", {"Q"}), step(6, "S6", {"R"})};
     c.transitions = {transition(1, {1}, {2, 3}, "go"), transition(2, {2}, {4}, "x"), transition(3, {3}, {5}, "y"),
                      transition(4, {4, 5}, {6}, "z"), transition(5, {6}, {1}, "false")};
     GrafcetInterpreter g(c);
@@ -190,8 +186,8 @@ class TestGrafcetInterpreter : public QObject {
     QCOMPARE(g.scan({}).impulse_actions, Names{"P*"});  // the initial activation
     const ScanOutput o = g.scan({{"go", 1}});
     QCOMPARE(g.activeStepIds(), (std::vector<int>{2, 3}));
-    QVERIFY(!o.stable);                   // T2 is still fireable
-    QVERIFY(o.impulse_actions.empty());   // S2 stayed active: not a new activation
+    QVERIFY(!o.stable);                  // T2 is still fireable
+    QVERIFY(o.impulse_actions.empty());  // S2 stayed active: not a new activation
     // A self-loop re-activates nothing either; it never stabilises.
     GrafcetChart loop;
     loop.steps = {step(1, "S1", {"P*", "Q"}, true)};
@@ -264,8 +260,8 @@ class TestGrafcetInterpreter : public QObject {
     QCOMPARE(g.scan({}).level_actions, Actions{"A"});
     const ScanOutput o = g.scan({{"go", 1}});
     QCOMPARE(o.iterations, 2);
-    QCOMPARE(o.level_actions, Actions{"B"});     // T of the transient S2 is not asserted
-    QCOMPARE(o.impulse_actions, Names{"U*"});    // but its impulse fires
+    QCOMPARE(o.level_actions, Actions{"B"});   // T of the transient S2 is not asserted
+    QCOMPARE(o.impulse_actions, Names{"U*"});  // but its impulse fires
     QCOMPARE(o.active_steps, Names{"S3"});
   }
 
@@ -291,7 +287,7 @@ class TestGrafcetInterpreter : public QObject {
       QCOMPARE(static_cast<int>(z.impulse_actions.size()), static_cast<int>(x.impulse_actions.size()));
     }
     QVERIFY_THROWS_EXCEPTION(InvalidInput, fast.bindSignals({"a"}));  // b missing
-    QVERIFY_THROWS_EXCEPTION(InvalidInput, fast.evolve({1.0}));      // size mismatch
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, fast.evolve({1.0}));       // size mismatch
     QCOMPARE(fast.actionNames(), (Names{"L*", "A", "B", "I", "J", "L", "C"}));
   }
 
@@ -302,7 +298,8 @@ class TestGrafcetInterpreter : public QObject {
       GrafcetInterpreter g(c);
       QFAIL("no error");
     } catch (const InvalidInput& e) {
-      QVERIFY2(std::string(e.what()).find("transition 3 (receptivity): line 1, column 8") != std::string::npos, e.what());
+      QVERIFY2(std::string(e.what()).find("transition 3 (receptivity): line 1, column 8") != std::string::npos,
+               e.what());
     }
     QVERIFY_THROWS_EXCEPTION(InvalidInput, GrafcetInterpreter(smc1(), GrafcetSettings{0}));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, GrafcetInterpreter(GrafcetChart{}));

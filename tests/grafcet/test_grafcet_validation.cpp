@@ -39,8 +39,9 @@ class TestGrafcetValidation : public QObject {
     using E = GrafcetElement;
     QTest::newRow("unknown signal") << 0 << K::UnknownSignal << E::Transition << 0 << 1
                                     << "transition 1 (receptivity): unknown signal 'go'";
-    QTest::newRow("unreachable step") << 1 << K::UnreachableStep << E::Step << 2 << 7
-                                      << "step 7: unreachable step 'Orphan': no transition from the initial situation leads to it";
+    QTest::newRow("unreachable step")
+        << 1 << K::UnreachableStep << E::Step << 2 << 7
+        << "step 7: unreachable step 'Orphan': no transition from the initial situation leads to it";
     QTest::newRow("no source") << 2 << K::TransitionWithoutSource << E::Transition << 1 << 2
                                << "transition 2 (from): the transition has no source step";
     QTest::newRow("no target") << 3 << K::TransitionWithoutTarget << E::Transition << 1 << 2
@@ -49,8 +50,9 @@ class TestGrafcetValidation : public QObject {
                                              << "chart (initial): empty initial situation: no step is marked initial";
     QTest::newRow("duplicate step id") << 5 << K::DuplicateStepId << E::Step << 2 << 1
                                        << "step 1 (id): duplicate step id 1 (also step #1 in the list)";
-    QTest::newRow("duplicate transition id") << 6 << K::DuplicateTransitionId << E::Transition << 2 << 1
-                                             << "transition 1 (id): duplicate transition id 1 (also transition #1 in the list)";
+    QTest::newRow("duplicate transition id")
+        << 6 << K::DuplicateTransitionId << E::Transition << 2 << 1
+        << "transition 1 (id): duplicate transition id 1 (also transition #1 in the list)";
     QTest::newRow("bad receptivity") << 7 << K::BadReceptivity << E::Transition << 1 << 2
                                      << "transition 2 (receptivity): line 1, column 7: expected ')'";
     QTest::newRow("unknown step") << 8 << K::UnknownStep << E::Transition << 0 << 1
@@ -60,8 +62,9 @@ class TestGrafcetValidation : public QObject {
                                          << "step 2 (name): duplicate step name 'Idle' (also step 1)";
     QTest::newRow("empty step name") << 11 << K::EmptyStepName << E::Step << 1 << 2
                                      << "step 2 (name): the step has no name";
-    QTest::newRow("bad action") << 12 << K::BadAction << E::Step << 1 << 2
-                                << "step 2 (actions): bad action '*': a name, with a trailing '*' for an impulse action";
+    QTest::newRow("bad action")
+        << 12 << K::BadAction << E::Step << 1 << 2
+        << "step 2 (actions): bad action '*': a name, with a trailing '*' for an impulse action";
   }
   void errorsNameTheirElement() {
     QFETCH(int, variant);
@@ -73,19 +76,46 @@ class TestGrafcetValidation : public QObject {
     GrafcetChart c = valid();
     std::vector<GrafcetIssue> issues;
     switch (variant) {
-      case 0: issues = validateGrafcetChart(c, {"stop"}); break;
-      case 1: c.steps.push_back({7, "Orphan", false, {}}); break;
-      case 2: c.transitions[1].from.clear(); break;
-      case 3: c.transitions[1].to.clear(); break;
-      case 4: c.steps[0].initial = false; break;
-      case 5: c.steps.push_back({1, "Again", false, {}}); break;
-      case 6: c.transitions.push_back({1, {2}, {1}, "true", 1}); break;
-      case 7: c.transitions[1].receptivity = "(stop a"; break;
-      case 8: c.transitions[0].to = {2, 9}; break;
-      case 9: c.steps.clear(); c.transitions.clear(); break;
-      case 10: c.steps[1].name = "Idle"; break;
-      case 11: c.steps[1].name.clear(); break;
-      case 12: c.steps[1].actions = {"*"}; break;
+      case 0:
+        issues = validateGrafcetChart(c, {"stop"});
+        break;
+      case 1:
+        c.steps.push_back({7, "Orphan", false, {}});
+        break;
+      case 2:
+        c.transitions[1].from.clear();
+        break;
+      case 3:
+        c.transitions[1].to.clear();
+        break;
+      case 4:
+        c.steps[0].initial = false;
+        break;
+      case 5:
+        c.steps.push_back({1, "Again", false, {}});
+        break;
+      case 6:
+        c.transitions.push_back({1, {2}, {1}, "true", 1});
+        break;
+      case 7:
+        c.transitions[1].receptivity = "(stop a";
+        break;
+      case 8:
+        c.transitions[0].to = {2, 9};
+        break;
+      case 9:
+        c.steps.clear();
+        c.transitions.clear();
+        break;
+      case 10:
+        c.steps[1].name = "Idle";
+        break;
+      case 11:
+        c.steps[1].name.clear();
+        break;
+      case 12:
+        c.steps[1].actions = {"*"};
+        break;
     }
     if (variant != 0) issues = validateGrafcetChart(c);
     QVERIFY(!issues.empty());
@@ -118,11 +148,12 @@ class TestGrafcetValidation : public QObject {
     const auto issues = validateGrafcetChart(c, {"go"});
     QStringList described;
     for (const auto& i : issues) described << QString::fromStdString(i.describe());
-    QCOMPARE(described, (QStringList{
-        "step 2 (actions): bad action 'two words': a name, with a trailing '*' for an impulse action",
-        "transition 1 (receptivity): line 1, column 7: expected a signal, a number or '(', found the end of the expression",
-        "transition 2 (to): the transition has no target step",
-        "transition 2 (receptivity): unknown signal 'stop'"}));
+    QCOMPARE(described,
+             (QStringList{"step 2 (actions): bad action 'two words': a name, with a trailing '*' for an impulse action",
+                          "transition 1 (receptivity): line 1, column 7: expected a signal, a number or '(', found the "
+                          "end of the expression",
+                          "transition 2 (to): the transition has no target step",
+                          "transition 2 (receptivity): unknown signal 'stop'"}));
   }
 };
 

@@ -13,17 +13,17 @@
 #include <QTemporaryDir>
 #include <cmath>
 
-#include "services/control_request.h"
 #include "control/closed_loop.h"
 #include "control_beta_slider.h"
 #include "control_feature.h"
 #include "control_metrics_panel.h"
 #include "control_view.h"
+#include "document/project.h"
 #include "machining_feature.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "part_program_panel.h"
-#include "document/project.h"
+#include "services/control_request.h"
 #include "support/cli_runner.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
@@ -40,7 +40,9 @@ bool open(gui::MainWindow& w, const char* project) {
   return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
 }
 
-gui::ControlFeature* control(const gui::MainWindow& w) { return w.findChild<gui::ControlFeature*>("controlFeature"); }
+gui::ControlFeature* control(const gui::MainWindow& w) {
+  return w.findChild<gui::ControlFeature*>("controlFeature");
+}
 gui::MachiningFeature* machining(const gui::MainWindow& w) {
   return w.findChild<gui::MachiningFeature*>("machiningFeature");
 }

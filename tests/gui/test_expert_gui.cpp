@@ -53,7 +53,7 @@ class TestExpertGui : public QObject {
     c2->setSliderDown(false);  // commit: an undoable edit of the project's weights
     QVERIFY(window.document()->isDirty());
     QCOMPARE_LE(std::abs(window.project()->expert->c[1] - 0.9), 1e-9);
-    QCOMPARE(window.expert()->session().get(), session);  // still the same session
+    QCOMPARE(window.expert()->session().get(), session);   // still the same session
     QCOMPARE(window.document()->undoStack()->count(), 1);  // the drag is one step
     QTest::qWait(300);  // past the lobes' 120 ms debounce: weights alone recompute no lobes
     QCOMPARE(lobes.count(), 0);

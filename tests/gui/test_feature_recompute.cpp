@@ -38,8 +38,7 @@ class TestFeatureRecompute : public QObject {
     row("pareto", ProjectSection::Pareto, Feature::ParetoStudy);
     row("pareto weights", ProjectSection::ParetoWeights, Feature::ParetoChoice);
     row("pareto and its weights", ProjectSection::Pareto | ProjectSection::ParetoWeights, Feature::ParetoStudy);
-    row("control", ProjectSection::Control,
-        Feature::ControlSweep | Feature::ControlRun | Feature::PartProgram);
+    row("control", ProjectSection::Control, Feature::ControlSweep | Feature::ControlRun | Feature::PartProgram);
     row("control beta", ProjectSection::ControlBeta, Feature::ControlRun);
     row("sdnrp", ProjectSection::Sdnrp, Feature::SurfaceFinish);
     row("force control", ProjectSection::ForceControl, Feature::PartProgram);

@@ -9,9 +9,9 @@
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "document/project_validation.h"
 #include "main_window.h"
 #include "model/cutting_force.h"
-#include "document/project_validation.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
 #include "test_registry.h"
@@ -87,8 +87,8 @@ class TestMainWindow : public QObject {
     const app::Project& project = *window.project();
     const MillingSetup setup = project.setupFor("R1");
     const auto& grid = *project.expert->grid;
-    const auto speeds = SpeedGrid{rpmToRevPerS(grid.speed_from_rpm), rpmToRevPerS(grid.speed_to_rpm),
-                                  rpmToRevPerS(10.0)}.values();
+    const auto speeds =
+        SpeedGrid{rpmToRevPerS(grid.speed_from_rpm), rpmToRevPerS(grid.speed_to_rpm), rpmToRevPerS(10.0)}.values();
     ZoaOptions o;
     o.delta_per_s = project.expert->delta_per_s;
     const StabilityBoundary boundary(computeZoaLobes(setup, speeds, o), project.expert->alpha);
@@ -98,7 +98,8 @@ class TestMainWindow : public QObject {
     QCOMPARE_LE(std::abs(readoutNumber(window, "power") - perf.peak_power_w), 0.05);
     QCOMPARE_LE(std::abs(readoutNumber(window, "dns") - revPerSToRpm(boundary.speedSecurity(n, b))), 0.5);
     QCOMPARE_LE(std::abs(readoutNumber(window, "mrr") - perf.mrr_m3_per_s * 1e9), 0.05);
-    QCOMPARE(window.readout()->text("verdict").startsWith("STABLE"), boundary.isStable(n, b) && perf.peak_power_w <= 745.3);
+    QCOMPARE(window.readout()->text("verdict").startsWith("STABLE"),
+             boundary.isStable(n, b) && perf.peak_power_w <= 745.3);
 
     // The whole drag is one undo step.
     window.document()->undoStack()->undo();
@@ -157,7 +158,7 @@ class TestMainWindow : public QObject {
     window.setRecoveryPolicy(gui::MainWindow::RecoveryPolicy::Recover);
     QVERIFY(window.openProject(path));
     QCOMPARE(window.project()->machine->spindle_power_W, 999.0);
-    QVERIFY(window.document()->isDirty());  // recovered, not yet saved
+    QVERIFY(window.document()->isDirty());   // recovered, not yet saved
     window.document()->undoStack()->undo();  // back to the file's content
     QCOMPARE(window.project()->machine->spindle_power_W, 745.3);
   }

@@ -13,6 +13,7 @@
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "document/project.h"
 #include "history_view.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
@@ -20,7 +21,6 @@
 #include "pareto_front_view.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
-#include "document/project.h"
 #include "requirements_panel.h"
 #include "test_registry.h"
 
@@ -64,8 +64,9 @@ class TestParetoGui : public QObject {
     int target = -1;
     for (int i = 0; i < view->points().size(); ++i)
       if (view->points()[i].weights && i != view->selectedIndex() &&
-          (target < 0 || std::abs(view->points()[i].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s) >
-                             std::abs(view->points()[target].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s)))
+          (target < 0 ||
+           std::abs(view->points()[i].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s) >
+               std::abs(view->points()[target].mrr_cm3_s - view->points()[view->selectedIndex()].mrr_cm3_s)))
         target = i;
     QVERIFY(target >= 0);
     const auto before = window.document()->point();
@@ -78,13 +79,14 @@ class TestParetoGui : public QObject {
     for (int i = 0; i < 4; ++i) {
       QCOMPARE_LE(std::abs(weightAt(window, i) - (*p.weights)[static_cast<std::size_t>(i)]), 1e-12);
       QCOMPARE_LE(std::abs(window.paretoWeightsPanel()->weights()[static_cast<std::size_t>(i)] -
-                           (*p.weights)[static_cast<std::size_t>(i)]), 1e-12);
+                           (*p.weights)[static_cast<std::size_t>(i)]),
+                  1e-12);
     }
     // The weights select a point with the clicked point's J (Rule 10.1 on the front).
     const auto& choice = *window.paretoChoice();
     double j = 0.0;
-    const ObjectiveVector s = study.table().normalise(study.table().evaluate(
-        rpmToRevPerS(p.speed_rpm), p.depth_mm * 1e-3, p.feed_mm_per_tooth * 1e-3).objectives);
+    const ObjectiveVector s = study.table().normalise(
+        study.table().evaluate(rpmToRevPerS(p.speed_rpm), p.depth_mm * 1e-3, p.feed_mm_per_tooth * 1e-3).objectives);
     for (std::size_t i = 0; i < 4; ++i) j += (*p.weights)[i] * s[i];
     QCOMPARE_LE(std::abs(choice.selection.j - j), 1e-9);
     QCOMPARE(view->selectedIndex(), target);
@@ -122,7 +124,9 @@ class TestParetoGui : public QObject {
     editor->textEdit()->setPlainText("speed_rpm <= 1500\nif tool.teeth >= 2 then advise depth_mm <= 0.01");
     QVERIFY(editor->check());
     QCOMPARE(app::projectToJson(*window.project()).value("operator_rules").toArray().size(), 2);
-    for (int i = 0; i < 60 && !(window.paretoChoice() && revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9); ++i)
+    for (int i = 0; i < 60 && !(window.paretoChoice() &&
+                                revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
+         ++i)
       shown.wait(1000);
     QVERIFY(revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
     window.setActiveTool(window.pareto()->study()->request().tool);

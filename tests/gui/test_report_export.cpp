@@ -12,12 +12,12 @@
 #include <QTemporaryDir>
 #include <memory>
 
-#include "services/expert_request.h"
-#include "expert/expert_session.h"
 #include "document/project.h"
+#include "expert/expert_session.h"
 #include "report_builder.h"
 #include "report_data.h"
 #include "report_writer.h"
+#include "services/expert_request.h"
 #include "test_registry.h"
 
 using namespace mx::gui;
@@ -36,7 +36,9 @@ bool isPng(const QString& path) {
   return file.open(QIODevice::ReadOnly) && file.size() > 100 && file.read(8) == QByteArray("\x89PNG\r\n\x1a\n", 8);
 }
 
-QString reportExecutable() { return QFileInfo(MX_CLI_PATH).absoluteDir().filePath("gui/millexpert-report"); }
+QString reportExecutable() {
+  return QFileInfo(MX_CLI_PATH).absoluteDir().filePath("gui/millexpert-report");
+}
 
 }  // namespace
 
@@ -107,9 +109,23 @@ class TestReportExport : public QObject {
     QCOMPARE(selected, QString("R1"));
     QCOMPARE(mx::revPerSToRpm(ranking.selected().q.speed_rev_per_s), 5800.0);
 
-    const QStringList expected{project.name, "R1", "R2", "5800", "rpm", "mm/tooth", "N/mm²", "Ranking",
-                               "Table 4. Ranking", "Figure 1.", "Figure 2.", "Figure 3.", "q**",
-                               "Rule 6", ReportBuilder::formatCost(r1_cost), "MillExpert " + data_->version, "page 1 /"};
+    const QStringList expected{project.name,
+                               "R1",
+                               "R2",
+                               "5800",
+                               "rpm",
+                               "mm/tooth",
+                               "N/mm²",
+                               "Ranking",
+                               "Table 4. Ranking",
+                               "Figure 1.",
+                               "Figure 2.",
+                               "Figure 3.",
+                               "q**",
+                               "Rule 6",
+                               ReportBuilder::formatCost(r1_cost),
+                               "MillExpert " + data_->version,
+                               "page 1 /"};
     for (const QString& s : expected) QVERIFY2(text.contains(s), qPrintable("PDF text lacks '" + s + "'"));
     // The ranking row of R1: rank, tool, min cost, ..., q* speed.
     const QRegularExpression row("\\b1\\s+R1\\s+" + QRegularExpression::escape(ReportBuilder::formatCost(r1_cost)) +

@@ -4,15 +4,15 @@
 // chart edit is one undoable project edit, an invalid one is shown inline and changes nothing.
 #include <QApplication>
 #include <QElapsedTimer>
-#include <QTimer>
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QTimer>
 
+#include "document/project.h"
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "main_window.h"
-#include "document/project.h"
 #include "supervision_runner.h"
 #include "supervision_timeline.h"
 #include "supervisor_comparison.h"
@@ -61,7 +61,7 @@ class TestSupervisorGui : public QObject {
     emit view->feedHoldToggled(true);
     QTest::qWait(200);
     emit view->feedHoldToggled(false);
-    QTest::qWait(300);  // a few chunks (every 50 ms simulated = 2.5 ms at 20x)
+    QTest::qWait(300);                     // a few chunks (every 50 ms simulated = 2.5 ms at 20x)
     supervisor(window)->runner()->stop();  // do not wait for 43 s / 20
     QTest::qWait(300);
     QVERIFY(view->timeline()->pointCount() > 0);
@@ -139,8 +139,19 @@ class TestSupervisorGui : public QObject {
     chart.steps[1].name = "Waiting for contact";
     emit editor->chartEdited(chart);
     const auto name = [&] {
-      return app::projectToJson(*window.project()).value("supervisor").toObject().value("charts").toObject().value("smc2")
-          .toObject().value("steps").toArray().at(1).toObject().value("name").toString();
+      return app::projectToJson(*window.project())
+          .value("supervisor")
+          .toObject()
+          .value("charts")
+          .toObject()
+          .value("smc2")
+          .toObject()
+          .value("steps")
+          .toArray()
+          .at(1)
+          .toObject()
+          .value("name")
+          .toString();
     };
     QCOMPARE(name(), QString("Waiting for contact"));
     window.document()->undoStack()->undo();

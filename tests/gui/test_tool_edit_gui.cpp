@@ -10,8 +10,8 @@
 
 #include "machining_feature.h"
 #include "main_window.h"
-#include "part_program_panel.h"
 #include "pareto_runner.h"
+#include "part_program_panel.h"
 #include "ranking_table.h"
 #include "simulation_runner.h"
 #include "supervisor_comparison.h"
@@ -52,9 +52,13 @@ QString saved(gui::MainWindow& w, const QTemporaryDir& dir) {
   return path;
 }
 
-QString number(double v) { return QString::number(v, 'g', 17); }
+QString number(double v) {
+  return QString::number(v, 'g', 17);
+}
 
-bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+bool near(double a, double b) {
+  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
 
 // The lines of a written program but its "(date: ...)" header line.
 QStringList programBody(const QString& path) {
@@ -102,8 +106,10 @@ class TestToolEditGui : public QObject {
     QTemporaryDir dir;
     const QString path = saved(window, dir);
     const app::PickedPoint pt = window.document()->point();
-    const QStringList cut{"--tool", "C1", "--speed", number(pt.speed_rpm), "--depth", number(pt.depth_mm),
-                          "--feed", number(pt.feed_mm_per_tooth)};
+    const QStringList cut{"--tool",  "C1",
+                          "--speed", number(pt.speed_rpm),
+                          "--depth", number(pt.depth_mm),
+                          "--feed",  number(pt.feed_mm_per_tooth)};
 
     // The lobes' readout: the power at the operating point.
     const mx::test::CliRun point = mx::test::runCli(QStringList{"point", path} + cut);
@@ -117,7 +123,8 @@ class TestToolEditGui : public QObject {
     QCOMPARE(sim.teeth, 2);
     const mx::test::CliRun simulate = mx::test::runCli(QStringList{"simulate", path} + cut);
     QCOMPARE(simulate.code, 0);
-    QVERIFY2(near(sim.peak_force_n, simulate.json.value("peak_force_N").toDouble()), qPrintable(number(sim.peak_force_n)));
+    QVERIFY2(near(sim.peak_force_n, simulate.json.value("peak_force_N").toDouble()),
+             qPrintable(number(sim.peak_force_n)));
     QVERIFY(near(sim.tooth_passing_hz, simulate.json.value("tooth_passing_Hz").toDouble()));
     QVERIFY(!near(sim.peak_force_n, four_sim.peak_force_n));
 
@@ -199,7 +206,8 @@ class TestToolEditGui : public QObject {
     QCOMPARE(cli.code, 0);
     QCOMPARE(table->metricText("none", "max_power_pct_of_limit"),
              QString::number(cli.json.value("max_power_pct_of_limit").toDouble(), 'f', 0));
-    QCOMPARE(table->metricText("none", "cycle_time_s"), QString::number(cli.json.value("cycle_time_s").toDouble(), 'f', 2));
+    QCOMPARE(table->metricText("none", "cycle_time_s"),
+             QString::number(cli.json.value("cycle_time_s").toDouble(), 'f', 2));
     QVERIFY(table->metricText("none", "max_power_pct_of_limit") != four_power ||
             table->metricText("none", "cycle_time_s") != four_cycle);
   }

@@ -4,10 +4,10 @@
 // and its force the largest simulated force there.
 #include <cmath>
 
-#include "machining/adaptive_path_feeds.h"
-#include "machining/depth_profile.h"
 #include "gcode/gcode_interpreter.h"
 #include "gcode/gcode_reader.h"
+#include "machining/adaptive_path_feeds.h"
+#include "machining/depth_profile.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -16,7 +16,8 @@ class TestAdaptivePathFeeds : public QObject {
   Q_OBJECT
  private slots:
   void cuttingBlocksSkipAirAndPlunges() {
-    const GcodeProgram p = GcodeReader::parse("G21 G90 S715\nG0 Z5\nG1 Z-2 F100\nG1 X10 F600\nG1 Z5\nG1 X20\nG1 Z-3\nX30\n");
+    const GcodeProgram p =
+        GcodeReader::parse("G21 G90 S715\nG0 Z5\nG1 Z-2 F100\nG1 X10 F600\nG1 Z5\nG1 X20\nG1 Z-3\nX30\n");
     const GcodeRun run = GcodeInterpreter().run(p);
     const auto depths = DepthProfile::fromStockTop(0.0).blockDepths(run);
     const auto cuts = cuttingBlocks(run, depths, true);

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "machining/part_program_override.h"
-#include "gcode/gcode_reader.h"
 #include "core/invalid_input.h"
+#include "gcode/gcode_reader.h"
+#include "machining/part_program_override.h"
 #include "support/gcode_samples.h"
 #include "test_registry.h"
 
@@ -23,7 +23,8 @@ ModelBasedForceController landers(double f_ref) {
 }
 // Keeps the programmed feed (or 100 mm/min where none).
 FeedDecision identity(const CutState& s) {
-  return {s.programmed_feed_m_per_s == s.programmed_feed_m_per_s ? s.programmed_feed_m_per_s : 100e-3 / 60.0, 0.0, "id"};
+  return {s.programmed_feed_m_per_s == s.programmed_feed_m_per_s ? s.programmed_feed_m_per_s : 100e-3 / 60.0, 0.0,
+          "id"};
 }
 
 // The block without comments, F and S words, and whitespace: what must not change.
@@ -79,8 +80,8 @@ class TestPartProgramOverride : public QObject {
  private slots:
   void roundTripWithoutChanges_data() {
     QTest::addColumn<QString>("file");
-    for (const char* f : {"pocket_mm.nc", "crlf.nc", "inch.nc", "unknown_words.nc", "truncated.nc", "utf8_comments.nc",
-                          "empty.nc"})
+    for (const char* f :
+         {"pocket_mm.nc", "crlf.nc", "inch.nc", "unknown_words.nc", "truncated.nc", "utf8_comments.nc", "empty.nc"})
       QTest::newRow(f) << QString(f);
   }
   void roundTripWithoutChanges() {
@@ -111,7 +112,8 @@ class TestPartProgramOverride : public QObject {
     QFETCH(int, changed);
     const std::string text = gcodeSample(file.toStdString());
     const auto controller = landers(400.0);
-    const auto r = PartProgramOverrider(modelBasedFeedController(controller), stockTopZero()).run(std::string_view(text));
+    const auto r =
+        PartProgramOverrider(modelBasedFeedController(controller), stockTopZero()).run(std::string_view(text));
     const std::string out = r.writeProgram(kHeader);
     const int differing = checkOnlyFeedSpeedComments(text, out);
     QCOMPARE(differing, static_cast<int>(r.changed_blocks));
@@ -129,7 +131,8 @@ class TestPartProgramOverride : public QObject {
         const double n = row.speed_rev_per_s;
         const double force = controller.force(row.depth_m, m.feed_m_per_s / (4.0 * n));
         const bool at_max = m.feed_m_per_s >= 36e-3 * (1 - 1e-3) || m.feed_m_per_s / (4.0 * n) >= 0.6e-3 * (1 - 1e-3);
-        QVERIFY2(at_max || std::abs(force - 400.0) < 0.5, qPrintable(QString("line %1: %2 N").arg(row.line).arg(force)));
+        QVERIFY2(at_max || std::abs(force - 400.0) < 0.5,
+                 qPrintable(QString("line %1: %2 N").arg(row.line).arg(force)));
       }
     }
     QCOMPARE(k, r.rows.size());
@@ -141,7 +144,8 @@ class TestPartProgramOverride : public QObject {
     // Block 2 cuts 2 mm (feed changed), block 4 inherits F in the input but is an air move: the
     // programmed 900 mm/min must be written back, or it would run at block 2's feed.
     const std::string text = "G21 G90 S1500\nG1 X10 Z-2 F900\nG0 Z1\nG1 X20\nG1 X30\n";
-    const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(text));
+    const auto r =
+        PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(text));
     QVERIFY(r.edits[1].feed == r.edits[1].feed);
     QVERIFY(std::abs(r.edits[1].feed - 900.0) > 1.0);
     QCOMPARE(r.edits[3].feed, 900.0);
@@ -163,7 +167,8 @@ class TestPartProgramOverride : public QObject {
   }
   void missingFeedGetsControllerFeed() {
     const std::string text = gcodeSample("missing_f.nc");
-    const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(text));
+    const auto r =
+        PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(text));
     QCOMPARE(r.rows.size(), std::size_t(4));
     QVERIFY(std::isnan(r.rows[0].original_feed_m_per_s));
     QVERIFY(r.rows[0].reason.rfind("missing F", 0) == 0);
@@ -171,7 +176,8 @@ class TestPartProgramOverride : public QObject {
     const auto out = GcodeReader::parse(r.writeProgram(kHeader));
     QVERIFY(GcodeInterpreter().run(out).warnings.empty());  // no feed move without F any more
     bool warned = false;
-    for (const auto& w : r.warnings) warned = warned || (w.line == 3 && w.message.find("without F") != std::string::npos);
+    for (const auto& w : r.warnings)
+      warned = warned || (w.line == 3 && w.message.find("without F") != std::string::npos);
     QVERIFY(warned);
   }
   void truncatedLastLineStaysTruncated() {
@@ -183,14 +189,17 @@ class TestPartProgramOverride : public QObject {
     const auto r2 = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
                         .run(std::string_view("S1500\nG1 X30 Z-2 F900\nG0 Z1\nG1 Y15"));
     const std::string out2 = r2.writeProgram(kHeader);
-    QCOMPARE(out2.substr(out2.rfind('\n') + 1), std::string("G1 Y15 F900 (MX: F 900 mm/min, restore programmed feed [air move])"));
+    QCOMPARE(out2.substr(out2.rfind('\n') + 1),
+             std::string("G1 Y15 F900 (MX: F 900 mm/min, restore programmed feed [air move])"));
   }
   void nonAsciiCommentsAndCrlfPreserved() {
     const std::string utf8 = gcodeSample("utf8_comments.nc");
     const std::string out = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
                                 .run(std::string_view(utf8))
                                 .writeProgram(kHeader);
-    QVERIFY(out.find("(Tasche fr\xC3\xA4sen \xE2\x80\x93 Werkst\xC3\xBC" "ck \xC3\x98 80 mm, Spannung pr\xC3\xBC" "fen)\n") != std::string::npos);
+    QVERIFY(out.find("(Tasche fr\xC3\xA4sen \xE2\x80\x93 Werkst\xC3\xBC"
+                     "ck \xC3\x98 80 mm, Spannung pr\xC3\xBC"
+                     "fen)\n") != std::string::npos);
     QVERIFY(out.find("(\xE5\x88\x87\xE5\x89\x8A cutting)") != std::string::npos);
     QVERIFY(out.find("; Schnittgeschwindigkeit \xE2\x89\x88 80 m/min") != std::string::npos);
     const std::string crlf = gcodeSample("crlf.nc");
@@ -201,7 +210,8 @@ class TestPartProgramOverride : public QObject {
     QCOMPARE(std::count(out2.begin(), out2.end(), '\n'), std::ptrdiff_t(10));
   }
   void emptyProgram() {
-    const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(""));
+    const auto r =
+        PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero()).run(std::string_view(""));
     QVERIFY(r.rows.empty());
     QCOMPARE(r.writeProgram(kHeader), GcodeWriter::headerText(kHeader, "\n"));
     QCOMPARE(r.csv(), FeedOverrideTable::header());
@@ -236,8 +246,9 @@ class TestPartProgramOverride : public QObject {
     QVERIFY(checkOnlyFeedSpeedComments(text, out) > 0);
   }
   void noSpindleSpeed() {
-    QVERIFY_THROWS_EXCEPTION(InvalidInput, PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
-                                               .run(std::string_view("G1 X10 Z-1 F100\n")));
+    QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                             PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
+                                 .run(std::string_view("G1 X10 Z-1 F100\n")));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, PartProgramOverrider(BlockFeedController{}, stockTopZero()));
   }
   void csvTable() {

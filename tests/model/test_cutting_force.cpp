@@ -70,7 +70,7 @@ class TestCuttingForce : public QObject {
     QCOMPARE_LE(std::abs(f.tangential_n - ft), 1e-12);
     QCOMPARE_LE(std::abs(f.fx_n - (-ft * std::cos(phi) - fr * std::sin(phi))), 1e-12);
     QCOMPARE_LE(std::abs(f.fy_n - (ft * std::sin(phi) - fr * std::cos(phi))), 1e-12);
-    QCOMPARE(toothForce(s, 1e-3, phi, -1e-5).tangential_n, 0.0);     // tool out of the cut
+    QCOMPARE(toothForce(s, 1e-3, phi, -1e-5).tangential_n, 0.0);       // tool out of the cut
     QCOMPARE(toothForce(s, 1e-3, 1.5 * kPi, 1e-4).tangential_n, 0.0);  // outside the immersion
   }
 

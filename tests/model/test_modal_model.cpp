@@ -24,7 +24,7 @@ class TestModalModel : public QObject {
     QFETCH(double, k);
     const ModalAxis axis{{f, zeta, k}};
     const double w = 2 * std::numbers::pi * f;
-    QCOMPARE_LE(std::abs(receptance(axis, {0.0, 0.0}).real() * k - 1.0), 1e-12);        // G(0) = 1/k
+    QCOMPARE_LE(std::abs(receptance(axis, {0.0, 0.0}).real() * k - 1.0), 1e-12);          // G(0) = 1/k
     QCOMPARE_LE(std::abs(receptance(axis, {0.0, w}).imag() * 2 * zeta * k + 1.0), 1e-9);  // -1/(2 zeta k)
     // min Re G = -1/(4 k zeta (1+zeta)) at w sqrt(1 + 2 zeta).
     const double re_min = receptance(axis, {0.0, w * std::sqrt(1 + 2 * zeta)}).real();

@@ -1,9 +1,9 @@
 #pragma once
 // The Pareto case study (projects/rubio-pareto-case.mxproj) as engine inputs, on a coarser grid
 // (100 rpm) to keep the tests fast.
-#include "pareto/objective_table.h"
 #include "expert/admissible_grid.h"
 #include "pareto/empirical_models.h"
+#include "pareto/objective_table.h"
 #include "support/fixtures.h"
 
 namespace mx::test {

@@ -13,11 +13,14 @@ namespace {
 struct Row {
   double n_rpm, b_mm, vf_mm_s, tol, surf;
 };
-const Row kTable4[3] = {{1800, 0.3693, 4.24, 45.83, 0.8810},
-                        {2412, 0.3609, 5.58, 19.6340, 0.9753},
-                        {2010, 1.5124, 17.96, 3.2051, 8.2557}};
-double vOf(const Row& r) { return cuttingSpeedMPerMin(0.030, r.n_rpm / 60.0); }
-double stOf(const Row& r) { return r.vf_mm_s / (3.0 * r.n_rpm / 60.0); }
+const Row kTable4[3] = {
+    {1800, 0.3693, 4.24, 45.83, 0.8810}, {2412, 0.3609, 5.58, 19.6340, 0.9753}, {2010, 1.5124, 17.96, 3.2051, 8.2557}};
+double vOf(const Row& r) {
+  return cuttingSpeedMPerMin(0.030, r.n_rpm / 60.0);
+}
+double stOf(const Row& r) {
+  return r.vf_mm_s / (3.0 * r.n_rpm / 60.0);
+}
 }  // namespace
 
 class TestEmpiricalModels : public QObject {

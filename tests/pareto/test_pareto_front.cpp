@@ -1,6 +1,5 @@
-// The non-dominated set (skyline and divide and conquer) equals the O(n^2) definition on random point sets (continuous, with
-// ties on a coarse lattice, duplicates, anti-correlated fronts), and every returned point is
-// non-dominated.
+// The non-dominated set (skyline and divide and conquer) equals the O(n^2) definition on random point sets (continuous,
+// with ties on a coarse lattice, duplicates, anti-correlated fronts), and every returned point is non-dominated.
 #include <random>
 
 #include "pareto/pareto_front.h"
@@ -17,7 +16,7 @@ std::vector<ObjectiveVector> randomPoints(int n, int kind, unsigned seed) {
     ObjectiveVector p{u(rng), u(rng), u(rng), u(rng)};
     if (kind == 1)
       for (double& v : p) v = std::floor(v * 5.0) / 5.0;  // lattice: many ties and duplicates
-    if (kind == 2) {  // anti-correlated: near the plane sum = 2 (large fronts)
+    if (kind == 2) {                                      // anti-correlated: near the plane sum = 2 (large fronts)
       const double s = p[0] + p[1] + p[2] + p[3];
       for (double& v : p) v = v * 2.0 / s + 0.01 * u(rng);
     }

@@ -10,7 +10,9 @@
 using namespace mx;
 
 namespace {
-const ObjectiveTable& table() { return test::paretoCaseTable(); }
+const ObjectiveTable& table() {
+  return test::paretoCaseTable();
+}
 }  // namespace
 
 class TestParetoSelector : public QObject {

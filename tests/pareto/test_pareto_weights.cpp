@@ -27,7 +27,8 @@ class TestParetoWeights : public QObject {
       validateParetoWeights(w);
       QVERIFY(error.isEmpty());
     } catch (const InvalidInput& e) {
-      QVERIFY2(!error.isEmpty() && QString(e.what()).contains(error) && QString(e.what()).startsWith("w = ["), e.what());
+      QVERIFY2(!error.isEmpty() && QString(e.what()).contains(error) && QString(e.what()).startsWith("w = ["),
+               e.what());
     }
   }
   void rule13StaysOnSimplex_data() {

@@ -9,7 +9,9 @@
 using namespace mx;
 
 namespace {
-const ObjectiveTable& table() { return test::paretoCaseTable(); }
+const ObjectiveTable& table() {
+  return test::paretoCaseTable();
+}
 }  // namespace
 
 class TestWeightModulation : public QObject {

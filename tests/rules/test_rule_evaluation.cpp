@@ -53,8 +53,8 @@ class TestRuleEvaluation : public QObject {
   void issueExamplesFire() {
     QFETCH(QString, context);
     QFETCH(QList<int>, fired);
-    const RuleSet set = rules({"if tool.diameter_mm < 10 then speed_rpm <= 8000",
-                               "if material.name == \"Ti6Al4V\" then weight.c3 >= 0.2"});
+    const RuleSet set = rules(
+        {"if tool.diameter_mm < 10 then speed_rpm <= 8000", "if material.name == \"Ti6Al4V\" then weight.c3 >= 0.2"});
     const RuleOutcome o = evaluate(set, ::context(context));
     QCOMPARE(firedLines(o), fired);
     QVERIFY(o.consistent());
@@ -97,17 +97,25 @@ class TestRuleEvaluation : public QObject {
     const QString notGroup = "not (tool.teeth == 1 and tool.Kr > 0)";
     QTest::newRow("not-group: a true, b false") << notGroup << "tool.teeth=1;tool.Kr=-1" << 1;
     QTest::newRow("not-group: both true") << notGroup << "tool.teeth=1;tool.Kr=1" << 0;
-    QTest::newRow("string !=") << "material.name != \"Ti6Al4V\"" << "material.name=Steel" << 1;
+    QTest::newRow("string !=") << "material.name != \"Ti6Al4V\""
+                               << "material.name=Steel" << 1;
     QTest::newRow("all six number operators")
         << "tool.Kr < 2 and tool.Kr <= 1 and tool.Kr > 0 and tool.Kr >= 1 and tool.Kr == 1 and tool.Kr != 2"
         << "tool.Kr=1" << 1;
-    QTest::newRow("unknown: missing path") << "tool.teeth == 1" << "" << 2;
-    QTest::newRow("unknown: not unknown") << "not tool.teeth == 1" << "" << 2;
-    QTest::newRow("false and unknown is false") << "tool.Kr > 0 and tool.teeth == 1" << "tool.Kr=-1" << 0;
-    QTest::newRow("true and unknown is unknown") << "tool.Kr > 0 and tool.teeth == 1" << "tool.Kr=1" << 2;
-    QTest::newRow("true or unknown is true") << "tool.Kr > 0 or tool.teeth == 1" << "tool.Kr=1" << 1;
-    QTest::newRow("false or unknown is unknown") << "tool.Kr > 0 or tool.teeth == 1" << "tool.Kr=-1" << 2;
-    QTest::newRow("wrong type in context is unknown") << "tool.teeth == 1" << "tool.teeth=four" << 2;
+    QTest::newRow("unknown: missing path") << "tool.teeth == 1"
+                                           << "" << 2;
+    QTest::newRow("unknown: not unknown") << "not tool.teeth == 1"
+                                          << "" << 2;
+    QTest::newRow("false and unknown is false") << "tool.Kr > 0 and tool.teeth == 1"
+                                                << "tool.Kr=-1" << 0;
+    QTest::newRow("true and unknown is unknown") << "tool.Kr > 0 and tool.teeth == 1"
+                                                 << "tool.Kr=1" << 2;
+    QTest::newRow("true or unknown is true") << "tool.Kr > 0 or tool.teeth == 1"
+                                             << "tool.Kr=1" << 1;
+    QTest::newRow("false or unknown is unknown") << "tool.Kr > 0 or tool.teeth == 1"
+                                                 << "tool.Kr=-1" << 2;
+    QTest::newRow("wrong type in context is unknown") << "tool.teeth == 1"
+                                                      << "tool.teeth=four" << 2;
   }
   void conditionTruth() {
     QFETCH(QString, condition);
@@ -125,7 +133,8 @@ class TestRuleEvaluation : public QObject {
 
   void adviceDoesNotConstrain() {
     const RuleSet set = rules({
-        "if tool.teeth >= 4 and operation.milling == \"down\" then feed_mm_per_tooth <= 0.1 advice \"small feed for many teeth\"",
+        "if tool.teeth >= 4 and operation.milling == \"down\" then feed_mm_per_tooth <= 0.1 advice \"small feed for "
+        "many teeth\"",
         "if tool.teeth >= 4 then advise depth_mm <= 2",
         "if material.name == \"Inconel\" then advise \"use coolant\"",
         "if tool.teeth >= 4 then depth_mm <= 3 because \"long flutes\"",
@@ -160,22 +169,30 @@ class TestRuleEvaluation : public QObject {
     QTest::addColumn<QStringList>("messages");
     const QStringList speed = {"if tool.diameter_mm < 10 then speed_rpm <= 8000",
                                "if material.name == \"Ti6Al4V\" then speed_rpm >= 9000"};
-    QTest::newRow("empty interval") << speed << "tool.diameter_mm=8;material.name=Ti6Al4V"
-        << QStringList{"line 1 'speed_rpm <= 8000' contradicts line 2 'speed_rpm >= 9000': no speed_rpm satisfies both"};
+    QTest::newRow("empty interval")
+        << speed << "tool.diameter_mm=8;material.name=Ti6Al4V"
+        << QStringList{
+               "line 1 'speed_rpm <= 8000' contradicts line 2 'speed_rpm >= 9000': no speed_rpm satisfies both"};
     QTest::newRow("only one fires") << speed << "tool.diameter_mm=12;material.name=Ti6Al4V" << QStringList{};
-    QTest::newRow("different equalities") << QStringList{"weight.c1 == 0.2", "# comment", "weight.c1 == 0.3"} << ""
+    QTest::newRow("different equalities")
+        << QStringList{"weight.c1 == 0.2", "# comment", "weight.c1 == 0.3"} << ""
         << QStringList{"line 1 'weight.c1 == 0.2' contradicts line 3 'weight.c1 == 0.3': no weight.c1 satisfies both"};
-    QTest::newRow("equal equalities agree") << QStringList{"weight.c1 == 0.2", "weight.c1 == 0.2"} << "" << QStringList{};
-    QTest::newRow("equality inside a bound") << QStringList{"speed_rpm == 5000", "speed_rpm <= 6000"} << "" << QStringList{};
-    QTest::newRow("touching bounds agree") << QStringList{"speed_rpm <= 5000", "speed_rpm >= 5000"} << "" << QStringList{};
-    QTest::newRow("equality outside a bound") << QStringList{"speed_rpm <= 6000", "speed_rpm == 7000"} << ""
-        << QStringList{"line 1 'speed_rpm <= 6000' contradicts line 2 'speed_rpm == 7000': no speed_rpm satisfies both"};
+    QTest::newRow("equal equalities agree")
+        << QStringList{"weight.c1 == 0.2", "weight.c1 == 0.2"} << "" << QStringList{};
+    QTest::newRow("equality inside a bound")
+        << QStringList{"speed_rpm == 5000", "speed_rpm <= 6000"} << "" << QStringList{};
+    QTest::newRow("touching bounds agree")
+        << QStringList{"speed_rpm <= 5000", "speed_rpm >= 5000"} << "" << QStringList{};
+    QTest::newRow("equality outside a bound")
+        << QStringList{"speed_rpm <= 6000", "speed_rpm == 7000"} << ""
+        << QStringList{
+               "line 1 'speed_rpm <= 6000' contradicts line 2 'speed_rpm == 7000': no speed_rpm satisfies both"};
     QTest::newRow("every conflicting pair")
         << QStringList{"depth_mm >= 3", "depth_mm <= 2", "depth_mm <= 1", "speed_rpm <= 1", "depth_mm >= 0.5"} << ""
         << QStringList{"line 1 'depth_mm >= 3' contradicts line 2 'depth_mm <= 2': no depth_mm satisfies both",
                        "line 1 'depth_mm >= 3' contradicts line 3 'depth_mm <= 1': no depth_mm satisfies both"};
-    QTest::newRow("advice does not contradict") << QStringList{"speed_rpm <= 8000", "advise speed_rpm >= 9000"} << ""
-                                                << QStringList{};
+    QTest::newRow("advice does not contradict")
+        << QStringList{"speed_rpm <= 8000", "advise speed_rpm >= 9000"} << "" << QStringList{};
   }
   void contradictions() {
     QFETCH(QStringList, lines);
@@ -195,9 +212,8 @@ class TestRuleEvaluation : public QObject {
   }
 
   void tightestBoundsAndTheirRules() {
-    const RuleOutcome o = evaluate(rules({"speed_rpm <= 9000", "speed_rpm >= 1000", "speed_rpm <= 8000",
-                                          "speed_rpm >= 500"}),
-                                   RuleContext{});
+    const RuleOutcome o = evaluate(
+        rules({"speed_rpm <= 9000", "speed_rpm >= 1000", "speed_rpm <= 8000", "speed_rpm >= 500"}), RuleContext{});
     const VariableBounds* b = o.boundsOf("speed_rpm");
     QCOMPARE(b->lower, 1000.0);
     QCOMPARE(b->upper, 8000.0);
@@ -210,9 +226,9 @@ class TestRuleEvaluation : public QObject {
   }
 
   void violationsOfAPoint() {
-    const RuleOutcome o = evaluate(rules({"speed_rpm <= 8000", "depth_mm <= 2", "feed_mm_per_tooth >= 0.05",
-                                          "advise depth_mm <= 1"}),
-                                   RuleContext{});
+    const RuleOutcome o =
+        evaluate(rules({"speed_rpm <= 8000", "depth_mm <= 2", "feed_mm_per_tooth >= 0.05", "advise depth_mm <= 1"}),
+                 RuleContext{});
     const auto v = o.violations({{"speed_rpm", 9000}, {"depth_mm", 1.5}, {"feed_mm_per_tooth", 0.01}});
     QCOMPARE(v.size(), std::size_t(2));
     QCOMPARE(v[0].rule.line, 1);
@@ -223,22 +239,27 @@ class TestRuleEvaluation : public QObject {
   void staticContradictions_data() {
     QTest::addColumn<QStringList>("lines");
     QTest::addColumn<QStringList>("messages");
-    QTest::newRow("unconditional pair") << QStringList{"speed_rpm <= 8000", "speed_rpm >= 9000"}
-        << QStringList{"line 1 'speed_rpm <= 8000' contradicts line 2 'speed_rpm >= 9000': both are unconditional, "
-                       "so they contradict for every context"};
+    QTest::newRow("unconditional pair")
+        << QStringList{"speed_rpm <= 8000", "speed_rpm >= 9000"}
+        << QStringList{
+               "line 1 'speed_rpm <= 8000' contradicts line 2 'speed_rpm >= 9000': both are unconditional, "
+               "so they contradict for every context"};
     QTest::newRow("unconditional against conditional")
         << QStringList{"if tool.teeth > 2 then depth_mm >= 3", "depth_mm <= 2"}
-        << QStringList{"line 1 'depth_mm >= 3' contradicts line 2 'depth_mm <= 2': they contradict whenever line 1 fires"};
+        << QStringList{
+               "line 1 'depth_mm >= 3' contradicts line 2 'depth_mm <= 2': they contradict whenever line 1 fires"};
     QTest::newRow("same condition, written differently")
         << QStringList{"if (tool.teeth > 2) and tool.Kr < 1 then depth_mm >= 3",
                        "if tool.teeth > 2 and (tool.Kr < 1) then depth_mm <= 2"}
-        << QStringList{"line 1 'depth_mm >= 3' contradicts line 2 'depth_mm <= 2': they have the same condition, so "
-                       "they contradict whenever they fire"};
+        << QStringList{
+               "line 1 'depth_mm >= 3' contradicts line 2 'depth_mm <= 2': they have the same condition, so "
+               "they contradict whenever they fire"};
     QTest::newRow("different conditions")
-        << QStringList{"if tool.teeth > 2 then depth_mm >= 3", "if tool.teeth <= 2 then depth_mm <= 2"} << QStringList{};
+        << QStringList{"if tool.teeth > 2 then depth_mm >= 3", "if tool.teeth <= 2 then depth_mm <= 2"}
+        << QStringList{};
     QTest::newRow("compatible bounds") << QStringList{"speed_rpm <= 8000", "speed_rpm >= 7000"} << QStringList{};
-    QTest::newRow("advice is not checked") << QStringList{"speed_rpm <= 8000", "advise speed_rpm >= 9000"}
-                                           << QStringList{};
+    QTest::newRow("advice is not checked")
+        << QStringList{"speed_rpm <= 8000", "advise speed_rpm >= 9000"} << QStringList{};
   }
   void staticContradictions() {
     QFETCH(QStringList, lines);

@@ -26,8 +26,8 @@ class TestRuleParser : public QObject {
 
  private slots:
   void issueExamplesParse() {
-    const RuleParseResult r = parseRules({"if tool.diameter_mm < 10 then speed_rpm <= 8000",
-                                          "if material.name == \"Ti6Al4V\" then weight.c3 >= 0.2"});
+    const RuleParseResult r = parseRules(
+        {"if tool.diameter_mm < 10 then speed_rpm <= 8000", "if material.name == \"Ti6Al4V\" then weight.c3 >= 0.2"});
     QVERIFY(r.ok());
     QCOMPARE(r.rules.size(), std::size_t(2));
     const Rule& a = r.rules.rules[0];
@@ -52,25 +52,40 @@ class TestRuleParser : public QObject {
     QTest::addColumn<QString>("bound");
     QTest::addColumn<QString>("message");
     QTest::addColumn<QString>("condition");
-    QTest::newRow("unconditional constraint") << "depth_mm <= 3" << 0 << "depth_mm <= 3" << "" << "";
-    QTest::newRow("equality bound") << "weight.c1 == 0.25" << 0 << "weight.c1 == 0.25" << "" << "";
+    QTest::newRow("unconditional constraint") << "depth_mm <= 3" << 0 << "depth_mm <= 3"
+                                              << ""
+                                              << "";
+    QTest::newRow("equality bound") << "weight.c1 == 0.25" << 0 << "weight.c1 == 0.25"
+                                    << ""
+                                    << "";
     QTest::newRow("because keeps a constraint")
         << "if machine.max_spindle_rpm <= 12000 then speed_rpm <= 11000 because \"keep a margin\"" << 0
-        << "speed_rpm <= 11000" << "keep a margin" << "machine.max_spindle_rpm <= 12000";
-    QTest::newRow("advice clause")
-        << "if tool.teeth >= 4 and operation.milling == \"down\" then feed_mm_per_tooth <= 0.1 advice \"small feed for many teeth\""
-        << 1 << "feed_mm_per_tooth <= 0.1" << "small feed for many teeth"
-        << "tool.teeth >= 4 and operation.milling == \"down\"";
-    QTest::newRow("advise bound") << "if tool.Kr > 0.5 then advise depth_mm <= 1" << 1 << "depth_mm <= 1" << ""
+        << "speed_rpm <= 11000"
+        << "keep a margin"
+        << "machine.max_spindle_rpm <= 12000";
+    QTest::newRow("advice clause") << "if tool.teeth >= 4 and operation.milling == \"down\" then feed_mm_per_tooth <= "
+                                      "0.1 advice \"small feed for many teeth\""
+                                   << 1 << "feed_mm_per_tooth <= 0.1"
+                                   << "small feed for many teeth"
+                                   << "tool.teeth >= 4 and operation.milling == \"down\"";
+    QTest::newRow("advise bound") << "if tool.Kr > 0.5 then advise depth_mm <= 1" << 1 << "depth_mm <= 1"
+                                  << ""
                                   << "tool.Kr > 0.5";
-    QTest::newRow("advise bound because") << "advise speed_rpm >= 2000 because \"built-up edge\"" << 1
-                                          << "speed_rpm >= 2000" << "built-up edge" << "";
+    QTest::newRow("advise bound because")
+        << "advise speed_rpm >= 2000 because \"built-up edge\"" << 1 << "speed_rpm >= 2000"
+        << "built-up edge"
+        << "";
     QTest::newRow("advise message only") << "if material.name == \"Inconel\" then advise \"use coolant\"" << 1 << ""
-                                         << "use coolant" << "material.name == \"Inconel\"";
-    QTest::newRow("negative and exponent numbers") << "if tool.helix_deg > -1.5e1 then power_W <= 2.5e3 # note" << 0
-                                                   << "power_W <= 2500" << "" << "tool.helix_deg > -15";
+                                         << "use coolant"
+                                         << "material.name == \"Inconel\"";
+    QTest::newRow("negative and exponent numbers")
+        << "if tool.helix_deg > -1.5e1 then power_W <= 2.5e3 # note" << 0 << "power_W <= 2500"
+        << ""
+        << "tool.helix_deg > -15";
     QTest::newRow("escaped quote") << "if machine.name == \"the \\\"big\\\" one\" then speed_rpm <= 100" << 0
-                                   << "speed_rpm <= 100" << "" << "machine.name == \"the \\\"big\\\" one\"";
+                                   << "speed_rpm <= 100"
+                                   << ""
+                                   << "machine.name == \"the \\\"big\\\" one\"";
   }
   void consequenceForms() {
     QFETCH(QString, text);
@@ -90,16 +105,20 @@ class TestRuleParser : public QObject {
   void precedence_data() {
     QTest::addColumn<QString>("condition");
     QTest::addColumn<QString>("canonical");
-    QTest::newRow("and binds tighter than or")
-        << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0" << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0";
-    QTest::newRow("parentheses group or")
-        << "(tool.teeth == 1 or tool.teeth == 2) and tool.Kr > 0" << "(tool.teeth == 1 or tool.teeth == 2) and tool.Kr > 0";
-    QTest::newRow("redundant parentheses dropped")
-        << "tool.teeth == 1 or (tool.teeth == 2 and tool.Kr > 0)" << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0";
-    QTest::newRow("not binds tighter than and") << "not tool.teeth == 1 and tool.Kr > 0" << "not tool.teeth == 1 and tool.Kr > 0";
-    QTest::newRow("not of a group") << "not (tool.teeth == 1 and tool.Kr > 0)" << "not (tool.teeth == 1 and tool.Kr > 0)";
-    QTest::newRow("double not") << "not not tool.teeth == 1" << "not not tool.teeth == 1";
-    QTest::newRow("nested groups") << "((tool.Kr > 0))" << "tool.Kr > 0";
+    QTest::newRow("and binds tighter than or") << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0"
+                                               << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0";
+    QTest::newRow("parentheses group or") << "(tool.teeth == 1 or tool.teeth == 2) and tool.Kr > 0"
+                                          << "(tool.teeth == 1 or tool.teeth == 2) and tool.Kr > 0";
+    QTest::newRow("redundant parentheses dropped") << "tool.teeth == 1 or (tool.teeth == 2 and tool.Kr > 0)"
+                                                   << "tool.teeth == 1 or tool.teeth == 2 and tool.Kr > 0";
+    QTest::newRow("not binds tighter than and") << "not tool.teeth == 1 and tool.Kr > 0"
+                                                << "not tool.teeth == 1 and tool.Kr > 0";
+    QTest::newRow("not of a group") << "not (tool.teeth == 1 and tool.Kr > 0)"
+                                    << "not (tool.teeth == 1 and tool.Kr > 0)";
+    QTest::newRow("double not") << "not not tool.teeth == 1"
+                                << "not not tool.teeth == 1";
+    QTest::newRow("nested groups") << "((tool.Kr > 0))"
+                                   << "tool.Kr > 0";
     QTest::newRow("or is left-associative") << "tool.Kr > 0 or tool.Kr < 1 or tool.teeth != 3"
                                             << "tool.Kr > 0 or tool.Kr < 1 or tool.teeth != 3";
   }
@@ -111,7 +130,8 @@ class TestRuleParser : public QObject {
   }
 
   void treeShape() {
-    const Rule rule = onlyRule(parseRules({"if tool.teeth == 1 or tool.teeth == 2 and not tool.Kr > 0 then depth_mm <= 1"}));
+    const Rule rule =
+        onlyRule(parseRules({"if tool.teeth == 1 or tool.teeth == 2 and not tool.Kr > 0 then depth_mm <= 1"}));
     QCOMPARE(rule.condition->kind, ConditionNode::Kind::Or);
     QCOMPARE(rule.condition->left->kind, ConditionNode::Kind::Compare);
     QCOMPARE(rule.condition->right->kind, ConditionNode::Kind::And);
@@ -129,18 +149,20 @@ class TestRuleParser : public QObject {
     // Lexical errors.
     QTest::newRow("unterminated string") << "if material.name == \"Ti6Al4V then weight.c3 >= 0.2" << 21
                                          << "unterminated string: missing the closing '\"'";
-    QTest::newRow("bad number in condition") << "if tool.diameter_mm < 1.2.3 then speed_rpm <= 8000" << 23
-                                             << "bad number '1.2.3'";
+    QTest::newRow("bad number in condition")
+        << "if tool.diameter_mm < 1.2.3 then speed_rpm <= 8000" << 23 << "bad number '1.2.3'";
     QTest::newRow("bad number in action") << "speed_rpm <= 8000rpm" << 14 << "bad number '8000rpm'";
     QTest::newRow("bad exponent") << "speed_rpm <= 1e" << 14 << "bad number '1e'";
-    QTest::newRow("unexpected character") << "if tool.teeth >= 4 & tool.teeth < 8 then depth_mm <= 2" << 20
-                                          << "unexpected character '&'";
-    QTest::newRow("single equals") << "if tool.teeth = 4 then depth_mm <= 2" << 15 << "unexpected '=': write '==' to compare";
+    QTest::newRow("unexpected character")
+        << "if tool.teeth >= 4 & tool.teeth < 8 then depth_mm <= 2" << 20 << "unexpected character '&'";
+    QTest::newRow("single equals") << "if tool.teeth = 4 then depth_mm <= 2" << 15
+                                   << "unexpected '=': write '==' to compare";
     QTest::newRow("path ending in a dot") << "if tool. < 3 then depth_mm <= 2" << 9 << "expected a name after 'tool.'";
     QTest::newRow("columns count code points")
         << "if material.name == \"\xc3\x98\" and tool.teeth < 2.5.1 then depth_mm <= 1" << 42 << "bad number '2.5.1'";
     // Syntax errors.
-    QTest::newRow("missing comparison operator") << "if tool.diameter_mm then speed_rpm <= 8000" << 21
+    QTest::newRow("missing comparison operator")
+        << "if tool.diameter_mm then speed_rpm <= 8000" << 21
         << "expected a comparison operator (<, <=, >, >=, ==, !=) after 'tool.diameter_mm', got 'then'";
     QTest::newRow("missing value") << "if tool.diameter_mm < then speed_rpm <= 8000" << 23
                                    << "expected a number after 'tool.diameter_mm <', got 'then'";
@@ -148,62 +170,75 @@ class TestRuleParser : public QObject {
                                           << "expected a \"string\" after 'material.name !=', got 'then'";
     QTest::newRow("missing then") << "if tool.teeth >= 4 speed_rpm <= 8000" << 20
                                   << "expected 'then', 'and' or 'or' after the condition, got 'speed_rpm'";
-    QTest::newRow("empty condition") << "if then speed_rpm <= 8000" << 4 << "expected a condition after 'if', got 'then'";
+    QTest::newRow("empty condition") << "if then speed_rpm <= 8000" << 4
+                                     << "expected a condition after 'if', got 'then'";
     QTest::newRow("condition missing at end") << "if" << 3 << "expected a condition after 'if', got end of rule";
     QTest::newRow("empty parentheses") << "if () then speed_rpm <= 1" << 5 << "expected a condition after '(', got ')'";
-    QTest::newRow("dangling and") << "if tool.teeth >= 4 and then depth_mm <= 2" << 24
+    QTest::newRow("dangling and")
+        << "if tool.teeth >= 4 and then depth_mm <= 2" << 24
         << "expected a comparison such as 'tool.teeth >= 4', 'not' or '(' after 'and', got 'then'";
-    QTest::newRow("dangling not") << "if not then depth_mm <= 2" << 8
+    QTest::newRow("dangling not")
+        << "if not then depth_mm <= 2" << 8
         << "expected a comparison such as 'tool.teeth >= 4', 'not' or '(' after 'not', got 'then'";
     QTest::newRow("unclosed parenthesis") << "if (tool.teeth >= 4 then depth_mm <= 2" << 21
-        << "expected ')' to close the '(' at column 4, or 'and'/'or', got 'then'";
-    QTest::newRow("unmatched parenthesis") << "if tool.teeth >= 4) then depth_mm <= 2" << 19
+                                          << "expected ')' to close the '(' at column 4, or 'and'/'or', got 'then'";
+    QTest::newRow("unmatched parenthesis")
+        << "if tool.teeth >= 4) then depth_mm <= 2" << 19
         << "expected 'then' (this ')' has no matching '(') after the condition, got ')'";
     QTest::newRow("unexpected token after then") << "if tool.teeth >= 4 then ) speed_rpm <= 1" << 25
-        << "expected a decision variable or 'advise' after 'then', got ')'";
+                                                 << "expected a decision variable or 'advise' after 'then', got ')'";
     QTest::newRow("missing action") << "if tool.teeth >= 4 then" << 24
                                     << "expected a decision variable or 'advise' after 'then', got end of rule";
-    QTest::newRow("rule starts with a keyword") << "then speed_rpm <= 1" << 1
-                                                << "expected 'if', 'advise' or a decision variable, got 'then'";
-    QTest::newRow("rule starts with a number") << "8000 >= speed_rpm" << 1
-                                               << "expected 'if', 'advise' or a decision variable, got '8000'";
+    QTest::newRow("rule starts with a keyword")
+        << "then speed_rpm <= 1" << 1 << "expected 'if', 'advise' or a decision variable, got 'then'";
+    QTest::newRow("rule starts with a number")
+        << "8000 >= speed_rpm" << 1 << "expected 'if', 'advise' or a decision variable, got '8000'";
     QTest::newRow("strict bound") << "speed_rpm < 8000" << 11 << "a bound uses <=, >= or ==, got '<'";
-    QTest::newRow("bound without operator") << "speed_rpm 8000" << 11 << "expected <=, >= or == after 'speed_rpm', got '8000'";
+    QTest::newRow("bound without operator")
+        << "speed_rpm 8000" << 11 << "expected <=, >= or == after 'speed_rpm', got '8000'";
     QTest::newRow("bound with a string") << "if tool.teeth >= 4 then speed_rpm <= \"fast\"" << 38
                                          << "expected a number after 'speed_rpm <=', got \"fast\"";
-    QTest::newRow("advise without anything") << "advise" << 7
-                                             << "expected a decision variable or a \"text\" after 'advise', got end of rule";
-    QTest::newRow("advice clause without text") << "speed_rpm <= 8000 advice" << 25
-                                                << "expected a \"text\" after 'advice', got end of rule";
-    QTest::newRow("trailing garbage") << "speed_rpm <= 8000 extra" << 19
+    QTest::newRow("advise without anything")
+        << "advise" << 7 << "expected a decision variable or a \"text\" after 'advise', got end of rule";
+    QTest::newRow("advice clause without text")
+        << "speed_rpm <= 8000 advice" << 25 << "expected a \"text\" after 'advice', got end of rule";
+    QTest::newRow("trailing garbage")
+        << "speed_rpm <= 8000 extra" << 19
         << "expected end of rule, 'advice \"...\"' or 'because \"...\"' after 'speed_rpm <= 8000', got 'extra'";
-    QTest::newRow("trailing garbage after advice") << "speed_rpm <= 8000 advice \"slow\" now" << 33
-                                                   << "expected end of rule after the advice text, got 'now'";
-    QTest::newRow("trailing garbage after message advice") << "advise \"slow\" 3" << 15
-                                                           << "expected end of rule after the advice text, got '3'";
+    QTest::newRow("trailing garbage after advice")
+        << "speed_rpm <= 8000 advice \"slow\" now" << 33 << "expected end of rule after the advice text, got 'now'";
+    QTest::newRow("trailing garbage after message advice")
+        << "advise \"slow\" 3" << 15 << "expected end of rule after the advice text, got '3'";
     QTest::newRow("trailing second comparison") << "if tool.teeth >= 4 < 5 then depth_mm <= 2" << 20
                                                 << "expected 'then', 'and' or 'or' after the condition, got '<'";
     // Semantic errors.
-    QTest::newRow("unknown path") << "if tool.diamter_mm < 10 then speed_rpm <= 8000" << 4
+    QTest::newRow("unknown path")
+        << "if tool.diamter_mm < 10 then speed_rpm <= 8000" << 4
         << "unknown path 'tool.diamter_mm' (known: tool.Kr, tool.Kt_N_mm2, tool.diameter_mm, tool.helix_deg, tool.id, "
            "tool.modes, tool.teeth)";
     QTest::newRow("unknown root") << "if spindle.rpm > 3 then depth_mm <= 2" << 4
                                   << "unknown path 'spindle.rpm' (known: machine.*, material.*, operation.*, tool.*)";
     QTest::newRow("decision variable in condition") << "if speed_rpm > 3 then depth_mm <= 2" << 4
-        << "'speed_rpm' is a decision variable; conditions test context paths (machine.*, material.*, operation.*, tool.*)";
-    QTest::newRow("unknown variable") << "if tool.teeth >= 4 then speed <= 8000" << 25
+                                                    << "'speed_rpm' is a decision variable; conditions test context "
+                                                       "paths (machine.*, material.*, operation.*, tool.*)";
+    QTest::newRow("unknown variable")
+        << "if tool.teeth >= 4 then speed <= 8000" << 25
         << "unknown decision variable 'speed' (one of: depth_mm, feed_mm_per_tooth, feed_velocity_mm_s, mrr_cm3_s, "
            "power_W, speed_rpm, weight.c1, weight.c2, weight.c3, weight.mrr, weight.ros, weight.surf, weight.tol)";
-    QTest::newRow("path as variable") << "tool.teeth <= 3" << 1
+    QTest::newRow("path as variable")
+        << "tool.teeth <= 3" << 1
         << "'tool.teeth' is a context path, not a decision variable; bound one of: depth_mm, feed_mm_per_tooth, "
-           "feed_velocity_mm_s, mrr_cm3_s, power_W, speed_rpm, weight.c1, weight.c2, weight.c3, weight.mrr, weight.ros, "
+           "feed_velocity_mm_s, mrr_cm3_s, power_W, speed_rpm, weight.c1, weight.c2, weight.c3, weight.mrr, "
+           "weight.ros, "
            "weight.surf, weight.tol";
-    QTest::newRow("string path against number") << "if material.name == 5 then weight.c3 >= 0.2" << 21
+    QTest::newRow("string path against number")
+        << "if material.name == 5 then weight.c3 >= 0.2" << 21
         << "type mismatch: 'material.name' is a string, compared with the number 5";
-    QTest::newRow("number path against string") << "if tool.diameter_mm < \"ten\" then speed_rpm <= 8000" << 23
+    QTest::newRow("number path against string")
+        << "if tool.diameter_mm < \"ten\" then speed_rpm <= 8000" << 23
         << "type mismatch: 'tool.diameter_mm' is a number, compared with the string \"ten\"";
     QTest::newRow("ordering a string path") << "if material.name < \"T\" then speed_rpm <= 8000" << 18
-        << "'<' does not apply to the string path 'material.name': use == or !=";
+                                            << "'<' does not apply to the string path 'material.name': use == or !=";
   }
   void errors() {
     QFETCH(QString, text);
@@ -216,8 +251,7 @@ class TestRuleParser : public QObject {
     QCOMPARE(QString::fromStdString(e.message), message);
     QCOMPARE(e.line, 4);
     QCOMPARE(e.column, column);
-    QCOMPARE(QString::fromStdString(e.toString()),
-             QString("line 4, column %1: %2").arg(column).arg(message));
+    QCOMPARE(QString::fromStdString(e.toString()), QString("line 4, column %1: %2").arg(column).arg(message));
     QCOMPARE(r.rules.size(), std::size_t(1));  // the valid line survives
     QCOMPARE(r.rules.rules.front().line, 2);
   }
@@ -244,9 +278,8 @@ class TestRuleParser : public QObject {
       QFAIL("expected RuleSyntaxError");
     } catch (const RuleSyntaxError& e) {
       QCOMPARE(e.errors().size(), std::size_t(2));
-      QCOMPARE(std::string(e.what()),
-               std::string("line 1, column 11: a bound uses <=, >= or ==, got '<'\n"
-                           "line 2, column 4: expected a condition after 'if', got 'then'"));
+      QCOMPARE(std::string(e.what()), std::string("line 1, column 11: a bound uses <=, >= or ==, got '<'\n"
+                                                  "line 2, column 4: expected a condition after 'if', got 'then'"));
     }
     QCOMPARE(parseRulesOrThrow({"depth_mm <= 1"}).size(), std::size_t(1));
   }

@@ -19,7 +19,8 @@ class TestGpModels : public QObject {
   }
   void k1AndK5AreInverses() {
     for (double ra = 0.25; ra <= 2.5; ra += 0.05)
-      QVERIFY(std::abs(SdnrpModels::roughness(SdnrpModels::desiredForce(ra)) / ra - 1.0) < 1e-4);  // 0.0254 * 39.37 = 0.999998
+      QVERIFY(std::abs(SdnrpModels::roughness(SdnrpModels::desiredForce(ra)) / ra - 1.0) <
+              1e-4);  // 0.0254 * 39.37 = 0.999998
   }
   void k2NegativeBelow177N() {
     QVERIFY(SdnrpModels::feedCommand(177.0) < 0.0);

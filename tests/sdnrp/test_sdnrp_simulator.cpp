@@ -35,7 +35,8 @@ class TestSdnrpSimulator : public QObject {
     QVERIFY(std::abs(r.ra_produced_m / r.ra_desired_m - 1.0) < 1e-5);  // K5(K1(Ra)) = 0.999998 Ra
     QVERIFY(std::abs(r.speed_final_rev_per_s - SdnrpModels::speedCommand(r.fd_N) / 60.0) < 1e-9);
     // the final feed solves K4(n_c, f) = F_d
-    QVERIFY(std::abs(SdnrpModels::cuttingForce(r.speed_final_rev_per_s * 60.0, r.feed_final_m_per_s / kMmMin) - r.fd_N) < 1e-8);
+    QVERIFY(std::abs(SdnrpModels::cuttingForce(r.speed_final_rev_per_s * 60.0, r.feed_final_m_per_s / kMmMin) -
+                     r.fd_N) < 1e-8);
     QVERIFY(!r.feed_saturated);
     // the last samples are flat
     const auto& last = r.samples.back();
@@ -80,7 +81,8 @@ class TestSdnrpSimulator : public QObject {
     QFETCH(double, fc);
     QFETCH(double, nc);
     const auto r = SdnrpSimulator(row(ra_um, fc, nc, true)).run();
-    QVERIFY2(std::abs(r.f_final_N - r.fd_N) <= 0.02 * r.fd_N, qPrintable(QString("F %1 vs Fd %2").arg(r.f_final_N).arg(r.fd_N)));
+    QVERIFY2(std::abs(r.f_final_N - r.fd_N) <= 0.02 * r.fd_N,
+             qPrintable(QString("F %1 vs Fd %2").arg(r.f_final_N).arg(r.fd_N)));
     QVERIFY2(std::abs(r.ra_produced_m - r.ra_desired_m) <= 0.10 * r.ra_desired_m,
              qPrintable(QString("Ra %1 um").arg(r.ra_produced_m * 1e6)));
     QVERIFY(!r.feed_saturated);

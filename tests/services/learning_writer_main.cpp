@@ -27,8 +27,11 @@ int main(int argc, char** argv) {
       r.material = "Aluminium";
       r.machine = {2745.3, 12000.0};
       r.q = {1000.0 + static_cast<double>(i), 1.0, 0.1};
-      r.objectives = QJsonObject{{"tol", 10.0}, {"mrr_cm3_s", 0.001 * static_cast<double>(i)},
-                                 {"surf", 1.5}, {"ros", 0.5}, {"writer_index", static_cast<double>(i)}};
+      r.objectives = QJsonObject{{"tol", 10.0},
+                                 {"mrr_cm3_s", 0.001 * static_cast<double>(i)},
+                                 {"surf", 1.5},
+                                 {"ros", 0.5},
+                                 {"writer_index", static_cast<double>(i)}};
       r.source = mx::app::LearningSource::Automatic;
       db.insert(r);
       out << (i + 1) << Qt::endl;  // flushed: the test waits for the first commit

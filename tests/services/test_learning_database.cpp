@@ -8,8 +8,8 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
-#include <QTemporaryDir>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QThread>
 #include <atomic>
 #include <cmath>
@@ -95,9 +95,9 @@ class TestLearningDatabase : public QObject {
     RawDb raw(path);
     QCOMPARE(raw.scalar("PRAGMA user_version").toInt(), 1);
     QCOMPARE(raw.scalar("PRAGMA application_id").toInt(), LearningDatabase::kApplicationId);
-    QCOMPARE(raw.scalar("SELECT COUNT(*) FROM sqlite_master WHERE type = 'index' AND name LIKE 'learning_entry_%'")
-                 .toInt(),
-             4);
+    QCOMPARE(
+        raw.scalar("SELECT COUNT(*) FROM sqlite_master WHERE type = 'index' AND name LIKE 'learning_entry_%'").toInt(),
+        4);
     LearningDatabase reopened(path, LearningDatabase::OpenMode::ExistingOnly);  // no re-creation
     QCOMPARE(reopened.schemaVersion(), 1);
   }
@@ -110,7 +110,7 @@ class TestLearningDatabase : public QObject {
     QStandardPaths::setTestModeEnabled(test_mode);
     QVERIFY2(path.endsWith("MillExpert/MillExpert/learning.sqlite"), qPrintable(path));
     QVERIFY2(path.startsWith(QDir::homePath() + "/"), qPrintable(path));  // the runner's private HOME
-    QCOMPARE(QCoreApplication::applicationName(), appName);  // restored
+    QCOMPARE(QCoreApplication::applicationName(), appName);               // restored
   }
 
   void recordRoundTrip() {
@@ -225,9 +225,10 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(db.count(), 0);
     // The schema itself refuses a source outside the four (a foreign writer cannot sneak one in).
     RawDb raw(path);
-    QVERIFY(!raw.exec("INSERT INTO learning_entry (time_utc, source, tool_id, tool_diameter_mm, tool_teeth, material,"
-                      " spindle_power_w, speed_rpm, depth_mm, feed_mm_per_tooth, objectives_json, weight_count,"
-                      " checksum) VALUES ('2024', 'robot', 'R1', 10, 2, 'Al', 1, 1, 1, 1, '{}', 1, 'x')"));
+    QVERIFY(
+        !raw.exec("INSERT INTO learning_entry (time_utc, source, tool_id, tool_diameter_mm, tool_teeth, material,"
+                  " spindle_power_w, speed_rpm, depth_mm, feed_mm_per_tooth, objectives_json, weight_count,"
+                  " checksum) VALUES ('2024', 'robot', 'R1', 10, 2, 'Al', 1, 1, 1, 1, '{}', 1, 'x')"));
     QCOMPARE(db.count(), 0);
   }
 
@@ -312,7 +313,8 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(c.integrity, QString("ok"));
     QVERIFY2(c.problems.isEmpty(), qPrintable(c.problems.join("\n")));
     const qint64 rows = db.count();
-    QVERIFY2(rows >= reported && rows <= reported + 1, qPrintable(QString("%1 rows, %2 reported").arg(rows).arg(reported)));
+    QVERIFY2(rows >= reported && rows <= reported + 1,
+             qPrintable(QString("%1 rows, %2 reported").arg(rows).arg(reported)));
     qInfo("writer killed after %lld acknowledged commits; %lld rows, all complete", reported, rows);
     {  // every row complete, checked in SQL too: weight rows = weight_count, writer indices 0..rows-1
       RawDb raw(path);
@@ -320,9 +322,9 @@ class TestLearningDatabase : public QObject {
                           " (SELECT COUNT(*) FROM learning_weight w WHERE w.entry_id = e.id)")
                    .toInt(),
                0);
-      QCOMPARE(raw.scalar("SELECT MAX(json_extract(objectives_json, '$.writer_index')) FROM learning_entry")
-                   .toLongLong(),
-               rows - 1);
+      QCOMPARE(
+          raw.scalar("SELECT MAX(json_extract(objectives_json, '$.writer_index')) FROM learning_entry").toLongLong(),
+          rows - 1);
     }
     db.insert(sample("after", "Aluminium", 10, 2, kW, 1.0));  // new writes still work
     QCOMPARE(db.count(), rows + 1);

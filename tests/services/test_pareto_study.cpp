@@ -6,9 +6,9 @@
 #include <QJsonDocument>
 #include <cmath>
 
-#include "services/pareto_study.h"
-#include "pareto/pareto_front.h"
 #include "document/project.h"
+#include "pareto/pareto_front.h"
+#include "services/pareto_study.h"
 #include "test_registry.h"
 
 using namespace mx;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/cutting_force.h"
 #include "core/invalid_input.h"
+#include "model/cutting_force.h"
 #include "simulation/simulation.h"
 #include "support/fixtures.h"
 #include "test_registry.h"

@@ -39,7 +39,8 @@ class TestMethodAgreement : public QObject {
       // The SDM envelope minimum nearest this ZOA minimum.
       const LobeMinimum* best = nullptr;
       for (const LobeMinimum& q : sdm.minima)
-        if (!best || std::abs(q.speed_rev_per_s - m.speed_rev_per_s) < std::abs(best->speed_rev_per_s - m.speed_rev_per_s))
+        if (!best ||
+            std::abs(q.speed_rev_per_s - m.speed_rev_per_s) < std::abs(best->speed_rev_per_s - m.speed_rev_per_s))
           best = &q;
       QVERIFY(best != nullptr);
       const double rel = std::abs(best->depth_m / m.depth_m - 1.0);

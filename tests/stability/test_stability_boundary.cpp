@@ -10,8 +10,12 @@ using namespace mx;
 namespace {
 // Two parabolic lobes, A: b = 1 + (n-100)^2/625 mm and B: b = 2 + (n-200)^2/833.33 mm, meeting
 // at 5 mm at 150 rev/s; envelope min(A, B) sampled every 1 rev/s from 80 to 250 rev/s.
-double lobeA(double n) { return 1.0 + (n - 100.0) * (n - 100.0) / 625.0; }
-double lobeB(double n) { return 2.0 + (n - 200.0) * (n - 200.0) / (2500.0 / 3.0); }
+double lobeA(double n) {
+  return 1.0 + (n - 100.0) * (n - 100.0) / 625.0;
+}
+double lobeB(double n) {
+  return 2.0 + (n - 200.0) * (n - 200.0) / (2500.0 / 3.0);
+}
 LobeDiagram twoLobes() {
   LobeDiagram d;
   for (int n = 80; n <= 250; ++n) {

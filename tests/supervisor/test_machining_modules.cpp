@@ -31,7 +31,8 @@ class TestMachiningModules : public QObject {
     const auto m = makeStandardModules();
     QCOMPARE(m.size(), std::size_t(11));  // F runs inside G
     for (const auto& x : m) {
-      if (std::string("ABE").find(x->letter()) != std::string::npos) QVERIFY(x->period() == 0.010 || x->period() == 0.040);
+      if (std::string("ABE").find(x->letter()) != std::string::npos)
+        QVERIFY(x->period() == 0.010 || x->period() == 0.040);
       if (std::string("HIJKL").find(x->letter()) != std::string::npos) QCOMPARE(x->period(), 0.040);
     }
   }

@@ -20,24 +20,46 @@ class HandLogic : public mx::SupervisorLogic {
  public:
   enum Kind { None, Smc1, Smc2 };
   explicit HandLogic(Kind k) : kind_(k) {}
-  void reset() override { step_ = 1; first_ = true; }
+  void reset() override {
+    step_ = 1;
+    first_ = true;
+  }
   mx::ScanOutput scan(const mx::SignalValues& s) override {
-    auto on = [&](const char* n) { auto it = s.find(n); return it != s.end() && it->second != 0.0; };
+    auto on = [&](const char* n) {
+      auto it = s.find(n);
+      return it != s.end() && it->second != 0.0;
+    };
     mx::ScanOutput out;
-    if (first_) { first_ = false; enter(1, out); }
+    if (first_) {
+      first_ = false;
+      enter(1, out);
+    }
     for (int it = 0; it < 10; ++it) {
       int next = step_;
       switch (step_) {
-        case 1: next = 2; break;
-        case 2: next = on("a") ? 5 : (on("b") && kind_ != None ? 3 : (on("b") ? 4 : 2)); break;
-        case 3: next = 4; break;
-        case 4:
-          if (on("a")) next = 5;
-          else if (!on("b")) next = 2;
-          else if (kind_ == Smc2 && (on("c") || on("d"))) next = 6;
+        case 1:
+          next = 2;
           break;
-        case 5: next = on("a") ? 5 : 2; break;
-        case 6: next = on("e") ? 2 : 6; break;
+        case 2:
+          next = on("a") ? 5 : (on("b") && kind_ != None ? 3 : (on("b") ? 4 : 2));
+          break;
+        case 3:
+          next = 4;
+          break;
+        case 4:
+          if (on("a"))
+            next = 5;
+          else if (!on("b"))
+            next = 2;
+          else if (kind_ == Smc2 && (on("c") || on("d")))
+            next = 6;
+          break;
+        case 5:
+          next = on("a") ? 5 : 2;
+          break;
+        case 6:
+          next = on("e") ? 2 : 6;
+          break;
       }
       if (next == step_) break;
       enter(next, out);
@@ -54,19 +76,26 @@ class HandLogic : public mx::SupervisorLogic {
     step_ = step;
     if (step == 1 || step == 3) {
       if (kind_ == Smc1) out.impulse_actions.push_back("L*");
-      if (kind_ == Smc2) { out.impulse_actions.push_back("E*"); out.impulse_actions.push_back("K*"); }
+      if (kind_ == Smc2) {
+        out.impulse_actions.push_back("E*");
+        out.impulse_actions.push_back("K*");
+      }
     }
   }
   std::set<std::string> actions(int step) const {
     switch (step) {
-      case 2: return {"A", "B", "I", "J"};
+      case 2:
+        return {"A", "B", "I", "J"};
       case 4:
         if (kind_ == Smc1) return {"A", "B", "I", "J", "L"};
         if (kind_ == Smc2) return {"A", "B", "D", "E", "H", "I", "J", "K"};
         return {"A", "B", "I", "J"};
-      case 5: return {"A", "B", "C"};
-      case 6: return {"A", "G"};
-      default: return {};
+      case 5:
+        return {"A", "B", "C"};
+      case 6:
+        return {"A", "G"};
+      default:
+        return {};
     }
   }
   Kind kind_;
@@ -79,14 +108,16 @@ SupervisionResult run(SupervisionController c, std::vector<OperatorEvent> events
   sc.controller = c;
   sc.pass_depths_m = defaultPassDepths(c);
   sc.events = std::move(events);
-  HandLogic logic(c == SupervisionController::None ? HandLogic::None
-                  : c == SupervisionController::SmcI ? HandLogic::Smc1 : HandLogic::Smc2);
+  HandLogic logic(c == SupervisionController::None   ? HandLogic::None
+                  : c == SupervisionController::SmcI ? HandLogic::Smc1
+                                                     : HandLogic::Smc2);
   SupervisionResult r = runSupervision(sc, logic);
   const auto& m = r.metrics;
-  qInfo("%s: F_ref %.1f N, max power %.0f %% (steady %.0f %%), max F_Y %.0f N, overshoot %.0f %%, chatter %d at %.2f s "
-        "(TDS %.2f s), passes %d, cycle %.1f s, run %.2f s",
-        r.controller.c_str(), m.reference_force_N, m.max_power_pct_of_limit, m.steady_max_power_pct_of_limit, m.max_F_Y_N,
-        m.overshoot_pct, m.chatter_detected, m.chatter_time_s, m.tds_chatter_s, m.passes, m.cycle_time_s, m.run_seconds);
+  qInfo(
+      "%s: F_ref %.1f N, max power %.0f %% (steady %.0f %%), max F_Y %.0f N, overshoot %.0f %%, chatter %d at %.2f s "
+      "(TDS %.2f s), passes %d, cycle %.1f s, run %.2f s",
+      r.controller.c_str(), m.reference_force_N, m.max_power_pct_of_limit, m.steady_max_power_pct_of_limit, m.max_F_Y_N,
+      m.overshoot_pct, m.chatter_detected, m.chatter_time_s, m.tds_chatter_s, m.passes, m.cycle_time_s, m.run_seconds);
   return r;
 }
 
@@ -127,7 +158,8 @@ class TestSupervisionRun : public QObject {
     std::set<std::string> steps;
     for (const auto& s : r.steps) steps.insert(s.steps.begin(), s.steps.end());
     QVERIFY(steps.count("2") && steps.count("4"));
-    QVERIFY(std::any_of(r.modules.begin(), r.modules.end(), [](const auto& m) { return m.active.find('L') != std::string::npos; }));
+    QVERIFY(std::any_of(r.modules.begin(), r.modules.end(),
+                        [](const auto& m) { return m.active.find('L') != std::string::npos; }));
   }
 
   void smc2AndOvershoot() {
@@ -143,7 +175,8 @@ class TestSupervisionRun : public QObject {
   }
 
   void feedHold() {
-    const SupervisionResult r = run(SupervisionController::SmcI, {{8.0, OperatorEventType::FeedHoldOn}, {8.5, OperatorEventType::FeedHoldOff}});
+    const SupervisionResult r =
+        run(SupervisionController::SmcI, {{8.0, OperatorEventType::FeedHoldOn}, {8.5, OperatorEventType::FeedHoldOff}});
     double during = -1.0, after = -1.0;
     for (const auto& s : r.series) {
       if (s.t_s > 8.1 && s.t_s < 8.4) during = std::max(during, s.feed_m_per_s);
@@ -151,7 +184,8 @@ class TestSupervisionRun : public QObject {
     }
     QCOMPARE(during, 0.0);
     QVERIFY(after > 5e-3);
-    QVERIFY(std::any_of(r.steps.begin(), r.steps.end(), [](const auto& s) { return s.steps == std::vector<std::string>{"5"}; }));
+    QVERIFY(std::any_of(r.steps.begin(), r.steps.end(),
+                        [](const auto& s) { return s.steps == std::vector<std::string>{"5"}; }));
     QVERIFY(!r.metrics.chatter_detected);
     QVERIFY(r.metrics.max_power_pct_of_limit <= 105.0);
   }

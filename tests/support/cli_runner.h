@@ -8,7 +8,7 @@
 namespace mx::test {
 
 struct CliRun {
-  int code = -1;  // -1 when the process crashed or timed out
+  int code = -1;   // -1 when the process crashed or timed out
   QByteArray out;  // stdout as written
   QJsonObject json;
   QString err;

@@ -26,8 +26,8 @@ inline MillingSetup rubioR1() {
   return makeSetup(3, 0.030, 6e8, 0.3, {{603.0, 0.039, 5.59e6}}, {{666.0, 0.035, 5.715e6}}, MillingDirection::Up, 1.0);
 }
 inline MillingSetup rubioR2() {
-  return makeSetup(2, 0.0127, 6e8, 0.07, {{900.03, 0.0139, 0.879e6}}, {{911.65, 0.0138, 0.971e6}},
-                   MillingDirection::Up, 1.0);
+  return makeSetup(2, 0.0127, 6e8, 0.07, {{900.03, 0.0139, 0.879e6}}, {{911.65, 0.0138, 0.971e6}}, MillingDirection::Up,
+                   1.0);
 }
 // Insperger & Stepan benchmark: 922 Hz, zeta 0.011, m = 0.03993 kg on x; y rigid; K_n/K_t = 1/3.
 inline MillingSetup insperger(double radial_ratio) {

@@ -7,9 +7,8 @@
 namespace mx::test {
 
 // Every sample program (mm, CRLF, inch, unknown words, missing F, truncated, UTF-8 comments, empty).
-inline constexpr const char* kGcodeSamples[] = {"pocket_mm.nc",   "crlf.nc",      "inch.nc",
-                                                "unknown_words.nc", "missing_f.nc", "truncated.nc",
-                                                "utf8_comments.nc", "empty.nc"};
+inline constexpr const char* kGcodeSamples[] = {"pocket_mm.nc", "crlf.nc",      "inch.nc",          "unknown_words.nc",
+                                                "missing_f.nc", "truncated.nc", "utf8_comments.nc", "empty.nc"};
 
 inline std::string gcodeSample(const std::string& name) {
   std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);

@@ -9,8 +9,12 @@
 
 namespace mx::test {
 
-inline QString projectsPath(const QString& name) { return QString(MX_PROJECTS_DIR) + "/" + name; }
-inline QString fixturePath(const QString& name) { return QString(MX_TEST_DATA_DIR) + "/projects/" + name; }
+inline QString projectsPath(const QString& name) {
+  return QString(MX_PROJECTS_DIR) + "/" + name;
+}
+inline QString fixturePath(const QString& name) {
+  return QString(MX_TEST_DATA_DIR) + "/projects/" + name;
+}
 
 inline QByteArray readBytes(const QString& path) {
   QFile f(path);
@@ -18,6 +22,8 @@ inline QByteArray readBytes(const QString& path) {
   return f.readAll();
 }
 
-inline QJsonObject readJson(const QString& path) { return QJsonDocument::fromJson(readBytes(path)).object(); }
+inline QJsonObject readJson(const QString& path) {
+  return QJsonDocument::fromJson(readBytes(path)).object();
+}
 
 }  // namespace mx::test

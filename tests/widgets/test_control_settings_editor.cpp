@@ -69,42 +69,63 @@ class TestControlSettingsEditor : public QObject {
     QTest::addColumn<double>("value");
     QTest::addColumn<QString>("reason");
     const QString lam = QString("Forgetting factor \u03bb [\u2013]");
-    QTest::newRow("lambda 1 (upper, closed)") << "lambda" << "1" << true << 1.0 << "";
-    QTest::newRow("lambda 0.5 (lower, open)") << "lambda" << "0.5" << false << 0.0
-                                             << lam + " = 0.5: must be in (0.5, 1]";
-    QTest::newRow("lambda 0.5001") << "lambda" << "0.5001" << true << 0.5001 << "";
-    QTest::newRow("lambda 1.01") << "lambda" << "1.01" << false << 0.0 << lam + " = 1.01: must be in (0.5, 1]";
-    QTest::newRow("lambda text") << "lambda" << "abc" << false << 0.0 << lam + " = abc: not a number";
-    QTest::newRow("lambda empty") << "lambda" << "  " << false << 0.0 << lam + " = (empty): not a number";
-    QTest::newRow("lambda nan") << "lambda" << "nan" << false << 0.0 << lam + " = nan: not a number";
-    QTest::newRow("P0 1 (lower)") << "p0" << "1" << true << 1.0 << "";
-    QTest::newRow("P0 1e9 (upper)") << "p0" << "1e9" << true << 1e9 << "";
-    QTest::newRow("P0 1.1e9") << "p0" << "1.1e9" << false << 0.0
+    QTest::newRow("lambda 1 (upper, closed)") << "lambda"
+                                              << "1" << true << 1.0 << "";
+    QTest::newRow("lambda 0.5 (lower, open)") << "lambda"
+                                              << "0.5" << false << 0.0 << lam + " = 0.5: must be in (0.5, 1]";
+    QTest::newRow("lambda 0.5001") << "lambda"
+                                   << "0.5001" << true << 0.5001 << "";
+    QTest::newRow("lambda 1.01") << "lambda"
+                                 << "1.01" << false << 0.0 << lam + " = 1.01: must be in (0.5, 1]";
+    QTest::newRow("lambda text") << "lambda"
+                                 << "abc" << false << 0.0 << lam + " = abc: not a number";
+    QTest::newRow("lambda empty") << "lambda"
+                                  << "  " << false << 0.0 << lam + " = (empty): not a number";
+    QTest::newRow("lambda nan") << "lambda"
+                                << "nan" << false << 0.0 << lam + " = nan: not a number";
+    QTest::newRow("P0 1 (lower)") << "p0"
+                                  << "1" << true << 1.0 << "";
+    QTest::newRow("P0 1e9 (upper)") << "p0"
+                                    << "1e9" << true << 1e9 << "";
+    QTest::newRow("P0 1.1e9") << "p0"
+                              << "1.1e9" << false << 0.0
                               << "Initial covariance P(0) [\u2013] = 1.1e9: must be in [1, 1e+09]";
-    QTest::newRow("P0 0.5") << "p0" << "0.5" << false << 0.0
-                            << "Initial covariance P(0) [\u2013] = 0.5: must be in [1, 1e+09]";
-    QTest::newRow("theta0 negative") << "theta0" << "-0.3" << true << -0.3 << "";
-    QTest::newRow("fraction 5 %") << "reset_fraction" << "5" << true << 0.05 << "";
-    QTest::newRow("fraction 100 %") << "reset_fraction" << "100" << true << 1.0 << "";
-    QTest::newRow("fraction 0 %") << "reset_fraction" << "0" << false << 0.0
-                                  << "Reset threshold [% of F_r] = 0: must be in (0, 100]";
-    QTest::newRow("xi 0.1") << "xi" << "0.1" << true << 0.1 << "";
-    QTest::newRow("xi 0.09") << "xi" << "0.09" << false << 0.0
+    QTest::newRow("P0 0.5") << "p0"
+                            << "0.5" << false << 0.0 << "Initial covariance P(0) [\u2013] = 0.5: must be in [1, 1e+09]";
+    QTest::newRow("theta0 negative") << "theta0"
+                                     << "-0.3" << true << -0.3 << "";
+    QTest::newRow("fraction 5 %") << "reset_fraction"
+                                  << "5" << true << 0.05 << "";
+    QTest::newRow("fraction 100 %") << "reset_fraction"
+                                    << "100" << true << 1.0 << "";
+    QTest::newRow("fraction 0 %") << "reset_fraction"
+                                  << "0" << false << 0.0 << "Reset threshold [% of F_r] = 0: must be in (0, 100]";
+    QTest::newRow("xi 0.1") << "xi"
+                            << "0.1" << true << 0.1 << "";
+    QTest::newRow("xi 0.09") << "xi"
+                             << "0.09" << false << 0.0
                              << QString("Model damping \u03be [\u2013] = 0.09: must be in [0.1, 2]");
-    QTest::newRow("xi 2") << "xi" << "2" << true << 2.0 << "";
-    QTest::newRow("T_r 1") << "tr_periods" << "1" << true << 1.0 << "";
-    QTest::newRow("T_r 50") << "tr_periods" << "50" << true << 50.0 << "";
-    QTest::newRow("T_r 51") << "tr_periods" << "51" << false << 0.0
-                            << "Model rise time T_r [spindle periods] = 51: must be in [1, 50]";
-    QTest::newRow("tau_c 0 = default") << "tau_c_ms" << "0" << true << 0.0 << "";
-    QTest::newRow("tau_c negative") << "tau_c_ms" << "-1" << false << 0.0
-                                    << QString("Cutting time constant \u03c4_c [ms] (0 = default) = -1: must be in "
-                                               "[0, 10000]");
-    QTest::newRow("f_max 0") << "feed_max_mm_s" << "0" << false << 0.0
-                             << "Feed limit f_max [mm/s] = 0: must be in (0, 10000]";
-    QTest::newRow("F_r 1200") << "force_reference_n" << "1200" << true << 1200.0 << "";
-    QTest::newRow("F_r -5") << "force_reference_n" << "-5" << false << 0.0
-                            << "Force reference F_r [N] = -5: must be in (0, 1e+06]";
+    QTest::newRow("xi 2") << "xi"
+                          << "2" << true << 2.0 << "";
+    QTest::newRow("T_r 1") << "tr_periods"
+                           << "1" << true << 1.0 << "";
+    QTest::newRow("T_r 50") << "tr_periods"
+                            << "50" << true << 50.0 << "";
+    QTest::newRow("T_r 51") << "tr_periods"
+                            << "51" << false << 0.0 << "Model rise time T_r [spindle periods] = 51: must be in [1, 50]";
+    QTest::newRow("tau_c 0 = default") << "tau_c_ms"
+                                       << "0" << true << 0.0 << "";
+    QTest::newRow("tau_c negative") << "tau_c_ms"
+                                    << "-1" << false << 0.0
+                                    << QString(
+                                           "Cutting time constant \u03c4_c [ms] (0 = default) = -1: must be in "
+                                           "[0, 10000]");
+    QTest::newRow("f_max 0") << "feed_max_mm_s"
+                             << "0" << false << 0.0 << "Feed limit f_max [mm/s] = 0: must be in (0, 10000]";
+    QTest::newRow("F_r 1200") << "force_reference_n"
+                              << "1200" << true << 1200.0 << "";
+    QTest::newRow("F_r -5") << "force_reference_n"
+                            << "-5" << false << 0.0 << "Force reference F_r [N] = -5: must be in (0, 1e+06]";
   }
   void parse() {
     QFETCH(QString, key);
@@ -168,7 +189,7 @@ class TestControlSettingsEditor : public QObject {
     QSignalSpy spy(&editor, &ControlSettingsEditor::settingsEdited);
     type(editor, "xi", "5");
     QCOMPARE(spy.count(), 0);
-    QCOMPARE(editor.settings().xi, 0.75);  // unchanged
+    QCOMPARE(editor.settings().xi, 0.75);                // unchanged
     QCOMPARE(editor.field("xi")->text(), QString("5"));  // kept for correction
     QCOMPARE(editor.errorText(), QString("Model damping \u03be [\u2013] = 5: must be in [0.1, 2]"));
     QVERIFY(!editor.field("xi")->styleSheet().isEmpty());

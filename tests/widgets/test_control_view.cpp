@@ -112,7 +112,7 @@ class TestControlView : public QObject {
     view.betaSlider()->setValue(20);
     view.betaSlider()->setValue(35);
     QCOMPARE(view.betaSpin()->value(), 0.35);
-    QCOMPARE(spy.count(), 0);  // not before the debounce
+    QCOMPARE(spy.count(), 0);                      // not before the debounce
     QCOMPARE(view.jcPlot()->currentBeta(), 0.35);  // the marker follows at once
     QTRY_COMPARE_WITH_TIMEOUT(spy.count(), 1, 1000);
     QCOMPARE(spy.at(0).at(0).toDouble(), 0.35);
@@ -172,8 +172,7 @@ class TestControlView : public QObject {
     QCOMPARE(view.graphPointCount("feed continuous"), samples * dense);
     QCOMPARE(view.graphPointCount("depth"), 5);
     const QStringList names = {"a1", "a2", "b0", "b1", "b2"};
-    for (int j = 0; j < 5; ++j)
-      QCOMPARE(view.graphPointCount("theta " + names[j]), j < thetas ? samples : -1);
+    for (int j = 0; j < 5; ++j) QCOMPARE(view.graphPointCount("theta " + names[j]), j < thetas ? samples : -1);
     QCOMPARE(view.graphPointCount("no such graph"), -1);
     const auto [t0, t1] = view.plots()->timeRange();
     QVERIFY(t1 > t0);

@@ -27,7 +27,9 @@ GrafcetChartData smallChart() {
 // The main window's validator, in miniature: a transition needs a source and a target that exist.
 QList<ChartIssue> validator(const GrafcetChartData& c) {
   QList<ChartIssue> issues;
-  auto exists = [&](int id) { return std::any_of(c.steps.begin(), c.steps.end(), [id](const auto& s) { return s.id == id; }); };
+  auto exists = [&](int id) {
+    return std::any_of(c.steps.begin(), c.steps.end(), [id](const auto& s) { return s.id == id; });
+  };
   for (const GrafcetTransitionView& t : c.transitions) {
     const QString element = QStringLiteral("transition %1").arg(t.id);
     if (t.to.isEmpty()) issues << ChartIssue{element, -1, t.id, QStringLiteral("no target step")};

@@ -1,10 +1,10 @@
 // GrafcetChartView (issue 8): the automatic layout gives every step and transition a rect, steps never
 // overlap, levels follow the BFS from the initial step, upward arcs are back arcs; the initial step is
 // drawn double; tokens round trip; clicks emit the element's id; the PNG export draws the chart.
-#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 
@@ -24,9 +24,9 @@ GrafcetChartData smc2Chart() {
              {4, "Contact and no chatter", false, {"A", "B", "D", "E", "H", "I", "J", "K"}},
              {5, "Operator feed hold active", false, {"A", "B", "C"}},
              {6, "Chatter suppression routine active", false, {"A", "G"}}};
-  c.transitions = {{1, {1}, {2}, "1", 1},         {2, {2}, {5}, "a", 1},     {3, {2}, {3}, "b", 2},
-                   {4, {3}, {4}, "1", 1},         {5, {4}, {5}, "a", 1},     {7, {4}, {2}, "not b", 2},
-                   {6, {4}, {6}, "c or d", 3},    {8, {5}, {2}, "not a", 1}, {9, {6}, {2}, "e", 1}};
+  c.transitions = {{1, {1}, {2}, "1", 1},      {2, {2}, {5}, "a", 1},     {3, {2}, {3}, "b", 2},
+                   {4, {3}, {4}, "1", 1},      {5, {4}, {5}, "a", 1},     {7, {4}, {2}, "not b", 2},
+                   {6, {4}, {6}, "c or d", 3}, {8, {5}, {2}, "not a", 1}, {9, {6}, {2}, "e", 1}};
   return c;
 }
 }  // namespace
@@ -39,7 +39,8 @@ class TestGrafcetChartView : public QObject {
     view.setChart(smc2Chart());
     const GrafcetChartData c = smc2Chart();
     for (const auto& s : c.steps) QVERIFY2(!view.stepRect(s.id).isNull(), qPrintable(QString::number(s.id)));
-    for (const auto& t : c.transitions) QVERIFY2(!view.transitionRect(t.id).isNull(), qPrintable(QString::number(t.id)));
+    for (const auto& t : c.transitions)
+      QVERIFY2(!view.transitionRect(t.id).isNull(), qPrintable(QString::number(t.id)));
     for (const auto& a : c.steps)
       for (const auto& b : c.steps)
         if (a.id < b.id) QVERIFY(!view.stepRect(a.id).adjusted(-4, -4, 4, 4).intersects(view.stepRect(b.id)));
@@ -55,7 +56,8 @@ class TestGrafcetChartView : public QObject {
     QVERIFY(view.stepRect(3).left() > view.stepRect(5).right());
     QCOMPARE(view.stepRect(4).center().x(), view.stepRect(3).center().x());
     // Bars between their source and the next level, in priority order from the left.
-    for (const auto& t : c.transitions) QVERIFY(view.transitionRect(t.id).top() > view.stepRect(t.from.front()).bottom());
+    for (const auto& t : c.transitions)
+      QVERIFY(view.transitionRect(t.id).top() > view.stepRect(t.from.front()).bottom());
     QVERIFY(view.transitionRect(5).center().x() < view.transitionRect(7).center().x());
     QVERIFY(view.transitionRect(7).center().x() < view.transitionRect(6).center().x());
     // Upward arcs are back arcs.
@@ -70,8 +72,8 @@ class TestGrafcetChartView : public QObject {
 
   void incompleteTransitionsStillHaveABar() {
     GrafcetChartData c = smc2Chart();
-    c.transitions.push_back({20, {6}, {}, "x", 2});   // no target
-    c.transitions.push_back({21, {}, {4}, "y", 1});   // no source
+    c.transitions.push_back({20, {6}, {}, "x", 2});  // no target
+    c.transitions.push_back({21, {}, {4}, "y", 1});  // no source
     c.steps.push_back({7, "Unreachable", false, {}});
     GrafcetChartView view;
     view.setChart(c);

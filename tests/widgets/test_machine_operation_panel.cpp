@@ -9,8 +9,8 @@
 #include <QSignalSpy>
 
 #include "display_units.h"
-#include "machine_operation_panel.h"
 #include "document/project_document.h"
+#include "machine_operation_panel.h"
 #include "test_registry.h"
 
 using mx::app::Project;

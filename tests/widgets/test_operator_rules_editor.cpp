@@ -29,8 +29,12 @@ QList<QColor> lineColours(const OperatorRulesEditor& editor, int line) {
   return out;
 }
 
-bool isRed(const QColor& c) { return c.red() > 200 && c.green() < 220 && c.blue() < 220; }
-bool isGreen(const QColor& c) { return c.green() > 200 && c.red() < c.green() && c.blue() < c.green(); }
+bool isRed(const QColor& c) {
+  return c.red() > 200 && c.green() < 220 && c.blue() < 220;
+}
+bool isGreen(const QColor& c) {
+  return c.green() > 200 && c.red() < c.green() && c.blue() < c.green();
+}
 
 }  // namespace
 
@@ -43,7 +47,8 @@ class TestOperatorRulesEditor : public QObject {
     editor.textEdit()->setPlainText(QStringList{kGood1, kBad2, kGood3}.join('\n'));
     QVERIFY(!editor.check());
     // The message is the parser's, verbatim.
-    const mx::RuleParseResult direct = mx::parseRules({kGood1.toStdString(), kBad2.toStdString(), kGood3.toStdString()});
+    const mx::RuleParseResult direct =
+        mx::parseRules({kGood1.toStdString(), kBad2.toStdString(), kGood3.toStdString()});
     QCOMPARE(direct.errors.size(), std::size_t{1});
     const QString expected = QString::fromStdString(direct.errors.front().toString());
     QCOMPARE(expected, QStringLiteral("line 2, column 23: expected a number after 'tool.diameter_mm <', got 'then'"));

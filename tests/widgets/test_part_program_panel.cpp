@@ -64,7 +64,9 @@ QColor background(const PartProgramPanel& p, int r, int c) {
 }
 
 // A display path inside the test's temporary folder (the runner's TMPDIR); the file is never opened.
-QString programPath(const QString& name) { return QDir::temp().filePath(name); }
+QString programPath(const QString& name) {
+  return QDir::temp().filePath(name);
+}
 
 void loadSample(PartProgramPanel& panel, const QString& unit = "mm/min") {
   panel.setProgram(programPath("part.nc"), sampleRows(), sampleWarnings(), unit, "Fanuc");
@@ -121,7 +123,8 @@ class TestPartProgramPanel : public QObject {
     QCOMPARE(panel.rows().size(), 7);
     QCOMPARE(panel.table()->model()->rowCount(), 7);
     QCOMPARE(panel.changedCount(), 3);
-    QCOMPARE(panel.headerText(), QString(programPath("part.nc") + " \u2014 controller: Fanuc \u2014 3 of 7 blocks changed"));
+    QCOMPARE(panel.headerText(),
+             QString(programPath("part.nc") + " \u2014 controller: Fanuc \u2014 3 of 7 blocks changed"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kLine), QString("4"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kBlock), QString("G1 X50 Z-2 F1200"));
     QCOMPARE(cell(panel, 3, PartProgramPanel::kFeed), QString("1200"));

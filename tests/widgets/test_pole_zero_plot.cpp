@@ -34,17 +34,17 @@ class TestPoleZeroPlot : public QObject {
     QTest::addColumn<int>("n_unstable");
     QTest::addColumn<int>("n_labels");
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    QTest::newRow("beta = 0: 2 poles, 1 zero") << QVector<C>{{0.0, 0.0}, {0.6, 0.0}} << QVector<C>{{-0.4, 0.0}} << 2 << 1
-                                               << 0 << 0;
-    QTest::newRow("beta != 0: double pole at 0") << QVector<C>{{0.0, 0.0}, {0.0, 0.0}, {0.6, 0.0}}
-                                                 << QVector<C>{{-0.4, 0.0}, {0.1, 0.0}} << 3 << 2 << 0 << 1;
+    QTest::newRow("beta = 0: 2 poles, 1 zero")
+        << QVector<C>{{0.0, 0.0}, {0.6, 0.0}} << QVector<C>{{-0.4, 0.0}} << 2 << 1 << 0 << 0;
+    QTest::newRow("beta != 0: double pole at 0")
+        << QVector<C>{{0.0, 0.0}, {0.0, 0.0}, {0.6, 0.0}} << QVector<C>{{-0.4, 0.0}, {0.1, 0.0}} << 3 << 2 << 0 << 1;
     QTest::newRow("unstable zero") << QVector<C>{{0.6, 0.0}} << QVector<C>{{-1.8, 0.0}, {0.2, 0.0}} << 1 << 2 << 1 << 0;
     QTest::newRow("zero on the circle is not unstable") << QVector<C>{} << QVector<C>{{-1.0, 0.0}} << 0 << 1 << 0 << 0;
     QTest::newRow("complex pair") << QVector<C>{{0.5, 0.4}, {0.5, -0.4}} << QVector<C>{} << 2 << 0 << 0 << 0;
     QTest::newRow("NaN roots left out") << QVector<C>{{nan, 0.0}, {0.3, 0.0}} << QVector<C>{{0.0, nan}} << 1 << 0 << 0
                                         << 0;
-    QTest::newRow("double zero and triple pole") << QVector<C>{{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}
-                                                 << QVector<C>{{-0.5, 0.0}, {-0.5, 0.0}} << 3 << 2 << 0 << 2;
+    QTest::newRow("double zero and triple pole")
+        << QVector<C>{{0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}} << QVector<C>{{-0.5, 0.0}, {-0.5, 0.0}} << 3 << 2 << 0 << 2;
   }
   void rootsPlotted() {
     QFETCH(QVector<C>, poles);

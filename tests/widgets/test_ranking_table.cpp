@@ -10,12 +10,12 @@
 #include <QTableView>
 #include <cmath>
 
-#include "services/expert_request.h"
 #include "display_units.h"
-#include "expert/expert_session.h"
 #include "document/project.h"
+#include "expert/expert_session.h"
 #include "ranking_table.h"
 #include "ranking_table_model.h"
+#include "services/expert_request.h"
 #include "test_registry.h"
 
 using mx::widgets::RankingRow;

@@ -1,9 +1,9 @@
 // SupervisionTimeline (issue 8): streamed F_Y / power chunks add up, the power limit and F_ref lines
 // span the data, module spans fill the A-L rows, events are counted and answer a tooltip; the PNG
 // export of a synthetic SMC II run.
-#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
+#include <QTemporaryDir>
 #include <cmath>
 
 #include "supervision_timeline.h"
@@ -22,7 +22,8 @@ SupervisionSeries series(double from, double to, double dt = 0.02) {
   s.force_reference_n = kRef;
   for (double t = from; t < to - 1e-9; t += dt) {
     double f = 0;
-    if (t >= 1.0 && t < 3.2) f = 900.0 + 60.0 * std::exp(1.2 * (t - 1.0)) * std::sin(40.0 * t);
+    if (t >= 1.0 && t < 3.2)
+      f = 900.0 + 60.0 * std::exp(1.2 * (t - 1.0)) * std::sin(40.0 * t);
     else if ((t >= 3.4 && t < 6.0) || (t >= 7.0 && t < 11.0))
       f = kRef * (1.0 + 0.9 * std::exp(-(t - 3.4) / 0.3) * std::cos(9.0 * (t - 3.4))) + 15.0 * std::sin(31.0 * t);
     s.t_s << t;
@@ -34,20 +35,17 @@ SupervisionSeries series(double from, double to, double dt = 0.02) {
 }
 
 QVector<ModuleSpan> spans() {
-  return {{"A", 0, 12},   {"B", 0, 3.2},  {"B", 3.4, 12}, {"I", 0, 3.2}, {"I", 3.4, 6},  {"I", 7, 12},
-          {"J", 0, 3.2},  {"J", 3.4, 6},  {"J", 7, 12},   {"D", 1, 3.2}, {"E", 1, 3.2},  {"H", 1, 3.2},
-          {"K", 1, 3.2},  {"G", 3.2, 3.4}, {"F", 3.2, 3.21}, {"C", 3.2, 3.4}, {"C", 6, 7}, {"D", 3.5, 6},
-          {"E", 3.5, 6},  {"H", 3.5, 6},  {"K", 3.5, 6},  {"D", 7, 11},  {"E", 7, 11},  {"H", 7, 11},
-          {"K", 7, 11}};
+  return {{"A", 0, 12},    {"B", 0, 3.2}, {"B", 3.4, 12}, {"I", 0, 3.2},   {"I", 3.4, 6},
+          {"I", 7, 12},    {"J", 0, 3.2}, {"J", 3.4, 6},  {"J", 7, 12},    {"D", 1, 3.2},
+          {"E", 1, 3.2},   {"H", 1, 3.2}, {"K", 1, 3.2},  {"G", 3.2, 3.4}, {"F", 3.2, 3.21},
+          {"C", 3.2, 3.4}, {"C", 6, 7},   {"D", 3.5, 6},  {"E", 3.5, 6},   {"H", 3.5, 6},
+          {"K", 3.5, 6},   {"D", 7, 11},  {"E", 7, 11},   {"H", 7, 11},    {"K", 7, 11}};
 }
 
 QVector<SupervisionEventView> events() {
-  return {{1.0, "contact", "F_Y > 50 N (J)"},
-          {3.2, "chatter_detected", "automatic detector (E)"},
-          {3.21, "replan", "2 passes of 1.00 mm"},
-          {6.0, "feed_hold_on", "operator"},
-          {7.0, "feed_hold_off", "operator"},
-          {11.0, "contact_lost", ""}};
+  return {{1.0, "contact", "F_Y > 50 N (J)"},      {3.2, "chatter_detected", "automatic detector (E)"},
+          {3.21, "replan", "2 passes of 1.00 mm"}, {6.0, "feed_hold_on", "operator"},
+          {7.0, "feed_hold_off", "operator"},      {11.0, "contact_lost", ""}};
 }
 }  // namespace
 

@@ -1,9 +1,9 @@
 // SupervisorComparison (issue 8): three columns none | SMC I | SMC II, each with its F_Y/power plot
 // and its metric texts; the PNG export of the paper-like outcome.
-#include <QTemporaryDir>
 #include <QApplication>
 #include <QImage>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <cmath>
 
 #include "supervisor_comparison.h"
@@ -20,7 +20,8 @@ SupervisionSeries run(double level_n, double chatter_from_s, double hold_s, doub
   s.force_reference_n = 600;
   for (double t = 0; t < end_s; t += 0.02) {
     double f = t < 0.5 ? 0.0 : level_n * (1.0 + 0.3 * std::exp(-(t - 0.5) / 0.2) * std::cos(12 * (t - 0.5)));
-    if (chatter_from_s >= 0 && t > chatter_from_s && t < hold_s) f += 80.0 * std::exp(t - chatter_from_s) * std::sin(45 * t);
+    if (chatter_from_s >= 0 && t > chatter_from_s && t < hold_s)
+      f += 80.0 * std::exp(t - chatter_from_s) * std::sin(45 * t);
     if (t >= hold_s && t < hold_s + 0.2) f = 0;
     s.t_s << t;
     s.force_y_n << std::max(0.0, f);
@@ -30,8 +31,8 @@ SupervisionSeries run(double level_n, double chatter_from_s, double hold_s, doub
   return s;
 }
 
-SupervisionMetricsView metrics(const QString& c, double power, double overshoot, std::optional<double> chatter, int passes,
-                               double cycle) {
+SupervisionMetricsView metrics(const QString& c, double power, double overshoot, std::optional<double> chatter,
+                               int passes, double cycle) {
   SupervisionMetricsView m;
   m.controller = c;
   m.max_power_pct_of_limit = power;

@@ -142,10 +142,12 @@ class TestSupervisorView : public QObject {
     view.setAttribute(Qt::WA_DontShowOnScreen);
     GrafcetChartData c;
     c.name = "SMC I (transfer line)";
-    c.steps = {{1, "Initialize modules", true, {"L*"}}, {2, "No contact and no chatter", false, {"A", "B", "I", "J"}},
-               {3, "Reset modules", false, {"A", "B", "L*"}}, {4, "Contact and no chatter", false, {"A", "B", "I", "J", "L"}},
+    c.steps = {{1, "Initialize modules", true, {"L*"}},
+               {2, "No contact and no chatter", false, {"A", "B", "I", "J"}},
+               {3, "Reset modules", false, {"A", "B", "L*"}},
+               {4, "Contact and no chatter", false, {"A", "B", "I", "J", "L"}},
                {5, "Operator feed hold active", false, {"A", "B", "C"}}};
-    c.transitions = {{1, {1}, {2}, "1", 1}, {2, {2}, {5}, "a", 1}, {3, {2}, {3}, "b", 2}, {4, {3}, {4}, "1", 1},
+    c.transitions = {{1, {1}, {2}, "1", 1}, {2, {2}, {5}, "a", 1},     {3, {2}, {3}, "b", 2},    {4, {3}, {4}, "1", 1},
                      {5, {4}, {5}, "a", 1}, {6, {4}, {2}, "not b", 2}, {7, {5}, {2}, "not a", 1}};
     view.chartView()->setChart(c);
     view.editor()->setChart(c);

@@ -15,7 +15,9 @@ Q_DECLARE_METATYPE(W3)
 
 namespace {
 
-double pixelDistance(const QPointF& a, const QPointF& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+double pixelDistance(const QPointF& a, const QPointF& b) {
+  return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
 
 void verifySimplex(const W3& w) {
   for (double v : w) QVERIFY(v >= 0.0 && v <= 1.0);
