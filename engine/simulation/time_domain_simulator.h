@@ -14,11 +14,11 @@
 #include "core/cancellation.h"
 #include "model/milling_setup.h"
 #include "simulation/chatter_detection.h"
+#include "simulation/modal_dynamics.h"
+#include "simulation/regenerative_force.h"
 #include "simulation/simulation_types.h"
 
 namespace mx {
-
-inline constexpr int kMaxRegenerativePasses = 8;
 
 class TimeDomainSimulator {
  public:
@@ -48,6 +48,11 @@ class TimeDomainSimulator {
  private:
   template <class Plans, class Delays>
   void integrate(Plans& plans, Delays& delays, const JobControl& control);
+  // Steps from the initial state until total_steps_ or the divergence stop; returns the steps taken.
+  template <class Plans, class Stepper, class Recorders>
+  std::int64_t stepAll(const ModalDynamics& dynamics, Plans& plans, Stepper& stepper, Recorders& recorders,
+                       const JobControl& control);
+  double divergenceLimit() const;
 
   MillingSetup setup_;
   OperatingPoint point_;

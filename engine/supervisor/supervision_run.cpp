@@ -4,9 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <stdexcept>
 
 #include "supervisor/module_scheduler.h"
+#include "supervisor/operator_event_queue.h"
+#include "supervisor/rolling_mean.h"
+#include "supervisor/supervision_metrics.h"
 
 namespace mx {
 
@@ -72,187 +76,270 @@ double referenceForceFromPower(const SupervisionScenario& s) {
   return s.power_margin * s.limits.spindle_power_limit_W / kappa;
 }
 
+namespace {
+
+// The run's sampling: process steps per 0.5 ms sample, and the samples per scan, per spindle
+// revolution (the force and feed windows, the regeneration RMS), per tooth period (the mean power)
+// and per recorded point.
+struct SampleClock {
+  long long steps_per_sample = 1;
+  double period_s = 0.0;  // Ts
+  long long samples_per_scan = 1;
+  std::size_t samples_per_rev = 8;
+  std::size_t samples_per_tooth = 1;
+  long long record_every = 1;
+};
+
+SampleClock sampleClock(const SupervisionScenario& sc, const FaceMillingProcess& proc, int teeth) {
+  SampleClock c;
+  const double period = proc.spindlePeriod();
+  c.steps_per_sample = std::max<long long>(1, std::llround(sc.sample_period_s / proc.stepSize()));
+  c.period_s = static_cast<double>(c.steps_per_sample) * proc.stepSize();
+  c.samples_per_scan = std::max<long long>(1, std::llround(sc.scan_period_s / c.period_s));
+  c.samples_per_rev = static_cast<std::size_t>(std::max<long long>(8, std::llround(period / c.period_s)));
+  c.samples_per_tooth = static_cast<std::size_t>(std::max<long long>(1, std::llround(period / teeth / c.period_s)));
+  c.record_every = std::max<long long>(1, std::llround(sc.record_period_s / c.period_s));
+  return c;
+}
+
+// Appends v and drops the oldest values beyond the last n.
+void keepLast(std::deque<double>& q, double v, std::size_t n) {
+  q.push_back(v);
+  while (q.size() > n) q.pop_front();
+}
+
+// One supervised run: the passes of the part program, each sampled until the tool has crossed the
+// part; the supervisor logic is scanned every samples_per_scan samples, the modules tick every sample.
+class SupervisedRun {
+ public:
+  SupervisedRun(const SupervisionScenario& sc, SupervisorLogic& logic, const JobControl& job);
+  SupervisedRun(const SupervisedRun&) = delete;  // ctx_.log refers to this run
+  SupervisedRun& operator=(const SupervisedRun&) = delete;
+
+  SupervisionResult run();
+
+ private:
+  MachiningContext context();  // its log appends to res_.events
+  MetricsSettings metricsSettings() const;
+  void startPass(std::size_t k);
+  void sample(std::size_t k);
+  double updateSignals(const FaceMillingOutput& o);
+  void applyOperatorEvents();
+  void scan(const FaceMillingOutput& o);
+  void tickModules();
+  void replan(std::size_t k, const FaceMillingOutput& o);
+  bool lastPass() const { return ctx_.current_pass + 1 == static_cast<int>(ctx_.passes_m.size()); }
+
+  const SupervisionScenario& sc_;
+  SupervisorLogic& logic_;
+  const JobControl& job_;
+  std::chrono::steady_clock::time_point wall0_ = std::chrono::steady_clock::now();
+  SupervisionResult res_;
+  FaceMillingParameters part_;  // the scenario's process with the part's position and length
+  FaceMillingProcess proc_;
+  double R_;       // tool radius
+  double period_;  // spindle period
+  SampleClock clock_;
+  MachiningContext ctx_;
+  ModuleScheduler scheduler_;
+  OperatorEventQueue events_;
+  RollingMean power_;  // cutting power over a tooth period
+  RollingMean regen_;  // squared regeneration over a revolution
+  SupervisionMetricsAccumulator metrics_;
+  double t_ = 0.0;
+  long long sample_ = 0;
+  double next_progress_ = 0.0;
+  bool last_stable_ = true;
+  std::vector<std::string> last_steps_;
+  std::string last_modules_ = "-";
+  std::vector<double> material_start_;  // per pass: where uncut material begins
+  double x_begin_, x_end_;              // tool centre at the start and the end of a pass
+  double f_nominal_;                    // programmed feed per tooth
+};
+
+FaceMillingParameters withPart(const SupervisionScenario& sc) {
+  FaceMillingParameters p = sc.process;
+  p.part_start_x_m = sc.part_start_x_m;
+  p.part_length_m = sc.part_length_m;
+  return p;
+}
+
+SupervisedRun::SupervisedRun(const SupervisionScenario& sc, SupervisorLogic& logic, const JobControl& job)
+    : sc_(sc),
+      logic_(logic),
+      job_(job),
+      part_(withPart(sc)),
+      proc_(part_),
+      R_(part_.tool_radius_m),
+      period_(proc_.spindlePeriod()),
+      clock_(sampleClock(sc, proc_, part_.teeth)),
+      ctx_(context()),
+      scheduler_(makeStandardModules(sc.chatter_detector, sc.force_model)),
+      events_(sc.events),
+      power_(clock_.samples_per_tooth),
+      regen_(clock_.samples_per_rev),
+      metrics_(metricsSettings()),
+      material_start_(1, sc.part_start_x_m),
+      x_begin_(sc.part_start_x_m - R_ - sc.approach_m),
+      x_end_(sc.part_start_x_m + sc.part_length_m + R_ + sc.approach_m),
+      f_nominal_(sc.programmed_feed_m_per_s * period_ / part_.teeth) {
+  res_.controller = controllerName(sc.controller);
+  logic_.reset();
+}
+
+MachiningContext SupervisedRun::context() {
+  MachiningContext ctx;
+  ctx.teeth = part_.teeth;
+  ctx.spindle_rev_per_s = 1.0 / period_;
+  ctx.sample_period_s = clock_.period_s;
+  ctx.limits = sc_.limits;
+  ctx.reference_force_N = referenceForceFromPower(sc_);
+  ctx.programmed_feed_m_per_s = sc_.programmed_feed_m_per_s;
+  ctx.commanded_feed_m_per_s = sc_.programmed_feed_m_per_s;
+  ctx.passes_m = sc_.pass_depths_m;
+  ctx.log = [this](double t, const std::string& type, const std::string& detail) {
+    res_.events.push_back({t, type, detail});
+  };
+  return ctx;
+}
+
+MetricsSettings SupervisedRun::metricsSettings() const {
+  MetricsSettings s;
+  s.reference_force_N = ctx_.reference_force_N;
+  s.power_limit_W = sc_.limits.spindle_power_limit_W;
+  s.sample_period_s = clock_.period_s;
+  s.spindle_period_s = period_;
+  s.chatter_indicator_threshold = sc_.chatter_indicator_threshold;
+  return s;
+}
+
+SupervisionResult SupervisedRun::run() {
+  for (ctx_.current_pass = 0; ctx_.current_pass < static_cast<int>(ctx_.passes_m.size()); ++ctx_.current_pass) {
+    const auto k = static_cast<std::size_t>(ctx_.current_pass);
+    startPass(k);
+    while (proc_.output().tool_x_m < x_end_) sample(k);
+    // The return to the start at the maximum feed rate: counted, not simulated.
+    if (ctx_.current_pass + 1 < static_cast<int>(ctx_.passes_m.size()))
+      t_ += (x_end_ - x_begin_) / sc_.limits.max_feed_rate_m_per_s;
+  }
+  res_.events.push_back({t_, "end", "part program complete"});
+  res_.final_program_m = ctx_.passes_m;
+  res_.metrics = metrics_.finish(t_, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count());
+  return std::move(res_);
+}
+
+// A pass cuts from where the material still stands (an earlier re-planned pass may have cut less).
+void SupervisedRun::startPass(std::size_t k) {
+  if (material_start_.size() <= k) material_start_.resize(k + 1, sc_.part_start_x_m);
+  FaceMillingParameters pass_p = part_;
+  pass_p.part_start_x_m = std::max(sc_.part_start_x_m, material_start_[k]);
+  pass_p.part_length_m = std::max(1e-6, sc_.part_start_x_m + sc_.part_length_m - pass_p.part_start_x_m);
+  proc_ = FaceMillingProcess(pass_p);
+  proc_.setDepth(ctx_.currentDepth());
+  proc_.reset(x_begin_);
+  res_.events.push_back(
+      {t_, "pass_start", "pass " + std::to_string(k + 1) + " at " + std::to_string(ctx_.currentDepth() * 1e3) + " mm"});
+  metrics_.countPass();
+}
+
+// One sample period Ts: the process, the measured signals, the operator, the scan, the modules.
+void SupervisedRun::sample(std::size_t k) {
+  proc_.setFeedRate(ctx_.commanded_feed_m_per_s);
+  for (long long i = 0; i < clock_.steps_per_sample; ++i) proc_.step();
+  t_ += clock_.period_s;
+  ++sample_;
+  ctx_.t_s = t_;
+  const FaceMillingOutput& o = proc_.output();
+  const double power = updateSignals(o);
+  applyOperatorEvents();
+  if ((sample_ - 1) % clock_.samples_per_scan == 0) scan(o);
+  tickModules();
+  if (ctx_.replanned) replan(k, o);
+  if (ctx_.b) metrics_.addContactForce(ctx_.F_Y_N);
+  if (sample_ % clock_.record_every == 0)
+    res_.series.push_back({t_, o.fy_N, ctx_.F_Y_N, power, proc_.feedRate(), proc_.depth(), ctx_.current_pass + 1});
+  if (t_ > sc_.max_time_s)
+    throw std::runtime_error("supervision: run exceeded max_time_s = " + std::to_string(sc_.max_time_s) + " s");
+}
+
+// The modules' measurement windows, the mean power and the TDS chatter indicator; returns the power.
+double SupervisedRun::updateSignals(const FaceMillingOutput& o) {
+  keepLast(ctx_.fy_samples, o.fy_N, clock_.samples_per_rev);
+  keepLast(ctx_.feed_samples, ctx_.commanded_feed_m_per_s, clock_.samples_per_rev);
+  power_.push(o.power_W);
+  regen_.push(o.regen_m * o.regen_m);
+  const double power = std::max(0.0, power_.mean());
+  const double part_end = sc_.part_start_x_m + sc_.part_length_m;
+  const bool fully_engaged = o.tool_x_m > sc_.part_start_x_m + R_ && o.tool_x_m < part_end - R_;
+  metrics_.addPower(power, fully_engaged && lastPass());
+  const double regen_rms = std::sqrt(std::max(0.0, regen_.mean()));
+  const bool over_part = o.tool_x_m > sc_.part_start_x_m - R_ && o.tool_x_m < part_end + R_;
+  const bool feeding = *std::min_element(ctx_.feed_samples.begin(), ctx_.feed_samples.end()) > 0.0;
+  metrics_.addChatterIndicator(t_, over_part && feeding, regen_rms / f_nominal_);
+  return power;
+}
+
+void SupervisedRun::applyOperatorEvents() {
+  if (sc_.poll_events) {  // events injected while the run goes on (the GUI's operator buttons)
+    std::vector<OperatorEvent> injected;
+    sc_.poll_events(t_, injected);
+    events_.injectAt(t_, injected);
+  }
+  while (const std::optional<OperatorEvent> e = events_.popDue(t_)) {
+    if (e->type == OperatorEventType::FeedHoldOn) ctx_.operator_feed_hold = true;
+    if (e->type == OperatorEventType::FeedHoldOff) ctx_.operator_feed_hold = false;
+    if (e->type == OperatorEventType::ChatterSignal) ctx_.operator_chatter_key = true;
+    res_.events.push_back({t_, "operator", operatorEventText(e->type)});
+  }
+}
+
+// A scan of the supervisor logic; its actions switch the modules.
+void SupervisedRun::scan(const FaceMillingOutput& o) {
+  if (job_.cancelled()) throw Cancelled();
+  SignalValues sig{{"a", ctx_.a}, {"b", ctx_.b}, {"c", ctx_.c}, {"d", ctx_.d}, {"e", ctx_.e}, {"F_Y", ctx_.F_Y_N}};
+  const ScanOutput out = logic_.scan(sig);
+  // Reported once per episode, not at every scan of it.
+  if (!out.stable && last_stable_) res_.events.push_back({t_, "logic_unstable", "no stable situation in this scan"});
+  last_stable_ = out.stable;
+  scheduler_.applyScan(out, ctx_);
+  if (out.active_steps != last_steps_) {
+    last_steps_ = out.active_steps;
+    res_.steps.push_back({t_, last_steps_});
+  }
+  job_.report(std::min(1.0, (ctx_.current_pass + (o.tool_x_m - x_begin_) / (x_end_ - x_begin_)) /
+                                static_cast<double>(ctx_.passes_m.size())));
+  if (sc_.on_progress && t_ >= next_progress_) {
+    next_progress_ = t_ + sc_.progress_period_s;
+    res_.metrics = metrics_.current();
+    sc_.on_progress(res_, t_);
+  }
+}
+
+void SupervisedRun::tickModules() {
+  scheduler_.tick(ctx_);
+  const std::string mods = scheduler_.activeLetters();
+  if (mods != last_modules_) {
+    last_modules_ = mods;
+    res_.modules.push_back({t_, mods});
+  }
+  metrics_.addDetectorSignal(t_, ctx_.c || ctx_.d);
+}
+
+// F rewrote the program: the process takes the new depth, and the later passes start where this one
+// has cut so far.
+void SupervisedRun::replan(std::size_t k, const FaceMillingOutput& o) {
+  ctx_.replanned = false;
+  proc_.setDepth(ctx_.currentDepth());
+  material_start_.resize(ctx_.passes_m.size(), sc_.part_start_x_m);
+  for (std::size_t j = k + 1; j < material_start_.size(); ++j) material_start_[j] = o.tool_x_m + R_;
+}
+
+}  // namespace
+
 SupervisionResult runSupervision(const SupervisionScenario& sc, SupervisorLogic& logic, const JobControl& job) {
   validateSupervisionScenario(sc);
-  const auto wall0 = std::chrono::steady_clock::now();
-  SupervisionResult res;
-  res.controller = controllerName(sc.controller);
-  SupervisionMetrics& m = res.metrics;
-
-  FaceMillingParameters pp = sc.process;
-  pp.part_start_x_m = sc.part_start_x_m;
-  pp.part_length_m = sc.part_length_m;
-  FaceMillingProcess proc(pp);
-  const double R = pp.tool_radius_m, period = proc.spindlePeriod();
-  const auto steps_per_sample = std::max<long long>(1, std::llround(sc.sample_period_s / proc.stepSize()));
-  const double Ts = static_cast<double>(steps_per_sample) * proc.stepSize();
-  const auto samples_per_scan = std::max<long long>(1, std::llround(sc.scan_period_s / Ts));
-  const auto samples_per_rev = static_cast<std::size_t>(std::max<long long>(8, std::llround(period / Ts)));
-  const auto samples_per_tooth = static_cast<std::size_t>(std::max<long long>(1, std::llround(period / pp.teeth / Ts)));
-  const auto record_every = std::max<long long>(1, std::llround(sc.record_period_s / Ts));
-
-  MachiningContext ctx;
-  ctx.teeth = pp.teeth;
-  ctx.spindle_rev_per_s = 1.0 / period;
-  ctx.sample_period_s = Ts;
-  ctx.limits = sc.limits;
-  ctx.reference_force_N = referenceForceFromPower(sc);
-  ctx.programmed_feed_m_per_s = sc.programmed_feed_m_per_s;
-  ctx.commanded_feed_m_per_s = sc.programmed_feed_m_per_s;
-  ctx.passes_m = sc.pass_depths_m;
-  ctx.log = [&res](double t, const std::string& type, const std::string& detail) {
-    res.events.push_back({t, type, detail});
-  };
-  m.reference_force_N = ctx.reference_force_N;
-  ModuleScheduler scheduler(makeStandardModules(sc.chatter_detector, sc.force_model));
-  logic.reset();
-
-  std::vector<OperatorEvent> events = sc.events;
-  double next_progress = 0.0;
-  bool last_stable = true;
-  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.t_s < b.t_s; });
-  std::size_t next_event = 0;
-  std::deque<double> power_window, regen_window;
-  double power_sum = 0.0, regen_sum2 = 0.0, t = 0.0, tds_first = -1.0, tds_run_start = -1.0;
-  long long sample = 0;
-  std::vector<std::string> last_steps;
-  std::string last_modules = "-";
-  std::vector<double> material_start(1, sc.part_start_x_m);  // per pass: where uncut material begins
-  const double x_begin = sc.part_start_x_m - R - sc.approach_m;
-  const double x_end = sc.part_start_x_m + sc.part_length_m + R + sc.approach_m;
-  const double f_nominal = sc.programmed_feed_m_per_s * period / pp.teeth;
-
-  for (ctx.current_pass = 0; ctx.current_pass < static_cast<int>(ctx.passes_m.size()); ++ctx.current_pass) {
-    const auto k = static_cast<std::size_t>(ctx.current_pass);
-    if (material_start.size() <= k) material_start.resize(k + 1, sc.part_start_x_m);
-    FaceMillingParameters pass_p = pp;
-    pass_p.part_start_x_m = std::max(sc.part_start_x_m, material_start[k]);
-    pass_p.part_length_m = std::max(1e-6, sc.part_start_x_m + sc.part_length_m - pass_p.part_start_x_m);
-    proc = FaceMillingProcess(pass_p);
-    proc.setDepth(ctx.currentDepth());
-    proc.reset(x_begin);
-    res.events.push_back(
-        {t, "pass_start", "pass " + std::to_string(k + 1) + " at " + std::to_string(ctx.currentDepth() * 1e3) + " mm"});
-    ++m.passes;
-    while (proc.output().tool_x_m < x_end) {
-      proc.setFeedRate(ctx.commanded_feed_m_per_s);
-      for (long long i = 0; i < steps_per_sample; ++i) proc.step();
-      t += Ts;
-      ++sample;
-      ctx.t_s = t;
-      const FaceMillingOutput& o = proc.output();
-      auto push = [&](std::deque<double>& q, double v, std::size_t n) {
-        q.push_back(v);
-        while (q.size() > n) q.pop_front();
-      };
-      push(ctx.fy_samples, o.fy_N, samples_per_rev);
-      push(ctx.feed_samples, ctx.commanded_feed_m_per_s, samples_per_rev);
-      power_window.push_back(o.power_W);
-      power_sum += o.power_W;
-      if (power_window.size() > samples_per_tooth) {
-        power_sum -= power_window.front();
-        power_window.pop_front();
-      }
-      regen_window.push_back(o.regen_m * o.regen_m);
-      regen_sum2 += o.regen_m * o.regen_m;
-      if (regen_window.size() > samples_per_rev) {
-        regen_sum2 -= regen_window.front();
-        regen_window.pop_front();
-      }
-      const double power = std::max(0.0, power_sum / static_cast<double>(power_window.size()));
-      m.max_power_W = std::max(m.max_power_W, power);
-      const bool fully_engaged =
-          o.tool_x_m > sc.part_start_x_m + R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m - R;
-      if (fully_engaged && ctx.current_pass + 1 == static_cast<int>(ctx.passes_m.size()))
-        m.steady_max_power_pct_of_limit =
-            std::max(m.steady_max_power_pct_of_limit, 100.0 * power / sc.limits.spindle_power_limit_W);
-      const double regen_rms = std::sqrt(std::max(0.0, regen_sum2) / static_cast<double>(regen_window.size()));
-      const bool over_part =
-          o.tool_x_m > sc.part_start_x_m - R && o.tool_x_m < sc.part_start_x_m + sc.part_length_m + R;
-      const bool feeding = *std::min_element(ctx.feed_samples.begin(), ctx.feed_samples.end()) > 0.0;
-      if (over_part && feeding && regen_rms / f_nominal > sc.chatter_indicator_threshold) {
-        m.tds_chatter_s += Ts;
-        if (tds_run_start < 0.0) tds_run_start = t;
-        // Sustained: above the threshold for 10 revolutions in a row (entry and exit impacts are shorter).
-        if (tds_first < 0.0 && t - tds_run_start >= 10.0 * period) tds_first = tds_run_start;
-      } else {
-        tds_run_start = -1.0;
-      }
-      if (sc.poll_events) {  // events injected while the run goes on (the GUI's operator buttons)
-        std::vector<OperatorEvent> injected;
-        sc.poll_events(t, injected);
-        for (OperatorEvent& e : injected) {
-          e.t_s = t;
-          events.insert(events.begin() + static_cast<std::ptrdiff_t>(next_event), e);
-        }
-      }
-      while (next_event < events.size() && events[next_event].t_s <= t + 1e-12) {
-        const auto& e = events[next_event++];
-        if (e.type == OperatorEventType::FeedHoldOn) ctx.operator_feed_hold = true;
-        if (e.type == OperatorEventType::FeedHoldOff) ctx.operator_feed_hold = false;
-        if (e.type == OperatorEventType::ChatterSignal) ctx.operator_chatter_key = true;
-        res.events.push_back({t, "operator",
-                              e.type == OperatorEventType::FeedHoldOn    ? "feed hold on"
-                              : e.type == OperatorEventType::FeedHoldOff ? "feed hold off"
-                                                                         : "chatter key"});
-      }
-      if ((sample - 1) % samples_per_scan == 0) {
-        if (job.cancelled()) throw Cancelled();
-        SignalValues sig{{"a", ctx.a}, {"b", ctx.b}, {"c", ctx.c}, {"d", ctx.d}, {"e", ctx.e}, {"F_Y", ctx.F_Y_N}};
-        const ScanOutput out = logic.scan(sig);
-        // Reported once per episode, not at every scan of it.
-        if (!out.stable && last_stable) res.events.push_back({t, "logic_unstable", "no stable situation in this scan"});
-        last_stable = out.stable;
-        scheduler.applyScan(out, ctx);
-        if (out.active_steps != last_steps) {
-          last_steps = out.active_steps;
-          res.steps.push_back({t, last_steps});
-        }
-        job.report(std::min(1.0, (ctx.current_pass + (o.tool_x_m - x_begin) / (x_end - x_begin)) /
-                                     static_cast<double>(ctx.passes_m.size())));
-        if (sc.on_progress && t >= next_progress) {
-          next_progress = t + sc.progress_period_s;
-          sc.on_progress(res, t);
-        }
-      }
-      scheduler.tick(ctx);
-      const std::string mods = scheduler.activeLetters();
-      if (mods != last_modules) {
-        last_modules = mods;
-        res.modules.push_back({t, mods});
-      }
-      if ((ctx.c || ctx.d) && !m.detector_fired) {
-        m.detector_fired = true;
-        m.chatter_time_s = t;
-      }
-      if (ctx.replanned) {
-        ctx.replanned = false;
-        proc.setDepth(ctx.currentDepth());
-        material_start.resize(ctx.passes_m.size(), sc.part_start_x_m);
-        for (std::size_t j = k + 1; j < material_start.size(); ++j) material_start[j] = o.tool_x_m + R;
-      }
-      if (ctx.b) {
-        m.max_F_Y_N = std::max(m.max_F_Y_N, ctx.F_Y_N);
-      }
-      if (sample % record_every == 0)
-        res.series.push_back({t, o.fy_N, ctx.F_Y_N, power, proc.feedRate(), proc.depth(), ctx.current_pass + 1});
-      if (t > sc.max_time_s)
-        throw std::runtime_error("supervision: run exceeded max_time_s = " + std::to_string(sc.max_time_s) + " s");
-    }
-    if (ctx.current_pass + 1 < static_cast<int>(ctx.passes_m.size()))
-      t += (x_end - x_begin) / sc.limits.max_feed_rate_m_per_s;
-  }
-  res.events.push_back({t, "end", "part program complete"});
-  res.final_program_m = ctx.passes_m;
-  m.max_power_pct_of_limit = 100.0 * m.max_power_W / sc.limits.spindle_power_limit_W;
-  m.overshoot_pct = 100.0 * (m.max_F_Y_N - ctx.reference_force_N) / ctx.reference_force_N;
-  // Without a firing detector, sustained TDS chatter still counts.
-  const bool tds_chatter = tds_first >= 0.0;
-  if (!m.detector_fired && tds_chatter) m.chatter_time_s = tds_first;
-  m.chatter_detected = m.detector_fired || tds_chatter;
-  m.cycle_time_s = t;
-  m.run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  return res;
+  SupervisedRun run(sc, logic, job);
+  return run.run();
 }
 
 }  // namespace mx

@@ -14,6 +14,8 @@
 #include "core/invalid_input.h"
 #include "supervisor/face_milling_process.h"
 #include "supervisor/machining_modules.h"
+#include "supervisor/operator_event_queue.h"
+#include "supervisor/supervision_metrics.h"
 #include "supervisor/supervisor_logic.h"
 
 namespace mx {
@@ -22,13 +24,6 @@ enum class SupervisionController { None, SmcI, SmcII };
 std::string controllerName(SupervisionController c);             // "none", "smc1", "smc2"
 SupervisionController parseController(const std::string& name);  // throws InvalidInput
 std::vector<double> defaultPassDepths(SupervisionController c);  // none, SMC II: {2 mm}; SMC I: {1, 1 mm}
-
-enum class OperatorEventType { FeedHoldOn, FeedHoldOff, ChatterSignal };
-
-struct OperatorEvent {
-  double t_s = 0.0;
-  OperatorEventType type = OperatorEventType::FeedHoldOn;
-};
 
 struct SupervisionResult;
 
@@ -76,22 +71,6 @@ struct ModuleActivityRecord {
 struct SupervisionEvent {
   double t_s = 0.0;
   std::string type, detail;
-};
-
-struct SupervisionMetrics {
-  double reference_force_N = 0.0;
-  double max_power_W = 0.0;
-  double max_power_pct_of_limit = 0.0;         // 100 P_max / P_limit, P = tooth-period mean cutting power
-  double steady_max_power_pct_of_limit = 0.0;  // same, last pass, tool fully over the part
-  double max_F_Y_N = 0.0;
-  double overshoot_pct = 0.0;     // 100 (max F_Y in contact - F_ref) / F_ref
-  bool chatter_detected = false;  // by the supervisor (D, E) or, without detector, by the TDS
-  double chatter_time_s = -1.0;   // first detection, -1 if none
-  bool detector_fired = false;    // E or D signalled chatter
-  double tds_chatter_s = 0.0;     // time with the TDS chatter indicator above threshold
-  int passes = 0;                 // passes executed
-  double cycle_time_s = 0.0;
-  double run_seconds = 0.0;  // wall-clock time of the run
 };
 
 struct SupervisionResult {
