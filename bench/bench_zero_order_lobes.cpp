@@ -3,7 +3,7 @@
 #include "bench_fixtures.h"
 #include "stability/zero_order_lobes.h"
 
-// Issue 2 target: zeroth-order lobes, 2 modes, 30 lobes: 5 ms or less.
+// Target: zeroth-order lobes, 2 modes, 30 lobes: 5 ms or less.
 static void BM_ZoaLobes_R1_2modes_30lobes(benchmark::State& state) {
   const mx::MillingSetup setup = mx::bench::toolR1();
   const auto speeds = mx::SpeedGrid{1000.0 / 60, 20000.0 / 60, 100.0 / 60}.values();

@@ -31,7 +31,7 @@ done
 "$plot" "$out/rubio2006-r1-r2.png" --title "Rubio et al. 2006: tools R1 and R2, full-immersion up milling" \
   --max-depth 2.5 "$tmp/R1-zoa.json=R1 ZOA" "$tmp/R1-sdm.json=R1 SDM m = 40" "$tmp/R2-zoa.json=R2 ZOA" \
   "$tmp/R2-sdm.json=R2 SDM m = 40"
-# Issue 6: figures 9-12 (closed loop for beta = -0.3, 0, 0.3, 1) and figure 13 (J_c against beta).
+# Figures 9-12 (closed loop for beta = -0.3, 0, 0.3, 1) and figure 13 (J_c against beta).
 p=projects/rubio2006-adaptive-control.mxproj
 for b in -0.3 0 0.3 1; do
   name=$(echo "$b" | sed 's/^-/m/')

@@ -153,13 +153,13 @@ int JcCurvePlot::pointCount() const {
 }
 
 std::optional<double> JcCurvePlot::currentJc() const {
-  const auto data = curve_->data();
-  if (data->isEmpty()) return std::nullopt;
+  const auto points = curve_->data();
+  if (points->isEmpty()) return std::nullopt;
   const double b = current_beta_;
-  if (b < data->constBegin()->key || b > (data->constEnd() - 1)->key) return std::nullopt;
-  auto hi = data->findBegin(b, false);  // first point with key >= b
-  if (hi == data->constEnd()) return std::nullopt;
-  if (hi->key == b || hi == data->constBegin()) return hi->value;
+  if (b < points->constBegin()->key || b > (points->constEnd() - 1)->key) return std::nullopt;
+  auto hi = points->findBegin(b, false);  // first point with key >= b
+  if (hi == points->constEnd()) return std::nullopt;
+  if (hi->key == b || hi == points->constBegin()) return hi->value;
   auto lo = hi - 1;
   const double w = (b - lo->key) / (hi->key - lo->key);
   return lo->value + w * (hi->value - lo->value);

@@ -132,7 +132,7 @@ void LobeChartView::setLengthUnit(double display_per_mm, const QString& suffix) 
   setPowerLimit(power, power_label);
   plot_->xAxis->setRange(x);
   plot_->yAxis->setRange(y.lower * ratio, y.upper * ratio);
-  for (QCPAbstractItem* item : extra_markers_)
+  for (const auto& [group, item] : extra_markers_)
     if (auto* tracer = qobject_cast<QCPItemTracer*>(item))
       tracer->position->setCoords(tracer->position->coords().x(), tracer->position->coords().y() * ratio);
   if (marker_->visible()) setOperatingPoint(point_rpm_, point_mm_, verdict_);
@@ -289,7 +289,8 @@ void LobeChartView::setOperatingPoint(double speed_rpm, double depth_mm, PointVe
   replotOverlay();
 }
 
-void LobeChartView::setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color) {
+void LobeChartView::setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color,
+                              const QString& group) {
   auto* tracer = new QCPItemTracer(plot_);
   tracer->setLayer("overlay");
   tracer->setStyle(QCPItemTracer::tsSquare);
@@ -303,14 +304,28 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   text->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
   text->setText(name);
   text->setColor(color);
-  extra_markers_.push_back(tracer);
-  extra_markers_.push_back(text);
+  extra_markers_.push_back({group, tracer});
+  extra_markers_.push_back({group, text});
   replotOverlay();
 }
 
 void LobeChartView::clearMarkers() {
-  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it) plot_->removeItem(*it);
+  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it) plot_->removeItem(it->second);
   extra_markers_.clear();
+  replotOverlay();
+}
+
+QStringList LobeChartView::markerNames() const {
+  QStringList names;
+  for (const auto& [group, item] : extra_markers_)
+    if (auto* text = qobject_cast<QCPItemText*>(item)) names << text->text();
+  return names;
+}
+
+void LobeChartView::clearMarkers(const QString& group) {
+  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it)
+    if (it->first == group) plot_->removeItem(it->second);
+  extra_markers_.removeIf([&group](const auto& marker) { return marker.first == group; });
   replotOverlay();
 }
 

@@ -9,6 +9,7 @@
 #include <QPoint>
 #include <QSet>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 #include <QWidget>
 
@@ -49,8 +50,12 @@ class LobeChartView : public QWidget {
   // Display unit of the depth axis: value shown per mm (1 for mm, 1/25.4 for inch). Signals and
   // setters stay in mm.
   void setLengthUnit(double display_per_mm, const QString& suffix);
-  void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color);  // q*, q**
-  void clearMarkers();
+  // A labelled marker (q*, q**, the Pareto q) in `group`: each feature redraws only its own group.
+  void setMarker(const QString& name, double speed_rpm, double depth_mm, const QColor& color,
+                 const QString& group = {});
+  void clearMarkers();                      // every group
+  void clearMarkers(const QString& group);  // the markers of one group
+  QStringList markerNames() const;          // the labels of the markers shown, in drawing order
   // Expert overlays: the cost heat map of the selected tool (cost[i * depths + j], NaN =
   // not admissible) and the admissible grid points; lengths in mm.
   void setCostMap(const QVector<double>& speeds_rpm, const QVector<double>& depths_mm, const QVector<double>& cost);
@@ -93,7 +98,7 @@ class LobeChartView : public QWidget {
   QCPGraph* power_graph_ = nullptr;
   QCPItemTracer* marker_ = nullptr;
   QCPItemText* marker_label_ = nullptr;
-  QVector<QCPAbstractItem*> extra_markers_;  // q*, q** tracers and their labels
+  QVector<std::pair<QString, QCPAbstractItem*>> extra_markers_;  // (group, tracer or label) of q*, q**
   QVector<ToolLobeSeries> series_;
   QVector<QPair<QCPGraph*, QCPGraph*>> tool_graphs_;  // nominal, margined per series
   QSet<QString> hidden_;

@@ -86,17 +86,17 @@ void PoleZeroPlot::setPoleZero(const PoleZeroView& pz) {
   labels_.clear();
   QVector<std::complex<double>> plotted;
   auto fill = [&](QCPCurve* curve, const QVector<std::complex<double>>& roots, auto keep) {
-    QVector<QCPCurveData> data;
+    QVector<QCPCurveData> points;
     for (const auto& z : roots) {
       if (!finite(z) || !keep(z)) continue;
-      data.push_back(QCPCurveData(static_cast<double>(data.size()), z.real(), z.imag()));
+      points.push_back(QCPCurveData(static_cast<double>(points.size()), z.real(), z.imag()));
       plotted.push_back(z);
       x_lo_ = std::min(x_lo_, z.real());
       x_hi_ = std::max(x_hi_, z.real());
       y_lo_ = std::min(y_lo_, z.imag());
       y_hi_ = std::max(y_hi_, z.imag());
     }
-    curve->data()->set(data, true);
+    curve->data()->set(points, true);
   };
   fill(poles_, pz.poles, [](const auto&) { return true; });
   addMultiplicityLabels(plotted);

@@ -39,10 +39,10 @@ QWidget* RangeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem
 void RangeDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
   const QVariant value = index.data(Qt::EditRole);
   editor->setProperty(kOriginal, value);
-  if (auto* box = qobject_cast<QSpinBox*>(editor)) {
-    box->setValue(value.isValid() ? value.toInt() : box->minimum());
-  } else if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) {
-    box->setValue(value.isValid() ? value.toDouble() : box->minimum());
+  if (auto* int_box = qobject_cast<QSpinBox*>(editor)) {
+    int_box->setValue(value.isValid() ? value.toInt() : int_box->minimum());
+  } else if (auto* double_box = qobject_cast<QDoubleSpinBox*>(editor)) {
+    double_box->setValue(value.isValid() ? value.toDouble() : double_box->minimum());
   } else {
     QStyledItemDelegate::setEditorData(editor, index);
   }
@@ -55,13 +55,13 @@ void RangeDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, con
   const QVariant original = editor->property(kOriginal);
   const bool special = !spin->specialValueText().isEmpty();
   QVariant value;
-  if (auto* box = qobject_cast<QSpinBox*>(editor)) {
-    if (!(special && box->value() == box->minimum())) value = box->value();
-  } else if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) {
-    if (!(special && box->value() == box->minimum())) value = box->value();
+  if (auto* int_box = qobject_cast<QSpinBox*>(editor)) {
+    if (!(special && int_box->value() == int_box->minimum())) value = int_box->value();
+  } else if (auto* double_box = qobject_cast<QDoubleSpinBox*>(editor)) {
+    if (!(special && double_box->value() == double_box->minimum())) value = double_box->value();
     // Opening and closing the editor must not round a more precise stored value to the box's decimals.
     if (value.isValid() && original.isValid() &&
-        std::abs(original.toDouble() - box->value()) <= 0.5 * std::pow(10.0, -box->decimals()))
+        std::abs(original.toDouble() - double_box->value()) <= 0.5 * std::pow(10.0, -double_box->decimals()))
       return;
   }
   if (value.isValid() == original.isValid() && (!value.isValid() || value.toDouble() == original.toDouble())) return;

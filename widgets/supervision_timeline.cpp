@@ -194,14 +194,14 @@ void SupervisionTimeline::updateLimitLines() {
 void SupervisionTimeline::setModuleSpans(const QVector<ModuleSpan>& spans) {
   spans_ = spans;
   for (QCPGraph* g : std::as_const(modules_)) g->data()->clear();
-  QHash<QString, QVector<QCPGraphData>> data;
+  QHash<QString, QVector<QCPGraphData>> module_points;
   for (const ModuleSpan& s : spans) {
     if (s.module.isEmpty() || !(s.to_s >= s.from_s)) continue;
     moduleGraph(s.module);
-    QVector<QCPGraphData>& d = data[s.module];
+    QVector<QCPGraphData>& d = module_points[s.module];
     d << QCPGraphData(s.from_s, 0) << QCPGraphData(s.to_s, 0) << QCPGraphData(s.to_s, kNaN);
   }
-  for (auto it = data.begin(); it != data.end(); ++it) {
+  for (auto it = module_points.begin(); it != module_points.end(); ++it) {
     QCPGraph* g = modules_[it.key()];
     const double row = static_cast<double>(rows_.indexOf(it.key()));
     std::stable_sort(it.value().begin(), it.value().end(), [](const auto& a, const auto& b) { return a.key < b.key; });

@@ -147,9 +147,9 @@ void SupervisorComparison::showResult(int column) {
     const bool bad = has && ((row == 0 && m.max_power_pct_of_limit > 100.0) || (row == 2 && m.chatter_detected));
     if (bad) {
       item->setForeground(kBad);
-      QFont f = item->font();
-      f.setBold(true);
-      item->setFont(f);
+      QFont bold = item->font();
+      bold.setBold(true);
+      item->setFont(bold);
     }
     table_->setItem(row, column, item);
   }

@@ -81,9 +81,9 @@ int runRankCommand(const QStringList& arguments) {
       toolRules.push_back(evaluateParetoRules(ruleTexts, project, *project.findTool(id)));
     }
     for (const ParetoRules& r : toolRules) outcomes.push_back(&r.outcome);
-    const std::vector<double> c = applyWeightBounds(outcomes, {"weight.c1", "weight.c2", "weight.c3"},
-                                                    {request.weights.c.begin(), request.weights.c.end()});
-    std::copy(c.begin(), c.end(), request.weights.c.begin());
+    const std::vector<double> bounded = applyWeightBounds(outcomes, {"weight.c1", "weight.c2", "weight.c3"},
+                                                          {request.weights.c.begin(), request.weights.c.end()});
+    std::copy(bounded.begin(), bounded.end(), request.weights.c.begin());
   }
 
   ExpertSession session(request.tools, request.settings);

@@ -93,6 +93,25 @@ QString ProjectDocument::applyEdit(const Project& edited, const QString& descrip
   return {};
 }
 
+QString ProjectDocument::applyEditAndMovePoint(const Project& edited, const PickedPoint& point,
+                                               const QString& description) {
+  const ProjectChanges sections = changedSections(project_, edited);
+  if (!sections && point == point_) return {};
+  // Validated first: a refused edit leaves no empty macro on the stack and does not move the point.
+  if (sections) {
+    try {
+      validateProject(edited);
+    } catch (const ProjectError& e) {
+      return QString::fromStdString(e.what());
+    }
+  }
+  undo_.beginMacro(description);
+  applyEdit(edited, description);
+  setPoint(point);
+  undo_.endMacro();
+  return {};
+}
+
 void ProjectDocument::setPoint(const PickedPoint& point, int drag_id) {
   if (point == point_) return;
   undo_.push(new PointCommand(this, point_, point, drag_id));

@@ -41,6 +41,9 @@ class ProjectDocument : public QObject {
   int newGesture() { return ++gestures_; }
   // Undoable move of the operating point (consecutive moves within one drag merge: `drag_id` > 0).
   void setPoint(const PickedPoint& point, int drag_id = 0);
+  // One undo step: applyEdit(edited), then setPoint(point). Nothing happens when the edit is refused
+  // (the message is returned, as by applyEdit).
+  QString applyEditAndMovePoint(const Project& edited, const PickedPoint& point, const QString& description);
   // Sets the point without an undo entry (the initial point after loading).
   void initPoint(const PickedPoint& point) { setPointSilently(point); }
   // Loads `path` and applies its newer autosave on top as one undoable, unsaved edit.

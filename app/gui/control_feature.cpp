@@ -9,10 +9,10 @@
 
 namespace mx::gui {
 
-ControlFeature::ControlFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool)
+ControlFeature::ControlFeature(QMainWindow* window, const FeatureContext& context)
     : WindowFeature(window),
-      document_(document),
-      runner_(new ControlRunner(engine_pool, this)),
+      document_(context.document()),
+      runner_(new ControlRunner(context.enginePool(), this)),
       view_(new widgets::ControlView) {
   setObjectName("controlFeature");
   auto* dock = new QDockWidget(tr("Force control"), window);

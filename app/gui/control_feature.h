@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "document/project_document.h"
+#include "feature_context.h"
 #include "services/control_request.h"
 #include "window_feature.h"
 
@@ -24,7 +25,7 @@ class ControlFeature : public WindowFeature {
   Q_OBJECT
  public:
   // Adds the "controlDock" to `window`, tabbed with the history dock when there is one.
-  ControlFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool);
+  ControlFeature(QMainWindow* window, const FeatureContext& context);
 
   void projectChanged(const app::Project& project, Features recompute) override;
   void stop() override;

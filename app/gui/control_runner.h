@@ -1,5 +1,5 @@
 #pragma once
-// The adaptive force controller behind the GUI's control view (issue 6): one closed-loop run per beta
+// The adaptive force controller behind the GUI's control view (2006 paper, section 4): one closed-loop run per beta
 // (and the J_c(beta) sweep) on the engine thread. A new request cancels the running one through its
 // atomic flag; results carry a generation id and stale ones are dropped.
 #include <QObject>

@@ -1,5 +1,5 @@
 #pragma once
-// Chart overlays derived from the expert session (issue 4): the cost heat map of one tool over the
+// Chart overlays derived from the expert session (2006 paper, section 3): the cost heat map of one tool over the
 // (N, b) plane and its admissible grid points, in rpm and mm.
 #include <QVector>
 #include <array>

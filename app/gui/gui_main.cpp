@@ -10,8 +10,11 @@
 #include <QTimer>
 #include <clocale>
 
+#include "lobes_feature.h"
 #include "machining_feature.h"
 #include "main_window.h"
+#include "pareto_feature.h"
+#include "simulation_feature.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
 
@@ -56,6 +59,9 @@ int main(int argc, char** argv) {
   window.setQuiet(!screenshot.isEmpty());
   if (!screenshot.isEmpty()) window.resize(1920, 1080);  // docs screenshots at 1080p
   window.show();
+  auto* lobes = window.findChild<mx::gui::LobesFeature*>("lobesFeature");
+  auto* simulation = window.findChild<mx::gui::SimulationFeature*>("simulationFeature");
+  auto* pareto_feature = window.findChild<mx::gui::ParetoFeature*>("paretoFeature");
   auto* supervisor = window.findChild<mx::gui::SupervisorFeature*>("supervisorFeature");
   auto* machining = window.findChild<mx::gui::MachiningFeature*>("machiningFeature");
   if (parser.isSet("point")) {
@@ -69,14 +75,14 @@ int main(int argc, char** argv) {
       return 2;
     }
     QObject::connect(
-        &window, &mx::gui::MainWindow::lobesShown, &window,
-        [&window, n, b, f] {
+        lobes, &mx::gui::LobesFeature::lobesShown, &window,
+        [&window, simulation, n, b, f] {
           mx::app::PickedPoint p = window.document()->point();
           p.speed_rpm = n;
           p.depth_mm = b;
           if (f > 0.0) p.feed_mm_per_tooth = f;
           window.document()->initPoint(p);
-          window.startSimulation();
+          simulation->start();
         },
         Qt::SingleShotConnection);
   }
@@ -91,16 +97,16 @@ int main(int argc, char** argv) {
   bool moved_to_pareto = false;
   if (pareto) {
     // Needs both the study (paretoShown) and the lobes of the tool (lobesShown), in either order.
-    auto move = [&window, &moved_to_pareto] {
-      if (moved_to_pareto || !window.paretoChoice() || window.document()->point().speed_rpm <= 0.0) return;
+    auto move = [&window, &moved_to_pareto, pareto_feature, simulation] {
+      if (moved_to_pareto || !pareto_feature->choice() || window.document()->point().speed_rpm <= 0.0) return;
       moved_to_pareto = true;
-      QTimer::singleShot(0, &window, [&window] {
-        window.moveToParetoChoice();
-        window.startSimulation();
+      QTimer::singleShot(0, &window, [pareto_feature, simulation] {
+        pareto_feature->moveToChoice();
+        simulation->start();
       });
     };
-    QObject::connect(&window, &mx::gui::MainWindow::paretoShown, &window, move);
-    QObject::connect(&window, &mx::gui::MainWindow::lobesShown, &window, move);
+    QObject::connect(pareto_feature, &mx::gui::ParetoFeature::paretoShown, &window, move);
+    QObject::connect(lobes, &mx::gui::LobesFeature::lobesShown, &window, move);
   }
   if (!screenshot.isEmpty()) {
     const bool supervise = parser.isSet("supervise");
@@ -111,7 +117,7 @@ int main(int argc, char** argv) {
       });
     };
     if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
-    QObject::connect(&window, &mx::gui::MainWindow::simulationFinished, &window, [&, screenshot] {
+    QObject::connect(simulation, &mx::gui::SimulationFeature::simulationShown, &window, [&, screenshot] {
       if (supervise) return;                   // the supervised run decides
       if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
       QTimer::singleShot(300, &window, [&window, screenshot] {

@@ -63,11 +63,11 @@ bool writeAtomically(const QString& path, const QByteArray& bytes, QString* erro
 
 }  // namespace
 
-MachiningFeature::MachiningFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool)
+MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& context)
     : WindowFeature(window),
       window_(window),
-      document_(document),
-      pool_(engine_pool),
+      document_(context.document()),
+      pool_(context.enginePool()),
       surface_panel_(new widgets::SurfaceFinishPanel),
       program_panel_(new widgets::PartProgramPanel) {
   setObjectName("machiningFeature");

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "document/project_document.h"
+#include "feature_context.h"
 #include "sdnrp/sdnrp_simulator.h"
 #include "services/part_program_request.h"
 #include "window_feature.h"
@@ -22,7 +23,7 @@ class MachiningFeature : public WindowFeature {
   Q_OBJECT
  public:
   // Adds "surfaceFinishDock" and "partProgramDock" to `window`, tabbed with the control dock.
-  MachiningFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool);
+  MachiningFeature(QMainWindow* window, const FeatureContext& context);
 
   // The panel takes sdnrp.ra_um, disturbance and duration; an open program is overridden again when
   // the inputs of its controllers changed.

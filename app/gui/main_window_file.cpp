@@ -1,11 +1,7 @@
-// MainWindow: new, open (with autosave recovery), save, save as, export, title and dirty marker.
-#include <QCoreApplication>
-#include <QDir>
+// MainWindow: new, open (with autosave recovery), save, save as, title and dirty marker.
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
-#include <QProcess>
-#include <QStandardPaths>
 #include <QStatusBar>
 
 #include "main_window.h"
@@ -27,8 +23,7 @@ bool MainWindow::openProject(const QString& path) {
         recover = recovery_ == RecoveryPolicy::Recover;
       }
     }
-    doc_.initPoint({});
-    for (WindowFeature* feature : features_) feature->projectReplaced();  // no run of the new one is shown yet
+    replaceProject();
     if (recover) {
       doc_.recover(path);
     } else {
@@ -55,10 +50,15 @@ bool MainWindow::saveProject(const QString& path) {
   return true;
 }
 
-void MainWindow::onNew() {
-  if (!maybeSave()) return;
+// Another project is about to be loaded: no point and no run of the new one is shown yet.
+void MainWindow::replaceProject() {
   doc_.initPoint({});
   for (WindowFeature* feature : features_) feature->projectReplaced();
+}
+
+void MainWindow::onNew() {
+  if (!maybeSave()) return;
+  replaceProject();
   doc_.newProject();
 }
 
@@ -88,43 +88,6 @@ bool MainWindow::maybeSave() {
                                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
   if (answer == QMessageBox::Save) return onSave();
   return answer == QMessageBox::Discard;
-}
-
-void MainWindow::onExportChart() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export chart"), "lobes.png",
-                                                    tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
-  if (!path.isEmpty() && !chart_->saveImage(path)) showError(tr("Export failed"), path);
-}
-
-void MainWindow::onExportReport() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export report"), "millexpert-report.pdf",
-                                                    tr("PDF (*.pdf);;HTML (*.html)"));
-  if (path.isEmpty()) return;
-  // The report tool reads a project file: hand it the current (possibly unsaved) snapshot.
-  const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
-  const QString snapshot =
-      QDir(dir).filePath(QString("millexpert-report-%1.mxproj").arg(QCoreApplication::applicationPid()));
-  try {
-    app::saveProject(doc_.project(), snapshot);
-  } catch (const app::ProjectError& e) {
-    showError(tr("Export report"), QString::fromStdString(e.what()));
-    return;
-  }
-  const auto& c = weights_.c;
-  QStringList args{snapshot, path.endsWith(".html", Qt::CaseInsensitive) ? "--html" : "--pdf", path, "--c",
-                   QString("%1,%2,%3").arg(c[0], 0, 'g', 17).arg(c[1], 0, 'g', 17).arg(c[2], 0, 'g', 17)};
-  auto* process = new QProcess(this);
-  connect(process, &QProcess::finished, this, [this, process, path, snapshot](int code, QProcess::ExitStatus status) {
-    QFile::remove(snapshot);
-    const QString err = QString::fromUtf8(process->readAllStandardError()).trimmed();
-    process->deleteLater();
-    if (status == QProcess::NormalExit && code == 0)
-      statusBar()->showMessage(tr("Report written to %1").arg(path), 8000);
-    else
-      showError(tr("Export report"), err.isEmpty() ? tr("millexpert-report failed (exit %1)").arg(code) : err);
-  });
-  statusBar()->showMessage(tr("Writing the report (expert system, simulations, figures)..."));
-  process->start(QCoreApplication::applicationDirPath() + "/millexpert-report", args);
 }
 
 void MainWindow::updateTitle() {

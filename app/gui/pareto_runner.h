@@ -1,5 +1,5 @@
 #pragma once
-// The Pareto expert system behind the GUI (issue 5). On the engine thread: the ParetoStudy of the
+// The Pareto expert system behind the GUI (Pareto paper, modules V-VII). On the engine thread: the ParetoStudy of the
 // project (admissible grid of pareto.tool, objective table, non-dominated set, operator rules) and
 // the weights that support each front point, once per change of the project's engine inputs. On the
 // GUI thread: choose() for the current weights and requirement (one pass over the table,

@@ -67,14 +67,14 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
   if (running_++ == 0) emit runningChanged(true);
   QPointer<SupervisionRunner> self(this);
   watcher->setFuture(QtConcurrent::run(pool_, [self, base = scenario, chart, speed_factor, generation, live = live_] {
-    SupervisionScenario scenario = base;
+    SupervisionScenario run_scenario = base;
     // Chunks: what the run added since the last one (checked every 50 ms of simulated time).
     std::size_t n_samples = 0, n_steps = 0, n_modules = 0, n_events = 0;
     QElapsedTimer wall;
     wall.start();
-    scenario.progress_period_s = 0.05;
+    run_scenario.progress_period_s = 0.05;
     qint64 last_post_ms = -1000;
-    scenario.on_progress = [&](const SupervisionResult& r, double t_s) {
+    run_scenario.on_progress = [&](const SupervisionResult& r, double t_s) {
       if (speed_factor > 0.0) {  // pace: simulated time <= speed x wall time
         const double ahead_ms = t_s / speed_factor * 1e3 - static_cast<double>(wall.elapsed());
         if (ahead_ms > 1.0) QThread::msleep(static_cast<unsigned long>(ahead_ms));
@@ -100,14 +100,14 @@ quint64 SupervisionRunner::start(const SupervisionScenario& scenario, const Graf
             },
             Qt::QueuedConnection);
     };
-    scenario.poll_events = [live](double t_s, std::vector<OperatorEvent>& events) {
+    run_scenario.poll_events = [live](double t_s, std::vector<OperatorEvent>& events) {
       std::lock_guard<std::mutex> lock(live->mutex);
       for (OperatorEventType type : live->pending) events.push_back({t_s, type});
       live->pending.clear();
     };
     JobControl job;
     job.cancel = &live->cancel;
-    return runOne(scenario, chart, generation, job);
+    return runOne(run_scenario, chart, generation, job);
   }));
   return generation;
 }

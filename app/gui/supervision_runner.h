@@ -1,5 +1,5 @@
 #pragma once
-// The supervised face-milling run behind the supervisor view (issue 8), on the engine thread: the
+// The supervised face-milling run behind the supervisor view, on the engine thread: the
 // Grafcet interpreter of the chosen chart, the modules and the process (runSupervision). The run is
 // paced to `speed_factor` times real time (0: as fast as possible) so that the operator can press
 // feed hold or chatter while it runs: those events are queued from the GUI thread and read by the run

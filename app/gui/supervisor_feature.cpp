@@ -13,11 +13,10 @@
 
 namespace mx::gui {
 
-SupervisorFeature::SupervisorFeature(QMainWindow* window, const app::ProjectDocument& document,
-                                     QThreadPool* engine_pool)
+SupervisorFeature::SupervisorFeature(QMainWindow* window, const FeatureContext& context)
     : WindowFeature(window),
-      document_(document),
-      runner_(new SupervisionRunner(engine_pool, this)),
+      document_(context.document()),
+      runner_(new SupervisionRunner(context.enginePool(), this)),
       view_(new widgets::SupervisorView) {
   setObjectName("supervisorFeature");
   auto* dock = new QDockWidget(tr("Supervisor"), window);

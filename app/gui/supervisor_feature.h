@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "document/project_document.h"
+#include "feature_context.h"
 #include "services/supervisor_request.h"
 #include "window_feature.h"
 
@@ -27,7 +28,7 @@ class SupervisorFeature : public WindowFeature {
   Q_OBJECT
  public:
   // Adds the "supervisorDock" to `window`, tabbed with the part-program dock when there is one.
-  SupervisorFeature(QMainWindow* window, const app::ProjectDocument& document, QThreadPool* engine_pool);
+  SupervisorFeature(QMainWindow* window, const FeatureContext& context);
 
   void projectChanged(const app::Project& project, Features recompute) override;
   void projectReplaced() override { shown_ = Shown::None; }

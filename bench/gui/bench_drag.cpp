@@ -5,7 +5,9 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "lobes_feature.h"
 #include "main_window.h"
+#include "simulation_feature.h"
 
 class BenchDrag : public QObject {
   Q_OBJECT
@@ -15,13 +17,15 @@ class BenchDrag : public QObject {
     window.setQuiet(true);
     window.resize(1600, 950);
     window.show();
-    QSignalSpy shown(&window, &mx::gui::MainWindow::lobesShown);
+    auto* lobes = window.findChild<mx::gui::LobesFeature*>("lobesFeature");
+    auto* simulation = window.findChild<mx::gui::SimulationFeature*>("simulationFeature");
+    QSignalSpy shown(lobes, &mx::gui::LobesFeature::lobesShown);
     QVERIFY(window.openProject(MX_DEFAULT_PROJECT));
     QVERIFY(shown.wait(20000));
-    QSignalSpy simulated(&window, &mx::gui::MainWindow::simulationFinished);
+    QSignalSpy simulated(simulation, &mx::gui::SimulationFeature::simulationShown);
     QVERIFY(simulated.wait(20000));  // the first simulation of the initial point is done
-    QWidget* plot = window.lobeChart()->plotWidget();
-    const QPoint a = window.lobeChart()->pixelFor(2000.0, 0.2), b = window.lobeChart()->pixelFor(5000.0, 0.5);
+    QWidget* plot = lobes->chart()->plotWidget();
+    const QPoint a = lobes->chart()->pixelFor(2000.0, 0.2), b = lobes->chart()->pixelFor(5000.0, 0.5);
     QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, a);
     int i = 0;
     QBENCHMARK {
@@ -30,7 +34,7 @@ class BenchDrag : public QObject {
       QCoreApplication::processEvents();  // marker repaint on the overlay layer
     }
     QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, a);
-    QVERIFY(!window.readout()->text("blim").isEmpty());
+    QVERIFY(!lobes->readout()->text("blim").isEmpty());
   }
 };
 

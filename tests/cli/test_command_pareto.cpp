@@ -1,6 +1,6 @@
 // millexpert-cli pareto: the fixed JSON interface on projects/rubio-pareto-case.mxproj, the flags
 // (--w, --fine, --require, --auto-weights) and the exit-2 messages for a bad "pareto" section or flag.
-// Issue 5 modules VI/VII: the project's operator_rules (Rule 18) in the selection and the "rules" key;
+// Pareto modules VI/VII: the project's operator_rules (Rule 18) in the selection and the "rules" key;
 // --feedback (Rules 15/16 and a re-selection) and --db recording a "feedback" entry.
 #include <QFile>
 #include <QJsonArray>

@@ -24,7 +24,9 @@ struct Prbs {
 
 // y(k) = -a1 y(k-1) - a2 y(k-2) + b0 u(k-1) + b1 u(k-2) [+ b2 u(k-3)]: the paper's regressor layout.
 Eigen::VectorXd regressor(const std::vector<double>& y, const std::vector<double>& u, std::size_t k, int nb) {
-  auto get = [](const std::vector<double>& v, std::size_t k, std::size_t lag) { return k >= lag ? v[k - lag] : 0.0; };
+  auto get = [](const std::vector<double>& v, std::size_t at, std::size_t lag) {
+    return at >= lag ? v[at - lag] : 0.0;
+  };
   Eigen::VectorXd phi(2 + nb);
   phi(0) = -get(y, k, 1);
   phi(1) = -get(y, k, 2);

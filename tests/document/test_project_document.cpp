@@ -4,6 +4,7 @@
 #include <QSignalSpy>
 
 #include "document/project_document.h"
+#include "support/project_edits.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -15,12 +16,6 @@ const QString kProject = MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj";
 
 app::ProjectChanges lastChanges(const QSignalSpy& spy) {
   return spy.last().at(0).value<app::ProjectChanges>();
-}
-
-app::Project withBeta(const app::Project& p, double beta) {
-  app::Project edited = p;
-  edited.control->beta = beta;
-  return edited;
 }
 
 }  // namespace
@@ -78,7 +73,7 @@ class TestProjectDocument : public QObject {
     QSignalSpy changed(&doc, &app::ProjectDocument::changed);
     const int gesture = doc.newGesture();
     for (double beta : {-0.2, -0.1, 0.0, 0.1, 0.25})
-      QCOMPARE(doc.applyEdit(withBeta(doc.project(), beta), "beta", gesture), QString());
+      QCOMPARE(doc.applyEdit(test::withBeta(doc.project(), beta), "beta", gesture), QString());
     QCOMPARE(changed.count(), 5);  // every value of the drag reaches the views
     QCOMPARE(lastChanges(changed), app::ProjectChanges(ProjectSection::ControlBeta));
     QCOMPARE(doc.undoStack()->count(), 1);
@@ -92,8 +87,8 @@ class TestProjectDocument : public QObject {
     // The next gesture is its own step.
     const int next = doc.newGesture();
     QVERIFY(next != gesture);
-    doc.applyEdit(withBeta(doc.project(), 0.5), "beta", next);
-    doc.applyEdit(withBeta(doc.project(), 0.6), "beta", next);
+    doc.applyEdit(test::withBeta(doc.project(), 0.5), "beta", next);
+    doc.applyEdit(test::withBeta(doc.project(), 0.6), "beta", next);
     QCOMPARE(doc.undoStack()->count(), 2);
     doc.undoStack()->undo();
     QCOMPARE(*doc.project().control->beta, 0.25);
@@ -103,18 +98,51 @@ class TestProjectDocument : public QObject {
     app::ProjectDocument doc;
     doc.load(kProject);
     const int gesture = doc.newGesture();
-    doc.applyEdit(withBeta(doc.project(), 0.4), "beta", gesture);
-    doc.applyEdit(withBeta(doc.project(), -0.3), "beta", gesture);
+    doc.applyEdit(test::withBeta(doc.project(), 0.4), "beta", gesture);
+    doc.applyEdit(test::withBeta(doc.project(), -0.3), "beta", gesture);
     QCOMPARE(doc.undoStack()->count(), 0);
     QCOMPARE(*doc.project().control->beta, -0.3);
     QVERIFY(!doc.isDirty());
   }
 
+  void anEditAndAPointMoveAreOneUndoStep() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    doc.initPoint({8000.0, 1.0, 0.1});
+    const app::PickedPoint moved{9000.0, 2.0, 0.12};
+    QCOMPARE(doc.applyEditAndMovePoint(test::withBeta(doc.project(), 0.4), moved, "beta and point"), QString());
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(*doc.project().control->beta, 0.4);
+    QCOMPARE(doc.point(), moved);
+    doc.undoStack()->undo();
+    QCOMPARE(*doc.project().control->beta, -0.3);
+    QCOMPARE(doc.point(), app::PickedPoint({8000.0, 1.0, 0.1}));
+
+    // The same project: the step is the point move alone.
+    QCOMPARE(doc.applyEditAndMovePoint(doc.project(), moved, "point"), QString());
+    QCOMPARE(doc.undoStack()->count(), 1);
+    QCOMPARE(doc.point(), moved);
+    // Nothing changes: no step at all.
+    QCOMPARE(doc.applyEditAndMovePoint(doc.project(), moved, "nothing"), QString());
+    QCOMPARE(doc.undoStack()->count(), 1);
+  }
+
+  void aRefusedEditDoesNotMoveThePoint() {
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    doc.initPoint({8000.0, 1.0, 0.1});
+    const QString error = doc.applyEditAndMovePoint(test::withBeta(doc.project(), 2.0), {9000.0, 2.0, 0.1}, "beta");
+    QVERIFY2(error.contains("beta"), qPrintable(error));
+    QCOMPARE(doc.undoStack()->count(), 0);
+    QCOMPARE(doc.point().speed_rpm, 8000.0);
+    QCOMPARE(*doc.project().control->beta, -0.3);
+  }
+
   void editsWithoutGestureStaySeparate() {
     app::ProjectDocument doc;
     doc.load(kProject);
-    doc.applyEdit(withBeta(doc.project(), 0.1), "beta");
-    doc.applyEdit(withBeta(doc.project(), 0.2), "beta");
+    doc.applyEdit(test::withBeta(doc.project(), 0.1), "beta");
+    doc.applyEdit(test::withBeta(doc.project(), 0.2), "beta");
     QCOMPARE(doc.undoStack()->count(), 2);
   }
 

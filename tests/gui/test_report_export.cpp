@@ -1,4 +1,4 @@
-// The expert report (issue 4, "Report export"): built for the Rubio 2006 project, the HTML has real
+// The expert report: built for the Rubio 2006 project, the HTML has real
 // tables with captions and the three figures as PNG files; the PDF, turned into text by pdftotext
 // (poppler-utils), names the project, the tools, q* with units, the sections and captions, and the
 // minimum cost of R1 as the engine computes it. millexpert-report refuses bad weights with exit 2.

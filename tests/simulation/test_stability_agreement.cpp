@@ -59,7 +59,7 @@ class TestStabilityAgreement : public QObject {
       qInfo("%6.0f rpm: SDM b_lim %.4f mm, eta = 1.3 at %.4f mm (%+.1f %%)", rpm[i], blim * 1e3, td * 1e3, rel * 100);
       if (std::abs(rel) < 0.10) ++agreeing;
     }
-    // Issue 2: at 6 or more speeds. Insperger at 19000 rpm (flip lobe, b_lim 2.68 mm) is not among them:
+    // At 6 or more speeds. Insperger at 19000 rpm (flip lobe, b_lim 2.68 mm) is not among them:
     // the start from rest throws the teeth out of the cut and the model jumps to a coexisting chatter
     // state at ~2.12 mm, 21 % below the linear limit (subcritical; docs/fidelity.md).
     QVERIFY2(agreeing >= 6, qPrintable(QString("%1 of %2 speeds within 10 %").arg(agreeing).arg(speeds.size())));

@@ -1,4 +1,4 @@
-// ControlView (issue 6): the beta slider and spin box stay in sync and emit one debounced betaChanged
+// ControlView: the beta slider and spin box stay in sync and emit one debounced betaChanged
 // per user change; the closed-loop traces fill the stacked plots (shared time axis, labelled rows, feed
 // limit); metrics show as text with units; settings and workpiece round trip without signals; the
 // figures 9-12 export writes a PNG of the requested size.

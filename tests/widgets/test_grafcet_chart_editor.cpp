@@ -1,4 +1,4 @@
-// GrafcetChartEditor (issue 8): add and remove steps and transitions through the buttons, edit cells,
+// GrafcetChartEditor: add and remove steps and transitions through the buttons, edit cells,
 // show the validator's issues inline (list, tinted rows, click selects the element) and emit
 // chartEdited only for an edit with no issue.
 #include <QApplication>

@@ -1,4 +1,4 @@
-// GrafcetChartView (issue 8): the automatic layout gives every step and transition a rect, steps never
+// GrafcetChartView: the automatic layout gives every step and transition a rect, steps never
 // overlap, levels follow the BFS from the initial step, upward arcs are back arcs; the initial step is
 // drawn double; tokens round trip; clicks emit the element's id; the PNG export draws the chart.
 #include <QApplication>

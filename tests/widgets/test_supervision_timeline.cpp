@@ -1,4 +1,4 @@
-// SupervisionTimeline (issue 8): streamed F_Y / power chunks add up, the power limit and F_ref lines
+// SupervisionTimeline: streamed F_Y / power chunks add up, the power limit and F_ref lines
 // span the data, module spans fill the A-L rows, events are counted and answer a tooltip; the PNG
 // export of a synthetic SMC II run.
 #include <QApplication>

@@ -1,4 +1,4 @@
-// SupervisorComparison (issue 8): three columns none | SMC I | SMC II, each with its F_Y/power plot
+// SupervisorComparison: three columns none | SMC I | SMC II, each with its F_Y/power plot
 // and its metric texts; the PNG export of the paper-like outcome.
 #include <QApplication>
 #include <QImage>

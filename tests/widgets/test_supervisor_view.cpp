@@ -1,4 +1,4 @@
-// SupervisorView (issue 8): run / stop / compare, the operator's feed hold toggle and chatter button,
+// SupervisorView: run / stop / compare, the operator's feed hold toggle and chatter button,
 // the controller combo (signal on user change only), the running state, speed, metrics and the tabs.
 #include <QApplication>
 #include <QComboBox>

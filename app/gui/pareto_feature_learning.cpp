@@ -1,28 +1,23 @@
-// MainWindow: Pareto modules VI-VII beside the chart (issue 5): the Rule 14 learning database (record
-// the operating point, the history view and its filters), the Rule 17 monitoring signals and the
-// Rule 18 operator rules of the project.
+// ParetoFeature: modules VI-VII beside the chart: the Rule 14 learning database (record the operating
+// point, the history view and its filters), the Rule 17 monitoring signals and the Rule 18 operator
+// rules of the project.
 #include <QJsonArray>
-#include <QStatusBar>
 #include <cmath>
+#include <limits>
 
 #include "history_view.h"
-#include "main_window.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
+#include "pareto_feature.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "services/learning_database.h"
 #include "services/pareto_rules.h"
 #include "simulation/frequency_peaks.h"
-#include "simulation_data.h"
 
 namespace mx::gui {
 
 namespace {
-
-QStringList rulesOf(const app::Project& p) {
-  return p.operator_rules.value_or(QStringList{});
-}
 
 std::optional<double> finiteOrNone(double v) {
   return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
@@ -50,46 +45,79 @@ widgets::HistoryRow historyRow(const app::LearningRecord& r) {
   return row;
 }
 
+bool samePoint(const ParetoPoint& a, const ParetoPoint& b) {
+  return std::abs(a.speed_rev_per_s - b.speed_rev_per_s) < 1e-9 && std::abs(a.depth_m - b.depth_m) < 1e-12 &&
+         std::abs(a.feed_per_tooth_m - b.feed_per_tooth_m) < 1e-12;
+}
+
+QVector<widgets::MonitoringPeak> spectrumPeaks(const SimulationSummary& summary) {
+  QVector<widgets::MonitoringPeak> peaks;
+  try {
+    for (const FrequencyPeak& p :
+         identifyPeaks(summary.spectrum_hz, summary.spectrum_n, summary.spindle_rpm / 60.0, std::max(1, summary.teeth)))
+      peaks.append({p.frequency_hz, p.amplitude, QString::fromStdString(describe(p.kind)), p.harmonic});
+  } catch (const std::exception&) {
+    // no spectrum (too short a run): no peaks
+  }
+  return peaks;
+}
+
 }  // namespace
+
+QString ParetoFeature::learningDatabasePath() const {
+  return learning_db_path_.isEmpty() ? app::LearningDatabase::defaultPath() : learning_db_path_;
+}
+
+void ParetoFeature::setLearningDatabasePath(const QString& path) {
+  learning_db_path_ = path;
+  refreshHistory();
+}
 
 // The current operating point in engine form, with the Pareto objectives when the active tool is the
 // study's tool.
-std::optional<ParetoPoint> MainWindow::currentParetoPoint() const {
-  const auto& study = pareto_->study();
-  const app::PickedPoint& pt = doc_.point();
-  if (!study || active_tool_ != study->request().tool || pt.speed_rpm <= 0.0) return std::nullopt;
+std::optional<ParetoPoint> ParetoFeature::currentParetoPoint() const {
+  const auto& study = runner_->study();
+  const app::PickedPoint& pt = context_.point();
+  if (!study || context_.activeTool() != study->request().tool || pt.speed_rpm <= 0.0) return std::nullopt;
   return study->table().evaluate(rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3);
 }
 
-void MainWindow::recordOperatingPoint() {
-  const auto& study = pareto_->study();
+void ParetoFeature::recordOperatingPoint() {
+  const auto& study = runner_->study();
   const auto q = currentParetoPoint();
   if (!study || !q) {
-    showError(
+    emit errorRaised(
         tr("Learning database"),
         tr("Pick an operating point of the Pareto tool '%1' first").arg(study ? study->request().tool : QString()));
     return;
   }
   // Automatic when the point is the system's Pareto choice, operator otherwise.
-  const bool automatic = pareto_choice_ &&
-                         std::abs(pareto_choice_->point().speed_rev_per_s - q->speed_rev_per_s) < 1e-9 &&
-                         std::abs(pareto_choice_->point().depth_m - q->depth_m) < 1e-12 &&
-                         std::abs(pareto_choice_->point().feed_per_tooth_m - q->feed_per_tooth_m) < 1e-12;
+  const bool automatic = choice_ && samePoint(choice_->point(), *q);
   try {
     app::LearningDatabase db(learningDatabasePath());
     const double eta = last_summary_eta_.value_or(std::numeric_limits<double>::quiet_NaN());
     const qint64 id =
-        db.insert(study->learningRecord(pareto_weights_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
+        db.insert(study->learningRecord(weights_panel_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
                                         automatic ? app::LearningSource::Automatic : app::LearningSource::Operator));
-    statusBar()->showMessage(tr("Recorded point %1 in %2").arg(id).arg(db.path()), 8000);
+    emit statusMessage(tr("Recorded point %1 in %2").arg(id).arg(db.path()), 8000);
   } catch (const std::exception& e) {
-    showError(tr("Learning database"), QString::fromStdString(e.what()));
+    emit errorRaised(tr("Learning database"), QString::fromStdString(e.what()));
     return;
   }
   refreshHistory();
 }
 
-void MainWindow::refreshHistory() {
+void ParetoFeature::recordFeedback(const ParetoPoint& q) {
+  try {
+    app::LearningDatabase db(learningDatabasePath());
+    db.insert(runner_->study()->learningRecord(weights_panel_->weights(), q, 0.0, app::LearningSource::Feedback));
+  } catch (const std::exception& e) {
+    emit statusMessage(tr("Learning database: %1").arg(e.what()), 10000);
+  }
+  refreshHistory();
+}
+
+void ParetoFeature::refreshHistory() {
   const widgets::HistoryFilter f = history_->filter();
   try {
     app::LearningDatabase db(learningDatabasePath());
@@ -128,23 +156,22 @@ void MainWindow::refreshHistory() {
   emit historyShown();
 }
 
-void MainWindow::onRulesEdited(const QStringList& rules) {
-  app::Project edited = doc_.project();
+void ParetoFeature::onRulesEdited(const QStringList& rules) {
+  app::Project edited = context_.project();
   if (rules.isEmpty())
     edited.operator_rules.reset();
   else
     edited.operator_rules = rules;
-  const QString error = doc_.applyEdit(edited, tr("Edit operator rules"));
-  if (!error.isEmpty()) showError(tr("Operator rules refused"), error);
+  emit editRequested(edited, tr("Edit operator rules"), 0);
 }
 
 // Rule 18 at the current point: the rules that fire for the active tool (highlighted), the
 // contradictions, the fired constraints the point breaks and the advice.
-void MainWindow::updateFiredRules() {
-  const app::Project& p = doc_.project();
-  const QStringList rules = rulesOf(p);
+void ParetoFeature::updateFiredRules() {
+  const app::Project& p = context_.project();
+  const QStringList rules = p.operator_rules.value_or(QStringList{});
   if (rules_editor_->rules() != rules) rules_editor_->setRules(rules);
-  const app::ToolSpec* tool = p.findTool(active_tool_);
+  const app::ToolSpec* tool = p.findTool(context_.activeTool());
   if (rules.isEmpty() || !tool) {
     rules_editor_->setFiredRules({});
     rules_editor_->setNotes({});
@@ -156,7 +183,7 @@ void MainWindow::updateFiredRules() {
     QList<int> fired;
     for (const RuleRef& ref : r.outcome.fired) fired << ref.line;
     rules_editor_->setFiredRules(fired);
-    const app::PickedPoint& pt = doc_.point();
+    const app::PickedPoint& pt = context_.point();
     ParetoPoint q;
     if (auto pq = currentParetoPoint()) {
       q = *pq;
@@ -164,8 +191,8 @@ void MainWindow::updateFiredRules() {
       q.speed_rev_per_s = rpmToRevPerS(pt.speed_rpm);
       q.depth_m = pt.depth_mm * 1e-3;
       q.feed_per_tooth_m = pt.feed_mm_per_tooth * 1e-3;
-      q.objectives[index(Objective::Mrr)] = readout_->readout().mrr_mm3_per_s * 1e-9;
-      q.power_w = readout_->readout().peak_power_w;
+      q.objectives[index(Objective::Mrr)] = context_.readout().mrr_mm3_per_s * 1e-9;
+      q.power_w = context_.readout().peak_power_w;
     }
     for (const BoundReason& v : r.outcome.violations(app::pointVariables(q, tool->teeth)))
       notes << tr("Line %1 violated at this point: %2").arg(v.rule.line).arg(QString::fromStdString(v.rule.text));
@@ -179,16 +206,17 @@ void MainWindow::updateFiredRules() {
 }
 
 // Rule 17: the signals of the current point (Pareto objectives, readouts) and of its last simulation.
-void MainWindow::updateMonitoring(const SimulationSummary* summary) {
+void ParetoFeature::updateMonitoring(const SimulationSummary* summary) {
   widgets::MonitoringValues v;
-  const widgets::PointReadout& r = readout_->readout();
+  const widgets::PointReadout& r = context_.readout();
+  const app::Project& project = context_.project();
   if (r.valid) {
     v.peak_power_w = r.peak_power_w;
     v.mrr_cm3_s = r.mrr_mm3_per_s * 1e-3;
-    if (const app::ToolSpec* t = doc_.project().findTool(active_tool_))
+    if (const app::ToolSpec* t = project.findTool(context_.activeTool()))
       v.feed_velocity_mm_s = r.feed_mm_per_tooth * t->teeth * r.speed_rpm / 60.0;
   }
-  if (doc_.project().machine) v.power_limit_w = doc_.project().machine->spindle_power_W;
+  if (project.machine) v.power_limit_w = project.machine->spindle_power_W;
   if (const auto q = currentParetoPoint()) {
     v.tol_min = finiteOrNone(q->tol());
     v.surf_um = finiteOrNone(q->surf());
@@ -202,15 +230,7 @@ void MainWindow::updateMonitoring(const SimulationSummary* summary) {
     v.tooth_passing_hz = summary->tooth_passing_hz;
     v.chatter = summary->chatter;
     v.chatter_frequency_hz = summary->chatter_frequency_hz;
-    QVector<widgets::MonitoringPeak> peaks;
-    try {
-      for (const FrequencyPeak& p : identifyPeaks(summary->spectrum_hz, summary->spectrum_n,
-                                                  summary->spindle_rpm / 60.0, std::max(1, summary->teeth)))
-        peaks.append({p.frequency_hz, p.amplitude, QString::fromStdString(describe(p.kind)), p.harmonic});
-    } catch (const std::exception&) {
-      // no spectrum (too short a run): no peaks
-    }
-    monitoring_->setPeaks(peaks);
+    monitoring_->setPeaks(spectrumPeaks(*summary));
     last_summary_eta_ = summary->eta;
   }
   monitoring_->setValues(v);

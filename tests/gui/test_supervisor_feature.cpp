@@ -1,4 +1,4 @@
-// The supervisor dock (issue 8): the project's chart of the chosen controller is drawn; a live run
+// The supervisor dock: the project's chart of the chosen controller is drawn; a live run
 // streams F_Y and tokens and ends with the metrics of the CLI's run; the operator's feed hold injected
 // during a paced run reaches the run as an operator event; Compare fills the three columns; a valid
 // chart edit is one undoable project edit, an invalid one is shown inline and changes nothing.
@@ -35,7 +35,7 @@ gui::SupervisorFeature* supervisor(const gui::MainWindow& w) {
 }
 }  // namespace
 
-class TestSupervisorGui : public QObject {
+class TestSupervisorFeature : public QObject {
   Q_OBJECT
  private slots:
   void init() {
@@ -166,5 +166,5 @@ class TestSupervisorGui : public QObject {
   }
 };
 
-MX_REGISTER_TEST(TestSupervisorGui)
-#include "test_supervisor_gui.moc"
+MX_REGISTER_TEST(TestSupervisorFeature)
+#include "test_supervisor_feature.moc"

@@ -1,4 +1,4 @@
-// The Pareto expert system in the main window (issue 5): the front view shows the study's
+// The Pareto expert system in the main window: the front view shows the study's
 // non-dominated set and a click moves the operating point and the weights to the clicked point in one
 // undoable step; Rule 11 requirements and Rule 12 automatic weights commit weights that keep the
 // simplex; the operator-rules editor edits the project, restricts the choice and shows fired rules and
@@ -22,6 +22,7 @@
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
+#include "support/window_features.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -33,10 +34,14 @@ bool openCase(gui::MainWindow& window) {
   window.setQuiet(true);
   window.resize(1600, 950);
   window.show();
-  QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
+  QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
   if (!window.openProject(kCase)) return false;
-  for (int i = 0; i < 120 && !window.pareto()->study(); ++i) shown.wait(1000);
-  return window.pareto()->study() != nullptr && window.paretoChoice().has_value();
+  for (int i = 0; i < 120 && !test::paretoOf(window)->runner()->study(); ++i) shown.wait(1000);
+  return test::paretoOf(window)->runner()->study() != nullptr && test::paretoOf(window)->choice().has_value();
+}
+
+widgets::ParetoWeightsPanel* weightsPanelOf(const gui::MainWindow& w) {
+  return test::windowPart<widgets::ParetoWeightsPanel>(w);
 }
 
 double weightAt(const gui::MainWindow& w, int i) {
@@ -44,7 +49,7 @@ double weightAt(const gui::MainWindow& w, int i) {
 }
 }  // namespace
 
-class TestParetoGui : public QObject {
+class TestParetoFeature : public QObject {
   Q_OBJECT
  private slots:
   void init() {
@@ -52,11 +57,24 @@ class TestParetoGui : public QObject {
     QCoreApplication::setApplicationName("millexpert-test");
   }
 
+  // The chart marks the choice of the study's tool once; a live weight move redraws that one marker.
+  void choiceIsMarkedOnTheChartOfItsTool() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    const QString tool = test::paretoOf(window)->runner()->study()->request().tool;
+    test::contextOf(window)->setActiveTool(tool);
+    const QString marker = QString("Pareto q (%1)").arg(tool);
+    widgets::LobeChartView* chart = test::lobesOf(window)->chart();
+    QCOMPARE(chart->markerNames().count(marker), 1);
+    emit weightsPanelOf(window)->weightsChanged({0.1, 0.7, 0.1, 0.1});  // a live move redraws, once
+    QCOMPARE(chart->markerNames().count(marker), 1);
+  }
+
   void frontClickMovesPointAndWeights() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    const auto& study = *window.pareto()->study();
-    widgets::ParetoFrontView* view = window.paretoFrontView();
+    const auto& study = *test::paretoOf(window)->runner()->study();
+    widgets::ParetoFrontView* view = test::windowPart<widgets::ParetoFrontView>(window);
     QCOMPARE(static_cast<std::size_t>(view->points().size()), study.front().size());
     // The selection of the project's weights is marked in the view.
     QVERIFY(view->selectedIndex() >= 0);
@@ -78,12 +96,12 @@ class TestParetoGui : public QObject {
     QCOMPARE_LE(std::abs(window.document()->point().feed_mm_per_tooth - p.feed_mm_per_tooth), 1e-9);
     for (int i = 0; i < 4; ++i) {
       QCOMPARE_LE(std::abs(weightAt(window, i) - (*p.weights)[static_cast<std::size_t>(i)]), 1e-12);
-      QCOMPARE_LE(std::abs(window.paretoWeightsPanel()->weights()[static_cast<std::size_t>(i)] -
+      QCOMPARE_LE(std::abs(weightsPanelOf(window)->weights()[static_cast<std::size_t>(i)] -
                            (*p.weights)[static_cast<std::size_t>(i)]),
                   1e-12);
     }
     // The weights select a point with the clicked point's J (Rule 10.1 on the front).
-    const auto& choice = *window.paretoChoice();
+    const auto& choice = *test::paretoOf(window)->choice();
     double j = 0.0;
     const ObjectiveVector s = study.table().normalise(
         study.table().evaluate(rpmToRevPerS(p.speed_rpm), p.depth_mm * 1e-3, p.feed_mm_per_tooth * 1e-3).objectives);
@@ -99,37 +117,38 @@ class TestParetoGui : public QObject {
   void requirementAndAutoWeights() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    const double mrr = window.paretoChoice()->point().mrr() * 1e6;
+    const double mrr = test::paretoOf(window)->choice()->point().mrr() * 1e6;
     // Require at least twice the current MRR (Rule 11): the weights move and the choice meets it.
-    widgets::RequirementsPanel* panel = window.requirementsPanel();
+    widgets::RequirementsPanel* panel = test::windowPart<widgets::RequirementsPanel>(window);
     panel->setRequirement(widgets::RequirementView{1, 2.0 * mrr, 1e3});
     emit panel->requirementChanged();
-    const auto& c = *window.paretoChoice();
+    const auto& c = *test::paretoOf(window)->choice();
     QVERIFY(c.requirement_satisfied);
     QVERIFY(c.point().mrr() * 1e6 >= 2.0 * mrr);
-    QVERIFY(onSimplex(window.paretoWeightsPanel()->weights(), 1e-9));
-    QVERIFY(window.paretoWeightsPanel()->weights()[1] > 0.1);  // the MRR weight rose from 0.1
-    QCOMPARE_LE(std::abs(weightAt(window, 1) - window.paretoWeightsPanel()->weights()[1]), 1e-12);
+    QVERIFY(onSimplex(weightsPanelOf(window)->weights(), 1e-9));
+    QVERIFY(weightsPanelOf(window)->weights()[1] > 0.1);  // the MRR weight rose from 0.1
+    QCOMPARE_LE(std::abs(weightAt(window, 1) - weightsPanelOf(window)->weights()[1]), 1e-12);
     // Rule 12 keeps the weights on the simplex and the requirement.
     emit panel->autoWeightsRequested();
-    QVERIFY(onSimplex(window.paretoWeightsPanel()->weights(), 1e-9));
-    QVERIFY(window.paretoChoice()->requirement_satisfied);
+    QVERIFY(onSimplex(weightsPanelOf(window)->weights(), 1e-9));
+    QVERIFY(test::paretoOf(window)->choice()->requirement_satisfied);
   }
 
   void operatorRulesRestrictAndFire() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
-    widgets::OperatorRulesEditor* editor = window.rulesEditor();
+    QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
+    widgets::OperatorRulesEditor* editor = test::windowPart<widgets::OperatorRulesEditor>(window);
     editor->textEdit()->setPlainText("speed_rpm <= 1500\nif tool.teeth >= 2 then advise depth_mm <= 0.01");
     QVERIFY(editor->check());
     QCOMPARE(app::projectToJson(*window.project()).value("operator_rules").toArray().size(), 2);
-    for (int i = 0; i < 60 && !(window.paretoChoice() &&
-                                revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
+    for (int i = 0;
+         i < 60 && !(test::paretoOf(window)->choice() &&
+                     revPerSToRpm(test::paretoOf(window)->choice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
          ++i)
       shown.wait(1000);
-    QVERIFY(revPerSToRpm(window.paretoChoice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
-    window.setActiveTool(window.pareto()->study()->request().tool);
+    QVERIFY(revPerSToRpm(test::paretoOf(window)->choice()->point().speed_rev_per_s) <= 1500.0 + 1e-9);
+    test::contextOf(window)->setActiveTool(test::paretoOf(window)->runner()->study()->request().tool);
     QCOMPARE(editor->firedRules(), (QList<int>{1, 2}));
     // A point above 1500 rpm breaks line 1: the editor says so.
     auto pt = window.document()->point();
@@ -146,23 +165,23 @@ class TestParetoGui : public QObject {
     QTemporaryDir dir;
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    window.setLearningDatabasePath(dir.filePath("learning.sqlite"));
-    QCOMPARE(window.historyView()->rows().size(), 0);
+    test::paretoOf(window)->setLearningDatabasePath(dir.filePath("learning.sqlite"));
+    QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 0);
     // Move to the Pareto choice (commit the current weights), record it: source automatic.
-    const ParetoWeights w = window.paretoWeightsPanel()->weights();
-    window.paretoWeightsPanel()->setWeights(w);
-    emit window.paretoWeightsPanel()->weightsCommitted(w);
-    window.recordOperatingPoint();
-    QCOMPARE(window.historyView()->rows().size(), 1);
-    const widgets::HistoryRow row = window.historyView()->rows().front();
+    const ParetoWeights w = weightsPanelOf(window)->weights();
+    weightsPanelOf(window)->setWeights(w);
+    emit weightsPanelOf(window)->weightsCommitted(w);
+    test::paretoOf(window)->recordOperatingPoint();
+    QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
+    const widgets::HistoryRow row = test::windowPart<widgets::HistoryView>(window)->rows().front();
     QCOMPARE(row.source, QString("automatic"));
-    QCOMPARE(row.tool, window.pareto()->study()->request().tool);
+    QCOMPARE(row.tool, test::paretoOf(window)->runner()->study()->request().tool);
     QCOMPARE_LE(std::abs(row.speed_rpm - window.document()->point().speed_rpm), 1e-6);
     // Change the weights, then "apply these weights" from the history row.
-    emit window.paretoWeightsPanel()->weightsCommitted({0.7, 0.1, 0.1, 0.1});
-    window.historyView()->selectRow(0);
-    QVERIFY(window.historyView()->applyButton()->isEnabled());
-    window.historyView()->applyButton()->click();
+    emit weightsPanelOf(window)->weightsCommitted({0.7, 0.1, 0.1, 0.1});
+    test::windowPart<widgets::HistoryView>(window)->selectRow(0);
+    QVERIFY(test::windowPart<widgets::HistoryView>(window)->applyButton()->isEnabled());
+    test::windowPart<widgets::HistoryView>(window)->applyButton()->click();
     for (int i = 0; i < 4; ++i) QCOMPARE_LE(std::abs(weightAt(window, i) - row.weights[i]), 1e-12);
   }
 
@@ -172,10 +191,10 @@ class TestParetoGui : public QObject {
     QTemporaryDir dir;
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    window.setLearningDatabasePath(dir.filePath("learning.sqlite"));
-    window.moveToParetoChoice();
+    test::paretoOf(window)->setLearningDatabasePath(dir.filePath("learning.sqlite"));
+    test::paretoOf(window)->moveToChoice();
     const double n0 = window.document()->point().speed_rpm;
-    window.reportChatter(668.0);
+    test::paretoOf(window)->reportChatter(668.0);
     const double n1 = window.document()->point().speed_rpm;
     // N_s = 60 f / (n_t k) for the k nearest n0 (3 teeth)
     const double k = std::round(60.0 * 668.0 / (3.0 * n0));
@@ -184,17 +203,17 @@ class TestParetoGui : public QObject {
       if (kk >= 1 && (best == 0.0 || std::abs(60.0 * 668.0 / (3.0 * kk) - n0) < std::abs(best - n0)))
         best = 60.0 * 668.0 / (3.0 * kk);
     QCOMPARE_LE(std::abs(n1 - best), 0.02 * best + 1e-9);
-    QCOMPARE(window.historyView()->rows().size(), 1);
-    QCOMPARE(window.historyView()->rows().front().source, QString("feedback"));
+    QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
+    QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().front().source, QString("feedback"));
   }
 
   void monitoringShowsSimulationSignals() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
-    QSignalSpy finished(&window, &gui::MainWindow::simulationFinished);
-    window.startSimulation();
+    QSignalSpy finished(test::simulationOf(window), &gui::SimulationFeature::simulationShown);
+    test::simulationOf(window)->start();
     QVERIFY(finished.wait(60000));
-    widgets::MonitoringPanel* m = window.monitoringPanel();
+    widgets::MonitoringPanel* m = test::windowPart<widgets::MonitoringPanel>(window);
     for (const char* key : {"eta", "chip_ratio", "peak_force_n", "tooth_passing_hz", "tol_min", "mrr_cm3_s"})
       QVERIFY2(m->valueText(key) != QString::fromUtf8("\u2013"), key);
     QVERIFY(m->peakTable()->rowCount() >= 1);
@@ -202,5 +221,5 @@ class TestParetoGui : public QObject {
   }
 };
 
-MX_REGISTER_TEST(TestParetoGui)
-#include "test_pareto_gui.moc"
+MX_REGISTER_TEST(TestParetoFeature)
+#include "test_pareto_feature.moc"

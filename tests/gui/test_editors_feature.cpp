@@ -18,6 +18,7 @@
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "support/cli_runner.h"
+#include "support/window_features.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
 #include "tool_table_model.h"
@@ -38,7 +39,7 @@ bool open(gui::MainWindow& w, const char* project) {
 
 // Sets the teeth of tool `id` in the tool table, as the user would.
 bool setTeeth(gui::MainWindow& w, const QString& id, int teeth) {
-  widgets::ToolTableModel* tools = w.toolEditor()->toolModel();
+  widgets::ToolTableModel* tools = test::editorsOf(w)->toolEditor()->toolModel();
   for (int row = 0; row < tools->rowCount(); ++row)
     if (tools->index(row, widgets::ToolTableModel::Id).data().toString() == id)
       return tools->setData(tools->index(row, widgets::ToolTableModel::Teeth), teeth, Qt::EditRole) &&
@@ -78,7 +79,7 @@ bool waitFor(QSignalSpy& spy, Done done) {
 
 }  // namespace
 
-class TestToolEditGui : public QObject {
+class TestEditorsFeature : public QObject {
   Q_OBJECT
  private slots:
   void init() {
@@ -88,15 +89,15 @@ class TestToolEditGui : public QObject {
 
   void lobesSimulationAndRankingReRun() {
     gui::MainWindow window;
-    QSignalSpy lobes(&window, &gui::MainWindow::lobesShown);
-    QSignalSpy refined(&window, &gui::MainWindow::refinementShown);
-    QSignalSpy simulated(window.simulations(), &gui::SimulationRunner::finished);
+    QSignalSpy lobes(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
+    QSignalSpy simulated(test::simulationOf(window)->runner(), &gui::SimulationRunner::finished);
     QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(waitFor(simulated, [&] { return lobes.count() > 0 && simulated.count() > 0 && refined.count() > 0; }));
-    const double four_power = window.readout()->readout().peak_power_w;
+    const double four_power = test::lobesOf(window)->readout()->readout().peak_power_w;
     const auto four_sim = simulated.last().at(1).value<gui::SimulationSummary>();
     QCOMPARE(four_sim.teeth, 4);
-    const widgets::RankingRow four_rank = window.rankingTable()->rows().front();
+    const widgets::RankingRow four_rank = test::windowPart<widgets::RankingTable>(window)->rows().front();
 
     lobes.clear();
     refined.clear();
@@ -114,7 +115,7 @@ class TestToolEditGui : public QObject {
     // The lobes' readout: the power at the operating point.
     const mx::test::CliRun point = mx::test::runCli(QStringList{"point", path} + cut);
     QCOMPARE(point.code, 0);
-    const double power = window.readout()->readout().peak_power_w;
+    const double power = test::lobesOf(window)->readout()->readout().peak_power_w;
     QVERIFY2(near(power, point.json.value("peak_power_W").toDouble()), qPrintable(number(power)));
     QVERIFY(!near(power, four_power));
 
@@ -132,7 +133,7 @@ class TestToolEditGui : public QObject {
     const mx::test::CliRun rank = mx::test::runCli({"rank", path});
     QCOMPARE(rank.code, 0);
     const QJsonObject best = rank.json.value("ranking").toArray().at(0).toObject();
-    const widgets::RankingRow row = window.rankingTable()->rows().front();
+    const widgets::RankingRow row = test::windowPart<widgets::RankingTable>(window)->rows().front();
     QVERIFY2(near(row.min_cost, best.value("min_cost").toDouble()), qPrintable(number(row.min_cost)));
     QCOMPARE(row.speed_rpm, best.value("q").toObject().value("speed_rpm").toDouble());
     QVERIFY(near(row.depth_mm, best.value("q").toObject().value("depth_mm").toDouble()));
@@ -141,18 +142,21 @@ class TestToolEditGui : public QObject {
 
   void paretoStudyReRuns() {
     gui::MainWindow window;
-    QSignalSpy shown(&window, &gui::MainWindow::paretoShown);
+    QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
     QVERIFY(open(window, "rubio-pareto-case.mxproj"));
-    QVERIFY(waitFor(shown, [&] { return window.pareto()->study() && window.paretoChoice(); }));
-    const auto before = window.pareto()->study();
-    const double three_mrr = window.paretoChoice()->point().mrr();
+    QVERIFY(
+        waitFor(shown, [&] { return test::paretoOf(window)->runner()->study() && test::paretoOf(window)->choice(); }));
+    const auto before = test::paretoOf(window)->runner()->study();
+    const double three_mrr = test::paretoOf(window)->choice()->point().mrr();
 
     QVERIFY(setTeeth(window, "R1", 2));
-    QVERIFY(waitFor(shown, [&] { return window.pareto()->study() != before && window.paretoChoice(); }));
+    QVERIFY(waitFor(shown, [&] {
+      return test::paretoOf(window)->runner()->study() != before && test::paretoOf(window)->choice();
+    }));
     QTemporaryDir dir;
     const mx::test::CliRun cli = mx::test::runCli({"pareto", saved(window, dir)});
     QCOMPARE(cli.code, 0);
-    const ParetoPoint& q = window.paretoChoice()->point();
+    const ParetoPoint& q = test::paretoOf(window)->choice()->point();
     const QJsonObject cli_q = cli.json.value("q").toObject();
     QVERIFY(near(revPerSToRpm(q.speed_rev_per_s), cli_q.value("speed_rpm").toDouble()));
     QVERIFY(near(q.depth_m * 1e3, cli_q.value("depth_mm").toDouble()));
@@ -213,5 +217,5 @@ class TestToolEditGui : public QObject {
   }
 };
 
-MX_REGISTER_TEST(TestToolEditGui)
-#include "test_tool_edit_gui.moc"
+MX_REGISTER_TEST(TestEditorsFeature)
+#include "test_editors_feature.moc"

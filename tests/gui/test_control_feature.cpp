@@ -1,4 +1,4 @@
-// The control and machining docks of the main window (issues 6 and 7): the project's control section
+// The control and machining docks of the main window: the project's control section
 // drives the closed loop on the engine thread and its result reaches the view (traces, metrics equal
 // to an independent engine run, pole-zero map, J_c sweep); a beta change is one undoable edit of
 // control.beta; an invalid workpiece is refused with the project unchanged; the surface-finish panel
@@ -25,6 +25,7 @@
 #include "part_program_panel.h"
 #include "services/control_request.h"
 #include "support/cli_runner.h"
+#include "support/window_features.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -48,7 +49,7 @@ gui::MachiningFeature* machining(const gui::MainWindow& w) {
 }
 }  // namespace
 
-class TestControlGui : public QObject {
+class TestControlFeature : public QObject {
   Q_OBJECT
  private slots:
   void init() {
@@ -99,7 +100,7 @@ class TestControlGui : public QObject {
     widgets::ControlMetricsPanel* metrics = control(window)->view()->metricsPanel();
     const QString four_teeth_jc = metrics->valueText("jc");
 
-    widgets::ToolTableModel* tools = window.toolEditor()->toolModel();
+    widgets::ToolTableModel* tools = test::editorsOf(window)->toolEditor()->toolModel();
     int row = 0;
     while (row < tools->rowCount() && tools->index(row, widgets::ToolTableModel::Id).data().toString() != "C1") ++row;
     QVERIFY(row < tools->rowCount());
@@ -179,5 +180,5 @@ class TestControlGui : public QObject {
   }
 };
 
-MX_REGISTER_TEST(TestControlGui)
-#include "test_control_gui.moc"
+MX_REGISTER_TEST(TestControlFeature)
+#include "test_control_feature.moc"

@@ -1,0 +1,31 @@
+#pragma once
+// The project's editors: the tool library and the machine and operation panel (tabbed docks on the
+// left). Their edits go to the document as undoable steps; choosing a tool in the library makes it the
+// active tool.
+#include <QMainWindow>
+
+#include "feature_context.h"
+#include "window_feature.h"
+
+namespace mx::widgets {
+class MachineOperationPanel;
+class ToolLibraryEditor;
+}  // namespace mx::widgets
+
+namespace mx::gui {
+
+class EditorsFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  // Adds the "toolsDock" and the "machineDock".
+  EditorsFeature(QMainWindow* window, FeatureContext& context);
+
+  void projectChanged(const app::Project& project, Features recompute) override;
+  widgets::ToolLibraryEditor* toolEditor() const { return tool_editor_; }
+
+ private:
+  widgets::ToolLibraryEditor* tool_editor_;
+  widgets::MachineOperationPanel* machine_panel_;
+};
+
+}  // namespace mx::gui

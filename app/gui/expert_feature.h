@@ -1,0 +1,71 @@
+#pragma once
+// The expert system (2006 paper, section 3): the session (lobes and admissible grids of every tool)
+// is built on the engine thread once the edits pause; a weight change re-ranks on the GUI thread from
+// the session's caches (Rule 4, milliseconds); a committed weight change is an undoable edit and
+// re-runs Rules 5-6 (cached simulations) on the engine thread for q**. The chart shows q*, q**, and on
+// request the cost heat map and the admissible grid of the active tool. File > Export report writes
+// the expert report.
+#include <QMainWindow>
+#include <QTimer>
+#include <optional>
+
+#include "expert/expert_session.h"
+#include "feature_context.h"
+#include "window_feature.h"
+
+namespace mx::widgets {
+class LobeChartView;
+class RankingTable;
+class WeightsPanel;
+}  // namespace mx::widgets
+
+namespace mx::gui {
+
+class ExpertRunner;
+struct RefinementOutcome;
+
+// The project's cost weights c, c_r, c_t, c_f (defaults where the project has none).
+CostWeights projectWeightsOf(const app::Project& project);
+
+class ExpertFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  // Adds the "weightsDock" (tabbed with the point) and the "rankingDock" (tabbed with the simulation).
+  ExpertFeature(QMainWindow* window, FeatureContext& context, widgets::LobeChartView* chart);
+
+  void projectChanged(const app::Project& project, Features recompute) override;
+  void addFileActions(QMenu* file, QToolBar* toolbar) override;
+  void addViewActions(QMenu* view, QToolBar* toolbar) override;
+
+  ExpertRunner* runner() const { return runner_; }
+  const CostWeights& weights() const { return weights_; }
+
+ signals:
+  void rankingShown();     // the ranking table was refreshed (a weight change or a new session)
+  void refinementShown();  // q** (Rules 5-6) arrived
+
+ private:
+  void buildDocks(QMainWindow* window);
+  void rebuild();
+  void onSessionReady(const QString& error);
+  void rerank(const CostWeights& weights);
+  void onRefined(const RefinementOutcome& outcome);
+  void commitWeights(const CostWeights& weights);
+  void updateOverlays();
+  void drawSessionOverlays(int tool);
+  void exportReport();
+
+  FeatureContext& context_;
+  widgets::LobeChartView* chart_;
+  ExpertRunner* runner_;
+  widgets::WeightsPanel* weights_panel_;
+  widgets::RankingTable* ranking_table_;
+  QTimer rebuild_timer_;  // one session per burst of edits
+  CostWeights weights_;
+  std::optional<Ranking> ranking_;
+  std::optional<ExpertResult> refinement_;
+  bool show_cost_map_ = false;
+  bool show_grid_ = false;
+};
+
+}  // namespace mx::gui

@@ -1,0 +1,51 @@
+#pragma once
+// What the features of the main window share: the document (read-only), the display units, the
+// engine thread's pool, the active tool, the readout of the operating point, and the events one
+// feature raises for the others (a simulation request, a finished simulation, a rebuilt chart).
+// The window owns it; features never reach each other directly.
+#include <QObject>
+#include <QString>
+#include <QThreadPool>
+
+#include "display_units.h"
+#include "document/project_document.h"
+#include "point_readout.h"
+#include "simulation_data.h"
+
+namespace mx::gui {
+
+class FeatureContext : public QObject {
+  Q_OBJECT
+ public:
+  FeatureContext(const app::ProjectDocument& document, widgets::DisplayUnits& units, QThreadPool* engine_pool,
+                 QObject* parent);
+
+  const app::ProjectDocument& document() const { return document_; }
+  const app::Project& project() const { return document_.project(); }
+  const app::PickedPoint& point() const { return document_.point(); }
+  widgets::DisplayUnits* units() const { return &units_; }
+  QThreadPool* enginePool() const { return engine_pool_; }
+
+  // The tool of the readouts, the shading, the markers and the simulation.
+  const QString& activeTool() const { return active_tool_; }
+  void setActiveTool(const QString& id);  // "" is ignored; emits activeToolChanged when it changes
+  // The readout of the operating point (power, MRR, stability) for the active tool.
+  const widgets::PointReadout& readout() const { return readout_; }
+  void setReadout(const widgets::PointReadout& readout);
+
+ signals:
+  void activeToolChanged(const QString& id);
+  void readoutChanged(const mx::widgets::PointReadout& readout);
+  void lobesShown();           // the chart was rebuilt (its markers and overlays are gone)
+  void simulationRequested();  // simulate the operating point of the active tool
+  void simulationFinished(const mx::gui::SimulationSummary& summary);
+
+ private:
+  const app::ProjectDocument& document_;
+  widgets::DisplayUnits& units_;
+  QThreadPool* engine_pool_;
+  QString active_tool_;
+  widgets::PointReadout readout_;
+};
+
+}  // namespace mx::gui

@@ -1,0 +1,308 @@
+#include "lobes_feature.h"
+
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QStatusBar>
+#include <QVBoxLayout>
+#include <cmath>
+#include <limits>
+
+#include "document/lobe_inputs.h"
+#include "stability/lobe_diagram.h"
+
+namespace mx::gui {
+
+LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineRunner* engine)
+    : WindowFeature(window),
+      context_(context),
+      engine_(engine),
+      chart_(new widgets::LobeChartView(window)),
+      readout_(new widgets::OperatingPointReadout(window)),
+      tool_combo_(new QComboBox(window)),
+      method_combo_(new QComboBox(window)),
+      feed_spin_(new QDoubleSpinBox(window)),
+      status_point_(new QLabel(window)),
+      status_engine_(new QLabel(window)),
+      progress_(new QProgressBar(window)),
+      cancel_button_(new QToolButton(window)) {
+  setObjectName("lobesFeature");
+  window->setCentralWidget(chart_);
+  readout_->setUnits(context_.units());
+  auto* dock = new QDockWidget(tr("Operating point"), window);
+  dock->setObjectName("pointDock");
+  dock->setWidget(buildPointPanel());
+  window->addDockWidget(Qt::RightDockWidgetArea, dock);
+  buildStatusBar(window);
+  recompute_timer_.setSingleShot(true);
+  recompute_timer_.setInterval(120);
+  connectSignals();
+}
+
+// The point panel: active tool, feed per tooth, readouts.
+QWidget* LobesFeature::buildPointPanel() {
+  auto* panel = new QWidget;
+  auto* layout = new QVBoxLayout(panel);
+  auto* form = new QFormLayout;
+  tool_combo_->setToolTip(tr("The tool whose lobes, power limit and readouts are shown"));
+  method_combo_->addItems({tr("Zeroth-order approximation"), tr("Semi-discretization")});
+  method_combo_->setToolTip(
+      tr("Stability method: ZOA (fast, accurate at high immersion) or first-order "
+         "semi-discretization (low immersion, few teeth)"));
+  feed_spin_->setRange(0.001, 5.0);
+  feed_spin_->setDecimals(4);
+  feed_spin_->setSingleStep(0.01);
+  feed_spin_->setSuffix(" mm/tooth");
+  feed_spin_->setToolTip(tr("Feed per tooth of the operating point (power, MRR and simulation)"));
+  form->addRow(tr("Tool:"), tool_combo_);
+  form->addRow(tr("Feed per tooth:"), feed_spin_);
+  layout->addLayout(form);
+  layout->addWidget(readout_);
+  panel->setMinimumWidth(300);
+  return panel;
+}
+
+void LobesFeature::buildStatusBar(QMainWindow* window) {
+  progress_->setRange(0, 100);
+  progress_->setMaximumWidth(180);
+  progress_->setVisible(false);
+  cancel_button_->setText(tr("Cancel"));
+  cancel_button_->setToolTip(tr("Cancel the running computation"));
+  cancel_button_->setVisible(false);
+  window->statusBar()->addWidget(status_point_, 1);
+  window->statusBar()->addPermanentWidget(status_engine_);
+  window->statusBar()->addPermanentWidget(progress_);
+  window->statusBar()->addPermanentWidget(cancel_button_);
+  status_engine_->setText(tr("Engine idle"));
+}
+
+void LobesFeature::connectSignals() {
+  connect(&recompute_timer_, &QTimer::timeout, this, &LobesFeature::recompute);
+  connect(engine_, &EngineRunner::lobesReady, this, &LobesFeature::onLobesReady);
+  connect(engine_, &EngineRunner::lobeProgress, this, [this](double f) { progress_->setValue(qRound(100 * f)); });
+  connect(engine_, &EngineRunner::busyChanged, this, [this](bool busy) {
+    progress_->setVisible(busy);
+    cancel_button_->setVisible(busy);
+    progress_->setValue(0);
+    status_engine_->setText(busy ? tr("Engine: computing lobes...") : tr("Engine idle"));
+  });
+  connect(cancel_button_, &QToolButton::clicked, this, &LobesFeature::cancelRequested);
+  connect(chart_, &widgets::LobeChartView::pointDragged, this, &LobesFeature::onPointDragged);
+  connect(chart_, &widgets::LobeChartView::pointReleased, this, [this](double speed_rpm, double depth_mm) {
+    onPointDragged(speed_rpm, depth_mm);
+    ++drag_id_;
+    emit context_.simulationRequested();
+  });
+  connect(&context_.document(), &app::ProjectDocument::pointChanged, this, &LobesFeature::showPoint);
+  connect(&context_, &FeatureContext::activeToolChanged, this, &LobesFeature::showActiveTool);
+  connect(tool_combo_, &QComboBox::currentTextChanged, &context_, &FeatureContext::setActiveTool);
+  connect(method_combo_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    method_ = index == 0 ? LobeMethod::ZeroOrder : LobeMethod::SemiDiscretization;
+    recompute();
+  });
+  connect(feed_spin_, &QDoubleSpinBox::editingFinished, this, [this] {
+    app::PickedPoint p = context_.point();
+    p.feed_mm_per_tooth = context_.units()->toMm(feed_spin_->value());
+    emit pointRequested(p, 0);
+    updatePowerLimit();
+  });
+  connect(this, &LobesFeature::lobesShown, &context_, &FeatureContext::lobesShown);
+  connect(context_.units(), &widgets::DisplayUnits::changed, this, [this] {
+    const widgets::DisplayUnits& units = *context_.units();
+    feed_spin_->setSuffix(QString(" %1/tooth").arg(units.lengthSuffix()));
+    feed_spin_->setDecimals(units.lengthDecimals());
+    chart_->setLengthUnit(units.fromMm(1.0), units.lengthSuffix());
+    showPoint(context_.point());
+  });
+}
+
+void LobesFeature::addFileActions(QMenu* file, QToolBar* toolbar) {
+  QAction* a = file->addAction(tr("&Export chart..."));
+  a->setShortcut(QKeySequence(tr("Ctrl+E")));
+  a->setToolTip(tr("Save the lobe chart as PNG, SVG or PDF"));
+  a->setStatusTip(a->toolTip());
+  connect(a, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(chart_, tr("Export chart"), "lobes.png",
+                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
+    if (!path.isEmpty() && !chart_->saveImage(path)) emit errorRaised(tr("Export failed"), path);
+  });
+  toolbar->addAction(a);
+}
+
+void LobesFeature::addViewActions(QMenu* view, QToolBar* toolbar) {
+  QAction* reset = view->addAction(tr("&Reset chart view"));
+  reset->setShortcut(QKeySequence(tr("Ctrl+0")));
+  reset->setToolTip(tr("Show the whole speed range"));
+  reset->setStatusTip(reset->toolTip());
+  connect(reset, &QAction::triggered, chart_, &widgets::LobeChartView::resetView);
+  toolbar->addAction(reset);
+  tools_menu_ = view->addMenu(tr("&Tools on the chart"));
+  tools_menu_->setToolTip(tr("Choose which tools' lobes the chart shows"));
+  refreshToolChoices(context_.project());
+  toolbar->addWidget(method_combo_);
+}
+
+void LobesFeature::stop() {
+  engine_->cancelAll();
+}
+
+void LobesFeature::setMethod(LobeMethod method) {
+  method_combo_->setCurrentIndex(method == LobeMethod::ZeroOrder ? 0 : 1);
+}
+
+// The tool choices follow the tool library; lobes wait for the edits to pause.
+void LobesFeature::projectChanged(const app::Project& project, Features recompute) {
+  if (recompute & Feature::Editors) refreshToolChoices(project);
+  if (recompute & Feature::Lobes) recompute_timer_.start();
+}
+
+// The toolbar's tool choice and View > Tools on the chart; the active tool stays when it still exists.
+void LobesFeature::refreshToolChoices(const app::Project& project) {
+  const QString keep = context_.activeTool();
+  tool_combo_->blockSignals(true);
+  tool_combo_->clear();
+  for (const app::ToolSpec& t : project.tools) tool_combo_->addItem(t.id);
+  const int index = tool_combo_->findText(keep);
+  tool_combo_->setCurrentIndex(index >= 0 ? index : 0);
+  tool_combo_->blockSignals(false);
+  context_.setActiveTool(tool_combo_->currentText());
+  if (!tools_menu_) return;
+  tools_menu_->clear();
+  for (const app::ToolSpec& t : project.tools) {
+    QAction* a = tools_menu_->addAction(t.id);
+    a->setCheckable(true);
+    a->setChecked(chart_->isToolVisible(t.id));
+    connect(a, &QAction::toggled, this, [this, id = t.id](bool on) { chart_->setToolVisible(id, on); });
+  }
+}
+
+void LobesFeature::recompute() {
+  recompute_timer_.stop();
+  const app::Project& p = context_.project();
+  LobeJobInput input;
+  input.method = method_;
+  app::LobeInputs lobes = app::lobeInputsFrom(p, 10.0);  // the ZOA is cheap on a fine grid
+  input.delta_per_s = lobes.delta_per_s;
+  input.alpha = lobes.alpha;
+  // The SDM envelope uses 200 speeds.
+  if (method_ == LobeMethod::SemiDiscretization)
+    lobes.step_rpm = std::max((lobes.to_rpm - lobes.from_rpm) / 199.0, 1.0);
+  input.speeds_rev_per_s = lobes.grid().values();
+  try {
+    for (const app::ToolSpec& t : p.tools) input.tools.push_back(p.setupFor(t.id));
+  } catch (const app::ProjectError& e) {
+    chart_->clear();
+    snapshot_.reset();
+    evaluator_ = PointEvaluator();
+    status_engine_->setText(tr("Lobes unavailable: %1").arg(QString::fromStdString(e.what())));
+    return;
+  }
+  if (input.tools.empty()) {
+    chart_->clear();
+    return;
+  }
+  engine_->submitLobes(std::move(input));
+}
+
+void LobesFeature::onLobesReady(const LobeJobResult& result) {
+  if (result.cancelled) {
+    emit statusMessage(tr("Lobe computation cancelled"), 5000);
+    return;
+  }
+  if (!result.error.isEmpty()) {
+    emit errorRaised(tr("Lobe computation failed"), result.error);
+    return;
+  }
+  snapshot_ = result.snapshot;
+  const app::Project& p = context_.project();
+  evaluator_ = PointEvaluator(snapshot_, p.machine ? p.machine->spindle_power_W : 0.0);
+  chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
+  const int tool = std::max(0, evaluator_.toolIndex(context_.activeTool()));
+  chart_->setActiveTool(tool);
+  setSnapGrid(tool);
+  if (context_.point().speed_rpm <= 0.0)
+    pickInitialPoint(tool);
+  else
+    showPoint(context_.point());
+  updatePowerLimit();
+  status_engine_->setText(
+      tr("Lobes: %1, %2 tool(s)")
+          .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))
+          .arg(snapshot_->tools.size()));
+  emit lobesShown();
+}
+
+// Snap grid (Shift): the expert grid's speed step, and depth steps of b_min / depth_divisions.
+void LobesFeature::setSnapGrid(int tool) {
+  const app::Project& p = context_.project();
+  double b_min = std::numeric_limits<double>::infinity();
+  for (double b : snapshot_->tools[static_cast<size_t>(tool)].margined.envelope_depth_m) b_min = std::min(b_min, b);
+  const int divisions = p.expert && p.expert->grid ? p.expert->grid->depth_divisions : 10;
+  chart_->setSnapGrid(p.expert && p.expert->grid ? p.expert->grid->speed_step_rpm : 100.0,
+                      std::isfinite(b_min) ? snapshot_->alpha * b_min * 1e3 / divisions : 0.0);
+}
+
+// The first lobes of a project: the point starts in the middle of the range at half the limit there.
+void LobesFeature::pickInitialPoint(int tool) {
+  const app::Project& p = context_.project();
+  const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
+  app::PickedPoint start;
+  start.speed_rpm = std::round(revPerSToRpm(0.5 * (speeds.front() + speeds.back())) / 100.0) * 100.0;
+  const widgets::PointReadout r = evaluator_.evaluate(tool, start.speed_rpm, 0.0, 0.1);
+  start.depth_mm = std::isfinite(r.blim_mm) ? 0.5 * r.blim_mm : 1.0;
+  start.feed_mm_per_tooth = p.operation ? 0.5 * p.operation->max_feed_per_tooth_mm : 0.1;
+  emit initialPointRequested(start);
+  emit context_.simulationRequested();
+}
+
+void LobesFeature::updatePowerLimit() {
+  const int tool = evaluator_.toolIndex(context_.activeTool());
+  const double feed = context_.point().feed_mm_per_tooth;
+  power_limit_feed_ = feed;
+  const app::Project& p = context_.project();
+  const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
+  chart_->setPowerLimit(
+      limit, p.machine
+                 ? tr("power limit %1 W at s_t = %2 mm/tooth").arg(p.machine->spindle_power_W).arg(feed, 0, 'f', 3)
+                 : QString());
+}
+
+void LobesFeature::showPoint(const app::PickedPoint& point) {
+  if (point.feed_mm_per_tooth != power_limit_feed_) updatePowerLimit();  // the curve depends on s_t
+  const int tool = evaluator_.toolIndex(context_.activeTool());
+  const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
+  readout_->setReadout(r);
+  widgets::PointVerdict verdict = widgets::PointVerdict::Unknown;
+  if (r.valid)
+    verdict = !r.stable      ? widgets::PointVerdict::Unstable
+              : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
+                             : widgets::PointVerdict::Stable;
+  chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
+  feed_spin_->blockSignals(true);
+  feed_spin_->setValue(context_.units()->fromMm(point.feed_mm_per_tooth));
+  feed_spin_->blockSignals(false);
+  status_point_->setText(tr("Point: %1 rpm, b = %2 mm, s_t = %3 mm/tooth \u2014 %4")
+                             .arg(point.speed_rpm, 0, 'f', 0)
+                             .arg(point.depth_mm, 0, 'f', 3)
+                             .arg(point.feed_mm_per_tooth, 0, 'f', 3)
+                             .arg(readout_->text("verdict")));
+  context_.setReadout(r);
+}
+
+void LobesFeature::showActiveTool() {
+  const QString& id = context_.activeTool();
+  const int index = tool_combo_->findText(id);
+  if (index >= 0 && tool_combo_->currentIndex() != index) tool_combo_->setCurrentIndex(index);
+  chart_->setActiveTool(evaluator_.toolIndex(id));
+  updatePowerLimit();
+  showPoint(context_.point());
+}
+
+void LobesFeature::onPointDragged(double speed_rpm, double depth_mm) {
+  app::PickedPoint p = context_.point();
+  p.speed_rpm = speed_rpm;
+  p.depth_mm = depth_mm;
+  emit pointRequested(p, drag_id_);
+}
+
+}  // namespace mx::gui

@@ -1,0 +1,78 @@
+#pragma once
+// The stability-lobe chart (the window's central widget) and the operating point: the lobes of every
+// tool on the engine thread once the edits pause, the live readouts (power, MRR, b_lim, ROS) while the
+// point is dragged, the power-limit curve, the active tool and the stability method, and the engine's
+// progress in the status bar.
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QMainWindow>
+#include <QProgressBar>
+#include <QTimer>
+#include <QToolButton>
+#include <memory>
+
+#include "engine_runner.h"
+#include "feature_context.h"
+#include "lobe_chart_view.h"
+#include "lobe_job.h"
+#include "operating_point_readout.h"
+#include "point_evaluator.h"
+#include "window_feature.h"
+
+namespace mx::gui {
+
+class LobesFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  // Sets the chart as the window's central widget and adds the "pointDock".
+  LobesFeature(QMainWindow* window, FeatureContext& context, EngineRunner* engine);
+
+  void projectChanged(const app::Project& project, Features recompute) override;
+  void stop() override;
+  void addFileActions(QMenu* file, QToolBar* toolbar) override;
+  void addViewActions(QMenu* view, QToolBar* toolbar) override;
+
+  void setMethod(LobeMethod method);
+  widgets::LobeChartView* chart() const { return chart_; }
+  widgets::OperatingPointReadout* readout() const { return readout_; }
+
+ signals:
+  void lobesShown();       // new lobes are on the chart
+  void cancelRequested();  // the Cancel button: every feature stops its engine-thread work
+
+ private:
+  QWidget* buildPointPanel();
+  void buildStatusBar(QMainWindow* window);
+  void connectSignals();
+  void refreshToolChoices(const app::Project& project);
+  void recompute();
+  void onLobesReady(const LobeJobResult& result);
+  void setSnapGrid(int tool);
+  void pickInitialPoint(int tool);
+  void updatePowerLimit();
+  void showPoint(const app::PickedPoint& point);
+  void showActiveTool();
+  void onPointDragged(double speed_rpm, double depth_mm);
+
+  FeatureContext& context_;
+  EngineRunner* engine_;
+  widgets::LobeChartView* chart_;
+  widgets::OperatingPointReadout* readout_;
+  QComboBox* tool_combo_;
+  QComboBox* method_combo_;
+  QDoubleSpinBox* feed_spin_;
+  QLabel* status_point_;
+  QLabel* status_engine_;
+  QProgressBar* progress_;
+  QToolButton* cancel_button_;
+  QMenu* tools_menu_ = nullptr;  // View > Tools on the chart (checkable)
+  QTimer recompute_timer_;       // one lobe computation per burst of edits
+  std::shared_ptr<const LobeSnapshot> snapshot_;
+  PointEvaluator evaluator_;
+  LobeMethod method_ = LobeMethod::ZeroOrder;
+  int drag_id_ = 1;
+  double power_limit_feed_ = -1.0;  // feed per tooth the power-limit curve was drawn for
+};
+
+}  // namespace mx::gui

@@ -1,0 +1,104 @@
+#pragma once
+// The Pareto expert system beside the chart (Rubio et al., Pareto paper, modules V-VII):
+// - the ParetoStudy of the project's pareto.tool is built on the engine thread when its inputs change;
+//   moving the Pareto weights re-selects on the GUI thread (one pass over the table);
+// - committing weights (sliders, the Rule 11 requirement, Rule 12 automatic weights, a history entry,
+//   a click on the front) is one undoable step: the pareto.weights edit and the move of the operating
+//   point to the selected q;
+// - Rule 14: the point can be recorded in the learning database, whose history view queries it;
+// - Rule 16: chatter reported at the machine re-selects near the Smith-Tlusty speed;
+// - Rule 17: the monitoring dock shows the signals of the point and of its last simulation;
+// - Rule 18: the operator-rules editor edits operator_rules; the rules that fire for the active tool
+//   are highlighted, with the constraints the point violates.
+#include <QDoubleSpinBox>
+#include <QMainWindow>
+#include <QPushButton>
+#include <QTimer>
+#include <optional>
+
+#include "feature_context.h"
+#include "services/pareto_study.h"
+#include "window_feature.h"
+
+namespace mx::widgets {
+class HistoryView;
+class LobeChartView;
+class MonitoringPanel;
+class OperatorRulesEditor;
+class ParetoFrontView;
+class ParetoWeightsPanel;
+class RequirementsPanel;
+struct ParetoPointView;
+}  // namespace mx::widgets
+
+namespace mx::gui {
+
+class ParetoRunner;
+
+// The project's pareto.weights (equal weights when absent).
+ParetoWeights projectParetoWeightsOf(const app::Project& project);
+
+class ParetoFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  // Adds the Pareto weights and operator-rules docks (right, tabbed with "weightsDock") and the front,
+  // monitoring and history docks (bottom, tabbed with "rankingDock").
+  ParetoFeature(QMainWindow* window, FeatureContext& context, widgets::LobeChartView* chart);
+
+  void projectChanged(const app::Project& project, Features recompute) override;
+
+  ParetoRunner* runner() const { return runner_; }
+  const std::optional<app::ParetoChoice>& choice() const { return choice_; }
+  QString learningDatabasePath() const;  // default: LearningDatabase::defaultPath()
+  void setLearningDatabasePath(const QString& path);
+  void recordOperatingPoint();            // Rule 14, source operator or automatic
+  void moveToChoice();                    // the operating point := the Pareto choice (undoable)
+  void reportChatter(double chatter_hz);  // Module VI: Rule 16 speed, re-selection, record, simulate
+
+ signals:
+  void paretoShown();   // the choice was recomputed (study ready, weights or requirement changed)
+  void historyShown();  // the history view was refreshed from the database
+
+ private:
+  // pareto_feature.cpp: the study, the selection and its commits.
+  QWidget* buildWeightsPanel();
+  void buildDocks(QMainWindow* window);
+  void connectSignals();
+  void rebuild();
+  void disable();
+  void onStudyReady(const QString& error);
+  std::optional<app::ParetoChoice> chooseWith(const ParetoWeights& w, bool auto_weights);
+  void showChoice(const ParetoWeights& w);
+  void showChoiceMarker();
+  void commitWeights(const ParetoWeights& w, const QString& description,
+                     const std::optional<ParetoPoint>& target = std::nullopt);
+  void onFrontPointActivated(const widgets::ParetoPointView& point);
+  void onRequirementChanged();
+  void onAutoWeights();
+  // pareto_feature_learning.cpp: the learning database, monitoring and operator rules.
+  std::optional<ParetoPoint> currentParetoPoint() const;
+  void recordFeedback(const ParetoPoint& q);  // Rule 16's re-selected point, source feedback
+  void refreshHistory();
+  void onRulesEdited(const QStringList& rules);
+  void updateFiredRules();
+  void updateMonitoring(const SimulationSummary* summary = nullptr);
+
+  FeatureContext& context_;
+  widgets::LobeChartView* chart_;
+  ParetoRunner* runner_;
+  widgets::ParetoWeightsPanel* weights_panel_;
+  widgets::RequirementsPanel* requirements_;
+  widgets::ParetoFrontView* front_view_;
+  widgets::MonitoringPanel* monitoring_;
+  widgets::HistoryView* history_;
+  widgets::OperatorRulesEditor* rules_editor_;
+  QPushButton* record_button_;
+  QPushButton* report_chatter_;
+  QDoubleSpinBox* chatter_hz_;
+  QTimer rebuild_timer_;  // one study per burst of edits
+  std::optional<app::ParetoChoice> choice_;
+  std::optional<double> last_summary_eta_;
+  QString learning_db_path_;
+};
+
+}  // namespace mx::gui

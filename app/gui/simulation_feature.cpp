@@ -1,0 +1,80 @@
+#include "simulation_feature.h"
+
+#include <QDockWidget>
+#include <limits>
+
+#include "simulation_runner.h"
+#include "simulation_view.h"
+
+namespace mx::gui {
+
+SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& context)
+    : WindowFeature(window),
+      context_(context),
+      runner_(new SimulationRunner(context.enginePool(), this)),
+      view_(new widgets::SimulationView(window)) {
+  setObjectName("simulationFeature");
+  auto* dock = new QDockWidget(tr("Live simulation"), window);
+  dock->setObjectName("simulationDock");
+  dock->setWidget(view_);
+  window->addDockWidget(Qt::BottomDockWidgetArea, dock);
+  connect(runner_, &SimulationRunner::chunkReady, this, [this](quint64 g, const SimulationChunkData& chunk) {
+    if (g == generation_) view_->appendChunk(chunk);
+  });
+  connect(runner_, &SimulationRunner::finished, this, &SimulationFeature::onFinished);
+  connect(runner_, &SimulationRunner::failed, this, [this](quint64 g, const QString& message) {
+    if (g == generation_) view_->setStatus(tr("Simulation failed: %1").arg(message));
+  });
+  connect(view_, &widgets::SimulationView::moveToSpeedRequested, this, [this](double rpm) {
+    app::PickedPoint p = context_.point();
+    p.speed_rpm = rpm;
+    emit pointRequested(p, 0);
+    start();
+  });
+  connect(&context_, &FeatureContext::simulationRequested, this, &SimulationFeature::start);
+}
+
+void SimulationFeature::addViewActions(QMenu* view, QToolBar* toolbar) {
+  QAction* a = view->addAction(tr("Simulate the &point"));
+  a->setShortcut(QKeySequence(tr("F5")));
+  a->setToolTip(tr("Run the time-domain simulation of the point"));
+  a->setStatusTip(a->toolTip());
+  connect(a, &QAction::triggered, this, &SimulationFeature::start);
+  toolbar->addAction(a);
+}
+
+void SimulationFeature::projectChanged(const app::Project& /*project*/, Features recompute) {
+  if (recompute & Feature::Simulation) start();
+}
+
+void SimulationFeature::stop() {
+  runner_->cancel();
+}
+
+void SimulationFeature::start() {
+  const app::Project& p = context_.project();
+  const app::PickedPoint& pt = context_.point();
+  if (context_.activeTool().isEmpty() || pt.speed_rpm <= 0.0 || pt.feed_mm_per_tooth <= 0.0) return;
+  try {
+    const MillingSetup setup = p.setupFor(context_.activeTool());
+    SimulationOptions options;
+    options.revolutions = 60;
+    const double power = p.machine ? p.machine->spindle_power_W : 0.0;
+    const double max_speed = p.machine && p.machine->max_spindle_rpm ? rpmToRevPerS(*p.machine->max_spindle_rpm)
+                                                                     : std::numeric_limits<double>::infinity();
+    const OperatingPoint op{rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3};
+    generation_ = runner_->submit(setup, op, options, power, max_speed);
+    view_->beginRun(power, setup.teeth, op.spindle_rev_per_s * setup.teeth);
+  } catch (const std::exception& e) {
+    view_->setStatus(tr("Cannot simulate: %1").arg(e.what()));
+  }
+}
+
+void SimulationFeature::onFinished(quint64 generation, const SimulationSummary& summary) {
+  if (generation != generation_) return;
+  view_->setSummary(summary);
+  emit context_.simulationFinished(summary);
+  emit simulationShown();
+}
+
+}  // namespace mx::gui

@@ -1,0 +1,45 @@
+#pragma once
+// The live time-domain simulation of the operating point (the "simulationDock"): a run on the engine
+// thread after every release of the point, streamed revolution by revolution into the view; a newer
+// run cancels the older one (generation ids).
+#include <QMainWindow>
+
+#include "feature_context.h"
+#include "simulation_data.h"
+#include "window_feature.h"
+
+namespace mx::widgets {
+class SimulationView;
+}
+
+namespace mx::gui {
+
+class SimulationRunner;
+
+class SimulationFeature : public WindowFeature {
+  Q_OBJECT
+ public:
+  SimulationFeature(QMainWindow* window, FeatureContext& context);
+
+  void projectChanged(const app::Project& project, Features recompute) override;
+  void stop() override;
+  void addViewActions(QMenu* view, QToolBar* toolbar) override;
+
+  // Simulates the operating point of the active tool (nothing without a point or a feed).
+  void start();
+  SimulationRunner* runner() const { return runner_; }
+  widgets::SimulationView* view() const { return view_; }
+
+ signals:
+  void simulationShown();  // the summary of the current run is on the view
+
+ private:
+  void onFinished(quint64 generation, const SimulationSummary& summary);
+
+  FeatureContext& context_;
+  SimulationRunner* runner_;
+  widgets::SimulationView* view_;
+  quint64 generation_ = 0;
+};
+
+}  // namespace mx::gui

@@ -1,0 +1,143 @@
+// The lobe chart and the operating point (offscreen main window): open, drag the operating point on
+// the chart (the readouts show the engine's values), one undo step per drag, inch display, the tools
+// shown on the chart, and a responsive event loop while the engine thread computes.
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <cmath>
+
+#include "main_window.h"
+#include "model/cutting_force.h"
+#include "stability/stability_boundary.h"
+#include "stability/zero_order_lobes.h"
+#include "support/window_features.h"
+#include "test_registry.h"
+
+using namespace mx;
+
+namespace {
+const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+
+// Shows the window (offscreen), opens `path` and waits for its lobes.
+bool openAndShow(gui::MainWindow& window, const QString& path) {
+  window.setQuiet(true);
+  window.resize(1400, 900);
+  window.show();
+  QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+  return window.openProject(path) && shown.wait(20000);
+}
+
+double readoutNumber(const gui::MainWindow& w, const QString& field) {
+  return test::lobesOf(w)->readout()->text(field).section(' ', 0, 0).toDouble();
+}
+}  // namespace
+
+class TestLobesFeature : public QObject {
+  Q_OBJECT
+ private slots:
+  void opensProjectAndPlotsLobes() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QVERIFY(window.openProject(kRubio));
+    QVERIFY(shown.wait(20000));
+    QCOMPARE(window.project()->tools.size(), size_t{2});
+    QVERIFY(window.windowTitle().contains("rubio2006"));
+    // View > Tools on the chart hides and shows a tool's lobes.
+    test::lobesOf(window)->chart()->setToolVisible("R2", false);
+    QVERIFY(!test::lobesOf(window)->chart()->isToolVisible("R2"));
+    test::lobesOf(window)->chart()->setToolVisible("R2", true);
+    QVERIFY(test::lobesOf(window)->chart()->isToolVisible("R2"));
+  }
+
+  // A press / move / release drag on the chart moves the point; the readouts equal an independent
+  // engine evaluation (ZOA lobes of the project's tool, StabilityBoundary, evaluateCut).
+  void dragMovesPointAndReadoutsMatchEngine() {
+    gui::MainWindow window;
+    QVERIFY(openAndShow(window, kRubio));
+    widgets::LobeChartView* chart = test::lobesOf(window)->chart();
+    QWidget* plot = chart->plotWidget();
+    const QPoint from = chart->pixelFor(2500.0, 0.30), to = chart->pixelFor(4200.0, 0.45);
+    QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mouseMove(plot, (from + to) / 2);
+    const double mid_speed = window.document()->point().speed_rpm;
+    QVERIFY(mid_speed > 2600.0 && mid_speed < 4100.0);  // the readouts follow during the drag
+    QTest::mouseMove(plot, to);
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, to);
+    const app::PickedPoint p = window.document()->point();
+    QVERIFY2(std::abs(p.speed_rpm - 4200.0) < 30.0, qPrintable(QString::number(p.speed_rpm)));
+    QVERIFY2(std::abs(p.depth_mm - 0.45) < 0.01, qPrintable(QString::number(p.depth_mm)));
+
+    const app::Project& project = *window.project();
+    const MillingSetup setup = project.setupFor("R1");
+    const auto& grid = *project.expert->grid;
+    const auto speeds =
+        SpeedGrid{rpmToRevPerS(grid.speed_from_rpm), rpmToRevPerS(grid.speed_to_rpm), rpmToRevPerS(10.0)}.values();
+    ZoaOptions o;
+    o.delta_per_s = project.expert->delta_per_s;
+    const StabilityBoundary boundary(computeZoaLobes(setup, speeds, o), project.expert->alpha);
+    const double n = rpmToRevPerS(p.speed_rpm), b = p.depth_mm * 1e-3;
+    const CutPerformance perf = evaluateCut(setup, {n, b, p.feed_mm_per_tooth * 1e-3});
+    QCOMPARE_LE(std::abs(readoutNumber(window, "blim") - boundary.depthLimit(n) * 1e3), 1e-4);
+    QCOMPARE_LE(std::abs(readoutNumber(window, "power") - perf.peak_power_w), 0.05);
+    QCOMPARE_LE(std::abs(readoutNumber(window, "dns") - revPerSToRpm(boundary.speedSecurity(n, b))), 0.5);
+    QCOMPARE_LE(std::abs(readoutNumber(window, "mrr") - perf.mrr_m3_per_s * 1e9), 0.05);
+    QCOMPARE(test::lobesOf(window)->readout()->text("verdict").startsWith("STABLE"),
+             boundary.isStable(n, b) && perf.peak_power_w <= 745.3);
+
+    // The whole drag is one undo step.
+    window.document()->undoStack()->undo();
+    QVERIFY(std::abs(window.document()->point().speed_rpm - 4200.0) > 30.0);
+  }
+
+  // Inch display: the chart and readouts convert; the document stays in mm.
+  void inchUnitsOnChartAndReadouts() {
+    gui::MainWindow window;
+    QVERIFY(openAndShow(window, kRubio));
+    window.units()->setLength(widgets::DisplayUnits::Length::Inch);
+    QWidget* plot = test::lobesOf(window)->chart()->plotWidget();
+    const QPoint at = test::lobesOf(window)->chart()->pixelFor(4000.0, 0.5);
+    QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, at);
+    QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, at);
+    QVERIFY(std::abs(window.document()->point().depth_mm - 0.5) < 0.01);
+    QVERIFY(test::lobesOf(window)->readout()->text("depth").endsWith(" in"));
+    QCOMPARE_LE(std::abs(readoutNumber(window, "depth") - window.document()->point().depth_mm / 25.4), 1e-5);
+  }
+
+  // While the engine thread computes semi-discretization lobes of 200 speeds, the GUI event loop
+  // keeps ticking (the largest gap is a benchmark figure, docs/performance.md; not gated here).
+  void eventLoopKeepsTickingDuringSdm() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QVERIFY(window.openProject(kRubio));
+    QVERIFY(shown.wait(20000));
+    QElapsedTimer clock;
+    qint64 last = 0, largest_gap = 0;
+    int ticks = 0;
+    QTimer timer;
+    timer.setInterval(5);
+    connect(&timer, &QTimer::timeout, this, [&] {
+      const qint64 now = clock.elapsed();
+      largest_gap = std::max(largest_gap, now - last);
+      last = now;
+      ++ticks;
+    });
+    QSignalSpy busy(test::engineOf(window), &gui::EngineRunner::busyChanged);
+    clock.start();
+    timer.start();
+    test::lobesOf(window)->setMethod(gui::LobeMethod::SemiDiscretization);
+    // Watch the loop until the job ends, or for 3 s (sanitizer builds are far slower).
+    const bool finished = shown.wait(3000) || shown.count() > 0;
+    const qint64 elapsed = clock.elapsed();
+    timer.stop();
+    qInfo("SDM lobes (2 tools, 2 x 200 speeds): %s after %lld ms; %d ticks; largest gap %lld ms",
+          finished ? "finished" : "still running", elapsed, ticks, largest_gap);
+    QVERIFY(busy.count() >= 1);
+    test::engineOf(window)->cancelAll();
+    QVERIFY(ticks >= 5);
+  }
+};
+
+MX_REGISTER_TEST(TestLobesFeature)
+#include "test_lobes_feature.moc"
