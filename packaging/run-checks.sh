@@ -1,10 +1,37 @@
 #!/usr/bin/env bash
 # Deeper checks that do not fit in the test command's 30 minutes; run before an issue is closed.
-#   1. the whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (preset asan),
-#      with the same fresh TMPDIR and HOME as the test command.
+#   1. the whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer (preset
+#      asan, suppressions in packaging/sanitizers/lsan.supp), with the same fresh TMPDIR and HOME as the
+#      test command;
+#   2. the threaded tests (CTest label "threads", tests/CMakeLists.txt) under ThreadSanitizer (preset
+#      tsan, suppressions in packaging/sanitizers/tsan.supp); only their test executables are built;
+#   3. clang-tidy (.clang-tidy) over our sources in the asan build's compile database.
 # Exits non-zero at the first check that fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-echo "run-checks: ASan + UBSan test suite"
+echo "run-checks: ASan + UBSan + LSan test suite"
 MX_PRESET=asan bash packaging/run-tests.sh
+
+echo "run-checks: TSan, the threaded tests"
+started=$SECONDS
+cmake --preset tsan -G Ninja
+# The test executables of the "threads" tests: folder.unit runs in tests_<folder>.
+targets=$(ctest --preset tsan -N | sed -n 's/^ *Test *#[0-9]*: \([a-z_]*\)\..*$/tests_\1/p' | sort -u)
+[ -n "$targets" ] || { echo "run-checks: no test has the label threads"; exit 1; }
+# shellcheck disable=SC2086 # one word per target
+cmake --build --preset tsan --parallel "$(nproc)" --target $targets
+run_tmp=$(mktemp -d)
+run_home=$(mktemp -d)
+chmod 0755 "$run_tmp" "$run_home"
+trap 'rm -rf "$run_tmp" "$run_home"' EXIT
+env -u XDG_CONFIG_HOME -u XDG_DATA_HOME -u XDG_STATE_HOME -u XDG_CACHE_HOME -u XDG_RUNTIME_DIR \
+  TMPDIR="$run_tmp" HOME="$run_home" ctest --preset tsan --parallel "$(nproc)"
+echo "run-checks: TSan took $((SECONDS - started)) s"
+
+echo "run-checks: clang-tidy"
+started=$SECONDS
+# Our translation units: engine, app, widgets, tests (not the tests/data fixtures), bench when built;
+# the generated moc and resource files lie in the build folder and are left out.
+run-clang-tidy-14 -p build/asan -j "$(nproc)" -quiet "^$PWD/(engine|app|widgets|bench|tests/(?!data/))"
+echo "run-checks: clang-tidy took $((SECONDS - started)) s"
 echo "run-checks: all checks passed"

@@ -76,7 +76,7 @@ Roots polyRoots(const Poly& p) {
     roots.emplace_back(-q[1] / q[0], 0.0);
   } else if (n > 1) {
     Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
-    for (int j = 0; j < n; ++j) companion(0, j) = -q[static_cast<std::size_t>(j + 1)] / q[0];
+    for (int j = 0; j < n; ++j) companion(0, j) = -q[static_cast<std::size_t>(j) + 1] / q[0];
     for (int i = 1; i < n; ++i) companion(i, i - 1) = 1.0;
     Eigen::EigenSolver<Eigen::MatrixXd> solver(companion, false);
     for (int i = 0; i < n; ++i) roots.push_back(solver.eigenvalues()(i));

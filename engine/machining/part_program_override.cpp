@@ -128,7 +128,12 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
       e.feed = wanted;
       out_feed = wanted_si;
       feed_changed = true;
-      reason = reason.empty() ? feed_reason : feed_reason + "; " + reason;
+      if (reason.empty()) {
+        reason = feed_reason;
+      } else {
+        reason.insert(0, "; ");
+        reason.insert(0, feed_reason);
+      }
     }
     if (!reason.empty()) {
       std::string c = "MX: ";
