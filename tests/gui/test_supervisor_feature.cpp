@@ -3,6 +3,7 @@
 // during a paced run reaches the run as an operator event; Compare fills the three columns; a valid
 // chart edit is one undoable project edit, an invalid one is shown inline and changes nothing.
 #include <QApplication>
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QSignalSpy>
