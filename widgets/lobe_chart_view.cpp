@@ -6,6 +6,7 @@
 #include <QPainter>
 #include <QSvgGenerator>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -310,7 +311,8 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
 }
 
 void LobeChartView::clearMarkers() {
-  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it) plot_->removeItem(it->second);
+  // Labels before the tracers they are anchored to: the reverse of the order they were added.
+  std::for_each(extra_markers_.rbegin(), extra_markers_.rend(), [this](const auto& m) { plot_->removeItem(m.second); });
   extra_markers_.clear();
   replotOverlay();
 }
@@ -323,8 +325,9 @@ QStringList LobeChartView::markerNames() const {
 }
 
 void LobeChartView::clearMarkers(const QString& group) {
-  for (auto it = extra_markers_.rbegin(); it != extra_markers_.rend(); ++it)
-    if (it->first == group) plot_->removeItem(it->second);
+  std::for_each(extra_markers_.rbegin(), extra_markers_.rend(), [&](const auto& m) {
+    if (m.first == group) plot_->removeItem(m.second);
+  });
   extra_markers_.removeIf([&group](const auto& marker) { return marker.first == group; });
   replotOverlay();
 }

@@ -182,7 +182,7 @@ void ProjectDocument::writeAutosave() {
 }
 
 QString ProjectDocument::recoveryCandidate(const QString& path) {
-  const QString autosave = path + ".autosave";
+  QString autosave = path + ".autosave";
   const QFileInfo a(autosave), f(path);
   if (!a.exists()) return {};
   if (f.exists() && a.lastModified() < f.lastModified()) return {};
