@@ -45,7 +45,7 @@ GrafcetLayout GrafcetLayout::compute(const GrafcetChartData& chart_, const QFont
       if (order.contains(f) && !out[f].contains(i)) out[f].push_back(i);
 
   // Levels: BFS from the initial steps, then from any step not reached yet.
-  auto bfs = [&](QList<int> roots) {
+  auto bfs = [&](const QList<int>& roots) {
     std::queue<int> q;
     for (int r : roots) {
       depth.insert(r, 0);

@@ -215,7 +215,7 @@ void ToolLibraryEditor::request(const app::Project& edited, const QString& descr
 QString ToolLibraryEditor::uniqueId(const QString& stem) const {
   if (stem != "T" && tools_->rowOf(stem) < 0) return stem;
   for (int n = stem == "T" ? 1 : 2;; ++n) {
-    const QString id = QString("%1%2%3").arg(stem, stem == "T" ? "" : "-").arg(n);
+    QString id = QString("%1%2%3").arg(stem, stem == "T" ? "" : "-").arg(n);
     if (tools_->rowOf(id) < 0) return id;
   }
 }

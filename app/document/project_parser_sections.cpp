@@ -168,7 +168,7 @@ ParetoSection readPareto(const ObjectReader& r) {
     const QString message = r.pathOf("weights") + ": must be an array of 4 numbers";
     if (!wv.isArray()) throw ProjectError(message);
     std::vector<double> values;
-    for (const QJsonValue& v : wv.toArray()) {
+    for (const auto& v : wv.toArray()) {
       if (!v.isDouble()) throw ProjectError(message);
       values.push_back(v.toDouble());
     }

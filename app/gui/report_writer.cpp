@@ -74,7 +74,7 @@ void ReportWriter::writePdf(const QString& path) const {
   doc.setDefaultFont(QFont("DejaVu Sans", 9));
   doc.documentLayout()->setPaintDevice(&printer);
   const ReportBuilder builder(data_, ReportFlavour::RichText, [&](const QString& image) -> QString {
-    const QString name = "mx-report://" + QFileInfo(image).fileName();
+    QString name = "mx-report://" + QFileInfo(image).fileName();
     QImage picture;
     if (!picture.loadFromData(readFile(image), "PNG")) fail(QString("the figure '%1' is not a PNG image").arg(image));
     doc.addResource(QTextDocument::ImageResource, QUrl(name), picture);
