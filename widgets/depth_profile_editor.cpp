@@ -157,7 +157,8 @@ void DepthProfileEditor::removeSteps() {
     setError(tr("Not removed: the profile needs at least one step."));
     return;
   }
-  for (auto it = rows.rbegin(); it != rows.rend(); ++it) steps_.remove(*it);
+  // From the last row up, so that the rows still to remove keep their index.
+  std::for_each(rows.rbegin(), rows.rend(), [this](int row) { steps_.remove(row); });
   setError({});
   fillTable();
   emit stepsEdited(steps_);

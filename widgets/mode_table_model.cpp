@@ -85,7 +85,7 @@ QVariant ModeTableModel::data(const QModelIndex& index, int role) const {
     case D::DecimalsRole:
       return c == Frequency ? 3 : 4;
     case D::StepRole:
-      return c == Frequency ? 10.0 : c == Damping ? 0.1 : 0.1;
+      return c == Frequency ? 10.0 : 0.1;
     default:
       return {};
   }

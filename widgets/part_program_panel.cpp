@@ -33,7 +33,7 @@ QString number(std::optional<double> v) {
 QString proposal(std::optional<double> original, std::optional<double> proposed, bool* changed) {
   *changed = false;
   if (!proposed) return original ? kSame : QString();
-  const QString text = number(proposed);
+  QString text = number(proposed);
   if (original && number(original) == text) return kSame;
   *changed = true;
   return text;

@@ -43,7 +43,7 @@ int runCli(const QStringList& arguments) {
     QTextStream(stdout) << "millexpert-cli " << MX_APP_VERSION << Qt::endl;
     return kExitOk;
   }
-  const QString command = arguments.at(1);
+  const QString& command = arguments.at(1);
   QStringList rest = arguments;
   rest.removeAt(1);  // keep argv[0] for QCommandLineParser
   try {

@@ -80,6 +80,7 @@ int runRankCommand(const QStringList& arguments) {
     for (const QString& id : request.tool_ids) {
       toolRules.push_back(evaluateParetoRules(ruleTexts, project, *project.findTool(id)));
     }
+    outcomes.reserve(toolRules.size());
     for (const ParetoRules& r : toolRules) outcomes.push_back(&r.outcome);
     const std::vector<double> bounded = applyWeightBounds(outcomes, {"weight.c1", "weight.c2", "weight.c3"},
                                                           {request.weights.c.begin(), request.weights.c.end()});

@@ -81,7 +81,7 @@ QByteArray inlineText(const QJsonValue& v) {
   }
   if (v.isArray()) {
     QByteArrayList parts;
-    for (const QJsonValue& e : v.toArray()) parts << inlineText(e);
+    for (const auto& e : v.toArray()) parts << inlineText(e);
     return "[" + parts.join(", ") + "]";
   }
   return scalar(v);
@@ -103,7 +103,7 @@ void write(QByteArray& out, const QJsonValue& v, int indent, qsizetype column, b
       lines << line;
     }
   } else {
-    for (const QJsonValue& e : v.toArray()) {
+    for (const auto& e : v.toArray()) {
       QByteArray line = inner;
       write(line, e, indent + 2, line.size(), false);
       lines << line;

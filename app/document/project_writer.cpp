@@ -19,11 +19,11 @@ void putWeights(QJsonObject& o, const QString& key, const std::vector<double>& v
 
 QJsonArray modesJson(const std::vector<ModeSpec>& modes) {
   QJsonArray out;
-  for (std::size_t i = 0; i < modes.size(); ++i) {
-    QJsonObject m = modes[i].unknown;
-    putNumber(m, "freq_Hz", modes[i].freq_Hz);
-    putNumber(m, "damping_pct", modes[i].damping_pct);
-    putNumber(m, "stiffness_N_per_um", modes[i].stiffness_N_per_um);
+  for (const ModeSpec& mode : modes) {
+    QJsonObject m = mode.unknown;
+    putNumber(m, "freq_Hz", mode.freq_Hz);
+    putNumber(m, "damping_pct", mode.damping_pct);
+    putNumber(m, "stiffness_N_per_um", mode.stiffness_N_per_um);
     out.append(m);
   }
   return out;

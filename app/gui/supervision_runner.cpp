@@ -116,7 +116,7 @@ quint64 SupervisionRunner::compare(const std::vector<std::pair<SupervisionScenar
   if (compare_cancel_) compare_cancel_->store(true);
   compare_cancel_ = std::make_shared<std::atomic<bool>>(false);
   const quint64 generation = ++compare_generation_;
-  for (const auto& [scenario, chart] : runs) {
+  for (const auto& run : runs) {
     auto* watcher = new QFutureWatcher<SupervisionOutcome>(this);
     connect(watcher, &QFutureWatcher<SupervisionOutcome>::finished, this, [this, watcher] {
       const SupervisionOutcome o = watcher->result();
@@ -125,10 +125,10 @@ quint64 SupervisionRunner::compare(const std::vector<std::pair<SupervisionScenar
       if (o.generation == compare_generation_) emit compared(o);
     });
     if (running_++ == 0) emit runningChanged(true);
-    watcher->setFuture(QtConcurrent::run(pool_, [scenario, chart, generation, cancel = compare_cancel_] {
+    watcher->setFuture(QtConcurrent::run(pool_, [run, generation, cancel = compare_cancel_] {
       JobControl job;
       job.cancel = cancel.get();
-      return runOne(scenario, chart, generation, job);
+      return runOne(run.first, run.second, generation, job);
     }));
   }
   return generation;
