@@ -1,27 +1,12 @@
 #include "editors_feature.h"
 
 #include <QDockWidget>
-#include <QScrollArea>
 
+#include "feature_dock.h"
 #include "machine_operation_panel.h"
 #include "tool_library_editor.h"
 
 namespace mx::gui {
-
-namespace {
-// Dock contents scroll instead of forcing the window taller than the screen (1080p).
-QDockWidget* scrollingDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content) {
-  auto* area = new QScrollArea;
-  area->setWidget(content);
-  area->setWidgetResizable(true);
-  area->setFrameShape(QFrame::NoFrame);
-  auto* dock = new QDockWidget(title, window);
-  dock->setObjectName(name);
-  dock->setWidget(area);
-  window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-  return dock;
-}
-}  // namespace
 
 EditorsFeature::EditorsFeature(QMainWindow* window, FeatureContext& context)
     : WindowFeature(window),
@@ -30,8 +15,10 @@ EditorsFeature::EditorsFeature(QMainWindow* window, FeatureContext& context)
   setObjectName("editorsFeature");
   tool_editor_->setUnits(context.units());
   machine_panel_->setUnits(context.units());
-  QDockWidget* tools = scrollingDock(window, tr("Tool library"), "toolsDock", tool_editor_);
-  QDockWidget* machine = scrollingDock(window, tr("Machine and operation"), "machineDock", machine_panel_);
+  QDockWidget* tools = makeFeatureDock(window, tr("Tool library"), "toolsDock", tool_editor_, DockContent::Scrolling);
+  QDockWidget* machine =
+      makeFeatureDock(window, tr("Machine and operation"), "machineDock", machine_panel_, DockContent::Scrolling);
+  for (QDockWidget* d : {tools, machine}) window->addDockWidget(Qt::LeftDockWidgetArea, d);
   window->tabifyDockWidget(tools, machine);
   tools->raise();
   auto forward = [this](const app::Project& edited, const QString& description) {

@@ -5,11 +5,11 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QProcess>
-#include <QScrollArea>
 #include <QStandardPaths>
 
 #include "expert_overlays.h"
 #include "expert_runner.h"
+#include "feature_dock.h"
 #include "lobe_chart_view.h"
 #include "ranking_table.h"
 #include "services/expert_request.h"
@@ -66,16 +66,9 @@ ExpertFeature::ExpertFeature(QMainWindow* window, FeatureContext& context, widge
 // Weights share the right area with the operating point; the ranking shares the bottom with the
 // live simulation (tabs), so that the window fits 1920x1080.
 void ExpertFeature::buildDocks(QMainWindow* window) {
-  auto* weights = new QDockWidget(tr("Cost weights"), window);
-  weights->setObjectName("weightsDock");
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(weights_panel_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  weights->setWidget(scroll);
-  auto* ranking = new QDockWidget(tr("Tool ranking"), window);
-  ranking->setObjectName("rankingDock");
-  ranking->setWidget(ranking_table_);
+  QDockWidget* weights =
+      makeFeatureDock(window, tr("Cost weights"), "weightsDock", weights_panel_, DockContent::Scrolling);
+  QDockWidget* ranking = makeFeatureDock(window, tr("Tool ranking"), "rankingDock", ranking_table_);
   window->addDockWidget(Qt::RightDockWidgetArea, weights);
   window->addDockWidget(Qt::BottomDockWidgetArea, ranking);
   if (auto* point = window->findChild<QDockWidget*>("pointDock")) window->tabifyDockWidget(point, weights);

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "document/lobe_inputs.h"
+#include "feature_dock.h"
 #include "stability/lobe_diagram.h"
 
 namespace mx::gui {
@@ -29,10 +30,8 @@ LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineR
   setObjectName("lobesFeature");
   window->setCentralWidget(chart_);
   readout_->setUnits(context_.units());
-  auto* dock = new QDockWidget(tr("Operating point"), window);
-  dock->setObjectName("pointDock");
-  dock->setWidget(buildPointPanel());
-  window->addDockWidget(Qt::RightDockWidgetArea, dock);
+  window->addDockWidget(Qt::RightDockWidgetArea,
+                        makeFeatureDock(window, tr("Operating point"), "pointDock", buildPointPanel()));
   buildStatusBar(window);
   recompute_timer_.setSingleShot(true);
   recompute_timer_.setInterval(120);

@@ -3,11 +3,11 @@
 #include <QDockWidget>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QScrollArea>
 #include <QVBoxLayout>
 #include <cmath>
 #include <limits>
 
+#include "feature_dock.h"
 #include "history_view.h"
 #include "lobe_chart_view.h"
 #include "monitoring_panel.h"
@@ -22,21 +22,6 @@ namespace mx::gui {
 namespace {
 
 const QString kMarkers = "pareto";  // the chart's marker group of the Pareto choice
-
-QDockWidget* makeDock(QMainWindow* window, const QString& title, const QString& name, QWidget* content, bool scroll) {
-  auto* dock = new QDockWidget(title, window);
-  dock->setObjectName(name);
-  if (scroll) {
-    auto* area = new QScrollArea;
-    area->setWidget(content);
-    area->setWidgetResizable(true);
-    area->setFrameShape(QFrame::NoFrame);
-    dock->setWidget(area);
-  } else {
-    dock->setWidget(content);
-  }
-  return dock;
-}
 
 std::optional<ObjectiveRequirement> engineRequirement(const std::optional<widgets::RequirementView>& r) {
   if (!r) return std::nullopt;
@@ -121,11 +106,13 @@ QWidget* ParetoFeature::buildWeightsPanel() {
 }
 
 void ParetoFeature::buildDocks(QMainWindow* window) {
-  QDockWidget* weights = makeDock(window, tr("Pareto weights"), "paretoWeightsDock", buildWeightsPanel(), true);
-  QDockWidget* rules = makeDock(window, tr("Operator rules"), "operatorRulesDock", rules_editor_, false);
-  QDockWidget* front = makeDock(window, tr("Pareto front"), "paretoFrontDock", front_view_, false);
-  QDockWidget* monitoring = makeDock(window, tr("Monitoring"), "monitoringDock", monitoring_, true);
-  QDockWidget* history = makeDock(window, tr("History"), "historyDock", history_, false);
+  QDockWidget* weights =
+      makeFeatureDock(window, tr("Pareto weights"), "paretoWeightsDock", buildWeightsPanel(), DockContent::Scrolling);
+  QDockWidget* rules = makeFeatureDock(window, tr("Operator rules"), "operatorRulesDock", rules_editor_);
+  QDockWidget* front = makeFeatureDock(window, tr("Pareto front"), "paretoFrontDock", front_view_);
+  QDockWidget* monitoring =
+      makeFeatureDock(window, tr("Monitoring"), "monitoringDock", monitoring_, DockContent::Scrolling);
+  QDockWidget* history = makeFeatureDock(window, tr("History"), "historyDock", history_);
   for (QDockWidget* d : {weights, rules}) window->addDockWidget(Qt::RightDockWidgetArea, d);
   for (QDockWidget* d : {front, monitoring, history}) window->addDockWidget(Qt::BottomDockWidgetArea, d);
   if (auto* right = window->findChild<QDockWidget*>("weightsDock")) {
@@ -196,21 +183,22 @@ void ParetoFeature::rebuild() {
 void ParetoFeature::disable() {
   runner_->clear();
   front_view_->setPoints({});
-  front_view_->setEnabled(false);
-  weights_panel_->setEnabled(false);
-  requirements_->setEnabled(false);
-  record_button_->setEnabled(false);
-  report_chatter_->setEnabled(false);
+  setControlsEnabled(false);
   weights_panel_->setToolTip(tr("This project has no \"pareto\" section (docs/project-file.md)"));
   showChoiceMarker();
+}
+
+// The controls that need a study: the front, the weights, the requirement, record and chatter.
+void ParetoFeature::setControlsEnabled(bool enabled) {
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{front_view_, weights_panel_, requirements_, record_button_, report_chatter_})
+    w->setEnabled(enabled);
 }
 
 void ParetoFeature::onStudyReady(const QString& error) {
   const auto& study = runner_->study();
   const bool ok = error.isEmpty() && study;
-  for (QWidget* w :
-       std::initializer_list<QWidget*>{front_view_, weights_panel_, requirements_, record_button_, report_chatter_})
-    w->setEnabled(ok);
+  setControlsEnabled(ok);
   if (!ok) {
     front_view_->setPoints({});
     choice_.reset();

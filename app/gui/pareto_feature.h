@@ -66,6 +66,7 @@ class ParetoFeature : public WindowFeature {
   void connectSignals();
   void rebuild();
   void disable();
+  void setControlsEnabled(bool enabled);
   void onStudyReady(const QString& error);
   std::optional<app::ParetoChoice> chooseWith(const ParetoWeights& w, bool auto_weights);
   void showChoice(const ParetoWeights& w);

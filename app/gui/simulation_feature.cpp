@@ -3,6 +3,7 @@
 #include <QDockWidget>
 #include <limits>
 
+#include "feature_dock.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
 
@@ -14,10 +15,8 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
       runner_(new SimulationRunner(context.enginePool(), this)),
       view_(new widgets::SimulationView(window)) {
   setObjectName("simulationFeature");
-  auto* dock = new QDockWidget(tr("Live simulation"), window);
-  dock->setObjectName("simulationDock");
-  dock->setWidget(view_);
-  window->addDockWidget(Qt::BottomDockWidgetArea, dock);
+  window->addDockWidget(Qt::BottomDockWidgetArea,
+                        makeFeatureDock(window, tr("Live simulation"), "simulationDock", view_));
   connect(runner_, &SimulationRunner::chunkReady, this, [this](quint64 g, const SimulationChunkData& chunk) {
     if (g == generation_) view_->appendChunk(chunk);
   });
