@@ -1,13 +1,11 @@
 #include "control_runner.h"
 
-#include <QFutureWatcher>
-#include <QtConcurrent>
-
 #include "core/cancellation.h"
 
 namespace mx::gui {
 
-ControlRunner::ControlRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {
+ControlRunner::ControlRunner(QThreadPool* engine_pool, QObject* parent)
+    : QObject(parent), pool_(engine_pool), channel_(this) {
   qRegisterMetaType<mx::gui::ControlOutcome>();
   qRegisterMetaType<mx::gui::SweepOutcome>();
 }
@@ -37,28 +35,25 @@ quint64 ControlRunner::launch(std::shared_ptr<std::atomic<bool>>& cancel, quint6
   if (cancel) cancel->store(true);
   cancel = std::make_shared<std::atomic<bool>>(false);
   const quint64 generation = ++generation_counter;
-  auto* watcher = new QFutureWatcher<Outcome>(this);
-  connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, &generation_counter, deliver] {
-    const Outcome outcome = watcher->result();
-    watcher->deleteLater();
-    stopped();
-    if (outcome.generation == generation_counter) deliver(outcome);
-  });
   started();
-  watcher->setFuture(QtConcurrent::run(pool_, [work, generation, flag = cancel] {
-    Outcome out;
-    out.generation = generation;
-    JobControl job;
-    job.cancel = flag.get();
-    try {
-      work(job, out);
-    } catch (const Cancelled&) {
-      out.error = "cancelled";
-    } catch (const std::exception& e) {
-      out.error = QString::fromStdString(e.what());
-    }
-    return out;
-  }));
+  channel_.start(pool_,
+                 [this, work, generation, flag = cancel, &generation_counter, deliver](const EngineReply& reply) {
+                   Outcome out;
+                   out.generation = generation;
+                   JobControl job;
+                   job.cancel = flag.get();
+                   try {
+                     work(job, out);
+                   } catch (const Cancelled&) {
+                     out.error = "cancelled";
+                   } catch (const std::exception& e) {
+                     out.error = QString::fromStdString(e.what());
+                   }
+                   reply([this, out = std::move(out), &generation_counter, deliver] {
+                     stopped();
+                     if (out.generation == generation_counter) deliver(out);
+                   });
+                 });
   return generation;
 }
 

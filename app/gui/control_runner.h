@@ -10,6 +10,7 @@
 
 #include "control/beta_sweep.h"
 #include "control/closed_loop.h"
+#include "engine_channel.h"
 
 namespace mx::gui {
 
@@ -50,6 +51,7 @@ class ControlRunner : public QObject {
   quint64 launch(std::shared_ptr<std::atomic<bool>>& cancel, quint64& generation_counter, Work work, Deliver deliver);
 
   QThreadPool* pool_;
+  EngineChannel channel_;
   std::shared_ptr<std::atomic<bool>> run_cancel_, sweep_cancel_;
   quint64 run_generation_ = 0, sweep_generation_ = 0;
   int running_ = 0;

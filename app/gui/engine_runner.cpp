@@ -1,11 +1,10 @@
 #include "engine_runner.h"
 
-#include <QPointer>
-#include <QtConcurrent>
+#include <utility>
 
 namespace mx::gui {
 
-EngineRunner::EngineRunner(QObject* parent) : QObject(parent) {
+EngineRunner::EngineRunner(QObject* parent) : QObject(parent), channel_(this) {
   pool_.setMaxThreadCount(1);
   qRegisterMetaType<mx::gui::LobeJobResult>();
 }
@@ -28,30 +27,23 @@ quint64 EngineRunner::submitLobes(LobeJobInput input) {
   cancel_ = std::make_shared<std::atomic<bool>>(false);
   const quint64 generation = ++generation_;
   auto cancel = cancel_;
-  auto* watcher = new QFutureWatcher<LobeJobResult>(this);
-  connect(watcher, &QFutureWatcher<LobeJobResult>::finished, this, [this, watcher, generation] {
-    const LobeJobResult result = watcher->result();
-    watcher->deleteLater();
-    if (--running_ == 0) emit busyChanged(false);
-    if (generation == generation_) emit lobesReady(result);  // stale results are dropped
-  });
   if (running_++ == 0) emit busyChanged(true);
-  // Progress crosses to the GUI thread queued, at most once per percent.
-  QPointer<EngineRunner> self(this);
-  auto last = std::make_shared<std::atomic<int>>(-1);
-  auto progress = [self, generation, last](double f) {
-    const int percent = static_cast<int>(f * 100.0);
-    if (percent == last->exchange(percent)) return;
-    QMetaObject::invokeMethod(
-        self.data(),
-        [self, generation, f] {
-          if (self && generation == self->generation_) emit self->lobeProgress(f);
-        },
-        Qt::QueuedConnection);
-  };
-  watcher->setFuture(QtConcurrent::run(&pool_, [input = std::move(input), generation, cancel, progress] {
-    return runLobeJob(input, generation, *cancel, progress);
-  }));
+  channel_.start(&pool_, [this, input = std::move(input), generation, cancel](const EngineReply& reply) {
+    // Progress crosses to the GUI thread queued, at most once per percent.
+    int last_percent = -1;
+    auto progress = [this, generation, &last_percent, &reply](double f) {
+      const int percent = static_cast<int>(f * 100.0);
+      if (percent == std::exchange(last_percent, percent)) return;
+      reply([this, generation, f] {
+        if (generation == generation_) emit lobeProgress(f);
+      });
+    };
+    LobeJobResult result = runLobeJob(input, generation, *cancel, progress);
+    reply([this, generation, result = std::move(result)] {
+      if (--running_ == 0) emit busyChanged(false);
+      if (generation == generation_) emit lobesReady(result);  // stale results are dropped
+    });
+  });
   return generation;
 }
 

@@ -2,12 +2,12 @@
 // The engine thread: a one-thread pool that runs copied-input jobs. Each submission gets a
 // generation id and an atomic cancel flag; a newer submission cancels the older one, and stale
 // results are dropped before they reach the GUI (delivered through queued signals).
-#include <QFutureWatcher>
 #include <QObject>
 #include <QThreadPool>
 #include <atomic>
 #include <memory>
 
+#include "engine_channel.h"
 #include "lobe_job.h"
 
 namespace mx::gui {
@@ -31,6 +31,7 @@ class EngineRunner : public QObject {
 
  private:
   QThreadPool pool_;
+  EngineChannel channel_;
   quint64 generation_ = 0;
   std::shared_ptr<std::atomic<bool>> cancel_;
   int running_ = 0;

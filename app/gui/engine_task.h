@@ -1,13 +1,14 @@
 #pragma once
-// One-shot engine-thread tasks for the GUI: `work` runs on the engine pool, `done` on the GUI thread
-// (queued, through a QFutureWatcher parented to `context`). Exceptions from `work` reach `done` as an
-// error message. Callers tag requests with a generation id and ignore stale results in `done`.
-#include <QFutureWatcher>
+// One-shot engine-thread tasks for the GUI: `work` runs on the engine pool, `done` on the channel
+// owner's (GUI) thread. Exceptions from `work` reach `done` as an error message. Callers tag requests
+// with a generation id and ignore stale results in `done`.
 #include <QString>
 #include <QThreadPool>
-#include <QtConcurrent>
+#include <exception>
 #include <functional>
 #include <optional>
+
+#include "engine_channel.h"
 
 namespace mx::gui {
 
@@ -18,23 +19,17 @@ struct TaskResult {
 };
 
 template <class T>
-void runEngineTask(QThreadPool* pool, QObject* context, std::function<T()> work,
+void runEngineTask(EngineChannel& channel, QThreadPool* pool, std::function<T()> work,
                    std::function<void(TaskResult<T>)> done) {
-  auto* watcher = new QFutureWatcher<TaskResult<T>>(context);
-  QObject::connect(watcher, &QFutureWatcher<TaskResult<T>>::finished, context, [watcher, done] {
-    TaskResult<T> r = watcher->result();
-    watcher->deleteLater();
-    done(std::move(r));
-  });
-  watcher->setFuture(QtConcurrent::run(pool, [work] {
+  channel.start(pool, [work = std::move(work), done = std::move(done)](const EngineReply& reply) {
     TaskResult<T> r;
     try {
       r.value = work();
     } catch (const std::exception& e) {
       r.error = QString::fromStdString(e.what());
     }
-    return r;
-  }));
+    reply([done, r = std::move(r)]() mutable { done(std::move(r)); });
+  });
 }
 
 }  // namespace mx::gui

@@ -1,45 +1,48 @@
 #include "expert_runner.h"
 
-#include <QFutureWatcher>
-#include <QtConcurrent>
-
 namespace mx::gui {
 
-ExpertRunner::ExpertRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {
+ExpertRunner::ExpertRunner(QThreadPool* engine_pool, QObject* parent)
+    : QObject(parent), pool_(engine_pool), channel_(this) {
   qRegisterMetaType<mx::gui::RefinementOutcome>();
+}
+
+void ExpertRunner::started() {
+  if (running_++ == 0) emit busyChanged(true);
+}
+
+void ExpertRunner::stopped() {
+  if (--running_ == 0) emit busyChanged(false);
 }
 
 quint64 ExpertRunner::build(std::vector<MillingSetup> tools, const ExpertSettings& settings,
                             const QStringList& tool_ids) {
   const quint64 generation = ++build_generation_;
   ++refine_generation_;  // refinements of the old session are stale
-  auto* watcher = new QFutureWatcher<ExpertOutcome>(this);
-  connect(watcher, &QFutureWatcher<ExpertOutcome>::finished, this, [this, watcher] {
-    ExpertOutcome outcome = watcher->result();
-    watcher->deleteLater();
-    if (--running_ == 0) emit busyChanged(false);
-    if (outcome.generation != build_generation_) return;  // stale
-    session_ = outcome.session;
-    tool_ids_ = outcome.tool_ids;
-    emit sessionReady(outcome.error);
-  });
-  if (running_++ == 0) emit busyChanged(true);
-  watcher->setFuture(QtConcurrent::run(pool_, [tools = std::move(tools), settings, tool_ids, generation]() mutable {
-    ExpertOutcome outcome;
-    outcome.generation = generation;
-    outcome.tool_ids = tool_ids;
-    try {
-      outcome.session = std::make_shared<ExpertSession>(std::move(tools), settings);
-      if (outcome.session->empty()) {
-        outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
-                                               outcome.session->emptyReason());
-      }
-    } catch (const std::exception& e) {
-      outcome.session.reset();
-      outcome.error = QString::fromStdString(e.what());
-    }
-    return outcome;
-  }));
+  started();
+  channel_.start(pool_,
+                 [this, tools = std::move(tools), settings, tool_ids, generation](const EngineReply& reply) mutable {
+                   ExpertOutcome outcome;
+                   outcome.generation = generation;
+                   outcome.tool_ids = tool_ids;
+                   try {
+                     outcome.session = std::make_shared<ExpertSession>(std::move(tools), settings);
+                     if (outcome.session->empty()) {
+                       outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
+                                                              outcome.session->emptyReason());
+                     }
+                   } catch (const std::exception& e) {
+                     outcome.session.reset();
+                     outcome.error = QString::fromStdString(e.what());
+                   }
+                   reply([this, outcome = std::move(outcome)] {
+                     stopped();
+                     if (outcome.generation != build_generation_) return;  // stale
+                     session_ = outcome.session;
+                     tool_ids_ = outcome.tool_ids;
+                     emit sessionReady(outcome.error);
+                   });
+                 });
   return generation;
 }
 
@@ -47,15 +50,8 @@ quint64 ExpertRunner::refine(const CostWeights& weights) {
   const quint64 generation = ++refine_generation_;
   auto session = session_;
   if (!session || session->empty()) return generation;
-  auto* watcher = new QFutureWatcher<RefinementOutcome>(this);
-  connect(watcher, &QFutureWatcher<RefinementOutcome>::finished, this, [this, watcher] {
-    const RefinementOutcome outcome = watcher->result();
-    watcher->deleteLater();
-    if (--running_ == 0) emit busyChanged(false);
-    if (outcome.generation == refine_generation_) emit refined(outcome);
-  });
-  if (running_++ == 0) emit busyChanged(true);
-  watcher->setFuture(QtConcurrent::run(pool_, [session, weights, generation] {
+  started();
+  channel_.start(pool_, [this, session, weights, generation](const EngineReply& reply) {
     RefinementOutcome outcome;
     outcome.generation = generation;
     try {
@@ -63,8 +59,11 @@ quint64 ExpertRunner::refine(const CostWeights& weights) {
     } catch (const std::exception& e) {
       outcome.error = QString::fromStdString(e.what());
     }
-    return outcome;
-  }));
+    reply([this, outcome = std::move(outcome)] {
+      stopped();
+      if (outcome.generation == refine_generation_) emit refined(outcome);
+    });
+  });
   return generation;
 }
 

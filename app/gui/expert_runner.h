@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 
+#include "engine_channel.h"
 #include "expert/expert_session.h"
 
 namespace mx::gui {
@@ -49,7 +50,11 @@ class ExpertRunner : public QObject {
   void busyChanged(bool busy);
 
  private:
+  void started();
+  void stopped();
+
   QThreadPool* pool_;
+  EngineChannel channel_;
   std::shared_ptr<ExpertSession> session_;
   QStringList tool_ids_;
   quint64 build_generation_ = 0;

@@ -68,6 +68,7 @@ MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& co
       window_(window),
       document_(context.document()),
       pool_(context.enginePool()),
+      channel_(this),
       surface_panel_(new widgets::SurfaceFinishPanel),
       program_panel_(new widgets::PartProgramPanel) {
   setObjectName("machiningFeature");
@@ -137,7 +138,7 @@ void MachiningFeature::runSurfaceFinish() {
   const quint64 generation = ++sdnrp_generation_;
   surface_panel_->setBusy(true);
   runEngineTask<SdnrpResult>(
-      pool_, this, [s] { return SdnrpSimulator(s).run(); },
+      channel_, pool_, [s] { return SdnrpSimulator(s).run(); },
       [this, generation](TaskResult<SdnrpResult> r) {
         if (generation != sdnrp_generation_) return;
         surface_panel_->setBusy(false);
@@ -174,7 +175,7 @@ void MachiningFeature::openPartProgram(const QString& path) {
   const quint64 generation = ++override_generation_;
   program_panel_->setStatus(tr("Running the %1 controller along %2...").arg(request.controllerName(), path));
   runEngineTask<app::OverrideOutcome>(
-      pool_, this, [request, program] { return app::runOverride(request, program); },
+      channel_, pool_, [request, program] { return app::runOverride(request, program); },
       [this, generation, path](TaskResult<app::OverrideOutcome> r) {
         if (generation != override_generation_) return;
         if (!r.value) {

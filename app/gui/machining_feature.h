@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "document/project_document.h"
+#include "engine_channel.h"
 #include "feature_context.h"
 #include "sdnrp/sdnrp_simulator.h"
 #include "services/part_program_request.h"
@@ -48,6 +49,7 @@ class MachiningFeature : public WindowFeature {
   QMainWindow* window_;
   const app::ProjectDocument& document_;
   QThreadPool* pool_;
+  EngineChannel channel_;
   widgets::SurfaceFinishPanel* surface_panel_;
   widgets::PartProgramPanel* program_panel_;
   quint64 sdnrp_generation_ = 0, override_generation_ = 0;

@@ -1,26 +1,14 @@
 #include "pareto_runner.h"
 
-#include <QFutureWatcher>
-#include <QtConcurrent>
-
 namespace mx::gui {
 
-ParetoRunner::ParetoRunner(QThreadPool* engine_pool, QObject* parent) : QObject(parent), pool_(engine_pool) {}
+ParetoRunner::ParetoRunner(QThreadPool* engine_pool, QObject* parent)
+    : QObject(parent), pool_(engine_pool), channel_(this) {}
 
 quint64 ParetoRunner::build(const app::Project& project) {
   const quint64 generation = ++generation_;
-  auto* watcher = new QFutureWatcher<ParetoOutcome>(this);
-  connect(watcher, &QFutureWatcher<ParetoOutcome>::finished, this, [this, watcher] {
-    ParetoOutcome outcome = watcher->result();
-    watcher->deleteLater();
-    if (--running_ == 0) emit busyChanged(false);
-    if (outcome.generation != generation_) return;  // stale
-    study_ = std::move(outcome.study);
-    front_weights_ = std::move(outcome.front_weights);
-    emit studyReady(outcome.error);
-  });
   if (running_++ == 0) emit busyChanged(true);
-  watcher->setFuture(QtConcurrent::run(pool_, [project, generation]() {
+  channel_.start(pool_, [this, project, generation](const EngineReply& reply) {
     ParetoOutcome outcome;
     outcome.generation = generation;
     try {
@@ -30,8 +18,14 @@ quint64 ParetoRunner::build(const app::Project& project) {
     } catch (const std::exception& e) {
       outcome.error = QString::fromStdString(e.what());
     }
-    return outcome;
-  }));
+    reply([this, outcome = std::move(outcome)]() mutable {
+      if (--running_ == 0) emit busyChanged(false);
+      if (outcome.generation != generation_) return;  // stale
+      study_ = std::move(outcome.study);
+      front_weights_ = std::move(outcome.front_weights);
+      emit studyReady(outcome.error);
+    });
+  });
   return generation;
 }
 

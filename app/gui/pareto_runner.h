@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "document/project.h"
+#include "engine_channel.h"
 #include "services/pareto_study.h"
 
 namespace mx::gui {
@@ -43,6 +44,7 @@ class ParetoRunner : public QObject {
 
  private:
   QThreadPool* pool_;
+  EngineChannel channel_;
   std::shared_ptr<const app::ParetoStudy> study_;
   std::vector<std::optional<ParetoWeights>> front_weights_;
   quint64 generation_ = 0;

@@ -1,6 +1,5 @@
 #include "simulation_runner.h"
 
-#include <QMetaObject>
 #include <algorithm>
 #include <exception>
 
@@ -10,30 +9,16 @@
 
 namespace mx::gui {
 
-namespace {
-// Runs `call` on the runner's (GUI) thread, if the runner still exists; queued, in posting order.
-template <class Channel, class Call>
-void post(const std::shared_ptr<Channel>& channel, Call&& call) {
-  std::lock_guard lock(channel->mutex);
-  if (auto* runner = channel->runner)
-    QMetaObject::invokeMethod(
-        runner, [runner, call = std::forward<Call>(call)]() mutable { call(runner); }, Qt::QueuedConnection);
-}
-}  // namespace
-
 SimulationRunner::SimulationRunner(QThreadPool* enginePool, QObject* parent)
-    : QObject(parent), pool_(enginePool), channel_(std::make_shared<Channel>()) {
-  channel_->runner = this;
+    : QObject(parent), pool_(enginePool), channel_(this) {
   qRegisterMetaType<mx::gui::SimulationChunkData>();
   qRegisterMetaType<mx::gui::SimulationSummary>();
 }
 
+// A job still queued or running keeps its copied inputs and posts nothing more (channel_); calls already
+// posted are discarded with this object.
 SimulationRunner::~SimulationRunner() {
   cancel();
-  // A job still queued or running keeps its copied inputs and posts nothing more; calls already posted
-  // are discarded with this object.
-  std::lock_guard lock(channel_->mutex);
-  channel_->runner = nullptr;
 }
 
 void SimulationRunner::setRegenerativePasses(int passes) {
@@ -65,21 +50,19 @@ quint64 SimulationRunner::submit(const mx::MillingSetup& setup, const mx::Operat
   if (running_++ == 0) emit busyChanged(true);
   emit progress(0.0);
   QThreadPool* pool = pool_ ? pool_ : QThreadPool::globalInstance();
-  pool->start([input = std::move(input), generation, cancel = cancel_, channel = channel_] {
+  channel_.start(pool, [this, input = std::move(input), generation, cancel = cancel_](const EngineReply& reply) {
     const ChunkSink sink = [&](SimulationChunkData&& chunk) {
-      post(channel,
-           [generation, chunk = std::move(chunk)](SimulationRunner* r) { r->deliverChunk(generation, chunk); });
+      reply([this, generation, chunk = std::move(chunk)] { deliverChunk(generation, chunk); });
     };
     try {
       SimulationSummary summary = runSimulationJob(input, *cancel, sink);
-      post(channel, [generation, summary = std::move(summary)](SimulationRunner* r) {
-        r->deliverEnd(generation, Outcome::Finished, summary, {});
-      });
+      reply(
+          [this, generation, summary = std::move(summary)] { deliverEnd(generation, Outcome::Finished, summary, {}); });
     } catch (const Cancelled&) {
-      post(channel, [generation](SimulationRunner* r) { r->deliverEnd(generation, Outcome::Cancelled, {}, {}); });
+      reply([this, generation] { deliverEnd(generation, Outcome::Cancelled, {}, {}); });
     } catch (const std::exception& e) {
-      post(channel, [generation, message = QString::fromStdString(e.what())](SimulationRunner* r) {
-        r->deliverEnd(generation, Outcome::Failed, {}, message);
+      reply([this, generation, message = QString::fromStdString(e.what())] {
+        deliverEnd(generation, Outcome::Failed, {}, message);
       });
     }
   });

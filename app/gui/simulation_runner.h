@@ -9,8 +9,8 @@
 #include <QThreadPool>
 #include <atomic>
 #include <memory>
-#include <mutex>
 
+#include "engine_channel.h"
 #include "model/milling_setup.h"
 #include "simulation/simulation_types.h"
 #include "simulation_data.h"
@@ -48,18 +48,13 @@ class SimulationRunner : public QObject {
   void busyChanged(bool busy);
 
  private:
-  // Shared with the jobs: they post to the runner only while it is alive.
-  struct Channel {
-    std::mutex mutex;
-    SimulationRunner* runner = nullptr;
-  };
   enum class Outcome { Finished, Failed, Cancelled };
 
   void deliverChunk(quint64 generation, const SimulationChunkData& chunk);
   void deliverEnd(quint64 generation, Outcome outcome, const SimulationSummary& summary, const QString& message);
 
   QThreadPool* pool_;
-  std::shared_ptr<Channel> channel_;
+  EngineChannel channel_;
   std::shared_ptr<std::atomic<bool>> cancel_;
   quint64 generation_ = 0;
   int running_ = 0;

@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 
+#include "engine_channel.h"
 #include "grafcet/grafcet_chart.h"
 #include "supervisor/supervision_run.h"
 
@@ -63,6 +64,7 @@ class SupervisionRunner : public QObject {
   std::shared_ptr<Live> live_;
   std::shared_ptr<std::atomic<bool>> compare_cancel_;
   QThreadPool* pool_;
+  EngineChannel channel_;
   quint64 generation_ = 0, compare_generation_ = 0;
   int running_ = 0;
 };
