@@ -1,0 +1,24 @@
+#pragma once
+// Automatic choice of the modes among the stable poles (Peeters et al. 2004, sec. 3): a pole is kept when
+// its LSFD residue (lsfd.h) gives a physical mode (k > 0, 0 < zeta < max_damping) that is significant:
+// its resonance amplitude 1 / (2 zeta k) is at least min_significance of the measured |H| at its
+// frequency. The kept poles are ranked by that amplitude; `modes` (when given) or max_modes of them stay.
+#include <complex>
+#include <optional>
+#include <vector>
+
+#include "modal_fit/frf_band.h"
+
+namespace mx {
+
+struct SelectionCriteria {
+  double min_significance = 0.1;
+  double max_damping = 0.3;
+};
+
+// With `modes` given the significance threshold is not applied: the `modes` largest physical ones stay.
+std::vector<std::complex<double>> selectPoles(const FrfBand& band, const std::vector<std::complex<double>>& poles,
+                                              std::optional<int> modes, int max_modes,
+                                              const SelectionCriteria& criteria = {});
+
+}  // namespace mx
