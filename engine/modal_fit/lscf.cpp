@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "core/invalid_input.h"
 
@@ -12,6 +13,7 @@ namespace mx {
 LscfEstimator::LscfEstimator(const FrfBand& band, int max_order)
     : dt_(1.0 / (2.0 * band.to_hz)), max_order_(max_order) {
   if (max_order < 1) throw InvalidInput("LSCF: max_order = " + std::to_string(max_order) + ": must be >= 1");
+  if (!(band.to_hz > 0.0)) throw InvalidInput("LSCF: to_hz = " + std::to_string(band.to_hz) + ": must be > 0 Hz");
   const auto n = static_cast<std::size_t>(max_order);
   const double scale = band.rmsMagnitude() > 0.0 ? 1.0 / band.rmsMagnitude() : 1.0;
   r_.assign(n + 1, 0.0);

@@ -18,7 +18,7 @@ namespace mx {
 
 class LscfEstimator {
  public:
-  // The Toeplitz sequences up to max_order (>= 1) over band (to_hz sets dt).
+  // The Toeplitz sequences up to max_order (>= 1) over band (to_hz > 0 sets dt); throws InvalidInput.
   LscfEstimator(const FrfBand& band, int max_order);
 
   // All n = order continuous-time poles of the order-n model [rad/s]; 1 <= order <= max_order.

@@ -28,6 +28,7 @@ struct ModalFitResult {
   std::vector<std::complex<double>> fitted;  // the model at band_frequency_hz [m/N]
 };
 
+// Fewer modes than settings.modes when fewer stable physical poles (or peaks) are found.
 // Throws InvalidInput for bad data or settings (fit_settings.h), Cancelled when job is cancelled;
 // reports progress over the LSCF orders (up to 0.8), then the residues and the refinement.
 ModalFitResult fitModes(const std::vector<double>& frequency_hz, const std::vector<std::complex<double>>& h_m_per_n,
