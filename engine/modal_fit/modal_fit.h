@@ -1,8 +1,9 @@
 #pragma once
 // Modal parameters fitted to a measured receptance FRF (docs/measured-dynamics-fitting.md).
 //   Lscf: LSCF stabilisation diagram over orders 2 .. 2 max_modes (lscf_diagram.h), the poles stable
-//         over 3 consecutive orders (stabilisation.h), the significant ones (mode_selection.h), LSFD
-//         residues with residual terms (lsfd.h), nonlinear least-squares refinement (nlls_refinement.h).
+//         over 3 consecutive orders or frequency-stable over 4 (stabilisation.h), the significant
+//         ones (mode_selection.h), LSFD residues with residual terms (lsfd.h), nonlinear
+//         least-squares refinement (nlls_refinement.h).
 //   Peak: peak picking with the half-power bandwidth (peak_picking.h), no residual terms.
 #include <complex>
 #include <string>

@@ -30,7 +30,7 @@ std::vector<DiagramPole> physicalPoles(const std::vector<std::complex<double>>& 
     if (lambda.imag() <= 0.0 || lambda.real() >= 0.0) continue;
     const double f = poleFrequencyHz(lambda), zeta = poleDampingRatio(lambda);
     if (f < from_hz || f > to_hz || zeta >= criteria.max_damping) continue;
-    poles.push_back({lambda, f, zeta, PoleStability::Unstable, 1});
+    poles.push_back({lambda, f, zeta, PoleStability::Unstable, 1, 1});
   }
   std::sort(poles.begin(), poles.end(),
             [](const DiagramPole& a, const DiagramPole& b) { return a.frequency_hz < b.frequency_hz; });
@@ -42,6 +42,7 @@ void classifyPoles(std::vector<DiagramPole>& current, const std::vector<DiagramP
   for (DiagramPole& pole : current) {
     pole.stability = PoleStability::Unstable;
     pole.stable_orders = 1;
+    pole.frequency_stable_orders = 1;
     const auto nearest =
         std::min_element(previous.begin(), previous.end(), [&](const DiagramPole& a, const DiagramPole& b) {
           return std::abs(a.frequency_hz - pole.frequency_hz) < std::abs(b.frequency_hz - pole.frequency_hz);
@@ -49,6 +50,7 @@ void classifyPoles(std::vector<DiagramPole>& current, const std::vector<DiagramP
     if (nearest == previous.end()) continue;
     if (std::abs(nearest->frequency_hz - pole.frequency_hz) > criteria.frequency_tol * pole.frequency_hz) continue;
     pole.stability = PoleStability::FrequencyStable;
+    pole.frequency_stable_orders = nearest->frequency_stable_orders + 1;
     if (std::abs(nearest->damping_ratio - pole.damping_ratio) > criteria.damping_tol * pole.damping_ratio) continue;
     pole.stability = PoleStability::Stable;
     pole.stable_orders = nearest->stable_orders + 1;
@@ -60,7 +62,7 @@ std::vector<std::complex<double>> stablePoles(const StabilisationDiagram& diagra
   std::vector<DiagramPole> candidates;
   for (const auto& order : diagram.orders)
     for (const auto& pole : order.poles)
-      if (pole.stable_orders >= min_orders) candidates.push_back(pole);
+      if (pole.stable_orders >= min_orders || pole.frequency_stable_orders > min_orders) candidates.push_back(pole);
   std::sort(candidates.begin(), candidates.end(),
             [](const DiagramPole& a, const DiagramPole& b) { return a.frequency_hz < b.frequency_hz; });
   std::vector<std::complex<double>> poles;

@@ -23,7 +23,8 @@ struct DiagramPole {
   double frequency_hz = 0.0;    // |lambda| / (2 pi)
   double damping_ratio = 0.0;   // -Re lambda / |lambda|
   PoleStability stability = PoleStability::Unstable;
-  int stable_orders = 1;  // consecutive orders up to this one over which the pole stayed stable
+  int stable_orders = 1;            // consecutive orders up to this one over which the pole stayed stable
+  int frequency_stable_orders = 1;  // the same for the frequency alone
 };
 
 struct DiagramOrder {
@@ -38,12 +39,13 @@ struct StabilisationDiagram {
 std::vector<DiagramPole> physicalPoles(const std::vector<std::complex<double>>& lambdas, double from_hz, double to_hz,
                                        const StabilityCriteria& criteria);
 
-// Sets stability and stable_orders of `current` against the previous order's poles.
+// Sets stability and the run lengths of `current` against the previous order's poles.
 void classifyPoles(std::vector<DiagramPole>& current, const std::vector<DiagramPole>& previous,
                    const StabilityCriteria& criteria);
 
 // One pole per cluster (relative frequency gap <= frequency_tol) of the poles stable over at least
-// min_orders consecutive orders: the medians of the cluster's frequencies and damping ratios.
+// min_orders consecutive orders, or frequency-stable over min_orders + 1 (noisy data scatter the damping
+// more than the frequency): the medians of the cluster's frequencies and damping ratios.
 std::vector<std::complex<double>> stablePoles(const StabilisationDiagram& diagram, int min_orders,
                                               const StabilityCriteria& criteria);
 

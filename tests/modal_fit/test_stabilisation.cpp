@@ -52,23 +52,34 @@ class TestStabilisation : public QObject {
     classifyPoles(current, previous, criteria);
     QCOMPARE(int(current[0].stability), stability);
     QCOMPARE(current[0].stable_orders, stability == int(PoleStability::Stable) ? 4 : 1);
+    QCOMPARE(current[0].frequency_stable_orders, stability == int(PoleStability::Unstable) ? 1 : 2);
   }
 
   void clustersOfStablePoles() {
     const StabilityCriteria criteria;
     StabilisationDiagram diagram;
     for (int order = 2; order <= 6; ++order) {
-      auto poles = physicalPoles({pole(500.0 + order * 0.1, 0.02), pole(525.0, 0.02), pole(900.0 - order, 0.1)}, 100,
-                                 1000, criteria);
+      const double scattered = order % 2 == 0 ? 0.02 : 0.022;  // 10 % jumps: frequency-stable only
+      auto poles = physicalPoles(
+          {pole(500.0 + order * 0.1, 0.02), pole(525.0, 0.02), pole(700.0, scattered), pole(900.0 - order, 0.1)}, 100,
+          1000, criteria);
       if (!diagram.orders.empty()) classifyPoles(poles, diagram.orders.back().poles, criteria);
       diagram.orders.push_back({order, poles});
     }
-    // 500.x and 525 Hz (5 % apart) stay two clusters; 900 - order moves by ~0.11 % per order (stable).
+    // 500.x and 525 Hz (5 % apart) stay two clusters; 700 Hz is frequency-stable over 5 orders (> 3);
+    // 900 - order moves by ~0.11 % per order (stable).
+    const auto& last = diagram.orders.back().poles;
+    QCOMPARE(int(last[2].stability), int(PoleStability::FrequencyStable));
+    QCOMPARE(last[2].stable_orders, 1);
+    QCOMPARE(last[2].frequency_stable_orders, 5);
+    QCOMPARE(last[0].frequency_stable_orders, 5);
     const auto stable = stablePoles(diagram, 3, criteria);
-    QCOMPARE(stable.size(), std::size_t{3});
+    QCOMPARE(stable.size(), std::size_t{4});
     QCOMPARE_LE(std::abs(poleFrequencyHz(stable[0]) - 500.5), 1e-9);  // median of orders 4..6
     QCOMPARE_LE(std::abs(poleFrequencyHz(stable[1]) - 525.0), 1e-9);
-    QCOMPARE_LE(std::abs(poleFrequencyHz(stable[2]) - 895.0), 1e-9);
+    QCOMPARE_LE(std::abs(poleFrequencyHz(stable[2]) - 700.0), 1e-9);
+    QCOMPARE_LE(std::abs(poleDampingRatio(stable[2]) - 0.021), 1e-9);  // median of 0.02, 0.022 (orders 5, 6)
+    QCOMPARE_LE(std::abs(poleFrequencyHz(stable[3]) - 895.0), 1e-9);
     QCOMPARE(stablePoles(diagram, 6, criteria).size(), std::size_t{0});
   }
 };
