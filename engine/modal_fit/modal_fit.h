@@ -3,7 +3,8 @@
 //   Lscf: LSCF stabilisation diagram over orders 2 .. 2 max_modes (lscf_diagram.h), the poles stable
 //         over 3 consecutive orders or frequency-stable over 4 (stabilisation.h), the significant
 //         ones (mode_selection.h), LSFD residues with residual terms (lsfd.h), nonlinear
-//         least-squares refinement (nlls_refinement.h).
+//         least-squares refinement (nlls_refinement.h); automatic selection drops refined modes that
+//         are insignificant or duplicates and fits the rest again.
 //   Peak: peak picking with the half-power bandwidth (peak_picking.h), no residual terms.
 #include <complex>
 #include <string>

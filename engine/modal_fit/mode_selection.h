@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "modal_fit/frf_band.h"
+#include "model/modal_model.h"
 
 namespace mx {
 
@@ -15,6 +16,16 @@ struct SelectionCriteria {
   double min_significance = 0.1;
   double max_damping = 0.3;
 };
+
+double resonanceAmplitude(const Mode& mode);                 // 1 / (2 zeta k) [m/N]
+double significance(const FrfBand& band, const Mode& mode);  // amplitude / measured |H| nearest f_n
+
+// The physical and significant ones of `modes`, in their order.
+ModalAxis significantModes(const FrfBand& band, const ModalAxis& modes, const SelectionCriteria& criteria = {});
+
+// Of two modes closer in frequency than a quarter of the lighter-damped one's half-power bandwidth,
+// zeta f / 2, the one with the larger resonance amplitude; sorted by frequency.
+ModalAxis distinctModes(const ModalAxis& modes);
 
 // With `modes` given the significance threshold is not applied: the `modes` largest physical ones stay.
 std::vector<std::complex<double>> selectPoles(const FrfBand& band, const std::vector<std::complex<double>>& poles,

@@ -43,9 +43,11 @@ std::vector<DiagramPole> physicalPoles(const std::vector<std::complex<double>>& 
 void classifyPoles(std::vector<DiagramPole>& current, const std::vector<DiagramPole>& previous,
                    const StabilityCriteria& criteria);
 
-// One pole per cluster (relative frequency gap <= frequency_tol) of the poles stable over at least
-// min_orders consecutive orders, or frequency-stable over min_orders + 1 (noisy data scatter the damping
-// more than the frequency): the medians of the cluster's frequencies and damping ratios.
+// One pole per cluster of the poles stable over at least min_orders consecutive orders, or
+// frequency-stable over min_orders + 1 (noisy data scatter the damping more than the frequency): the
+// medians of the cluster's frequencies and damping ratios. Neighbours in frequency belong to one
+// cluster when their relative gap is <= max(frequency_tol, zeta / 2), zeta the lighter damping of the
+// two (a quarter of its half-power bandwidth).
 std::vector<std::complex<double>> stablePoles(const StabilisationDiagram& diagram, int min_orders,
                                               const StabilityCriteria& criteria);
 
