@@ -1,5 +1,6 @@
 #include "frf/uff_reader.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -243,7 +244,7 @@ class UffParser {
     const int format = integer(t[2], id, "floating point format (58b)");
     const int ascii = integer(t[3], id, "number of ASCII lines (58b)");
     double bytes = 0.0;
-    if (!parseFortranNumber(t[4], bytes) || bytes < 0 || bytes != std::floor(bytes))
+    if (!parseFortranNumber(t[4], bytes) || bytes < 0 || bytes != std::floor(bytes) || bytes > 1e15)
       throw error(id.number, "expected the number of binary bytes (58b), found " + quoted(t[4]));
     if (order != 1 && order != 2)
       throw error(id.number,
@@ -276,7 +277,7 @@ class UffParser {
     if ((h.response_dir < 0) != (h.reference_dir < 0)) h.value_factor = -h.value_factor;
     const std::vector<double> raw = binary ? readBinary(h.r7, block, big_endian, id.number) : readAscii(h.r7);
     closeDataset(id.number);
-    file.datasets.push_back(makeDataset(h, raw, index));
+    file.datasets.push_back(makeDataset(h, raw, index, id.number));
   }
 
   void skipData(bool binary, std::size_t block, int id_line) {
@@ -308,7 +309,7 @@ class UffParser {
     const std::size_t expected = r7.values();
     const std::size_t stride = r7.componentsPerPoint();
     std::vector<double> raw;
-    raw.reserve(expected);
+    raw.reserve(std::min(expected, lines_.remaining() / 2));  // a value takes 2 bytes or more
     double last_x = 0.0;
     TextLine l;
     while (true) {
@@ -379,7 +380,9 @@ class UffParser {
 
   static FrfDirection axis(int dir) { return static_cast<FrfDirection>(std::abs(dir) - 1); }
 
-  static FrfDataset makeDataset(const Header& h, const std::vector<double>& raw, int index) {
+  // The dataset from record 12's values; an even abscissa must still increase once rounded (a large
+  // minimum swallows a small increment) and the values must stay finite in SI units.
+  FrfDataset makeDataset(const Header& h, const std::vector<double>& raw, int index, int id_line) const {
     FrfDataset d;
     d.index = index;
     d.name = h.name;
@@ -397,8 +400,14 @@ class UffParser {
       const double* v = raw.data() + i * stride;
       const double x = h.r7.even ? h.r7.x_min + static_cast<double>(i) * h.r7.x_increment : v[0];
       d.frequency_hz[i] = x * h.frequency_factor;
+      if (!std::isfinite(d.frequency_hz[i]) || (i > 0 && !(d.frequency_hz[i] > d.frequency_hz[i - 1])))
+        throw error(h.r7.line, "expected increasing finite frequencies: abscissa minimum + increment x " +
+                                   std::to_string(i) + " does not increase (record 7)");
       const double im = h.r7.complex() ? v[first + 1] : 0.0;
       d.values[i] = std::complex<double>(v[first], im) * h.value_factor;
+      if (!std::isfinite(d.values[i].real()) || !std::isfinite(d.values[i].imag()))
+        throw error(id_line,
+                    "expected values that are finite in SI units, point " + std::to_string(i + 1) + " overflows");
     }
     return d;
   }

@@ -324,6 +324,24 @@ class TestUffReader : public QObject {
     type.ordinate_type = 3;
     QTest::newRow("ordinate type") << QString::fromStdString(type.text()) << 9
                                    << "tap.unv: line 9: expected ordinate data type 2, 4, 5 or 6 (record 7), found 3";
+    auto flat = twoPointComplex();
+    flat.x_min = 1e20;
+    flat.x_increment = 1.0;
+    QTest::newRow("increment lost in rounding") << QString::fromStdString(flat.text()) << 9
+                                                << "tap.unv: line 9: expected increasing finite frequencies: abscissa "
+                                                   "minimum + increment x 1 does not increase (record 7)";
+    auto overflow = twoPointComplex();
+    overflow.numerator_units = "g";
+    overflow.numerator_type = 12;
+    overflow.data = {" 1.0 2.0 1.7E+308 1.0"};
+    QTest::newRow("overflow in SI")
+        << QString::fromStdString(overflow.text()) << 2
+        << "tap.unv: line 2: expected values that are finite in SI units, point 2 overflows";
+    auto huge = twoPointComplex();
+    huge.points = 999999999;
+    QTest::newRow("huge point count") << QString::fromStdString(huge.text()) << 15
+                                      << "tap.unv: line 15: point count does not match the header: expected "
+                                         "1999999998 values (999999999 points";
     QTest::newRow("junk before dataset") << "\n  hello\n"
                                          << 2
                                          << "tap.unv: line 2: expected '    -1' opening a dataset, found '  hello'";
@@ -384,16 +402,25 @@ class TestUffReader : public QObject {
     QTest::addColumn<int>("order");
     QTest::addColumn<int>("float_format");
     QTest::addColumn<QString>("message");
-    QTest::newRow("byte order 3") << 3 << 2 << "tap.unv: line 2: expected byte ordering 1 (little endian) or 2";
-    QTest::newRow("VAX floats") << 1 << 1 << "tap.unv: line 2: expected floating point format 2 (IEEE 754)";
+    QTest::addColumn<QString>("bytes");
+    QTest::newRow("byte order 3") << 3 << 2 << "tap.unv: line 2: expected byte ordering 1 (little endian) or 2"
+                                  << "48";
+    QTest::newRow("VAX floats") << 1 << 1 << "tap.unv: line 2: expected floating point format 2 (IEEE 754)"
+                                << "48";
+    QTest::newRow("absurd byte count") << 1 << 2
+                                       << "tap.unv: line 2: expected the number of binary bytes (58b), found "
+                                          "'1.0E+300'"
+                                       << "1.0E+300";
   }
   void binaryIdentifierErrors() {
     QFETCH(int, order);
     QFETCH(int, float_format);
     QFETCH(QString, message);
-    const std::string text =
-        "    -1\n" +
-        test::formatted("%6d%c%6d%6d%12d%12d%6d%6d%12d%12d", 58, 'b', order, float_format, 11, 48, 0, 0, 0, 0) + "\n";
+    QFETCH(QString, bytes);
+    const std::string text = "    -1\n" +
+                             test::formatted("%6d%c%6d%6d%12d%12s%6d%6d%12d%12d", 58, 'b', order, float_format, 11,
+                                             bytes.toStdString().c_str(), 0, 0, 0, 0) +
+                             "\n";
     const auto e = errorOf(text);
     QVERIFY2(QString(e.what()).startsWith(message), e.what());
   }
