@@ -18,7 +18,7 @@ std::optional<FrfFormat> detectFrfFormat(std::string_view bytes) {
   TextLines lines(bytes);
   TextLine l;
   if (!lines.nextNonBlank(l)) return std::nullopt;
-  if (l.text.substr(skipBlanks(l.text, 0)).starts_with("frequency_Hz,")) return FrfFormat::Csv;
+  if (l.text.find(',') != std::string_view::npos) return FrfFormat::Csv;  // readFrfCsv names a wrong header
   if (!isUffDelimiter(l.text)) return std::nullopt;
   while (lines.nextNonBlank(l) && isUffDelimiter(l.text)) {
   }

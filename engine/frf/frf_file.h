@@ -1,7 +1,7 @@
 #pragma once
 // FRF files by path: the format is detected from the content, not the name. A universal file starts
-// (after blank lines) with the "    -1" delimiter, its first dataset's identifier saying 58 or 58b; a
-// CSV starts with "frequency_Hz," (frf_csv.h).
+// (after blank lines) with the "    -1" delimiter, its first dataset's identifier saying 58b or else
+// 58; a CSV's first line holds a comma (frf_csv.h then requires one of its two headers).
 #include <optional>
 #include <string>
 #include <string_view>

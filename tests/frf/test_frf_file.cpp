@@ -34,6 +34,7 @@ class TestFrfFile : public QObject {
     QTest::newRow("csv with BOM") << "\xef\xbb\xbf"
                                      "frequency_Hz,magnitude,phase_deg\n"
                                   << static_cast<int>(FrfFormat::Csv);
+    QTest::newRow("other CSV") << "freq,real,imag\n" << static_cast<int>(FrfFormat::Csv);
     QTest::newRow("other text") << "hello\n" << -1;
     QTest::newRow("empty") << "" << -1;
   }
@@ -89,9 +90,20 @@ class TestFrfFile : public QObject {
     QCOMPARE(f.datasets.at(0).quantity, FrfQuantity::Accelerance);
   }
 
+  void unknownCsvHeaderNamed() {
+    try {
+      readFrf("freq,re,im\n1,2,3\n", "a.csv", FrfQuantity::Receptance);
+      QFAIL("an unknown CSV header was read");
+    } catch (const FrfFileError& e) {
+      QVERIFY2(
+          std::string(e.what()).starts_with("a.csv: line 1: unknown CSV header: expected 'frequency_Hz,real,imag'"),
+          e.what());
+    }
+  }
+
   void unknownContent() {
     try {
-      readFrf("time,value\n", "a.txt", FrfQuantity::Receptance);
+      readFrf("time value\n", "a.txt", FrfQuantity::Receptance);
       QFAIL("unknown content was read");
     } catch (const FrfFileError& e) {
       QCOMPARE(std::string(e.what()), std::string("a.txt: line 1: expected a universal file (a '    -1' line) or an "
