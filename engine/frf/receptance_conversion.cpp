@@ -1,0 +1,28 @@
+#include "frf/receptance_conversion.h"
+
+#include <algorithm>
+#include <numbers>
+
+namespace mx {
+
+Receptance toReceptance(const FrfDataset& d) {
+  Receptance r;
+  r.direction = d.response_direction;
+  r.reference_direction = d.reference_direction;
+  r.frequency_hz.reserve(d.frequency_hz.size());
+  r.h_m_per_n.reserve(d.values.size());
+  const std::size_t n = std::min(d.frequency_hz.size(), d.values.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double f = d.frequency_hz[i];
+    const std::complex<double> s(0.0, 2.0 * std::numbers::pi * f);
+    std::complex<double> h = d.values[i];
+    if (d.quantity != FrfQuantity::Receptance && f == 0.0) continue;
+    if (d.quantity == FrfQuantity::Mobility) h /= s;
+    if (d.quantity == FrfQuantity::Accelerance) h /= s * s;
+    r.frequency_hz.push_back(f);
+    r.h_m_per_n.push_back(h);
+  }
+  return r;
+}
+
+}  // namespace mx
