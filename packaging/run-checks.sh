@@ -5,7 +5,9 @@
 #      test command;
 #   2. the threaded tests (CTest label "threads", tests/CMakeLists.txt) under ThreadSanitizer (preset
 #      tsan, suppressions in packaging/sanitizers/tsan.supp); only their test executables are built;
-#   3. clang-tidy (.clang-tidy) over our sources in the asan build's compile database.
+#   3. clang-tidy (.clang-tidy) over our sources in the asan build's compile database;
+#   4. the libFuzzer targets (preset fuzz, clang-14; fuzz/README.md), each for MX_FUZZ_SECONDS (300 s by
+#      default) from its seed corpus, in a scratch corpus folder.
 # Exits non-zero at the first check that fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,4 +36,20 @@ started=$SECONDS
 # the generated moc and resource files lie in the build folder and are left out.
 run-clang-tidy-14 -p build/asan -j "$(nproc)" -quiet "^$PWD/(engine|app|widgets|bench|tests/(?!data/))"
 echo "run-checks: clang-tidy took $((SECONDS - started)) s"
+echo "run-checks: libFuzzer"
+started=$SECONDS
+fuzz_seconds="${MX_FUZZ_SECONDS:-300}"
+cmake --preset fuzz -G Ninja
+cmake --build --preset fuzz --parallel "$(nproc)"
+for target in uff:uff frf_csv:csv; do
+  name=${target%%:*}
+  seeds=${target##*:}
+  scratch="$run_tmp/corpus-$name"
+  mkdir -p "$scratch"
+  dict=()
+  [ -f "fuzz/$seeds.dict" ] && dict=(-dict="fuzz/$seeds.dict")
+  build/fuzz/fuzz/fuzz_"$name" "${dict[@]}" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
+    "$scratch" "fuzz/corpus/$seeds"
+done
+echo "run-checks: libFuzzer took $((SECONDS - started)) s"
 echo "run-checks: all checks passed"
