@@ -40,7 +40,7 @@ echo "run-checks: libFuzzer"
 started=$SECONDS
 fuzz_seconds="${MX_FUZZ_SECONDS:-300}"
 cmake --preset fuzz -G Ninja
-cmake --build --preset fuzz --parallel "$(nproc)"
+cmake --build --preset fuzz --parallel "$(nproc)" --target fuzz_uff fuzz_frf_csv
 for target in uff:uff frf_csv:csv; do
   name=${target%%:*}
   seeds=${target##*:}

@@ -17,7 +17,7 @@ namespace mx::widgets {
 
 namespace {
 using L = GrafcetLayout;
-constexpr double kStepW = L::kStepW, kBarBelowStep = L::kBarBelowStep, kNameMaxW = L::kNameMaxW;
+constexpr double kBarBelowStep = L::kBarBelowStep, kNameMaxW = L::kNameMaxW;
 constexpr double kReceptivityMaxW = L::kReceptivityMaxW;
 const QColor kInk = L::ink(), kActiveFill = L::activeFill(), kToken = L::token(), kBackArc = L::backArc();
 const QColor kSelect(30, 110, 220);

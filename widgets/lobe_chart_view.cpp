@@ -17,7 +17,6 @@ namespace mx::widgets {
 namespace {
 const QColor kUnstableFill(214, 39, 40, 38);
 const QColor kAdmissibleFill(44, 160, 44, 40);
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 QColor verdictColor(PointVerdict v) {
   switch (v) {
