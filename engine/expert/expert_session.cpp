@@ -169,7 +169,7 @@ std::vector<ToolChoice> ExpertSession::bestPoints(std::size_t tool, const std::a
     ToolChoice choice = makeChoice(grid, tool, cell, feed, cost, c, nf_);
     auto at = std::find_if(best.begin(), best.end(),
                            [&](const ToolChoice& b) { return rankBefore(keyOf(choice, cost), keyOf(b, b.min_cost)); });
-    best.insert(at, std::move(choice));
+    best.insert(at, choice);
   });
   return best;
 }
@@ -180,6 +180,7 @@ Refinement ExpertSession::refine(std::size_t tool, const CostWeights& weights) {
   const std::vector<ToolChoice> points = bestPoints(tool, weights.c, static_cast<std::size_t>(k));
   if (points.empty()) throw InvalidInput("Rule 5: the tool has no admissible point");
   std::vector<SimulationCache::Request> requests;
+  requests.reserve(points.size());
   for (const ToolChoice& p : points)
     requests.push_back({tool, &tools_[tool], {p.q.speed_rev_per_s, p.q.depth_m, p.q.feed_per_tooth_m}});
   const std::vector<ResponseMetrics> metrics = cache_.evaluate(requests);

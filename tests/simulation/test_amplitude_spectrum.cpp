@@ -10,7 +10,8 @@
 using namespace mx;
 
 namespace {
-std::vector<double> signal(std::size_t n, double rate, double mean, std::vector<std::pair<double, double>> tones) {
+std::vector<double> signal(std::size_t n, double rate, double mean,
+                           const std::vector<std::pair<double, double>>& tones) {
   std::vector<double> v(n, mean);
   for (std::size_t i = 0; i < n; ++i)
     for (auto [f, a] : tones) v[i] += a * std::sin(2.0 * std::numbers::pi * f * static_cast<double>(i) / rate);

@@ -31,6 +31,7 @@ MillingSetup insperger(double a_over_d, MillingDirection dir = MillingDirection:
 
 std::vector<double> rpmGrid(double from_rpm, double to_rpm, int count) {
   std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) out.push_back(rpmToRevPerS(from_rpm + (to_rpm - from_rpm) * i / (count - 1)));
   return out;
 }
@@ -61,7 +62,7 @@ double simulatedGrowthPerPeriod(const MillingSetup& s, double n_rev_s, double b)
   const size_t delay = 2 * kStepsPerPeriod;
   for (int p = 0; p < kPeriods; ++p) {
     for (int i = 0; i < kStepsPerPeriod; ++i) {
-      const size_t idx = static_cast<size_t>(2 * (p * kStepsPerPeriod + i));
+      const size_t idx = 2 * static_cast<size_t>(p * kStepsPerPeriod + i);
       const double t = (p * kStepsPerPeriod + i) * h;
       auto past = [&](size_t k) { return k >= delay ? hist[k - delay] : 0.0; };
       hist[idx] = x;

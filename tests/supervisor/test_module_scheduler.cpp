@@ -1,5 +1,7 @@
 // Multi-rate scheduler: each active module runs at its own period on the simulated time axis, level
 // actions switch modules on and off, impulse "X*" resets module X once.
+#include <cmath>
+
 #include "core/invalid_input.h"
 #include "supervisor/module_scheduler.h"
 #include "test_registry.h"
@@ -26,7 +28,7 @@ std::vector<std::unique_ptr<MachiningModule>> counters(int* r) {
 }
 
 void runFor(ModuleScheduler& s, MachiningContext& c, double seconds) {
-  const int n = static_cast<int>(seconds / 5e-4 + 0.5);
+  const int n = static_cast<int>(std::lround(seconds / 5e-4));
   for (int i = 0; i < n; ++i) {
     s.tick(c);
     c.t_s += 5e-4;
