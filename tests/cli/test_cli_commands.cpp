@@ -59,7 +59,7 @@ class TestCliCommands : public QObject {
     // Above --max-depth there is no instability: null entries.
     const Run capped = cli(base + QStringList{"--max-depth", "1.0", "--delta", "0", "--alpha", "1"});
     int capped_nulls = 0;
-    for (const QJsonValue& v : capped.json["blim_mm"].toArray()) capped_nulls += v.isNull() ? 1 : 0;
+    for (const auto& v : capped.json["blim_mm"].toArray()) capped_nulls += v.isNull() ? 1 : 0;
     QVERIFY(capped_nulls > 0);
   }
 
@@ -158,7 +158,7 @@ class TestCliCommands : public QObject {
     const Run r = cli(
         {"lobes", kInsperger, "--tool", "LOW", "--method", "sdm", "--from", "9000", "--to", "12000", "--step", "500"});
     QCOMPARE(r.code, 0);
-    for (const QJsonValue& v : r.json["blim_mm"].toArray()) QVERIFY(v.isNull() || v.toDouble() > 0.0);
+    for (const auto& v : r.json["blim_mm"].toArray()) QVERIFY(v.isNull() || v.toDouble() > 0.0);
   }
 };
 

@@ -44,7 +44,7 @@ class TestCliControl : public QObject {
     QCOMPARE_LE(std::abs(T - 60.0 / 715.0), 1e-12);
     const double tau_c = r.json["tau_c_ms"].toDouble() * 1e-3;
     bool found = false;
-    for (const QJsonValue& p : r.json["poles"].toArray())
+    for (const auto& p : r.json["poles"].toArray())
       found = found || std::abs(p.toArray()[0].toDouble() - std::exp(-T / tau_c)) < 1e-12;
     QVERIFY(found);
   }

@@ -145,7 +145,7 @@ class TestCliPareto : public QObject {
     QVERIFY(few.json["pareto_set_truncated"].toBool());
     // The chosen q (the best J of Q, a front point) is among the 10 kept.
     bool found = false;
-    for (const QJsonValue& p : few.json["pareto_set"].toArray()) found = found || p.toObject()["q"] == few.json["q"];
+    for (const auto& p : few.json["pareto_set"].toArray()) found = found || p.toObject()["q"] == few.json["q"];
     QVERIFY(found);
   }
 

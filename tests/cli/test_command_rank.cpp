@@ -139,7 +139,7 @@ class TestCliRank : public QObject {
     QCOMPARE(r.code, 0);
     const QJsonArray points = r.json["points"].toArray();
     QCOMPARE(points.size(), 66);
-    for (const QJsonValue& v : points) {
+    for (const auto& v : points) {
       const QJsonObject p = v.toObject();
       const QJsonArray c = p["c"].toArray();
       QCOMPARE_LE(std::abs(c[0].toDouble() + c[1].toDouble() + c[2].toDouble() - 1.0), 1e-12);
@@ -168,7 +168,7 @@ class TestCliRank : public QObject {
     const QJsonArray c = r.json["c"].toArray();
     QVERIFY(c[2].toDouble() >= 0.5 - 1e-12);
     QCOMPARE_LE(std::abs(c[0].toDouble() + c[1].toDouble() + c[2].toDouble() - 1.0), 1e-12);
-    for (const QJsonValue& t : r.json["ranking"].toArray()) {
+    for (const auto& t : r.json["ranking"].toArray()) {
       const QJsonObject tool = t.toObject();
       if (tool["tool"].toString() == "R1") QVERIFY(tool["q"].toObject()["speed_rpm"].toDouble() <= 3000.0);
     }

@@ -18,7 +18,7 @@ mx::test::CliRun supervise(const QString& controller) {
 }
 
 bool hasEvent(const QJsonObject& r, const QString& type) {
-  for (const QJsonValue& e : r["events"].toArray())
+  for (const auto& e : r["events"].toArray())
     if (e.toObject()["type"].toString() == type) return true;
   return false;
 }
@@ -86,8 +86,7 @@ class TestCliSupervise : public QObject {
     const mx::test::CliRun r = mx::test::runCli({"supervise", path, "--controller", "smc1"}, 300000);
     QCOMPARE(r.code, 0);
     int unstable = 0;
-    for (const QJsonValue& e : r.json["events"].toArray())
-      unstable += e.toObject()["type"].toString() == "logic_unstable";
+    for (const auto& e : r.json["events"].toArray()) unstable += e.toObject()["type"].toString() == "logic_unstable";
     QVERIFY(unstable >= 1);
     QVERIFY(unstable <= 10);
   }
