@@ -20,6 +20,8 @@ const CliCommand* findCommand(const QString& name) {
       {"supervise", "supervisory machining control of a face-milling operation (none, SMC I, SMC II)",
        &runSuperviseCommand},
       {"override", "optimise the feeds of a G-code program with a force controller", &runOverrideCommand},
+      {"frf-info", "the FRF datasets of a tap-test file (UFF 58/58b, CSV)", &runFrfInfoCommand},
+      {"frf-fit", "modes fitted to one FRF of a tap-test file (LSCF or peak picking)", &runFrfFitCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

@@ -25,5 +25,7 @@ int runControlCommand(const QStringList& arguments);
 int runSdnrpCommand(const QStringList& arguments);
 int runOverrideCommand(const QStringList& arguments);
 int runSuperviseCommand(const QStringList& arguments);
+int runFrfInfoCommand(const QStringList& arguments);
+int runFrfFitCommand(const QStringList& arguments);
 
 }  // namespace mx::app
