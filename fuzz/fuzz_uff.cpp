@@ -1,9 +1,10 @@
 // libFuzzer target for readUff: any bytes either throw FrfFileError or give FRFs that keep the reader's
 // promises (as many values as frequencies, frequencies finite and strictly increasing, finite values)
 // and that survive a 58b write and read bit for bit. Anything else aborts as a finding.
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <string_view>
 
 #include "frf/uff_reader.h"
@@ -12,7 +13,7 @@
 namespace {
 
 bool sameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void checkPromises(const mx::FrfDataset& d) {

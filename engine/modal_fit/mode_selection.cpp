@@ -79,6 +79,7 @@ std::vector<std::complex<double>> selectPoles(const FrfBand& band, const std::ve
   const auto keep = static_cast<std::size_t>(std::max(modes.value_or(max_modes), 0));
   if (candidates.size() > keep) candidates.resize(keep);
   std::vector<std::complex<double>> kept;
+  kept.reserve(candidates.size());
   for (const Candidate& c : candidates) kept.push_back(c.pole);
   return kept;
 }

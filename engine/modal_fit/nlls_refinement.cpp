@@ -120,7 +120,7 @@ FittedModel refineModel(const FrfBand& band, const FittedModel& start, const Job
   if (status == Eigen::LevenbergMarquardtSpace::UserAsked ||
       status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters)
     return start;
-  const FittedModel refined = residual.model(x);
+  FittedModel refined = residual.model(x);
   Eigen::VectorXd f1(residual.values());
   residual(x, f1);
   if (!physical(refined) || !(f1.squaredNorm() <= f0.squaredNorm())) return start;
