@@ -103,10 +103,8 @@ void AdmissibleGrid::build() {
 
   // b_min: the minimum of the margined border line over [from, to] (lobe samples and grid speeds).
   b_min_ = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < lobes_.speed_rev_per_s.size(); ++i) {
-    const double n = lobes_.speed_rev_per_s[i];
+  for (const double n : lobes_.speed_rev_per_s)
     if (n >= g.speed_from_rev_per_s && n <= g.speed_to_rev_per_s) b_min_ = std::min(b_min_, boundary_.depthLimit(n));
-  }
   for (double n : speeds_) b_min_ = std::min(b_min_, boundary_.depthLimit(n));
   if (!std::isfinite(b_min_)) b_min_ = cap;
   depth_step_ = b_min_ / g.depth_divisions;

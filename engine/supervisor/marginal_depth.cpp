@@ -23,8 +23,8 @@ void validateMarginalDepthSettings(const MarginalDepthSettings& s) {
   require(std::isfinite(s.threshold) && s.threshold > 0.0, "threshold", s.threshold, "> 0");
 }
 
-MarginalDepthSearch::MarginalDepthSearch(FaceMillingParameters process, MarginalDepthSettings settings)
-    : p_(std::move(process)), s_(settings) {
+MarginalDepthSearch::MarginalDepthSearch(const FaceMillingParameters& process, MarginalDepthSettings settings)
+    : p_(process), s_(settings) {
   validateMarginalDepthSettings(s_);
   p_.part_start_x_m = -10.0;  // a long part: the tool is in the full cut from t = 0
   p_.part_length_m = 20.0;

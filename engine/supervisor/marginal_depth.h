@@ -42,7 +42,7 @@ struct MarginalDepthResult {
 class MarginalDepthSearch {
  public:
   // `process` supplies the tool, cutting and structural parameters; the part is replaced by a long one.
-  MarginalDepthSearch(FaceMillingParameters process, MarginalDepthSettings settings);  // throws InvalidInput
+  MarginalDepthSearch(const FaceMillingParameters& process, MarginalDepthSettings settings);  // throws InvalidInput
 
   DepthTrial trial(double depth_m) const;                        // one simulation and its verdict
   MarginalDepthResult search(const JobControl& job = {}) const;  // bisection; throws Cancelled

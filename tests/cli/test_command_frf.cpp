@@ -15,7 +15,7 @@ const ModalAxis kModesX{{620.0, 0.03, 6e6}, {1450.0, 0.04, 2.5e7}};
 const ModalAxis kModesY{{880.0, 0.025, 9e6}};
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const std::string& bytes) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly)) return {};
   f.write(bytes.data(), static_cast<qint64>(bytes.size()));

@@ -26,7 +26,7 @@ QString rubioWith(const QTemporaryDir& dir, const QString& key, double value) {
   QJsonObject machine = root["machine"].toObject();
   machine[key] = value;
   root["machine"] = machine;
-  const QString path = dir.filePath("p.mxproj");
+  QString path = dir.filePath("p.mxproj");
   QFile out(path);
   out.open(QIODevice::WriteOnly);
   out.write(QJsonDocument(root).toJson());
@@ -39,7 +39,7 @@ QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
   in.open(QIODevice::ReadOnly);
   QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
   root["operator_rules"] = QJsonArray::fromStringList(rules);
-  const QString path = dir.filePath("rules.mxproj");
+  QString path = dir.filePath("rules.mxproj");
   QFile out(path);
   out.open(QIODevice::WriteOnly);
   out.write(QJsonDocument(root).toJson());

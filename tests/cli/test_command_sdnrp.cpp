@@ -102,7 +102,8 @@ class TestCliSdnrp : public QObject {
     QCOMPARE(res.size(), in.size() + header);
     const int first = in.value(0).trimmed() == "%" ? 1 : 0;
     for (int i = 0; i < in.size(); ++i) {
-      const QString a = in[i], b = res[i < first ? i : i + header];
+      const QString& a = in[i];
+      const QString& b = res[i < first ? i : i + header];
       QCOMPARE(stripped(b), stripped(a));
     }
     QCOMPARE(lines(csv).value(0), QString("block,line,original_F_mm_min,new_F_mm_min,S_rpm,reason,predicted_force_N"));

@@ -199,7 +199,7 @@ class TestProjectFile : public QObject {
   void validationRules_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QStringList>("expected");
-    auto row = [](const char* name, QStringList mutations, QStringList expected) {
+    auto row = [](const char* name, const QStringList& mutations, const QStringList& expected) {
       QTest::newRow(name) << mutations << expected;
     };
     // header

@@ -11,6 +11,7 @@ class TestSimulationCache : public QObject {
   void cachesAndParallelMatchesSerial() {
     const MillingSetup r1 = test::rubioR1();
     std::vector<SimulationCache::Request> requests;
+    requests.reserve(7);
     for (int i = 0; i < 6; ++i) requests.push_back({0, &r1, {(4000.0 + 300.0 * i) / 60.0, 0.4e-3, 0.1e-3}});
     requests.push_back(requests.front());  // a duplicate within one call is simulated once
     RefinementSettings parallel_settings;

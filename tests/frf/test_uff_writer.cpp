@@ -1,5 +1,6 @@
 // Dataset 58 / 58b writers: the record layout, and the round trips (58b bit for bit, 58 to 12 digits).
-#include <cstring>
+#include <bit>
+#include <cstdint>
 
 #include "core/invalid_input.h"
 #include "frf/uff_reader.h"
@@ -28,7 +29,7 @@ std::vector<FrfDataset> sample(FrfQuantity q) {
 }
 
 bool sameBits(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
 void compareMetadata(const FrfDataset& got, const FrfDataset& want) {

@@ -12,7 +12,7 @@ using namespace mx;
 
 namespace {
 using mx::test::gcodeSample;
-std::string edited(const std::string& line, GcodeBlockEdit e) {
+std::string edited(const std::string& line, const GcodeBlockEdit& e) {
   const auto p = GcodeReader::parse(line);
   return GcodeWriter::applyEdit(p.blocks.at(0), e);
 }

@@ -92,7 +92,7 @@ class TestGrafcetExpression : public QObject {
   void deepExpressionsUseTheHeapStack() {
     // A right-leaning chain needs a deep evaluation stack.
     std::string text = "a";
-    for (int i = 0; i < 40; ++i) text = "a and (" + text + ")";
+    for (int i = 0; i < 40; ++i) text = std::string("a and (").append(text).append(")");
     const GrafcetExpression e = GrafcetExpression::parse(text);
     QCOMPARE(e.evaluate(SignalValues{{"a", 1}}), true);
     QCOMPARE(e.evaluate(SignalValues{{"a", 0}}), false);

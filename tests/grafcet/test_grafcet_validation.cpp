@@ -144,7 +144,7 @@ class TestGrafcetValidation : public QObject {
     GrafcetChart c = valid();
     c.transitions[0].receptivity = "go and";
     c.transitions[1].to.clear();
-    c.steps[1].actions.push_back("two words");
+    c.steps[1].actions.emplace_back("two words");
     const auto issues = validateGrafcetChart(c, {"go"});
     QStringList described;
     for (const auto& i : issues) described << QString::fromStdString(i.describe());

@@ -48,7 +48,7 @@ bool setTeeth(gui::MainWindow& w, const QString& id, int teeth) {
 }
 
 QString saved(gui::MainWindow& w, const QTemporaryDir& dir) {
-  const QString path = dir.filePath("edited.mxproj");
+  QString path = dir.filePath("edited.mxproj");
   w.document()->save(path);
   return path;
 }

@@ -16,7 +16,7 @@ namespace {
 const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
 
 QString copyToTemp(const QTemporaryDir& dir, const QString& source) {
-  const QString target = dir.filePath("project.mxproj");
+  QString target = dir.filePath("project.mxproj");
   QFile::remove(target);
   QFile::copy(source, target);
   QFile(target).setPermissions(QFile::ReadOwner | QFile::WriteOwner);

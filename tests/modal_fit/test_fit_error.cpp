@@ -23,6 +23,7 @@ class TestFitError : public QObject {
     QFETCH(double, expected);
     const std::vector<C> h{{1e-6, 2e-6}, {-3e-6, 0.5e-6}, {0.0, -1e-7}};
     std::vector<C> fit;
+    fit.reserve(h.size());
     for (const C& x : h) fit.push_back(x * C(1.0 + offset, 0.0));  // |H_fit - H| = offset |H|
     QCOMPARE_LE(std::abs(fitErrorPercent(h, fit) - expected), 1e-12);
   }

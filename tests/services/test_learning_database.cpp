@@ -275,6 +275,7 @@ class TestLearningDatabase : public QObject {
 
     constexpr int kPerThread = 20;
     std::vector<std::thread> writers;
+    writers.reserve(3);
     std::atomic<int> failures{0};
     for (int t = 0; t < 3; ++t)
       writers.emplace_back([&, t] {

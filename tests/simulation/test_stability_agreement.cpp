@@ -45,6 +45,7 @@ class TestStabilityAgreement : public QObject {
     const std::vector<double> rpm = tool == 1 ? std::vector<double>{4000, 5000, 6000, 7000, 8500, 10000}
                                               : std::vector<double>{6000, 8000, 10000, 12000, 15000, 17000, 19000};
     std::vector<double> speeds;
+    speeds.reserve(rpm.size());
     for (double n : rpm) speeds.push_back(n / 60.0);
     SdmOptions o;
     o.steps_per_period = 60;

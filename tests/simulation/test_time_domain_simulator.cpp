@@ -87,7 +87,8 @@ class TestTimeDomainSimulator : public QObject {
     TimeDomainSimulator sim(s, p, {});
     sim.run();
     const SimulationTrace& tr = sim.trace();
-    const std::size_t last_rev = static_cast<std::size_t>(sim.stepsPerToothPeriod() * s.teeth);
+    const std::size_t last_rev =
+        static_cast<std::size_t>(sim.stepsPerToothPeriod()) * static_cast<std::size_t>(s.teeth);
     double worst = 0.0, peak = 0.0;
     for (std::size_t k = tr.size() - last_rev; k < tr.size(); ++k) {
       // Right-hand limit at t_k, as recorded: a tooth entering exactly at t_k cuts.

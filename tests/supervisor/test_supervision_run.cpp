@@ -75,10 +75,10 @@ class HandLogic : public mx::SupervisorLogic {
   void enter(int step, mx::ScanOutput& out) {
     step_ = step;
     if (step == 1 || step == 3) {
-      if (kind_ == Smc1) out.impulse_actions.push_back("L*");
+      if (kind_ == Smc1) out.impulse_actions.emplace_back("L*");
       if (kind_ == Smc2) {
-        out.impulse_actions.push_back("E*");
-        out.impulse_actions.push_back("K*");
+        out.impulse_actions.emplace_back("E*");
+        out.impulse_actions.emplace_back("K*");
       }
     }
   }

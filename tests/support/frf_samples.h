@@ -1,6 +1,7 @@
 #pragma once
 // Test helpers for the FRF readers: FRFs synthesised from known modes, and universal-file dataset 58
 // text built record by record (the UC-SDRL fixed formats) so that each test can change one field.
+#include <algorithm>
 #include <bit>
 #include <complex>
 #include <cstdio>
@@ -24,6 +25,7 @@ inline FrfDataset modalFrf(const ModalAxis& axis, FrfQuantity quantity, const st
   d.response_node = d.reference_node = 1;
   d.name = "modal " + std::string(frfQuantityName(quantity));
   d.frequency_hz = frequency_hz;
+  d.values.reserve(frequency_hz.size());
   for (double f : frequency_hz) {
     const std::complex<double> s(0.0, 2.0 * std::numbers::pi * f);
     std::complex<double> h = receptance(axis, s);
@@ -36,6 +38,7 @@ inline FrfDataset modalFrf(const ModalAxis& axis, FrfQuantity quantity, const st
 
 inline std::vector<double> evenFrequencies(double f0, double df, int n) {
   std::vector<double> f;
+  f.reserve(static_cast<std::size_t>(std::max(n, 0)));
   for (int i = 0; i < n; ++i) f.push_back(f0 + i * df);
   return f;
 }
