@@ -59,7 +59,7 @@ class TestCliCheck : public QObject {
   void invalidProjects_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QString>("expected");
-    auto row = [](const char* name, QStringList mutations, const char* expected) {
+    auto row = [](const char* name, const QStringList& mutations, const char* expected) {
       QTest::newRow(name) << mutations << QString(expected);
     };
     row("format", {"format=\"other\""}, "format = \"other\": must be \"millexpert-project\"");

@@ -20,7 +20,7 @@ QString caseWith(const QTemporaryDir& dir, const QStringList& mutations) {
   QFile in(kCase);
   in.open(QIODevice::ReadOnly);
   const QJsonObject root = mx::test::mutated(QJsonDocument::fromJson(in.readAll()).object(), mutations);
-  const QString path = dir.filePath("p.mxproj");
+  QString path = dir.filePath("p.mxproj");
   QFile out(path);
   out.open(QIODevice::WriteOnly);
   out.write(QJsonDocument(root).toJson());

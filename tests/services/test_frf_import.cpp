@@ -14,7 +14,7 @@ namespace {
 const ModalAxis kMode{{700.0, 0.03, 8e6}};
 
 QString writeUff(const QTemporaryDir& dir, FrfQuantity quantity) {
-  const QString path = dir.filePath("tap.unv");
+  QString path = dir.filePath("tap.unv");
   const std::string text =
       uff58String({test::modalFrf(kMode, quantity, test::evenFrequencies(0.0, 1.0, 2001), FrfDirection::Y)});
   QFile f(path);

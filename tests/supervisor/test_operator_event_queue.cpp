@@ -55,6 +55,7 @@ class TestOperatorEventQueue : public QObject {
   // first step at or past it.
   void monotoneClock() {
     std::vector<OperatorEvent> events;
+    events.reserve(50);
     for (int i = 0; i < 50; ++i) events.push_back({((i * 37) % 50) * 0.01, OperatorEventType::ChatterSignal});
     OperatorEventQueue q(events);
     double last = -1.0;

@@ -28,7 +28,7 @@ Project rubio() {
 }
 
 QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile f(path);
   f.open(QIODevice::WriteOnly);
   f.write(text);
