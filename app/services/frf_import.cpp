@@ -1,7 +1,5 @@
 #include "services/frf_import.h"
 
-#include <algorithm>
-
 #include "core/invalid_input.h"
 #include "frf/frf_file.h"
 #include "frf/frf_file_error.h"
@@ -65,8 +63,7 @@ ModalFitResult fitFrfModes(const Receptance& receptance, std::optional<double> f
                            ModalFitSettings settings, const JobControl& job) {
   const auto& f = receptance.frequency_hz;
   if (f.empty()) throw InputError("the FRF has no points");
-  const auto first_positive = std::find_if(f.begin(), f.end(), [](double x) { return x > 0.0; });
-  settings.from_hz = from_hz.value_or(first_positive == f.end() ? f.front() : *first_positive);
+  settings.from_hz = from_hz.value_or(f.front());  // the band leaves out 0 Hz itself (frf_band.h)
   settings.to_hz = to_hz.value_or(f.back());
   try {
     return fitModes(f, receptance.h_m_per_n, settings, job);

@@ -16,9 +16,7 @@ const ModalAxis kModesY{{880.0, 0.025, 9e6}};
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const std::string& bytes) {
   QString path = dir.filePath(name);
-  QFile f(path);
-  if (!f.open(QIODevice::WriteOnly)) return {};
-  f.write(bytes.data(), static_cast<qint64>(bytes.size()));
+  test::writeBytes(path.toStdString(), bytes);
   return path;
 }
 

@@ -1,6 +1,5 @@
 // FRF files by path: format detection from the content, reading and writing each format through
 // QTemporaryDir, the CSV quantity the caller must give, and unreadable or unknown files.
-#include <fstream>
 
 #include "core/invalid_input.h"
 #include "frf/frf_csv.h"
@@ -12,14 +11,6 @@
 using namespace mx;
 
 Q_DECLARE_METATYPE(mx::FrfFormat)
-
-namespace {
-
-void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
-
-}  // namespace
 
 class TestFrfFile : public QObject {
   Q_OBJECT
@@ -71,7 +62,7 @@ class TestFrfFile : public QObject {
   void csvNeedsTheQuantity() {
     QTemporaryDir dir;
     const std::string path = dir.filePath("frf.csv").toStdString();
-    writeBytes(path, "frequency_Hz,real,imag\n1,2,3\n");
+    test::writeBytes(path, "frequency_Hz,real,imag\n1,2,3\n");
     try {
       readFrfFile(path, std::nullopt);
       QFAIL("a CSV without a quantity was read");

@@ -1,7 +1,5 @@
 // The tap-test service: quantity names, the choice of one FRF dataset (0-based among the file's FRFs),
 // the UFF quantity check, and the fit's default band (the measured range above 0 Hz).
-#include <QFile>
-
 #include "frf/uff_writer.h"
 #include "services/frf_import.h"
 #include "services/service_errors.h"
@@ -17,9 +15,7 @@ QString writeUff(const QTemporaryDir& dir, FrfQuantity quantity) {
   QString path = dir.filePath("tap.unv");
   const std::string text =
       uff58String({test::modalFrf(kMode, quantity, test::evenFrequencies(0.0, 1.0, 2001), FrfDirection::Y)});
-  QFile f(path);
-  if (!f.open(QIODevice::WriteOnly)) return {};
-  f.write(text.data(), static_cast<qint64>(text.size()));
+  test::writeBytes(path.toStdString(), text);
   return path;
 }
 }  // namespace

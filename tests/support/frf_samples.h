@@ -6,6 +6,7 @@
 #include <complex>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -34,6 +35,11 @@ inline FrfDataset modalFrf(const ModalAxis& axis, FrfQuantity quantity, const st
     d.values.push_back(h);
   }
   return d;
+}
+
+// Writes `bytes` to `path` unchanged (binary), replacing the file.
+inline void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 inline std::vector<double> evenFrequencies(double f0, double df, int n) {
