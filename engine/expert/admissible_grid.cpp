@@ -77,9 +77,9 @@ std::vector<double> AdmissibleGrid::lobeSpeeds(const ExpertSettings& s) {
 }
 
 LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s) {
-  return mx::computeLobes(
-      setup, lobeSpeeds(s),
-      {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m, s.stability.sdm_steps_per_period});
+  return mx::computeLobes(setup, lobeSpeeds(s),
+                          {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m,
+                           s.stability.sdm_steps_per_period, s.stability.dynamics});
 }
 
 AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings)

@@ -10,7 +10,9 @@
 
 namespace mx {
 
-// N = f_n / (n_t k) for every mode of both axes and every k >= 1 with N in [from, to], ascending.
+// N = f_n / (n_t k) for every mode of both axes and every k >= 1 with N in [from, to], ascending. A tool
+// without modes takes f_n from its measured FRFs instead: the line of largest |H| above 0 Hz per measured
+// axis (an axis with neither contributes nothing).
 std::vector<double> modalCandidateSpeeds(const MillingSetup& setup, double from_rev_per_s, double to_rev_per_s);
 
 // The regular grid (as SpeedGrid::values) merged with modalCandidateSpeeds when grid.modal_candidate_speeds;

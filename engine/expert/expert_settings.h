@@ -4,7 +4,7 @@
 // stability method and margins (Rule 1), and the time-domain refinement (Rule 5). SI units.
 #include <limits>
 
-#include "stability/lobe_computation.h"  // StabilityMethod
+#include "stability/lobe_computation.h"  // StabilityMethod, DynamicsSource
 
 namespace mx {
 
@@ -41,6 +41,7 @@ struct StabilitySettings {
   // nearer side of a point at or below `to`).
   double lobe_range_low_factor = 0.8;
   double lobe_range_high_factor = 2.0;
+  DynamicsSource dynamics = DynamicsSource::Modal;  // ZOA: Measured uses the tools' measured FRFs (delta = 0)
 };
 
 // Rule 5 refinement and Rule 6 malfunction loop.

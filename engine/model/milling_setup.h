@@ -2,13 +2,19 @@
 // One tool in one cut: geometry, structural modes, cutting-force coefficients and immersion.
 // Conventions (Rubio et al. 2006, eq. 4-7; Altintas 2000): feed along +x, the tooth angle phi is
 // measured clockwise from +y, h_static = s_t sin(phi). SI units throughout.
+#include <optional>
 #include <string>
 
+#include "model/measured_receptance.h"
 #include "model/modal_model.h"
 
 namespace mx {
 
 enum class MillingDirection { Up, Down };
+
+// Where the ZOA takes the structural dynamics from: the modes, or each axis's measured FRF where it has
+// one (docs/fidelity.md, "ZOA on a measured FRF").
+enum class DynamicsSource { Modal, Measured };
 
 struct Immersion {
   double entry_rad = 0.0;  // phi_st
@@ -28,6 +34,9 @@ struct MillingSetup {
   double radial_ratio = 0.0;               // K_r = F_r / F_t (eq. 3)
   ModalAxis modes_x;
   ModalAxis modes_y;
+  // Measured receptance per axis; an axis may have a measured FRF, modes, both or neither (rigid).
+  std::optional<MeasuredAxis> measured_x;
+  std::optional<MeasuredAxis> measured_y;
   MillingDirection direction = MillingDirection::Up;
   double radial_depth_m = 0.0;
   Immersion immersion;  // derived from radial depth and diameter

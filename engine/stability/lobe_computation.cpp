@@ -1,5 +1,6 @@
 #include "stability/lobe_computation.h"
 
+#include "core/invalid_input.h"
 #include "stability/semi_discretization.h"
 #include "stability/zero_order_lobes.h"
 
@@ -11,8 +12,11 @@ LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& s
     ZoaOptions o;
     o.delta_per_s = settings.delta_per_s;
     o.max_depth_m = settings.max_depth_m;
+    o.dynamics = settings.dynamics;
     return computeZoaLobes(setup, speeds_rev_per_s, o, control);
   }
+  if (settings.dynamics == DynamicsSource::Measured)
+    throw InvalidInput("semi-discretization needs a state-space model: use fitted modes");
   SdmOptions o;
   o.delta_per_s = settings.delta_per_s;
   o.max_depth_m = settings.max_depth_m;

@@ -16,8 +16,12 @@ struct LobeSettings {
   double delta_per_s = 0.0;       // Rule 1.1
   double max_depth_m = 0.02;      // envelope = kNone where no lobe lies below
   int sdm_steps_per_period = 40;  // semi-discretization only
+  // ZOA only: Measured takes each axis's measured FRF where present (delta must be 0).
+  DynamicsSource dynamics = DynamicsSource::Modal;
 };
 
+// Throws InvalidInput for semi-discretization with DynamicsSource::Measured (it needs a state-space
+// model), besides the methods' own checks.
 LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,
                          const LobeSettings& settings, const JobControl& control = {});
 

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "model/cutting_force.h"
 #include "model/vector_state.h"
@@ -19,11 +20,32 @@ namespace {
 using cplx = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
 
-// Chatter-frequency grid [rad/s]: uniform over [0.3 f_min, 3 f_max] plus a dense band of
-// +-12 zeta around every mode, where the lobe minima lie.
-std::vector<double> chatterFrequencyGrid(const MillingSetup& setup, int samples) {
-  std::vector<Mode> modes = setup.modes_x;
-  modes.insert(modes.end(), setup.modes_y.begin(), setup.modes_y.end());
+// The dynamics the ZOA sees on one axis: the measured FRF (DynamicsSource::Measured and one present),
+// else the modes (none: rigid).
+struct AxisDynamics {
+  const ModalAxis* modes = nullptr;
+  const MeasuredAxis* measured = nullptr;
+
+  bool rigid() const { return measured == nullptr && modes->empty(); }
+  // A measured FRF is known on the imaginary axis only (delta = 0 is enforced with it).
+  cplx at(cplx s) const { return measured != nullptr ? measured->at(s.imag()) : receptance(*modes, s); }
+  const ModalAxis& usedModes() const {
+    static const ModalAxis kNoModes;
+    return measured != nullptr ? kNoModes : *modes;
+  }
+};
+
+AxisDynamics axisDynamics(const ModalAxis& modes, const std::optional<MeasuredAxis>& measured, DynamicsSource source,
+                          std::string_view name) {
+  if (source != DynamicsSource::Measured || !measured) return {&modes, nullptr};
+  measured->validate(name);
+  return {&modes, &*measured};
+}
+
+// Modal part of the chatter-frequency grid [rad/s]: uniform over [0.3 f_min, 3 f_max] plus a dense band
+// of +-12 zeta around every mode, where the lobe minima lie.
+void appendModalGrid(const std::vector<Mode>& modes, int samples, std::vector<double>& grid) {
+  if (modes.empty()) return;
   double lo = modes.front().angularFrequency(), hi = lo;
   for (const Mode& m : modes) {
     lo = std::min(lo, m.angularFrequency());
@@ -31,8 +53,7 @@ std::vector<double> chatterFrequencyGrid(const MillingSetup& setup, int samples)
   }
   lo *= 0.3;
   hi *= 3.0;
-  std::vector<double> grid;
-  grid.reserve(static_cast<size_t>(samples) + modes.size() * 241);
+  grid.reserve(grid.size() + static_cast<size_t>(samples) + modes.size() * 241);
   for (int i = 0; i < samples; ++i) grid.push_back(lo + (hi - lo) * i / (samples - 1));
   for (const Mode& m : modes) {
     const double band = 12.0 * std::max(m.damping_ratio, 1e-4) * m.angularFrequency();
@@ -41,6 +62,34 @@ std::vector<double> chatterFrequencyGrid(const MillingSetup& setup, int samples)
       if (w > lo && w < hi) grid.push_back(w);
     }
   }
+}
+
+// Measured part [rad/s]: every line above 0 Hz, and where |H_{i+1} - H_i| > 1 % of max|H| (sharp peaks)
+// n = min(subdivisions, ceil(|dH| / (1 % max|H|)) - 1) equally spaced frequencies inside the interval, so
+// that the lobe curves through the interpolated FRF are resolved in speed.
+void appendMeasuredGrid(const MeasuredAxis& axis, int subdivisions, std::vector<double>& grid) {
+  const std::vector<double>& f = axis.frequency_hz;
+  const std::vector<cplx>& h = axis.h_m_per_n;
+  double h_max = 0.0;
+  for (const cplx& v : h) h_max = std::max(h_max, std::abs(v));
+  const double threshold = 0.01 * h_max;
+  for (size_t i = 0; i < f.size(); ++i) {
+    if (f[i] > 0.0) grid.push_back(2.0 * kPi * f[i]);
+    if (i + 1 == f.size() || subdivisions <= 0 || !(threshold > 0.0)) continue;
+    const double ratio = std::abs(h[i + 1] - h[i]) / threshold;
+    if (!(ratio > 1.0)) continue;
+    const int n = static_cast<int>(std::min<double>(subdivisions, std::ceil(ratio) - 1.0));
+    for (int j = 1; j <= n; ++j) grid.push_back(2.0 * kPi * (f[i] + (f[i + 1] - f[i]) * j / (n + 1)));
+  }
+}
+
+std::vector<double> chatterFrequencyGrid(const AxisDynamics& x, const AxisDynamics& y, const ZoaOptions& options) {
+  std::vector<double> grid;
+  std::vector<Mode> modes = x.usedModes();
+  modes.insert(modes.end(), y.usedModes().begin(), y.usedModes().end());
+  appendModalGrid(modes, std::max(options.frequency_samples, 16), grid);
+  for (const AxisDynamics* axis : {&x, &y})
+    if (axis->measured != nullptr) appendMeasuredGrid(*axis->measured, options.measured_subdivisions, grid);
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   return grid;
@@ -176,8 +225,8 @@ bool boundaryPoint(cplx c, double w, int k, double delta, double u_floor, double
   return std::isfinite(depth) && period > 0.0;
 }
 
-void validate(const MillingSetup& setup, const std::vector<double>& speeds, double delta) {
-  const double limit = smallestDecayRate(setup.modes_x, setup.modes_y);
+void validate(const AxisDynamics& x, const AxisDynamics& y, const std::vector<double>& speeds, double delta) {
+  const double limit = smallestDecayRate(x.usedModes(), y.usedModes());
   if (!(delta >= 0.0) || delta >= limit) {
     std::ostringstream msg;
     msg << "delta = " << delta << " 1/s: must be in [0, " << limit
@@ -198,11 +247,21 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
   out.speed_rev_per_s = speeds;
   out.envelope_depth_m.assign(speeds.size(), LobeDiagram::kNone);
   out.envelope_chatter_hz.assign(speeds.size(), 0.0);
-  if (setup.modes_x.empty() && setup.modes_y.empty()) return out;  // rigid tool: no chatter
-  validate(setup, speeds, options.delta_per_s);
+  if (options.dynamics == DynamicsSource::Measured && options.delta_per_s != 0.0) {
+    std::ostringstream msg;
+    msg << "delta = " << options.delta_per_s
+        << " 1/s: a measured FRF gives G(i omega) only, not G(-delta + i omega), so delta must be 0 with "
+           "measured dynamics (use fitted modes for a margin)";
+    throw InvalidInput(msg.str());
+  }
+  const AxisDynamics x = axisDynamics(setup.modes_x, setup.measured_x, options.dynamics, "measured_x");
+  const AxisDynamics y = axisDynamics(setup.modes_y, setup.measured_y, options.dynamics, "measured_y");
+  if (x.rigid() && y.rigid()) return out;  // rigid tool: no chatter
+  validate(x, y, speeds, options.delta_per_s);
 
   const DirectionalFactors alpha = averageDirectionalFactors(setup.immersion, setup.radial_ratio);
-  const std::vector<double> omegas = chatterFrequencyGrid(setup, std::max(options.frequency_samples, 16));
+  const std::vector<double> omegas = chatterFrequencyGrid(x, y, options);
+  if (omegas.empty()) return out;
   const double min_speed = speeds.empty() ? 1.0 : *std::min_element(speeds.begin(), speeds.end());
   const double max_speed = speeds.empty() ? 1.0 : *std::max_element(speeds.begin(), speeds.end());
   // Lobe k at chatter frequency w lies between w / (2 pi n_t (k + 1)) and w / (2 pi n_t k) (eq. 9-10,
@@ -224,7 +283,7 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
   for (size_t i = 0; i < omegas.size(); ++i) {
     const cplx s = shift + cplx{0.0, omegas[i]};
     cplx roots[2];
-    counts[i] = characteristicRoots(alpha, receptance(setup.modes_x, s), receptance(setup.modes_y, s), roots);
+    counts[i] = characteristicRoots(alpha, x.at(s), y.at(s), roots);
     for (int r = 0; r < counts[i]; ++r) cs[i][static_cast<size_t>(r)] = scale * roots[r];
   }
 

@@ -15,10 +15,14 @@ struct ZoaOptions {
   double max_depth_m = 0.02;     // envelope = kNone where no lobe lies below this depth
   int lobe_count = 0;            // number of lobes k = 0..count-1; 0 = enough to cover the lowest speed
   int frequency_samples = 1200;  // chatter-frequency samples (plus a dense band around every mode)
+  // Measured: each axis uses setup.measured_x / measured_y where present, else its modes.
+  DynamicsSource dynamics = DynamicsSource::Modal;
+  int measured_subdivisions = 9;  // at most this many extra frequencies between two lines where |dH| > 1 % max|H|
 };
 
 // Throws InvalidInput for delta >= smallest decay rate (the message names delta and the bound),
-// or non-positive speeds.
+// non-positive speeds, delta != 0 with DynamicsSource::Measured (a measured FRF gives G(i omega) only),
+// or an invalid measured FRF (MeasuredAxis::validate, named "measured_x" / "measured_y").
 LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds_rev_per_s,
                             const ZoaOptions& options, const JobControl& control = {});
 

@@ -1,5 +1,6 @@
 #pragma once
-// Engine test fixtures: the seed's tools in SI (Rubio et al. 2006 R1/R2; Insperger benchmark).
+// Engine test fixtures: the seed's tools in SI (Rubio et al. 2006 R1/R2; Insperger benchmark), and
+// measured FRFs sampled from known modes.
 #include <cmath>
 #include <numbers>
 
@@ -34,6 +35,18 @@ inline MillingSetup insperger(double radial_ratio) {
   const double w = 2.0 * std::numbers::pi * 922.0;
   return makeSetup(2, 0.020, 6e8, 1.0 / 3.0, {{922.0, 0.011, 0.03993 * w * w}}, {}, MillingDirection::Down,
                    radial_ratio);
+}
+
+// receptance(modes, i 2 pi f) at the lines f_from, f_from + step, ..., f_to [Hz].
+inline MeasuredAxis sampledAxis(const ModalAxis& modes, double f_from_hz, double f_to_hz, double step_hz) {
+  MeasuredAxis axis;
+  const int lines = static_cast<int>(std::lround((f_to_hz - f_from_hz) / step_hz)) + 1;
+  for (int i = 0; i < lines; ++i) {
+    const double f = f_from_hz + step_hz * i;
+    axis.frequency_hz.push_back(f);
+    axis.h_m_per_n.push_back(receptance(modes, {0.0, 2.0 * std::numbers::pi * f}));
+  }
+  return axis;
 }
 
 }  // namespace mx::test
