@@ -46,6 +46,13 @@ void setLogScale(QCPAxis* axis, bool log) {
   axis->setNumberFormat(log ? QStringLiteral("gb") : QStringLiteral("g"));
 }
 
+// A driving-point receptance lags by 0 .. 180 deg: wrapping at +90 deg instead of +180 deg keeps noise
+// around -180 deg (above the last mode) from jumping to +180 deg.
+double receptancePhaseDeg(std::complex<double> h) {
+  const double deg = std::arg(h) * 180.0 / std::numbers::pi;
+  return deg > 90.0 ? deg - 360.0 : deg;
+}
+
 bool hasData(const QCPGraph* graph) {
   return graph->dataCount() > 0;
 }
@@ -73,11 +80,13 @@ FrfPlotView::FrfPlotView(QWidget* parent)
   upper_ = addPanel(plot_, margins, 0);
   lower_ = addPanel(plot_, margins, 1);
   residual_ = addPanel(plot_, margins, 2);
-  plot_->plotLayout()->setRowStretchFactors({3.0, 2.0, 1.4});
-  // The legend beside the panels, not over the curves.
+  // The legend in a row above the panels, not over the curves.
   upper_->insetLayout()->take(plot_->legend);
-  plot_->plotLayout()->addElement(0, 1, plot_->legend);
-  plot_->plotLayout()->setColumnStretchFactor(1, 0.001);
+  plot_->plotLayout()->insertRow(0);
+  plot_->plotLayout()->addElement(0, 0, plot_->legend);
+  plot_->plotLayout()->setRowStretchFactors({0.001, 3.0, 2.0, 1.4});
+  plot_->legend->setFillOrder(QCPLegend::foColumnsFirst);
+  plot_->legend->setBorderPen(Qt::NoPen);
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setLayer(QStringLiteral("legend"));
@@ -130,15 +139,15 @@ const FrfCurve* FrfPlotView::measuredFor(const FrfCurve& fitted, std::size_t ind
 void FrfPlotView::rebuild() {
   plot_->clearGraphs();
   residual_graphs_.clear();
-  for (std::size_t i = 0; i < measured_.size(); ++i) addCurve(measured_[i], QPen(directionColor(i), 1.5));
+  for (std::size_t i = 0; i < measured_.size(); ++i) addCurve(measured_[i], QPen(directionColor(i).lighter(115), 1.8));
   for (std::size_t i = 0; i < fitted_.size(); ++i) {
     const FrfCurve* measured = measuredFor(fitted_[i], i);
     const auto m_index = measured ? static_cast<std::size_t>(measured - measured_.data()) : i;
-    QPen pen(directionColor(m_index).darker(160), 2.0, Qt::DashLine);
-    addCurve(fitted_[i], pen);
-    pen.setStyle(Qt::SolidLine);
-    pen.setWidthF(1.5);
-    addResidual(fitted_[i], measured ? *measured : FrfCurve{}, pen);
+    // Near-black dashes stay visible where the fit lies on the measurement.
+    QPen fitted_pen(directionColor(m_index).darker(300), 1.6);
+    fitted_pen.setDashPattern({5.0, 3.0});
+    addCurve(fitted_[i], fitted_pen);
+    addResidual(fitted_[i], measured ? *measured : FrfCurve{}, QPen(directionColor(m_index), 1.2));
   }
   applyAxes();
   plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -155,7 +164,7 @@ void FrfPlotView::addCurve(const FrfCurve& curve, const QPen& pen) {
     if (!std::isfinite(hz) || (log_f && hz <= 0.0) || (magnitude && std::abs(h) <= 0.0)) continue;
     f << hz;
     upper << (magnitude ? std::abs(h) : h.real());
-    lower << (magnitude ? std::arg(h) * 180.0 / std::numbers::pi : h.imag());
+    lower << (magnitude ? receptancePhaseDeg(h) : h.imag());
   }
   for (QCPAxisRect* rect : {upper_, lower_}) {
     QCPGraph* graph = plot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -194,7 +203,7 @@ void FrfPlotView::applyAxes() {
   setLogScale(upper_->axis(QCPAxis::atLeft), magnitude);
   upper_->axis(QCPAxis::atLeft)->setLabel(magnitude ? tr("|H| [\u00b5m/N]") : tr("Re H [\u00b5m/N]"));
   lower_->axis(QCPAxis::atLeft)->setLabel(magnitude ? tr("Phase [deg]") : tr("Im H [\u00b5m/N]"));
-  residual_->axis(QCPAxis::atLeft)->setLabel(tr("|H_meas \u2212 H_fit| [\u00b5m/N]"));
+  residual_->axis(QCPAxis::atLeft)->setLabel(tr("|\u0394H| [\u00b5m/N]"));
 
   double f_lo = std::numeric_limits<double>::infinity(), f_hi = -f_lo;
   for (int i = 0; i < plot_->graphCount(); ++i) {
@@ -218,10 +227,10 @@ void FrfPlotView::applyAxes() {
     }
   }
   QCPAxis* residual_axis = residual_->axis(QCPAxis::atLeft);
+  residual_axis->ticker()->setTickCount(3);  // the panel is short
   residual_axis->setRange(0.0, std::max(residual_axis->range().upper * 1.1, 1e-6));
-  if (magnitude) lower_->axis(QCPAxis::atLeft)->setRange(-185.0, 185.0);
   upper_->axis(QCPAxis::atLeft)->scaleRange(1.1);
-  if (!magnitude) lower_->axis(QCPAxis::atLeft)->scaleRange(1.1);
+  lower_->axis(QCPAxis::atLeft)->scaleRange(1.1);
 }
 
 int FrfPlotView::upperGraphCount() const {

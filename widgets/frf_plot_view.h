@@ -1,6 +1,6 @@
 #pragma once
 // Measured and fitted receptance FRFs: |H| [µm/N] over the phase [deg], or Re H over Im H [µm/N], and
-// below them the residual |H_measured - H_fitted| [µm/N] at the fitted curve's frequencies. A small
+// below them the residual |ΔH| = |H_measured - H_fitted| [µm/N] at the fitted curve's frequencies. A small
 // toolbar switches the display and the frequency axis scale. Values come in SI (m/N). QCustomPlot stays
 // behind this class.
 #include <QString>

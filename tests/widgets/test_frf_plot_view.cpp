@@ -55,7 +55,7 @@ class TestFrfPlotView : public QObject {
     QCOMPARE(view.upperAxisLabel(), upper);
     QCOMPARE(view.lowerAxisLabel(), lower);
     QCOMPARE(view.frequencyAxisLabel(), QString("Frequency [Hz]"));
-    QCOMPARE(view.residualAxisLabel(), QString("|H_meas \u2212 H_fit| [\u00b5m/N]"));
+    QCOMPARE(view.residualAxisLabel(), QString("|\u0394H| [\u00b5m/N]"));
     QCOMPARE(view.legendNames(), QStringList({"measured x", "measured y", "fitted x", "residual x"}));
   }
 
