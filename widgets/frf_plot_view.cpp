@@ -271,6 +271,14 @@ QStringList FrfPlotView::legendNames() const {
   return names;
 }
 
+std::vector<double> FrfPlotView::lowerPanelValues(int curve_index) const {
+  std::vector<double> values;
+  const QList<QCPGraph*> graphs = lower_->graphs();
+  if (curve_index < 0 || curve_index >= graphs.size()) return values;
+  for (const QCPGraphData& point : *graphs[curve_index]->data()) values.push_back(point.value);
+  return values;
+}
+
 std::vector<double> FrfPlotView::residualFrequencies(int fitted_index) const {
   std::vector<double> f;
   if (fitted_index < 0 || fitted_index >= static_cast<int>(residual_graphs_.size())) return f;

@@ -49,6 +49,8 @@ class FrfPlotView : public QWidget {
   QString lowerAxisLabel() const;
   QString residualAxisLabel() const;
   QStringList legendNames() const;
+  // The lower panel's values of a curve (measured ones first, then the fitted): phase [deg] or Im H [µm/N].
+  std::vector<double> lowerPanelValues(int curve_index) const;
   std::vector<double> residualFrequencies(int fitted_index) const;
   std::vector<double> residualMicrometrePerNewton(int fitted_index) const;  // |H_m - H_f| [µm/N]
 

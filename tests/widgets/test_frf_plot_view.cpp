@@ -91,6 +91,29 @@ class TestFrfPlotView : public QObject {
     QCOMPARE(box->isChecked(), !log);
   }
 
+  // Receptance phase wraps at +90 deg: a lag just past 180 deg reads -181, not +179.
+  void lowerPanelValues_data() {
+    QTest::addColumn<FrfPlotView::Display>("display");
+    QTest::addColumn<C>("h_m_per_n");
+    QTest::addColumn<double>("expected");
+    const double deg = std::numbers::pi / 180.0;
+    QTest::newRow("phase -90") << FrfPlotView::Display::MagnitudePhase << C(0.0, -1e-6) << -90.0;
+    QTest::newRow("phase -181") << FrfPlotView::Display::MagnitudePhase << std::polar(1e-6, 179.0 * deg) << -181.0;
+    QTest::newRow("phase +89") << FrfPlotView::Display::MagnitudePhase << std::polar(1e-6, 89.0 * deg) << 89.0;
+    QTest::newRow("Im H") << FrfPlotView::Display::RealImaginary << C(2e-6, -3e-6) << -3.0;
+  }
+  void lowerPanelValues() {
+    QFETCH(FrfPlotView::Display, display);
+    QFETCH(C, h_m_per_n);
+    QFETCH(double, expected);
+    FrfPlotView view;
+    view.setDisplay(display);
+    view.setMeasured({{"measured x", {100.0, 200.0}, {h_m_per_n, h_m_per_n}}});
+    const auto values = view.lowerPanelValues(0);
+    QCOMPARE(values.size(), std::size_t{2});
+    QVERIFY2(std::abs(values[0] - expected) < 1e-9, qPrintable(QString::number(values[0])));
+  }
+
   void residual_data() {
     QTest::addColumn<C>("offset_m_per_n");
     QTest::addColumn<double>("expected_um_per_n");
