@@ -1,7 +1,10 @@
 #include "modal_fit/modal_fit.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
+#include "core/invalid_input.h"
 #include "modal_fit/fit_error.h"
 #include "modal_fit/frf_band.h"
 #include "modal_fit/lscf_diagram.h"
@@ -16,12 +19,14 @@ namespace {
 
 constexpr double kDiagramProgress = 0.8;
 
-// LSFD residues of the poles, then the NLLS refinement when asked for.
+// LSFD residues of the poles, then the NLLS refinement when asked for; `source` names where the poles
+// came from in result.method.
 FittedModel fitPoles(const FrfBand& band, const std::vector<std::complex<double>>& poles,
-                     const ModalFitSettings& settings, const JobControl& job, ModalFitResult& result) {
+                     const ModalFitSettings& settings, const JobControl& job, ModalFitResult& result,
+                     const std::string& source = "LSCF") {
   if (job.cancelled()) throw Cancelled();
   FittedModel model = fittedModel(poles, fitResidues(band, poles));
-  result.method = "LSCF + LSFD";
+  result.method = source + " + LSFD";
   job.report(0.9);
   if (settings.refine && !model.modes.empty()) {
     model = refineModel(band, model, job);
@@ -54,6 +59,31 @@ FittedModel lscfModel(const FrfBand& band, const ModalFitSettings& settings, con
   return model;
 }
 
+// Modes sorted by frequency, the model over the band and its fit error.
+void storeModel(FittedModel model, const FrfBand& band, const JobControl& job, ModalFitResult& result) {
+  std::sort(model.modes.begin(), model.modes.end(),
+            [](const Mode& a, const Mode& b) { return a.natural_frequency_hz < b.natural_frequency_hz; });
+  result.band_frequency_hz = band.frequency_hz;
+  result.fitted = fittedReceptance(model, band.frequency_hz);
+  result.fit_error_pct = fitErrorPercent(band.h_m_per_n, result.fitted);
+  result.modes = std::move(model.modes);
+  result.residuals = model.residuals;
+  job.report(1.0);
+}
+
+void validatePoles(const std::vector<std::complex<double>>& poles, double from_hz, double to_hz) {
+  if (poles.empty()) throw InvalidInput("poles: none given, at least one pole is needed");
+  for (std::size_t i = 0; i < poles.size(); ++i) {
+    const double f = poleFrequencyHz(poles[i]);
+    if (poles[i].imag() > 0.0 && std::isfinite(f) && f >= from_hz && f <= to_hz) continue;
+    std::ostringstream message;
+    message << "pole " << i + 1 << " = " << poles[i].real() << (poles[i].imag() < 0 ? " - " : " + ")
+            << std::abs(poles[i].imag()) << "i rad/s (" << f
+            << " Hz): must lie in the upper half-plane within the band [" << from_hz << ", " << to_hz << "] Hz";
+    throw InvalidInput(message.str());
+  }
+}
+
 }  // namespace
 
 ModalFitResult fitModes(const std::vector<double>& frequency_hz, const std::vector<std::complex<double>>& h_m_per_n,
@@ -68,14 +98,24 @@ ModalFitResult fitModes(const std::vector<double>& frequency_hz, const std::vect
   } else {
     model = lscfModel(band, settings, job, result);
   }
-  std::sort(model.modes.begin(), model.modes.end(),
-            [](const Mode& a, const Mode& b) { return a.natural_frequency_hz < b.natural_frequency_hz; });
-  result.modes = model.modes;
-  result.residuals = model.residuals;
-  result.band_frequency_hz = band.frequency_hz;
-  result.fitted = fittedReceptance(model, band.frequency_hz);
-  result.fit_error_pct = fitErrorPercent(band.h_m_per_n, result.fitted);
-  job.report(1.0);
+  storeModel(std::move(model), band, job, result);
+  return result;
+}
+
+ModalFitResult fitModesAtPoles(const std::vector<double>& frequency_hz,
+                               const std::vector<std::complex<double>>& h_m_per_n, const ModalFitSettings& settings,
+                               const std::vector<std::complex<double>>& poles, const JobControl& job) {
+  // Only the data and the band are checked: the pole count replaces modes / max_modes.
+  ModalFitSettings checked = settings;
+  checked.modes.reset();
+  checked.max_modes = 1;
+  checked.method = ModalFitSettings::Method::Lscf;
+  validateFitInput(frequency_hz, h_m_per_n, checked);
+  validatePoles(poles, settings.from_hz, settings.to_hz);
+  const FrfBand band = selectBand(frequency_hz, h_m_per_n, settings.from_hz, settings.to_hz);
+  ModalFitResult result;
+  FittedModel model = fitPoles(band, poles, settings, job, result, "chosen poles");
+  storeModel(std::move(model), band, job, result);
   return result;
 }
 

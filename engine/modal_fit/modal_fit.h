@@ -36,4 +36,13 @@ struct ModalFitResult {
 ModalFitResult fitModes(const std::vector<double>& frequency_hz, const std::vector<std::complex<double>>& h_m_per_n,
                         const ModalFitSettings& settings, const JobControl& job = {});
 
+// The modes at the given poles (upper half-plane, e.g. picked on the stabilisation diagram): LSFD
+// residues with residual terms, then the NLLS refinement when settings.refine. settings.modes,
+// max_modes and method are ignored; the band is [from_hz, to_hz]; the returned diagram is empty.
+// Throws InvalidInput for an empty pole list or a pole outside the band (naming it), and as fitModes
+// for bad data.
+ModalFitResult fitModesAtPoles(const std::vector<double>& frequency_hz,
+                               const std::vector<std::complex<double>>& h_m_per_n, const ModalFitSettings& settings,
+                               const std::vector<std::complex<double>>& poles, const JobControl& job = {});
+
 }  // namespace mx

@@ -1,9 +1,11 @@
 // Modal fits of synthetic receptances (modal_fit.h): LSCF + LSFD + NLLS with 0 % and 2 % noise, close
-// modes, three modes, the given number of modes, peak picking, progress, cancellation, bad settings.
+// modes, three modes, the given number of modes, peak picking, progress, cancellation, bad settings;
+// the fit at poles chosen on the stabilisation diagram.
 #include <atomic>
 
 #include "core/invalid_input.h"
 #include "modal_fit/modal_fit.h"
+#include "modal_fit/modal_pole.h"
 #include "synthetic_frf.h"
 #include "test_registry.h"
 
@@ -11,6 +13,7 @@ using namespace mx;
 using mx::test::relativeError;
 
 Q_DECLARE_METATYPE(mx::ModalAxis)
+Q_DECLARE_METATYPE(std::vector<std::complex<double>>)
 
 namespace {
 
@@ -27,6 +30,21 @@ Errors maxErrors(const ModalAxis& fitted, const ModalAxis& truth) {
     e.stiffness = std::max(e.stiffness, relativeError(fitted[r].stiffness_n_per_m, truth[r].stiffness_n_per_m));
   }
   return e;
+}
+
+// The stable pole of the diagram's highest order nearest each frequency, as a user picks them.
+std::vector<std::complex<double>> pickStablePoles(const StabilisationDiagram& diagram,
+                                                  const std::vector<double>& near_hz) {
+  std::vector<std::complex<double>> picked;
+  for (const double f : near_hz) {
+    const DiagramPole* best = nullptr;
+    for (const DiagramPole& p : diagram.orders.back().poles)
+      if (p.stability == PoleStability::Stable &&
+          (!best || std::abs(p.frequency_hz - f) < std::abs(best->frequency_hz - f)))
+        best = &p;
+    if (best) picked.push_back(best->lambda);
+  }
+  return picked;
 }
 
 }  // namespace
@@ -142,6 +160,58 @@ class TestModalFit : public QObject {
     std::atomic<bool> cancel{true};
     QVERIFY_THROWS_EXCEPTION(
         Cancelled, fitModes(frf.frequency_hz, frf.h_m_per_n, test::bandSettings(100.0, 2000.0), {&cancel, {}}));
+  }
+
+  void chosenStablePolesRecoverModes_data() {
+    QTest::addColumn<double>("noise");
+    QTest::addColumn<bool>("refine");
+    QTest::newRow("exact, refined") << 0.0 << true;
+    QTest::newRow("2 %, refined") << 0.02 << true;
+    QTest::newRow("2 %, LSFD only") << 0.02 << false;
+  }
+  void chosenStablePolesRecoverModes() {
+    QFETCH(double, noise);
+    QFETCH(bool, refine);
+    const ModalAxis truth{{600.0, 0.03, 1.5e7}, {1400.0, 0.02, 3e7}};
+    const auto frf = test::syntheticFrf(truth, 0.0, 2000.0, 2001, noise, 7);
+    auto settings = test::bandSettings(100.0, 2000.0);
+    const auto diagram = fitModes(frf.frequency_hz, frf.h_m_per_n, settings).diagram;
+    const auto poles = pickStablePoles(diagram, {600.0, 1400.0});
+    QCOMPARE(poles.size(), std::size_t{2});
+    settings.refine = refine;
+    settings.modes = 7;  // ignored, as are max_modes and the method
+    settings.method = ModalFitSettings::Method::Peak;
+    const auto fit = fitModesAtPoles(frf.frequency_hz, frf.h_m_per_n, settings, poles);
+    QCOMPARE(fit.modes.size(), std::size_t{2});
+    const Errors e = maxErrors(fit.modes, truth);
+    QCOMPARE_LE(e.frequency, 0.005);
+    QCOMPARE_LE(e.damping, 0.10);
+    QCOMPARE_LE(e.stiffness, 0.05);
+    QCOMPARE(fit.method, std::string(refine ? "chosen poles + LSFD + NLLS" : "chosen poles + LSFD"));
+    QVERIFY(fit.diagram.orders.empty());
+    QCOMPARE(fit.fitted.size(), fit.band_frequency_hz.size());
+    QCOMPARE_LE(fit.fit_error_pct, noise > 0 ? 1.1 * 100 * noise : 1e-6);
+  }
+
+  void chosenPolesRejected_data() {
+    QTest::addColumn<std::vector<std::complex<double>>>("poles");
+    QTest::addColumn<QString>("message");
+    const auto at = [](double f_hz, double zeta) { return poleOf(Mode{f_hz, zeta, 1e7}); };
+    QTest::newRow("empty") << std::vector<std::complex<double>>{} << "poles: none given";
+    QTest::newRow("above the band") << std::vector{at(900.0, 0.02), at(2500.0, 0.02)} << "pole 2 = ";
+    QTest::newRow("below the band") << std::vector{at(50.0, 0.02)} << "(50 Hz)";
+    QTest::newRow("lower half-plane") << std::vector{std::conj(at(900.0, 0.02))} << "upper half-plane";
+  }
+  void chosenPolesRejected() {
+    QFETCH(std::vector<std::complex<double>>, poles);
+    QFETCH(QString, message);
+    const auto frf = test::syntheticFrf({{900.0, 0.02, 2e7}}, 0.0, 2000.0, 2001);
+    try {
+      fitModesAtPoles(frf.frequency_hz, frf.h_m_per_n, test::bandSettings(100.0, 2000.0), poles);
+      QFAIL("no exception");
+    } catch (const InvalidInput& e) {
+      QVERIFY2(QString(e.what()).contains(message), e.what());
+    }
   }
 
   void badSettingsThrow_data() {
