@@ -2,7 +2,9 @@
 // every constraint independently, and the constraint that empties Q.
 #include <cmath>
 
+#include "core/invalid_input.h"
 #include "expert/admissible_grid.h"
+#include "expert/candidate_speeds.h"
 #include "expert_fixtures.h"
 #include "model/cutting_force.h"
 #include "test_registry.h"
@@ -38,6 +40,26 @@ class TestAdmissibleGrid : public QObject {
     // at 5800 rpm the power limit b s_t <= 0.1364 mm^2 bounds the feeds
     const double bs_limit = 745.3 / peakPowerPerDepthFeed(g.setup(), 5800.0 / 60.0);
     QCOMPARE_LE(std::abs(bs_limit * 1e6 - 0.13635), 0.0005);
+  }
+
+  // R1 by its measured FRFs only (1 Hz lines, no modes), dynamics = Measured, delta = 0: the same b_min
+  // within 1 %, and the Rule 7.2 speeds come from the FRFs' peak lines.
+  void measuredFrfGrid() {
+    MillingSetup r1 = test::rubioR1();
+    r1.measured_x = test::sampledAxis(r1.modes_x, 0.0, 4000.0, 1.0);
+    r1.measured_y = test::sampledAxis(r1.modes_y, 0.0, 4000.0, 1.0);
+    r1.modes_x.clear();
+    r1.modes_y.clear();
+    ExpertSettings s = test::rubioExpertSettings();
+    s.stability.delta_per_s = 0.0;
+    s.stability.dynamics = DynamicsSource::Measured;
+    const AdmissibleGrid g(r1, s);
+    QCOMPARE_LE(std::abs(g.minimumBorderDepth() * 1e3 / (0.95 * 0.7597) - 1.0), 0.01);
+    QVERIFY(!g.empty());
+    QCOMPARE(g.speeds(), rankingSpeeds(r1, s.grid));
+    QCOMPARE(static_cast<int>(g.speeds().size()), 6 + 27);  // 13 + 14 speeds 60 f / (3 k) in [800, 6000] rpm
+    s.stability.method = StabilityMethod::SemiDiscretization;
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, AdmissibleGrid(r1, s));
   }
 
   void emptiedBy_data() {

@@ -43,6 +43,34 @@ class TestCandidateSpeeds : public QObject {
     QVERIFY(n.back() * 60.0 <= 6000.0 + 1e-9);
   }
 
+  // No modes: the |H| peak line of each measured FRF stands for f_n. |H| of one mode peaks at
+  // f_n sqrt(1 - 2 zeta^2): 602.08 and 665.18 Hz, the lines 602 and 665 Hz.
+  void measuredPeaksWithoutModes() {
+    const MillingSetup r1 = test::rubioR1();
+    MillingSetup measured = r1;
+    measured.measured_x = test::sampledAxis(r1.modes_x, 0.0, 2000.0, 1.0);
+    measured.measured_y = test::sampledAxis(r1.modes_y, 0.0, 2000.0, 1.0);
+    measured.modes_x.clear();
+    measured.modes_y.clear();
+    const std::vector<double> n = modalCandidateSpeeds(measured, 3000.0 / 60.0, 7000.0 / 60.0);
+    const std::vector<double> expected{3010, 3325, 12040.0 / 3, 13300.0 / 3, 6020, 6650};
+    QCOMPARE(n.size(), expected.size());
+    for (std::size_t i = 0; i < n.size(); ++i) QCOMPARE_LE(std::abs(n[i] * 60.0 - expected[i]), 1e-9);
+    // Modes on one axis: they alone give the candidates (measured y without modes is skipped).
+    MillingSetup mixed = r1;
+    mixed.measured_y = measured.measured_y;
+    mixed.modes_y.clear();
+    const std::vector<double> x_only = modalCandidateSpeeds(mixed, 3000.0 / 60.0, 7000.0 / 60.0);
+    const std::vector<double> expected_x{3015, 4020, 6030};
+    QCOMPARE(x_only.size(), expected_x.size());
+    for (std::size_t i = 0; i < x_only.size(); ++i) QCOMPARE_LE(std::abs(x_only[i] * 60.0 - expected_x[i]), 1e-9);
+    // Rigid on both axes: only the regular grid.
+    MillingSetup rigid = measured;
+    rigid.measured_x.reset();
+    rigid.measured_y.reset();
+    QVERIFY(modalCandidateSpeeds(rigid, 3000.0 / 60.0, 7000.0 / 60.0).empty());
+  }
+
   void refusesBadGrid() {
     ExpertGrid g;
     g.speed_step_rev_per_s = 0.0;
