@@ -159,17 +159,33 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
   double max_depth = 0.0, highest_minimum = 0.0;
   for (int i = 0; i < series.size(); ++i) {
     const ToolLobeSeries& s = series[i];
+    const QString dynamics = s.dynamics.isEmpty() ? QString() : QString(", %1").arg(s.dynamics);
     QCPGraph* nominal = plot_->addGraph();
-    nominal->setName(QString("%1 nominal (\u03b4 = 0, \u03b1 = 1)").arg(s.tool_id));
+    nominal->setName(QString("%1 nominal%2 (\u03b4 = 0, \u03b1 = 1)").arg(s.tool_id, dynamics));
     nominal->setPen(QPen(toolColor(i), 2.0));
     nominal->setData(s.speed_rpm, scaled(s.nominal_mm), true);
     QCPGraph* margined = plot_->addGraph();
-    margined->setName(QString("%1 margined (\u03b4 = %2 1/s, \u03b1 = %3)").arg(s.tool_id).arg(delta_per_s).arg(alpha));
+    margined->setName(s.margin_needs_modes
+                          ? QString("%1 margined%2 (\u03b4 = 0: \u03b4 > 0 needs fitted modes, \u03b1 = %3)")
+                                .arg(s.tool_id, dynamics)
+                                .arg(alpha)
+                          : QString("%1 margined%2 (\u03b4 = %3 1/s, \u03b1 = %4)")
+                                .arg(s.tool_id, dynamics)
+                                .arg(delta_per_s)
+                                .arg(alpha));
     margined->setPen(QPen(toolColor(i), 1.5, Qt::DashLine));
     margined->setData(s.speed_rpm, scaled(s.margined_mm), true);
-    tool_graphs_.push_back({nominal, margined});
+    QVector<QCPGraph*> graphs{nominal, margined};
+    if (!s.measured_mm.isEmpty()) {
+      QCPGraph* measured = plot_->addGraph();
+      measured->setName(QString("%1 measured FRF (ZOA, \u03b4 = 0, \u03b1 = 1)").arg(s.tool_id));
+      measured->setPen(QPen(toolColor(i).darker(140), 1.5, Qt::DotLine));
+      measured->setData(s.speed_rpm, scaled(s.measured_mm), true);
+      graphs.push_back(measured);
+    }
+    tool_graphs_.push_back(graphs);
     const bool visible = !hidden_.contains(s.tool_id);
-    for (QCPGraph* g : {nominal, margined}) {
+    for (QCPGraph* g : graphs) {
       g->setVisible(visible);
       if (!visible) g->removeFromLegend();
     }
@@ -210,7 +226,7 @@ void LobeChartView::setToolVisible(const QString& tool_id, bool visible) {
     hidden_.insert(tool_id);
   for (int i = 0; i < series_.size() && i < tool_graphs_.size(); ++i) {
     if (series_[i].tool_id != tool_id) continue;
-    for (QCPGraph* g : {tool_graphs_[i].first, tool_graphs_[i].second}) {
+    for (QCPGraph* g : tool_graphs_[i]) {
       g->setVisible(visible);
       if (visible)
         g->addToLegend();

@@ -26,9 +26,12 @@ class CostMapLayer;
 
 struct ToolLobeSeries {
   QString tool_id;
+  QString dynamics;  // what the lobes ran on, e.g. "fitted modes (SDM)", "measured FRF (ZOA)"; "" = modes
   QVector<double> speed_rpm;
-  QVector<double> nominal_mm;   // delta = 0, alpha = 1; NaN where none below the cap
-  QVector<double> margined_mm;  // alpha * delta-lobes (Rule 1); NaN where none below the cap
+  QVector<double> nominal_mm;       // delta = 0, alpha = 1; NaN where none below the cap
+  QVector<double> margined_mm;      // alpha * delta-lobes (Rule 1); NaN where none below the cap
+  QVector<double> measured_mm;      // ZOA on the tap-test FRF beside modal lobes (delta = 0); empty: none
+  bool margin_needs_modes = false;  // measured lobes only: delta > 0 could not be applied
 };
 
 enum class PointVerdict { Unknown, Stable, Unstable, PowerExceeded };
@@ -100,7 +103,7 @@ class LobeChartView : public QWidget {
   QCPItemText* marker_label_ = nullptr;
   QVector<std::pair<QString, QCPAbstractItem*>> extra_markers_;  // (group, tracer or label) of q*, q**
   QVector<ToolLobeSeries> series_;
-  QVector<QPair<QCPGraph*, QCPGraph*>> tool_graphs_;  // nominal, margined per series
+  QVector<QVector<QCPGraph*>> tool_graphs_;  // nominal, margined (, measured FRF) per series
   QSet<QString> hidden_;
   QVector<double> power_mm_;
   int active_ = -1;

@@ -141,6 +141,14 @@ QString TapTestPanel::currentDirection() const {
   return direction_->currentText();
 }
 
+void TapTestPanel::setCurrentDirection(const QString& direction) {
+  direction_->setCurrentText(direction);
+}
+
+void TapTestPanel::requestFit() {
+  if (fit_->isEnabled()) fit_->click();
+}
+
 TapTestFitRequest TapTestPanel::formRequest() const {
   TapTestFitRequest request;
   request.direction = currentDirection();

@@ -52,6 +52,8 @@ class TapTestPanel : public QWidget {
   void setProgress(double fraction);
   void setMessage(const QString& text);
   QString currentDirection() const;
+  void setCurrentDirection(const QString& direction);  // "x" or "y"
+  void requestFit();                                   // as the Fit button, when it is enabled
 
  signals:
   // The Fit button (no poles), and a changed non-empty diagram selection (its poles).

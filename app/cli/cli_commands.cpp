@@ -22,6 +22,7 @@ const CliCommand* findCommand(const QString& name) {
       {"override", "optimise the feeds of a G-code program with a force controller", &runOverrideCommand},
       {"frf-info", "the FRF datasets of a tap-test file (UFF 58/58b, CSV)", &runFrfInfoCommand},
       {"frf-fit", "modes fitted to one FRF of a tap-test file (LSCF or peak picking)", &runFrfFitCommand},
+      {"frf-export", "a tool's FRF from its modes or tap test, written as UFF 58/58b or CSV", &runFrfExportCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

@@ -27,5 +27,6 @@ int runOverrideCommand(const QStringList& arguments);
 int runSuperviseCommand(const QStringList& arguments);
 int runFrfInfoCommand(const QStringList& arguments);
 int runFrfFitCommand(const QStringList& arguments);
+int runFrfExportCommand(const QStringList& arguments);
 
 }  // namespace mx::app

@@ -1,12 +1,15 @@
 // millexpert-cli lobes PROJECT --tool ID [--method zoa|sdm] [--from RPM --to RPM --step RPM]
-//                  [--delta V] [--alpha V] [--steps M] [--max-depth MM]
-// Prints {"tool","method","speed_rpm":[...],"blim_mm":[...]}: alpha times the delta-margined lower
-// envelope (Rule 1), null where no instability lies below --max-depth.
+//                  [--delta V] [--alpha V] [--steps M] [--max-depth MM] [--dynamics modal|measured]
+// Prints {"tool","method","dynamics_used","speed_rpm":[...],"blim_mm":[...]}: alpha times the
+// delta-margined lower envelope (Rule 1), null where no instability lies below --max-depth. With
+// measured dynamics the ZOA runs on the tap-test FRF; delta > 0 or sdm use the fitted modes
+// (services/measured_dynamics.h), and stderr says so.
 #include <QJsonArray>
 #include <cmath>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/lobe_inputs.h"
 #include "document/project.h"
@@ -26,6 +29,7 @@ struct LobesRequest {
   double alpha = 1.0;
   int steps = 40;
   double max_depth_m = 0.02;
+  std::optional<DynamicsSource> dynamics;
 };
 
 LobesRequest readRequest(const QCommandLineParser& parser, const Project& project) {
@@ -48,6 +52,7 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(inputs.alpha);
   r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
   r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
+  r.dynamics = dynamicsOption(parser);
   return r;
 }
 
@@ -67,21 +72,25 @@ int runLobesCommand(const QStringList& arguments) {
       {"alpha", "Depth factor alpha in (0, 1] (Rule 1.2); default: the project's.", "V"},
       {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
       {"max-depth", "Depth cap [mm]: null where no instability below it (default 20).", "MM"},
+      dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
   const Project project = loadProject(path);
   const LobesRequest request = readRequest(parser, project);
-  const MillingSetup setup = project.setupFor(request.tool);
+  const StabilityMethod method =
+      request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  const DynamicsChoice dynamics =
+      chooseDynamics(requireTool(project, request.tool), request.dynamics, request.delta_per_s, method);
+  reportDynamicsNote(dynamics, request.tool);
+  const MillingSetup setup = dynamicsSetupFor(project, request.tool, dynamics.used);
   // The grid in rpm as the user gave it (exact values in the output), converted once to SI.
   const std::vector<double> speeds = request.grid.values();
   std::vector<double> rpm_values;
   for (size_t i = 0; i < speeds.size(); ++i)
     rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
 
-  const StabilityMethod method =
-      request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
   const LobeDiagram diagram =
-      computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps});
+      computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps, dynamics.used});
 
   QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
   for (size_t i = 0; i < speeds.size(); ++i) {
@@ -96,6 +105,7 @@ int runLobesCommand(const QStringList& arguments) {
                               {"chatter_frequency_Hz", m.chatter_hz}});
   printJson({{"tool", request.tool},
              {"method", request.method},
+             {"dynamics_used", dynamicsName(dynamics.used)},
              {"delta_per_s", request.delta_per_s},
              {"alpha", request.alpha},
              {"speed_rpm", speed_rpm},

@@ -3,6 +3,7 @@
 // the project's pareto.tool, Rule 9 normalisation, J = sum w_i n_i (Rule 8 weights), Rule 10.1 coarse
 // selection, Rule 10.2 fine search (--fine), Rule 11 requirement bounds (--require, modifies the MRR
 // weight, Rule 13 variant 2), Rule 12 gradient ascent on the weights (--auto-weights; Rule 13 variant 1).
+// --dynamics modal|measured: the lobes of Q on the tool's modes or its tap-test FRF ("dynamics_used").
 // Prints {"q", "feed_velocity_mm_s", "mrr_cm3_s", "tol", "surf", "ros", "eta", "power_W", "weights",
 //   "pareto_set": [{"q", "tol", "mrr_cm3_s", "surf", "ros"}...]} plus "j", "coarse_j", "points",
 //   "requirement" ({"key","lo","hi","satisfied"}, with --require) and "ascent" (with --auto-weights).
@@ -35,6 +36,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "expert/admissible_grid.h"
@@ -99,6 +101,7 @@ int runParetoCommand(const QStringList& arguments) {
       {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
       {"chatter-hz", "Module VI: the operator reports chatter at F Hz at q (implies --feedback; Rule 16).", "F"},
       {"front-limit", "At most N points in pareto_set, the best J first (default 2000; 0: all).", "N"},
+      dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
   std::optional<ParetoWeights> w_flag;
@@ -106,7 +109,10 @@ int runParetoCommand(const QStringList& arguments) {
   std::optional<ObjectiveRequirement> requirement;
   if (parser.isSet("require")) requirement = parseRequirement(parser.value("require"));
 
-  const ParetoStudy study(loadProject(path));
+  const std::optional<DynamicsSource> dynamics = dynamicsOption(parser);
+  const ParetoStudy study(loadProject(path), dynamics);
+  reportDynamicsNote(study.dynamics(), study.request().tool);
+  requireFittedModes(study.tool(), "the time-domain simulation of q (eta)");
   const ExpertRequest& expert = study.expert();
   const ParetoRequest& request = study.request();
   const MillingSetup& setup = study.setup();
@@ -233,6 +239,7 @@ int runParetoCommand(const QStringList& arguments) {
   out.insert("j", chosen.j);
   out.insert("coarse_j", coarse_j);
   out.insert("tool", request.tool);
+  out.insert("dynamics_used", dynamicsName(study.dynamics().used));
   out.insert("points", static_cast<qint64>(table.size()));
   out.insert("pareto_set", front);
   printJson(out);

@@ -1,14 +1,16 @@
 // millexpert-cli point PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH [--method zoa|sdm]
-//                   [--delta V] [--alpha V] [--steps M]
+//                   [--delta V] [--alpha V] [--steps M] [--dynamics modal|measured]
 // Everything the lobe chart shows for one operating point: b_lim at the speed (alpha * delta-lobes,
 // Rule 1), the stability verdict, Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
-// torque and MRR (Pareto eq. 8).
+// torque and MRR (Pareto eq. 8); "dynamics_used" says whether the lobes ran on the tap-test FRF
+// (services/measured_dynamics.h).
 #include <QJsonArray>
 #include <algorithm>
 #include <cmath>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "model/cutting_force.h"
@@ -27,6 +29,7 @@ int runPointCommand(const QStringList& arguments) {
       {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
       {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
+      dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
   const CutPointFlags cut = readCutPoint(parser);
@@ -36,13 +39,18 @@ int runPointCommand(const QStringList& arguments) {
   if (method != "zoa" && method != "sdm")
     throw CliError(QString("--method = '%1': must be zoa or sdm").arg(method), kExitBadInput);
 
+  const std::optional<DynamicsSource> requested = dynamicsOption(parser);
   const Project project = loadProject(path);
-  const MillingSetup setup = project.setupFor(tool);
   double delta = project.expert ? project.expert->delta_per_s : 0.0;
   double alpha = project.expert ? project.expert->alpha : 1.0;
   delta = numberOption(parser, "delta", 0.0, 1e6).value_or(delta);
   alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(alpha);
   const int steps = integerOption(parser, "steps", 4, 2000).value_or(40);
+  const StabilityMethod stability_method =
+      method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  const DynamicsChoice dynamics = chooseDynamics(requireTool(project, tool), requested, delta, stability_method);
+  reportDynamicsNote(dynamics, tool);
+  const MillingSetup setup = dynamicsSetupFor(project, tool, dynamics.used);
 
   // The lobes over the project's speed range (or +-50 % around the point), 10 rpm apart.
   double from = speed_rpm * 0.5, to = speed_rpm * 1.5;
@@ -52,7 +60,8 @@ int runPointCommand(const QStringList& arguments) {
   }
   const std::vector<double> speeds = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(10.0)}.values();
   LobeSettings lobe_settings;
-  lobe_settings.method = method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
+  lobe_settings.method = stability_method;
+  lobe_settings.dynamics = dynamics.used;
   lobe_settings.delta_per_s = delta;
   lobe_settings.sdm_steps_per_period = steps;
   const LobeDiagram diagram = computeLobes(setup, speeds, lobe_settings);
@@ -65,6 +74,7 @@ int runPointCommand(const QStringList& arguments) {
 
   QJsonObject out{{"tool", tool},
                   {"method", method},
+                  {"dynamics_used", dynamicsName(dynamics.used)},
                   {"speed_rpm", speed_rpm},
                   {"depth_mm", depth_mm},
                   {"feed_per_tooth_mm", feed_mm},

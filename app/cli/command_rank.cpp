@@ -1,10 +1,12 @@
 // millexpert-cli rank PROJECT [--c c1,c2,c3] [--cr c1r,c2r,c3r] [--no-simulation] [--method zoa|sdm]
+//                 [--dynamics modal|measured]
 // The 2006 expert system (section 3): Rule 4 tool ranking by minimum tool cost (eq. 13), q* of the
 // selected tool, Rule 5 q** by C_resultant (eq. 18-20) from time-domain simulations of the best K
 // points, Rule 6 malfunction loop. Prints
 //   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
 //    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
-//    "c" (the weights after Rule 6), "method", "excluded": [{"tool","reason"}...]}.
+//    "c" (the weights after Rule 6), "method", "dynamics_used": {tool: "modal"|"measured"},
+//    "excluded": [{"tool","reason"}...]}. Tools with a tap test use it with --dynamics measured.
 // Module VII operator rules (Rule 18, docs/operator-rules.md), when the project has "operator_rules":
 //   each tool's rules are evaluated in its own context; fired constraints on the point variables
 //   restrict that tool's points (a tool left without points is "excluded" with the reason "operator
@@ -16,6 +18,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "expert/expert_session.h"
@@ -60,6 +63,7 @@ int runRankCommand(const QStringList& arguments) {
       {"cr", "Resultant-cost weights c1r,c2r,c3r (C, C_t, C_f); sum 1. Default: the project's.", "C1R,C2R,C3R"},
       {"no-simulation", "Rule 4 only: no time-domain refinement (q_star_star null, no Rule 6)."},
       {"method", "Lobes: zoa (default) or sdm; default: the project's expert.method.", "METHOD"},
+      dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
   std::optional<std::vector<double>> c, cr;
@@ -68,9 +72,15 @@ int runRankCommand(const QStringList& arguments) {
   const Project project = loadProject(path);
   ExpertRequest request = expertRequestFromProject(project);
   applyMethodOption(parser, request.settings);
+  const bool simulate = !parser.isSet("no-simulation");
+  const std::vector<DynamicsChoice> dynamics = applyExpertDynamics(project, request, dynamicsOption(parser), simulate);
+  QJsonObject dynamics_used;
+  for (qsizetype i = 0; i < request.tool_ids.size(); ++i) {
+    reportDynamicsNote(dynamics[static_cast<std::size_t>(i)], request.tool_ids[i]);
+    dynamics_used.insert(request.tool_ids[i], dynamicsName(dynamics[static_cast<std::size_t>(i)].used));
+  }
   if (c) std::copy(c->begin(), c->end(), request.weights.c.begin());
   if (cr) std::copy(cr->begin(), cr->end(), request.weights.cr.begin());
-  const bool simulate = !parser.isSet("no-simulation");
 
   // Operator rules: one evaluation per tool (its own context).
   const QStringList ruleTexts = operatorRulesFromProject(project);
@@ -125,6 +135,7 @@ int runRankCommand(const QStringList& arguments) {
       {"malfunction_iterations", result.malfunction_iterations},
       {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
       {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
+      {"dynamics_used", dynamics_used},
       {"excluded", excluded}};
   if (!toolRules.empty()) {
     QJsonObject rules =

@@ -8,6 +8,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "simulation/simulation.h"
@@ -51,6 +52,7 @@ int runSimulateCommand(const QStringList& arguments) {
   options.regenerative_passes = integerOption(parser, "passes", 1, kMaxRegenerativePasses).value_or(1);
 
   const Project project = loadProject(path);
+  requireFittedModes(requireTool(project, tool), "the time-domain simulation");
   const MillingSetup setup = project.setupFor(tool);
   const OperatingPoint point{rpmToRevPerS(speed_rpm), depth_mm * 1e-3, feed_mm * 1e-3};
   if (parser.isSet("csv")) options.record_every = 1;

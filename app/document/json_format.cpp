@@ -36,7 +36,12 @@ const QStringList& keyOrder() {
                                  "Kt_N_mm2",
                                  "Kr",
                                  "modes_x",
-                                 "modes_y",  // tool
+                                 "modes_y",
+                                 "frf_x",
+                                 "frf_y",  // tool
+                                 "file",
+                                 "dataset",
+                                 "quantity",  // FRF reference
                                  "freq_Hz",
                                  "damping_pct",
                                  "stiffness_N_per_um",  // mode

@@ -29,6 +29,17 @@ struct ModeSpec {
   bool operator==(const ModeSpec&) const = default;
 };
 
+// A tap-test FRF of one tool axis (docs/measured-dynamics.md): dataset `dataset` (0-based, among the
+// file's FRF datasets) of `file`, a UFF 58/58b or CSV file.
+struct FrfRefSpec {
+  QString file;                     // as written: relative to the project file's folder, or absolute
+  std::optional<int> dataset;       // default 0
+  std::optional<QString> quantity;  // "receptance", "mobility", "accelerance"; required for CSV
+  QJsonObject unknown;
+  int datasetIndex() const { return dataset.value_or(0); }
+  bool operator==(const FrfRefSpec&) const = default;
+};
+
 struct ToolSpec {
   QString id;
   int teeth = 0;
@@ -39,7 +50,10 @@ struct ToolSpec {
   std::optional<double> radial_depth_mm;  // overrides the operation's radial engagement
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
+  std::optional<FrfRefSpec> frf_x;  // measured dynamics; an axis may have modes, an FRF or both
+  std::optional<FrfRefSpec> frf_y;
   QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
+  bool hasFrf() const { return frf_x.has_value() || frf_y.has_value(); }
   bool operator==(const ToolSpec&) const = default;
 };
 
@@ -107,6 +121,9 @@ struct Project {
   // arrays (tools, modes, depth steps, events, chart steps and transitions keep theirs in their
   // structs, so that they follow their element on reorder).
   QJsonObject document;
+  // The absolute folder that relative FRF paths resolve against (the project file's folder; the
+  // working directory when empty). Not written: saving to another folder rewrites the paths instead.
+  QString folder;
 
   const ToolSpec* findTool(const QString& id) const;  // nullptr when absent
   // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
@@ -119,13 +136,15 @@ struct Project {
 // Parse and validate; throws ProjectError whose message names the field path, the value and the
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
 Project projectFromJson(const QJsonObject& root);
+// loadProject sets folder to the file's folder.
 Project loadProject(const QString& path);
 // The tools of a tool library: a JSON array of tools, or an object with a "tools" array (a project
 // file). Throws ProjectError on a syntax error or naming the field path, as projectFromJson does.
 std::vector<ToolSpec> toolsFromJson(const QByteArray& text);
 // Back to JSON: the typed values, written over the unknown keys of each object.
 QJsonObject projectToJson(const Project& project);
-// Atomic save (QSaveFile: write, then rename). Throws ProjectError on I/O failure.
+// Atomic save (QSaveFile: write, then rename). Relative FRF paths are written relative to the new
+// file's folder (withFrfPathsRelativeTo). Throws ProjectError on I/O failure.
 void saveProject(const Project& project, const QString& path);
 
 }  // namespace mx::app

@@ -5,6 +5,7 @@
 #include <QStandardPaths>
 #include <QUndoCommand>
 
+#include "document/frf_paths.h"
 #include "document/project_validation.h"
 
 namespace mx::app {
@@ -153,6 +154,8 @@ void ProjectDocument::save(const QString& path) {
   if (target.isEmpty()) throw ProjectError(tr("no file name to save to"));
   saveProject(project_, target);
   QFile::remove(autosavePath());
+  // The same files, now named from the new folder; the meaning is unchanged, so no undo step or signal.
+  project_ = withFrfPathsRelativeTo(project_, QFileInfo(target).absolutePath());
   if (target != path_) {
     path_ = target;
     emit filePathChanged(path_);

@@ -1,9 +1,11 @@
 // Project files on disk: loadProject (read, parse, validate) and saveProject (atomic QSaveFile).
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QSaveFile>
 #include <algorithm>
 
+#include "document/frf_paths.h"
 #include "document/json_format.h"
 #include "document/project.h"
 
@@ -39,14 +41,17 @@ Project loadProject(const QString& path) {
     throw ProjectError(QString("%1: the top level must be a JSON object, got %2")
                            .arg(path, document.isArray() ? "an array" : "nothing"));
   try {
-    return projectFromJson(document.object());
+    Project project = projectFromJson(document.object());
+    project.folder = QFileInfo(path).absolutePath();
+    return project;
   } catch (const ProjectError& e) {
     throw ProjectError(QString("%1: %2").arg(path, QString::fromStdString(e.what())));
   }
 }
 
 void saveProject(const Project& project, const QString& path) {
-  const QByteArray text = formatProjectJson(projectToJson(project));
+  const QString folder = QFileInfo(path).absolutePath();
+  const QByteArray text = formatProjectJson(projectToJson(withFrfPathsRelativeTo(project, folder)));
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly))
     throw ProjectError(QString("%1: cannot write project file: %2").arg(path, file.errorString()));

@@ -89,6 +89,25 @@ std::vector<ModeSpec> readModes(const ObjectReader& tool, const QString& key) {
   return modes;
 }
 
+// modes_x may be left out when frf_x gives the axis's dynamics.
+std::vector<ModeSpec> readAxisModes(const ObjectReader& tool, const QString& key, bool has_frf) {
+  if (tool.has(key)) return readModes(tool, key);
+  if (has_frf) return {};
+  throwMissing(tool.pathOf(key),
+               QString("array of modes, [] for a rigid axis; or a tap-test FRF as frf_%1 instead").arg(key.right(1)));
+}
+
+std::optional<FrfRefSpec> readFrfRef(const ObjectReader& tool, const QString& key) {
+  const std::optional<ObjectReader> r = tool.optionalObject(key);
+  if (!r) return std::nullopt;
+  FrfRefSpec ref;
+  ref.file = r->string("file");
+  if (r->has("dataset")) ref.dataset = r->integer("dataset", rules::kCountAtLeastZero);
+  ref.quantity = r->optionalString("quantity");
+  ref.unknown = withoutKeys(r->object(), {"file", "dataset", "quantity"});
+  return ref;
+}
+
 ToolSpec readTool(const ObjectReader& r) {
   ToolSpec t;
   t.id = r.string("id");
@@ -98,10 +117,12 @@ ToolSpec readTool(const ObjectReader& r) {
   t.Kt_N_mm2 = r.optionalNumber("Kt_N_mm2");
   t.Kr = r.optionalNumber("Kr");
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
-  t.modes_x = readModes(r, "modes_x");
-  t.modes_y = readModes(r, "modes_y");
+  t.frf_x = readFrfRef(r, "frf_x");
+  t.frf_y = readFrfRef(r, "frf_y");
+  t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
+  t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
   t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm",
-                                       "modes_x", "modes_y"});
+                                       "modes_x", "modes_y", "frf_x", "frf_y"});
   return t;
 }
 

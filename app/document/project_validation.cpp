@@ -1,6 +1,7 @@
 #include "document/project_validation.h"
 
 #include <QHash>
+#include <QStringList>
 
 #include "document/project_rules.h"
 #include "document/project_sections_io.h"
@@ -47,6 +48,17 @@ void validateModes(const QString& path, const std::vector<ModeSpec>& modes) {
   }
 }
 
+void validateFrfRef(const QString& path, const std::optional<FrfRefSpec>& ref) {
+  if (!ref) return;
+  if (ref->file.trimmed().isEmpty())
+    throw ProjectError(QString("%1.file = %2: must name a UFF 58/58b or CSV file").arg(path, formatValue(ref->file)));
+  if (ref->dataset) checkNumber(path + ".dataset", *ref->dataset, rules::kCountAtLeastZero);
+  static const QStringList kQuantities{"receptance", "mobility", "accelerance"};
+  if (ref->quantity && !kQuantities.contains(*ref->quantity))
+    throw ProjectError(QString("%1.quantity = %2: must be \"receptance\", \"mobility\" or \"accelerance\"")
+                           .arg(path, formatValue(*ref->quantity)));
+}
+
 void validateTool(const QString& path, const ToolSpec& t) {
   if (t.id.trimmed().isEmpty())
     throw ProjectError(QString("%1.id = %2: must be a non-empty string").arg(path, formatValue(t.id)));
@@ -57,6 +69,8 @@ void validateTool(const QString& path, const ToolSpec& t) {
   checkOptional(path + ".Kr", t.Kr, rules::kNonNegative);
   validateModes(path + ".modes_x", t.modes_x);
   validateModes(path + ".modes_y", t.modes_y);
+  validateFrfRef(path + ".frf_x", t.frf_x);
+  validateFrfRef(path + ".frf_y", t.frf_y);
 }
 
 void validateUniqueIds(const std::vector<ToolSpec>& tools) {

@@ -29,6 +29,29 @@ QJsonArray modesJson(const std::vector<ModeSpec>& modes) {
   return out;
 }
 
+QJsonObject frfRefJson(const FrfRefSpec& ref) {
+  QJsonObject o = ref.unknown;
+  o.insert("file", ref.file);
+  if (ref.dataset) o.insert("dataset", *ref.dataset);
+  if (ref.quantity) o.insert("quantity", *ref.quantity);
+  return o;
+}
+
+// An axis with an FRF and no modes keeps its modes key out, as a measured-only axis is written.
+void putAxis(QJsonObject& t, const QString& modes_key, const std::vector<ModeSpec>& modes, const QString& frf_key,
+             const std::optional<FrfRefSpec>& frf) {
+  if (frf) {
+    t.insert(frf_key, frfRefJson(*frf));
+  } else {
+    t.remove(frf_key);
+  }
+  if (modes.empty() && frf) {
+    t.remove(modes_key);
+  } else {
+    t.insert(modes_key, modesJson(modes));
+  }
+}
+
 QJsonObject toolJson(const ToolSpec& tool) {
   QJsonObject t = tool.unknown;
   t.insert("id", tool.id);
@@ -38,8 +61,8 @@ QJsonObject toolJson(const ToolSpec& tool) {
   putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
   putOptional(t, "Kr", tool.Kr);
   putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
-  t.insert("modes_x", modesJson(tool.modes_x));
-  t.insert("modes_y", modesJson(tool.modes_y));
+  putAxis(t, "modes_x", tool.modes_x, "frf_x", tool.frf_x);
+  putAxis(t, "modes_y", tool.modes_y, "frf_y", tool.frf_y);
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 
+#include "document/frf_paths.h"
 #include "expert_overlays.h"
 #include "expert_runner.h"
 #include "feature_dock.h"
@@ -130,8 +131,11 @@ void ExpertFeature::rebuild() {
     return;
   }
   try {
-    app::ExpertRequest request = app::expertRequestFromProject(p);
-    runner_->build(std::move(request.tools), request.settings, request.tool_ids);
+    // The cheap checks here, for a status message; the request itself, with the tools' FRF files, is
+    // made on the engine thread.
+    app::expertRequestFromProject(p);
+    for (const app::ToolSpec& t : p.tools) app::requireFittedModes(t, tr("the Rule 5 refinement (simulation)"));
+    runner_->build(app::withAbsoluteFrfPaths(p));
   } catch (const std::exception& e) {
     ranking_table_->setRanking({}, {});
     emit statusMessage(tr("Expert system unavailable: %1").arg(e.what()), 10000);

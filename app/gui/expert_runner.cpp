@@ -1,5 +1,7 @@
 #include "expert_runner.h"
 
+#include "services/expert_request.h"
+
 namespace mx::gui {
 
 ExpertRunner::ExpertRunner(QThreadPool* engine_pool, QObject* parent)
@@ -17,32 +19,45 @@ void ExpertRunner::stopped() {
 
 quint64 ExpertRunner::build(std::vector<MillingSetup> tools, const ExpertSettings& settings,
                             const QStringList& tool_ids) {
+  auto request = std::make_shared<Request>(Request{std::move(tools), settings, tool_ids});
+  return startBuild([request] { return std::move(*request); });
+}
+
+quint64 ExpertRunner::build(const app::Project& project) {
+  return startBuild([project] {
+    app::ExpertRequest request = app::expertRequestFromProject(project);
+    app::applyExpertDynamics(project, request, std::nullopt, true);
+    return Request{std::move(request.tools), request.settings, request.tool_ids};
+  });
+}
+
+quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
   const quint64 generation = ++build_generation_;
   ++refine_generation_;  // refinements of the old session are stale
   started();
-  channel_.start(pool_,
-                 [this, tools = std::move(tools), settings, tool_ids, generation](const EngineReply& reply) mutable {
-                   ExpertOutcome outcome;
-                   outcome.generation = generation;
-                   outcome.tool_ids = tool_ids;
-                   try {
-                     outcome.session = std::make_shared<ExpertSession>(std::move(tools), settings);
-                     if (outcome.session->empty()) {
-                       outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
-                                                              outcome.session->emptyReason());
-                     }
-                   } catch (const std::exception& e) {
-                     outcome.session.reset();
-                     outcome.error = QString::fromStdString(e.what());
-                   }
-                   reply([this, outcome = std::move(outcome)] {
-                     stopped();
-                     if (outcome.generation != build_generation_) return;  // stale
-                     session_ = outcome.session;
-                     tool_ids_ = outcome.tool_ids;
-                     emit sessionReady(outcome.error);
-                   });
-                 });
+  channel_.start(pool_, [this, make_request = std::move(make_request), generation](const EngineReply& reply) {
+    ExpertOutcome outcome;
+    outcome.generation = generation;
+    try {
+      Request request = make_request();
+      outcome.tool_ids = request.tool_ids;
+      outcome.session = std::make_shared<ExpertSession>(std::move(request.tools), request.settings);
+      if (outcome.session->empty()) {
+        outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
+                                               outcome.session->emptyReason());
+      }
+    } catch (const std::exception& e) {
+      outcome.session.reset();
+      outcome.error = QString::fromStdString(e.what());
+    }
+    reply([this, outcome = std::move(outcome)] {
+      stopped();
+      if (outcome.generation != build_generation_) return;  // stale
+      session_ = outcome.session;
+      tool_ids_ = outcome.tool_ids;
+      emit sessionReady(outcome.error);
+    });
+  });
   return generation;
 }
 

@@ -7,9 +7,11 @@
 #include <QStringList>
 #include <QThreadPool>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 
+#include "document/project.h"
 #include "engine_channel.h"
 #include "expert/expert_session.h"
 
@@ -36,6 +38,9 @@ class ExpertRunner : public QObject {
   // Builds a session for these tools and settings on the engine thread (cancels nothing: the
   // session build is not interruptible, but a stale result is dropped).
   quint64 build(std::vector<MillingSetup> tools, const ExpertSettings& settings, const QStringList& tool_ids);
+  // The same from a project snapshot: its expert request, with the tools' tap-test FRFs (read on the
+  // engine thread; `project` names them by absolute path), is made on the engine thread.
+  quint64 build(const app::Project& project);
   // Rules 4-6 with simulations for the current session and weights, on the engine thread.
   quint64 refine(const CostWeights& weights);
 
@@ -50,6 +55,12 @@ class ExpertRunner : public QObject {
   void busyChanged(bool busy);
 
  private:
+  struct Request {
+    std::vector<MillingSetup> tools;
+    ExpertSettings settings;
+    QStringList tool_ids;
+  };
+  quint64 startBuild(std::function<Request()> make_request);
   void started();
   void stopped();
 

@@ -26,6 +26,7 @@ const std::pair<Feature, app::ProjectChanges> kInputs[] = {
     {Feature::PartProgram, kCut | S::Control | S::ForceControl | S::PartProgram},
     {Feature::Supervisor, kCut | S::Supervisor},
     {Feature::FiredRules, kCut | S::Rules},
+    {Feature::TapTest, S::Tools},
 };
 
 }  // namespace

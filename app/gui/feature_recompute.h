@@ -22,6 +22,7 @@ enum class Feature : unsigned {
   PartProgram = 1u << 10,   // the override of the opened part program
   Supervisor = 1u << 11,    // the supervisor's scenario and chart, and a shown run
   FiredRules = 1u << 12,    // Rule 18 at the operating point
+  TapTest = 1u << 13,       // the active tool's tap-test FRFs in the tap-test view
 };
 Q_DECLARE_FLAGS(Features, Feature)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Features)

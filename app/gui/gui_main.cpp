@@ -17,6 +17,8 @@
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
+#include "tap_test_feature.h"
+#include "tap_test_panel.h"
 
 namespace {
 QString defaultProject() {
@@ -48,6 +50,10 @@ int main(int argc, char** argv) {
                     "CONTROLLER"});
   parser.addOption({"sdnrp", "Run the surface-finish (SDNRP) loop of the project once it is open."});
   parser.addOption({"program", "Open this G-code part program in the part-program panel.", "FILE"});
+  parser.addOption({"fit-tap-test",
+                    "Once the active tool's tap test for this direction (x or y) is shown, fit it; with "
+                    "--screenshot, the shot waits for the fit.",
+                    "DIRECTION"});
   parser.addOption({"pareto",
                     "Once the Pareto study is ready, move the operating point to the Pareto choice "
                     "and simulate it."});
@@ -64,6 +70,20 @@ int main(int argc, char** argv) {
   auto* pareto_feature = window.findChild<mx::gui::ParetoFeature*>("paretoFeature");
   auto* supervisor = window.findChild<mx::gui::SupervisorFeature*>("supervisorFeature");
   auto* machining = window.findChild<mx::gui::MachiningFeature*>("machiningFeature");
+  auto* tap_test = window.findChild<mx::gui::TapTestFeature*>("tapTestFeature");
+  const QString fit_direction = parser.value("fit-tap-test");
+  if (!fit_direction.isEmpty() && fit_direction != "x" && fit_direction != "y") {
+    QTextStream(stderr) << "millexpert: --fit-tap-test = '" << fit_direction << "': must be x or y\n";
+    return 2;
+  }
+  if (!fit_direction.isEmpty()) {
+    QObject::connect(tap_test, &mx::gui::TapTestFeature::measurementShown, &window,
+                     [tap_test, fit_direction](const QString& direction) {
+                       if (direction != fit_direction) return;
+                       tap_test->panel()->setCurrentDirection(direction);
+                       tap_test->panel()->requestFit();
+                     });
+  }
   if (parser.isSet("point")) {
     const QStringList parts = parser.value("point").split(',');
     bool ok_n = false, ok_b = false, ok_f = true;
@@ -117,9 +137,10 @@ int main(int argc, char** argv) {
       });
     };
     if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
+    if (!fit_direction.isEmpty()) QObject::connect(tap_test, &mx::gui::TapTestFeature::fitShown, &window, shoot);
     QObject::connect(simulation, &mx::gui::SimulationFeature::simulationShown, &window, [&, screenshot] {
-      if (supervise) return;                   // the supervised run decides
-      if (pareto && !moved_to_pareto) return;  // wait for the simulation of the Pareto choice
+      if (supervise || !fit_direction.isEmpty()) return;  // the supervised run or the fit decides
+      if (pareto && !moved_to_pareto) return;             // wait for the simulation of the Pareto choice
       QTimer::singleShot(300, &window, [&window, screenshot] {
         window.grab().save(screenshot);
         QApplication::quit();

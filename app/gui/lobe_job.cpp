@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/cancellation.h"
+#include "services/measured_dynamics.h"
 
 namespace mx::gui {
 
@@ -15,6 +16,12 @@ QVector<double> toMillimetres(const std::vector<double>& depth_m, double factor)
     out.push_back(std::isfinite(b) ? b * factor * 1e3 : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
+
+QString dynamicsLabel(const ToolLobes& t, LobeMethod method) {
+  if (t.measured_only) return QObject::tr("measured FRF (ZOA)");
+  const QString how = method == LobeMethod::ZeroOrder ? QObject::tr("ZOA") : QObject::tr("SDM");
+  return t.fitted_modes ? QObject::tr("fitted modes (%1)").arg(how) : QObject::tr("modes (%1)").arg(how);
+}
 }  // namespace
 
 QVector<widgets::ToolLobeSeries> LobeSnapshot::series() const {
@@ -22,13 +29,30 @@ QVector<widgets::ToolLobeSeries> LobeSnapshot::series() const {
   for (const ToolLobes& t : tools) {
     widgets::ToolLobeSeries s;
     s.tool_id = QString::fromStdString(t.setup.tool_id);
+    s.dynamics = dynamicsLabel(t, method);
     for (double n : t.nominal.speed_rev_per_s) s.speed_rpm.push_back(revPerSToRpm(n));
     s.nominal_mm = toMillimetres(t.nominal.envelope_depth_m, 1.0);
+    // Without modes there is no delta margin (a measured FRF gives G(i omega) only): alpha alone.
     s.margined_mm = toMillimetres(t.margined.envelope_depth_m, alpha);
+    s.margin_needs_modes = t.measured_only && delta_per_s > 0.0;
+    if (t.measured && !t.measured_only) s.measured_mm = toMillimetres(t.measured->envelope_depth_m, 1.0);
     out.push_back(s);
   }
   return out;
 }
+
+namespace {
+
+// The measured-FRF ZOA lobes of tool i (delta = 0), read from its FRF files on this (engine) thread.
+LobeDiagram measuredLobes(const LobeJobInput& input, const ToolLobes& t, const LobeFrfSource& frf,
+                          const JobControl& control) {
+  const MillingSetup setup =
+      app::dynamicsSetupFor(*frf.project, QString::fromStdString(t.setup.tool_id), DynamicsSource::Measured);
+  LobeSettings settings{LobeMethod::ZeroOrder, 0.0, input.max_depth_m, input.sdm_steps, DynamicsSource::Measured};
+  return computeLobes(setup, input.speeds_rev_per_s, settings, control);
+}
+
+}  // namespace
 
 LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const std::atomic<bool>& cancel,
                          const std::function<void(double)>& progress) {
@@ -38,15 +62,30 @@ LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const st
   snapshot->method = input.method;
   snapshot->delta_per_s = input.delta_per_s;
   snapshot->alpha = input.alpha;
-  const double jobs = 2.0 * static_cast<double>(std::max<size_t>(input.tools.size(), 1));
+  const double jobs = 3.0 * static_cast<double>(std::max<size_t>(input.tools.size(), 1));
   try {
     for (size_t i = 0; i < input.tools.size(); ++i) {
       ToolLobes t;
       t.setup = input.tools[i];
+      const std::optional<LobeFrfSource>& frf = i < input.frfs.size() ? input.frfs[i] : std::nullopt;
+      if (frf) {
+        JobControl control;
+        control.cancel = &cancel;
+        const double done = static_cast<double>(3 * i);
+        if (progress) control.progress = [&](double f) { progress((done + f) / jobs); };
+        t.measured = measuredLobes(input, t, *frf, control);
+        t.fitted_modes = frf->has_modes;
+        t.measured_only = !frf->has_modes;
+        if (t.measured_only) {
+          t.nominal = t.margined = *t.measured;
+          snapshot->tools.push_back(std::move(t));
+          continue;
+        }
+      }
       for (int pass = 0; pass < 2; ++pass) {
         JobControl control;
         control.cancel = &cancel;
-        const double done = static_cast<double>(2 * i + pass);
+        const double done = static_cast<double>(3 * i + 1 + pass);
         if (progress) control.progress = [&](double f) { progress((done + f) / jobs); };
         if (control.cancelled()) throw Cancelled();
         const LobeSettings settings{input.method, pass == 0 ? 0.0 : input.delta_per_s, input.max_depth_m,

@@ -8,7 +8,9 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 
+#include "document/project.h"
 #include "lobe_chart_view.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_computation.h"
@@ -18,8 +20,17 @@ namespace mx::gui {
 
 using LobeMethod = StabilityMethod;  // the engine's ZOA / semi-discretization switch
 
+// A tool with a tap-test FRF (frf_x, frf_y): the FRF is read on the engine thread from `project`, a
+// snapshot with absolute paths, and its ZOA lobes (delta = 0) are drawn beside the modal ones; without
+// modes on an FRF axis they are the tool's only lobes.
+struct LobeFrfSource {
+  std::shared_ptr<const app::Project> project;
+  bool has_modes = true;
+};
+
 struct LobeJobInput {
   std::vector<MillingSetup> tools;
+  std::vector<std::optional<LobeFrfSource>> frfs;  // aligned with tools, or empty: no FRFs
   std::vector<double> speeds_rev_per_s;
   LobeMethod method = LobeMethod::ZeroOrder;
   int sdm_steps = 40;
@@ -30,8 +41,11 @@ struct LobeJobInput {
 
 struct ToolLobes {
   MillingSetup setup;
-  LobeDiagram nominal;   // delta = 0
-  LobeDiagram margined;  // the delta-lobes (alpha is applied by the consumers)
+  LobeDiagram nominal;                  // delta = 0
+  LobeDiagram margined;                 // the delta-lobes (alpha is applied by the consumers)
+  std::optional<LobeDiagram> measured;  // ZOA on the tap-test FRF, delta = 0
+  bool measured_only = false;           // no modes: nominal and margined are the measured lobes
+  bool fitted_modes = false;            // the modes were fitted to a tap test (the tool has an FRF)
 };
 
 struct LobeSnapshot {

@@ -8,8 +8,10 @@
 #include <cmath>
 #include <limits>
 
+#include "document/frf_paths.h"
 #include "document/lobe_inputs.h"
 #include "feature_dock.h"
+#include "services/measured_dynamics.h"
 #include "stability/lobe_diagram.h"
 
 namespace mx::gui {
@@ -188,7 +190,17 @@ void LobesFeature::recompute() {
     lobes.step_rpm = std::max((lobes.to_rpm - lobes.from_rpm) / 199.0, 1.0);
   input.speeds_rev_per_s = lobes.grid().values();
   try {
-    for (const app::ToolSpec& t : p.tools) input.tools.push_back(p.setupFor(t.id));
+    // The FRF files are read on the engine thread, from a snapshot that names them by absolute path.
+    std::shared_ptr<const app::Project> frf_snapshot;
+    for (const app::ToolSpec& t : p.tools) {
+      input.tools.push_back(p.setupFor(t.id));
+      if (!t.hasFrf()) {
+        input.frfs.emplace_back();
+        continue;
+      }
+      if (!frf_snapshot) frf_snapshot = std::make_shared<const app::Project>(app::withAbsoluteFrfPaths(p));
+      input.frfs.push_back(LobeFrfSource{frf_snapshot, app::defaultDynamics(t) == DynamicsSource::Modal});
+    }
   } catch (const app::ProjectError& e) {
     chart_->clear();
     snapshot_.reset();

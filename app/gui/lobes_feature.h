@@ -36,6 +36,7 @@ class LobesFeature : public WindowFeature {
   void setMethod(LobeMethod method);
   widgets::LobeChartView* chart() const { return chart_; }
   widgets::OperatingPointReadout* readout() const { return readout_; }
+  const std::shared_ptr<const LobeSnapshot>& snapshot() const { return snapshot_; }  // null before the first lobes
 
  signals:
   void lobesShown();       // new lobes are on the chart

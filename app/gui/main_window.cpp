@@ -16,6 +16,7 @@
 #include "pareto_feature.h"
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
+#include "tap_test_feature.h"
 
 namespace mx::gui {
 
@@ -31,6 +32,7 @@ MainWindow::MainWindow(QWidget* parent)
   addFeature(lobes);
   addFeature(new EditorsFeature(this, *context_));
   addFeature(new SimulationFeature(this, *context_));
+  addFeature(new TapTestFeature(this, *context_));
   addFeature(new ExpertFeature(this, *context_, lobes->chart()));
   addFeature(new ParetoFeature(this, *context_, lobes->chart()));
   addFeature(new ControlFeature(this, *context_));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "document/frf_paths.h"
 #include "feature_dock.h"
 #include "history_view.h"
 #include "lobe_chart_view.h"
@@ -177,7 +178,7 @@ void ParetoFeature::rebuild() {
     disable();
     return;
   }
-  runner_->build(p);
+  runner_->build(app::withAbsoluteFrfPaths(p));  // the FRF files are read on the engine thread
 }
 
 void ParetoFeature::disable() {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "feature_dock.h"
+#include "services/measured_dynamics.h"
 #include "simulation_runner.h"
 #include "simulation_view.h"
 
@@ -56,6 +57,7 @@ void SimulationFeature::start() {
   if (context_.activeTool().isEmpty() || pt.speed_rpm <= 0.0 || pt.feed_mm_per_tooth <= 0.0) return;
   try {
     const MillingSetup setup = p.setupFor(context_.activeTool());
+    app::requireFittedModes(*p.findTool(context_.activeTool()), tr("the time-domain simulation"));
     SimulationOptions options;
     options.revolutions = 60;
     const double power = p.machine ? p.machine->spindle_power_W : 0.0;

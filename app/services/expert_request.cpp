@@ -65,6 +65,23 @@ ExpertRequest expertRequestFromProject(const Project& project) {
   return r;
 }
 
+std::vector<DynamicsChoice> applyExpertDynamics(const Project& project, ExpertRequest& request,
+                                                std::optional<DynamicsSource> requested, bool simulate) {
+  std::vector<DynamicsChoice> choices;
+  const StabilitySettings& stability = request.settings.stability;
+  for (qsizetype i = 0; i < request.tool_ids.size(); ++i) {
+    const ToolSpec& tool = *project.findTool(request.tool_ids[i]);
+    // A tool without a tap test keeps its modes when the others are asked to use theirs.
+    const std::optional<DynamicsSource> wanted = tool.hasFrf() ? requested : std::nullopt;
+    choices.push_back(chooseDynamics(tool, wanted, stability.delta_per_s, stability.method));
+    if (simulate) requireFittedModes(tool, "the time-domain refinement (Rule 5; --no-simulation leaves it out)");
+    if (choices.back().used != DynamicsSource::Measured) continue;
+    request.tools[static_cast<std::size_t>(i)] = dynamicsSetupFor(project, tool.id, DynamicsSource::Measured);
+    request.settings.stability.dynamics = DynamicsSource::Measured;
+  }
+  return choices;
+}
+
 std::vector<double> parseWeightList(const QString& flag, const QString& text, std::size_t count) {
   const QStringList items = text.split(',');
   std::vector<double> values;

@@ -5,12 +5,14 @@
 #include <QString>
 #include <QStringList>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "document/project.h"
 #include "expert/cost_weights.h"
 #include "expert/expert_settings.h"
 #include "model/milling_setup.h"
+#include "services/measured_dynamics.h"
 
 namespace mx::app {
 
@@ -23,6 +25,13 @@ struct ExpertRequest {
 
 // Throws ProjectError (exit 2) for missing sections and weights off the simplex.
 ExpertRequest expertRequestFromProject(const Project& project);
+
+// Each tool's lobes on its modes or its tap-test FRF (services/measured_dynamics.h) for `requested`:
+// measured where asked for and the tool has an FRF, or where an axis has only an FRF; the FRFs are read
+// into request.tools. `simulate`: the time-domain refinement (Rule 5) needs every tool's modes.
+// Returns the choice per tool, aligned with request.tools. Throws InputError as chooseDynamics.
+std::vector<DynamicsChoice> applyExpertDynamics(const Project& project, ExpertRequest& request,
+                                                std::optional<DynamicsSource> requested, bool simulate);
 
 // "--name a,b,c": `count` numbers, non-negative, summing to 1 within 1e-6; InputError otherwise.
 std::vector<double> parseWeightList(const QString& flag, const QString& text, std::size_t count);

@@ -10,11 +10,14 @@
 
 namespace mx::app {
 
-ParetoStudy::ParetoStudy(Project project)
+ParetoStudy::ParetoStudy(Project project, std::optional<DynamicsSource> dynamics)
     : project_(std::move(project)),
       expert_(expertRequestFromProject(project_)),
       request_(paretoRequestFromProject(project_)),
-      setup_(project_.setupFor(request_.tool)) {
+      dynamics_(
+          chooseDynamics(tool(), dynamics, expert_.settings.stability.delta_per_s, expert_.settings.stability.method)),
+      setup_(dynamicsSetupFor(project_, request_.tool, dynamics_.used)) {
+  expert_.settings.stability.dynamics = dynamics_.used;
   if (!request_.operator_rules.isEmpty()) rules_ = evaluateParetoRules(request_.operator_rules, project_, tool());
   grid_ = std::make_unique<AdmissibleGrid>(setup_, expert_.settings);
   if (grid_->empty())

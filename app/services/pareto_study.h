@@ -23,6 +23,7 @@
 #include "pareto/weight_modulation.h"
 #include "services/expert_request.h"
 #include "services/learning_record.h"
+#include "services/measured_dynamics.h"
 #include "services/pareto_request.h"
 #include "services/pareto_rules.h"
 
@@ -59,7 +60,9 @@ struct ChatterReselection {
 
 class ParetoStudy {
  public:
-  explicit ParetoStudy(Project project);
+  // `dynamics`: the tool's lobes on its modes or its tap-test FRF (services/measured_dynamics.h);
+  // empty: the tool's default.
+  explicit ParetoStudy(Project project, std::optional<DynamicsSource> dynamics = std::nullopt);
   ParetoStudy(const ParetoStudy&) = delete;
   ParetoStudy& operator=(const ParetoStudy&) = delete;
 
@@ -68,6 +71,7 @@ class ParetoStudy {
   const ParetoRequest& request() const { return request_; }
   const ToolSpec& tool() const { return *project_.findTool(request_.tool); }
   const MillingSetup& setup() const { return setup_; }
+  const DynamicsChoice& dynamics() const { return dynamics_; }
   const std::optional<ParetoRules>& rules() const { return rules_; }
   const AdmissibleGrid& grid() const { return *grid_; }
   const ObjectiveTable& table() const { return *table_; }
@@ -96,6 +100,7 @@ class ParetoStudy {
   Project project_;
   ExpertRequest expert_;
   ParetoRequest request_;
+  DynamicsChoice dynamics_;
   MillingSetup setup_;
   std::optional<ParetoRules> rules_;
   std::unique_ptr<AdmissibleGrid> grid_;

@@ -46,6 +46,7 @@ ReportLobes selectedToolLobes(const ReportData& d, const MillingSetup& setup) {
     speeds.push_back(rpmToRevPerS(rpm));
   ZoaOptions nominal;
   nominal.max_depth_m = d.settings.stability.max_depth_m;
+  nominal.dynamics = d.settings.stability.dynamics;  // measured only with delta = 0 (measured_dynamics.h)
   ZoaOptions margined = nominal;
   margined.delta_per_s = d.settings.stability.delta_per_s;
 
@@ -87,6 +88,7 @@ ReportData computeReportData(const QString& project_path, const ReportRequest& o
   d.project_path = project_path;
   d.project = loadProject(project_path);
   ExpertRequest request = expertRequestFromProject(d.project);
+  applyExpertDynamics(d.project, request, std::nullopt, true);
   if (options.c) {
     const std::vector<double> c(options.c->begin(), options.c->end());
     try {

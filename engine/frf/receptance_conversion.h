@@ -5,6 +5,7 @@
 // dropped (tap tests often start at 0 Hz, and the rest of the FRF stays usable). Receptance input keeps
 // every point.
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "frf/frf_dataset.h"
@@ -19,5 +20,8 @@ struct Receptance {
 };
 
 Receptance toReceptance(const FrfDataset& dataset);
+
+// The inverse: a receptance as `quantity` (times i omega or (i omega)^2) in positive `direction`, node 1.
+FrfDataset fromReceptance(const Receptance& receptance, FrfQuantity quantity, std::string name);
 
 }  // namespace mx

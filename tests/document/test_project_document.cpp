@@ -1,8 +1,11 @@
 // ProjectDocument::changed: an edit emits the sections it changed, and its undo and redo emit the
 // same; a load emits every section; an edit that changes nothing leaves no undo entry; the edits of
 // one gesture merge into one undo step, which is dropped when the gesture ends where it started.
+#include <QDir>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 
+#include "document/frf_paths.h"
 #include "document/project_document.h"
 #include "support/project_edits.h"
 #include "test_registry.h"
@@ -24,6 +27,27 @@ class TestProjectDocument : public QObject {
   Q_OBJECT
 
  private slots:
+  void saveAsElsewhereKeepsTheFrfFiles() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid() && QDir(dir.path()).mkpath("a") && QDir(dir.path()).mkpath("b"));
+    app::ProjectDocument doc;
+    doc.load(kProject);
+    app::Project edited = doc.project();
+    edited.tools[0].frf_x = app::FrfRefSpec{dir.filePath("a/taps/x.uff"), std::nullopt, std::nullopt, {}};
+    QCOMPARE(doc.applyEdit(edited, "import tap test"), QString());
+    doc.save(dir.filePath("a/p.mxproj"));
+    QCOMPARE(doc.project().tools[0].frf_x->file, dir.filePath("a/taps/x.uff"));  // absolute paths stay
+    edited = doc.project();
+    edited.tools[0].frf_x->file = "taps/x.uff";
+    QCOMPARE(doc.applyEdit(edited, "relative"), QString());
+    doc.save(dir.filePath("b/p.mxproj"));
+    QCOMPARE(doc.project().tools[0].frf_x->file, QString("../a/taps/x.uff"));
+    QCOMPARE(app::resolvedFrfPath(doc.project(), *doc.project().tools[0].frf_x), dir.filePath("a/taps/x.uff"));
+    QVERIFY(!doc.isDirty());
+    doc.undoStack()->undo();  // the older snapshot keeps its own folder, so its path still resolves
+    QCOMPARE(app::resolvedFrfPath(doc.project(), *doc.project().tools[0].frf_x), dir.filePath("a/taps/x.uff"));
+  }
+
   void loadEmitsEverySection() {
     app::ProjectDocument doc;
     QSignalSpy changed(&doc, &app::ProjectDocument::changed);

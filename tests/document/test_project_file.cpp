@@ -329,6 +329,21 @@ class TestProjectFile : public QObject {
         {"expert.grid.feed_step_mm = -0.01: must be > 0"});
     row("grid field missing", {"-expert/grid/feed_step_mm"},
         {"expert.grid.feed_step_mm: missing (required number > 0)"});
+    // tap-test FRF references
+    row("frf not object", {"tools/0/frf_x=\"taps/x.uff\""}, {"tools[0].frf_x: expected an object, got string"});
+    row("frf file missing", {"tools/0/frf_x={\"dataset\":0}"}, {"tools[0].frf_x.file: missing (required string)"});
+    row("frf file number", {"tools/0/frf_y={\"file\":3}"}, {"tools[0].frf_y.file: expected a string, got number"});
+    row("frf file blank", {"tools/1/frf_x={\"file\":\" \"}"},
+        {"tools[1].frf_x.file = \" \": must name a UFF 58/58b or CSV file"});
+    row("frf dataset negative", {"tools/0/frf_x={\"file\":\"x.uff\",\"dataset\":-1}"},
+        {"tools[0].frf_x.dataset = -1: must be an integer >= 0"});
+    row("frf dataset fraction", {"tools/0/frf_x={\"file\":\"x.uff\",\"dataset\":0.5}"},
+        {"tools[0].frf_x.dataset = 0.5: must be an integer >= 0"});
+    row("frf dataset string", {"tools/0/frf_x={\"file\":\"x.uff\",\"dataset\":\"1\"}"},
+        {"tools[0].frf_x.dataset: expected a number, got string"});
+    row("frf quantity unknown", {"tools/0/frf_y={\"file\":\"y.csv\",\"quantity\":\"force\"}"},
+        {"tools[0].frf_y.quantity = \"force\": must be \"receptance\", \"mobility\" or \"accelerance\""});
+    row("modes missing without frf", {"-tools/0/modes_y"}, {"tools[0].modes_y: missing"});
   }
 
   void validationRules() {
@@ -351,6 +366,27 @@ class TestProjectFile : public QObject {
     const Project depth = projectFromJson(
         mutated(base, {"-operation/radial_immersion", "operation/radial_depth_mm=16", "tools/1/radial_depth_mm=10"}));
     QCOMPARE(depth.setupFor("T1").immersion.exit_rad, std::numbers::pi);  // a = D: full immersion
+  }
+
+  void frfReferencesReplaceModes() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    // an axis with an FRF needs no modes; dataset and quantity are optional
+    const Project p = projectFromJson(mutated(
+        base, {"-tools/0/modes_x", "tools/0/frf_x={\"file\":\"taps/T9-x.uff\"}",
+               "tools/0/frf_y={\"file\":\"taps/T9-y.csv\",\"dataset\":1,\"quantity\":\"accelerance\",\"note\":7}"}));
+    const ToolSpec& t = p.tools[0];
+    QVERIFY(t.modes_x.empty() && !t.modes_y.empty() && t.hasFrf());
+    QCOMPARE(t.frf_x->file, QString("taps/T9-x.uff"));
+    QCOMPARE(t.frf_x->datasetIndex(), 0);
+    QVERIFY(!t.frf_x->dataset && !t.frf_x->quantity);
+    QCOMPARE(t.frf_y->datasetIndex(), 1);
+    QCOMPARE(*t.frf_y->quantity, QString("accelerance"));
+    // written back as read: no modes_x key, the unknown key kept, absent dataset stays absent
+    const QJsonObject tool = projectToJson(p).value("tools").toArray().at(0).toObject();
+    QVERIFY(!tool.contains("modes_x"));
+    QCOMPARE(tool.value("frf_x").toObject(), (QJsonObject{{"file", "taps/T9-x.uff"}}));
+    QCOMPARE(tool.value("frf_y").toObject().value("note").toInt(), 7);
+    QCOMPARE(projectFromJson(projectToJson(p)).tools[0], t);
   }
 
   void loadErrorsNameTheFile() {

@@ -59,6 +59,22 @@ class TestReceptanceConversion : public QObject {
     if (points == 3) QCOMPARE_LE(std::abs(r.h_m_per_n[0].real() - (1 / 5e6 + 1 / 2e7)), 1e-18);  // G(0) = sum 1/k
   }
 
+  // fromReceptance is the inverse of toReceptance (f > 0), to rounding.
+  void fromReceptanceRoundTrips_data() { matchesTheModalReceptance_data(); }
+  void fromReceptanceRoundTrips() {
+    QFETCH(FrfQuantity, quantity);
+    const auto f = test::evenFrequencies(2.0, 11.0, 300);
+    const Receptance r = toReceptance(test::modalFrf(test::kTwoModes, FrfQuantity::Receptance, f, FrfDirection::Y));
+    const FrfDataset d = fromReceptance(r, quantity, "T9 y");
+    QCOMPARE(d.quantity, quantity);
+    QCOMPARE(d.response_direction, FrfDirection::Y);
+    QCOMPARE(d.name, std::string("T9 y"));
+    const Receptance back = toReceptance(d);
+    QCOMPARE(back.frequency_hz, f);
+    for (std::size_t i = 0; i < f.size(); ++i)
+      QCOMPARE_LE(std::abs(back.h_m_per_n[i] - r.h_m_per_n[i]), 1e-13 * std::abs(r.h_m_per_n[i]));
+  }
+
   void crossFrfKeepsBothDirections() {
     auto d = test::modalFrf(test::kTwoModes, FrfQuantity::Receptance, {10.0});
     d.response_direction = FrfDirection::X;

@@ -27,7 +27,7 @@ class TestFeatureRecompute : public QObject {
       QTest::newRow(name) << uint(c.toInt()) << uint(f.toInt());
     };
     row("nothing", {}, {});
-    row("tools", ProjectSection::Tools, kCutViews);
+    row("tools", ProjectSection::Tools, kCutViews | Feature::TapTest);
     row("machine", ProjectSection::Machine, kCutViews);
     row("material", ProjectSection::Material, kCutViews);
     row("operation", ProjectSection::Operation, kCutViews);
@@ -49,7 +49,7 @@ class TestFeatureRecompute : public QObject {
     row("unknown keys", ProjectSection::Unknown, {});
     row("weights of both systems", ProjectSection::ExpertWeights | ProjectSection::ParetoWeights,
         Feature::ExpertRerank | Feature::ParetoChoice);
-    row("everything (load)", app::kAllSections, kCutViews | Feature::SurfaceFinish);
+    row("everything (load)", app::kAllSections, kCutViews | Feature::SurfaceFinish | Feature::TapTest);
   }
   void featuresOfChanges() {
     QFETCH(uint, changes);

@@ -28,16 +28,18 @@ class TestWindowFeatures : public QObject {
   // its docks; the window itself holds no view of a feature.
   void featuresAreFoundByNameWithTheirDocks() {
     gui::MainWindow window;
-    const QStringList features{"lobesFeature",  "editorsFeature", "simulationFeature", "expertFeature",
-                               "paretoFeature", "controlFeature", "machiningFeature",  "supervisorFeature"};
+    const QStringList features{"lobesFeature",   "editorsFeature",   "simulationFeature",
+                               "tapTestFeature", "expertFeature",    "paretoFeature",
+                               "controlFeature", "machiningFeature", "supervisorFeature"};
     QStringList found;
     for (const auto* f : window.findChildren<gui::WindowFeature*>(Qt::FindDirectChildrenOnly)) found << f->objectName();
     QCOMPARE(found, features);
     QSet<QString> docks;
     for (const auto* d : window.findChildren<QDockWidget*>()) docks.insert(d->objectName());
-    for (const char* name : {"pointDock", "toolsDock", "machineDock", "simulationDock", "weightsDock", "rankingDock",
-                             "paretoWeightsDock", "operatorRulesDock", "paretoFrontDock", "monitoringDock",
-                             "historyDock", "controlDock", "surfaceFinishDock", "partProgramDock", "supervisorDock"})
+    for (const char* name :
+         {"pointDock", "toolsDock", "machineDock", "simulationDock", "tapTestDock", "weightsDock", "rankingDock",
+          "paretoWeightsDock", "operatorRulesDock", "paretoFrontDock", "monitoringDock", "historyDock", "controlDock",
+          "surfaceFinishDock", "partProgramDock", "supervisorDock"})
       QVERIFY2(docks.contains(name), name);
     QCOMPARE(window.centralWidget(), test::lobesOf(window)->chart());
   }

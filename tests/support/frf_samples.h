@@ -12,29 +12,15 @@
 #include <vector>
 
 #include "frf/frf_dataset.h"
+#include "frf/modal_frf.h"
 #include "model/modal_model.h"
 
 namespace mx::test {
 
-// The FRF of `axis` as `quantity` at the given frequencies: receptance(axis, i w) times (i w)^k.
+// The FRF of `axis` as `quantity` at the given frequencies (modal_frf.h).
 inline FrfDataset modalFrf(const ModalAxis& axis, FrfQuantity quantity, const std::vector<double>& frequency_hz,
                            FrfDirection direction = FrfDirection::X) {
-  FrfDataset d;
-  d.index = 1;
-  d.quantity = quantity;
-  d.response_direction = d.reference_direction = direction;
-  d.response_node = d.reference_node = 1;
-  d.name = "modal " + std::string(frfQuantityName(quantity));
-  d.frequency_hz = frequency_hz;
-  d.values.reserve(frequency_hz.size());
-  for (double f : frequency_hz) {
-    const std::complex<double> s(0.0, 2.0 * std::numbers::pi * f);
-    std::complex<double> h = receptance(axis, s);
-    if (quantity == FrfQuantity::Mobility) h *= s;
-    if (quantity == FrfQuantity::Accelerance) h *= s * s;
-    d.values.push_back(h);
-  }
-  return d;
+  return modalFrfDataset(axis, quantity, frequency_hz, direction, "modal " + std::string(frfQuantityName(quantity)));
 }
 
 // Writes `bytes` to `path` unchanged (binary), replacing the file.

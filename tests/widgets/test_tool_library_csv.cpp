@@ -73,7 +73,8 @@ class TestToolLibraryCsv : public QObject {
     ToolLibraryCsv::readFile(MX_TEST_DATA_DIR "/library/tools.csv", text);
     std::vector<ToolSpec> tools = rubio().tools;
     for (const ToolSpec& t : ToolLibraryCsv::fromCsv(text).tools) tools.push_back(t);
-    tools.push_back(ToolSpec{"Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, {}, {}, {}});  // no modes at all
+    tools.push_back(ToolSpec{
+        "Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, {}, {}, std::nullopt, std::nullopt, {}});  // no modes at all
     const auto back = ToolLibraryCsv::fromCsv(ToolLibraryCsv::toCsv(tools));
     QVERIFY2(back.ok(), qPrintable(back.error));
     QCOMPARE(toolsJson(back.tools), toolsJson(tools));
