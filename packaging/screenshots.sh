@@ -16,3 +16,5 @@ shot projects/cus-zuperl-sdnrp.mxproj --sdnrp --docks surfaceFinishDock --screen
 shot projects/cus-zuperl-sdnrp.mxproj --program projects/programs/pocket_mm.nc --docks partProgramDock --screenshot docs/screenshots/part-program.png
 shot projects/landers-face-milling.mxproj --supervise smc2 --docks supervisorDock --screenshot docs/screenshots/supervisor.png
 echo "screenshots written to docs/screenshots/"
+shot projects/tap-test-example.mxproj --fit-tap-test x --screenshot docs/screenshots/tap-test.png
+shot projects/tap-test-example.mxproj --method sdm --fit-tap-test y --screenshot docs/screenshots/tap-test-lobes-sdm.png

@@ -74,7 +74,7 @@ FrfPlotView::FrfPlotView(QWidget* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addLayout(tools);
   layout->addWidget(plot_, 1);
-  setMinimumSize(420, 360);
+  setMinimumSize(420, 300);
 
   auto* margins = new QCPMarginGroup(plot_);
   upper_ = addPanel(plot_, margins, 0);

@@ -37,7 +37,7 @@ StabilisationDiagramView::StabilisationDiagramView(QWidget* parent) : QWidget(pa
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumSize(420, 280);
+  setMinimumSize(380, 260);
   plot_->setToolTip(
       tr("Click a pole to choose it for the fit, click it again to take it back; one pole per 1 % "
          "frequency cluster."));

@@ -52,11 +52,12 @@ TapTestPanel::TapTestPanel(QWidget* parent)
       fit_error_(new QLabel(this)),
       message_(new QLabel(this)),
       modes_table_(new QTableWidget(0, 3, this)) {
-  auto* plots = new QSplitter(Qt::Vertical, this);
+  // Side by side: the dock sits below the lobe chart, wide and short at 1080p.
+  auto* plots = new QSplitter(Qt::Horizontal, this);
   plots->addWidget(frf_view_);
   plots->addWidget(diagram_view_);
-  plots->setStretchFactor(0, 3);
-  plots->setStretchFactor(1, 2);
+  plots->setStretchFactor(0, 1);
+  plots->setStretchFactor(1, 1);
   auto* layout = new QHBoxLayout(this);
   layout->addWidget(plots, 1);
   layout->addWidget(buildForm());

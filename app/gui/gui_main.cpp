@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QTextStream>
 #include <QTimer>
+#include <memory>
 #include <clocale>
 
 #include "lobes_feature.h"
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
                     "CONTROLLER"});
   parser.addOption({"sdnrp", "Run the surface-finish (SDNRP) loop of the project once it is open."});
   parser.addOption({"program", "Open this G-code part program in the part-program panel.", "FILE"});
+  parser.addOption({"method", "Lobe method: zoa (default) or sdm.", "METHOD"});
   parser.addOption({"fit-tap-test",
                     "Once the active tool's tap test for this direction (x or y) is shown, fit it; with "
                     "--screenshot, the shot waits for the fit.",
@@ -75,6 +77,14 @@ int main(int argc, char** argv) {
   if (!fit_direction.isEmpty() && fit_direction != "x" && fit_direction != "y") {
     QTextStream(stderr) << "millexpert: --fit-tap-test = '" << fit_direction << "': must be x or y\n";
     return 2;
+  }
+  if (parser.isSet("method")) {
+    const QString method = parser.value("method");
+    if (method != "zoa" && method != "sdm") {
+      QTextStream(stderr) << "millexpert: --method = '" << method << "': must be zoa or sdm\n";
+      return 2;
+    }
+    lobes->setMethod(method == "zoa" ? mx::gui::LobeMethod::ZeroOrder : mx::gui::LobeMethod::SemiDiscretization);
   }
   if (!fit_direction.isEmpty()) {
     QObject::connect(tap_test, &mx::gui::TapTestFeature::measurementShown, &window,
@@ -137,7 +147,15 @@ int main(int argc, char** argv) {
       });
     };
     if (supervise) QObject::connect(supervisor, &mx::gui::SupervisorFeature::supervisionFinished, &window, shoot);
-    if (!fit_direction.isEmpty()) QObject::connect(tap_test, &mx::gui::TapTestFeature::fitShown, &window, shoot);
+    if (!fit_direction.isEmpty()) {
+      // Both the fit and the lobes (SDM takes longer than the fit), in either order.
+      auto shown = std::make_shared<int>(0);
+      auto both = [shown, shoot] {
+        if (++*shown == 2) shoot();
+      };
+      QObject::connect(tap_test, &mx::gui::TapTestFeature::fitShown, &window, both, Qt::SingleShotConnection);
+      QObject::connect(lobes, &mx::gui::LobesFeature::lobesShown, &window, both, Qt::SingleShotConnection);
+    }
     QObject::connect(simulation, &mx::gui::SimulationFeature::simulationShown, &window, [&, screenshot] {
       if (supervise || !fit_direction.isEmpty()) return;  // the supervised run or the fit decides
       if (pareto && !moved_to_pareto) return;             // wait for the simulation of the Pareto choice

@@ -22,7 +22,6 @@ void TapTestRunner::stopped() {
 quint64 TapTestRunner::load(const QString& path, std::optional<FrfQuantity> quantity) {
   const quint64 generation = ++generation_;
   loads_.insert(generation);
-  started();
   channel_.start(pool_, [this, path, quantity, generation](const EngineReply& reply) {
     TapTestFile out{path, quantity, {}};
     QString error;
@@ -33,7 +32,6 @@ quint64 TapTestRunner::load(const QString& path, std::optional<FrfQuantity> quan
       error = QString::fromStdString(e.what());
     }
     reply([this, out = std::move(out), error, generation] {
-      stopped();
       if (loads_.erase(generation) == 0) return;  // forgotten (forgetLoads)
       if (error.isEmpty()) {
         emit loaded(generation, out);

@@ -42,7 +42,7 @@ class TapTestRunner : public QObject {
   quint64 fit(const Receptance& receptance, const widgets::TapTestFitRequest& request);
   void cancel();
   void forgetLoads();  // the running loads' results are dropped (another project is loaded)
-  bool busy() const { return running_ > 0; }
+  bool busy() const { return running_ > 0; }  // a fit is running (reading a file is not "busy")
 
  signals:
   void loaded(quint64 generation, const mx::gui::TapTestFile& file);
@@ -50,7 +50,7 @@ class TapTestRunner : public QObject {
   void failed(quint64 generation, const QString& message);
   void cancelled(quint64 generation);
   void progress(double fraction);
-  void busyChanged(bool busy);
+  void busyChanged(bool busy);  // fits only
 
  private:
   void started();
