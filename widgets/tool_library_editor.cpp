@@ -136,6 +136,7 @@ QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
   });
   auto* title = new QLabel(tr("%1 direction").arg(name), pane);
   title->setToolTip(tr("Modes of the tool-point FRF in the feed-normal plane, axis %1").arg(name));
+  (axis == Axis::X ? titleX_ : titleY_) = title;
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(add);
   buttons->addWidget(remove);
@@ -160,6 +161,17 @@ void ToolLibraryEditor::setProject(const app::Project& project) {
     toolView_->setCurrentIndex(tools_->index(std::clamp(oldRow, 0, tools_->rowCount() - 1), 0));
   refreshing_ = false;
   onSelectionChanged();
+}
+
+// An axis with a tap test says so: its lobes can run on the measured FRF even without modes.
+void ToolLibraryEditor::showTapTests(const app::ToolSpec* tool) {
+  for (const auto& [title, axis] : {std::pair{titleX_, QString("x")}, {titleY_, QString("y")}}) {
+    const std::optional<app::FrfRefSpec>* ref = nullptr;
+    if (tool) ref = axis == "x" ? &tool->frf_x : &tool->frf_y;
+    title->setText(
+        ref && *ref ? tr("%1 direction (tap test: %2, dataset %3)").arg(axis, (*ref)->file).arg((*ref)->datasetIndex())
+                    : tr("%1 direction").arg(axis));
+  }
 }
 
 void ToolLibraryEditor::setUnits(DisplayUnits* units) {
@@ -187,6 +199,7 @@ void ToolLibraryEditor::onSelectionChanged() {
   modesY_->setToolId(id);
   modeBox_->setTitle(id.isEmpty() ? tr("Modes (no tool selected)") : tr("Modes of tool %1").arg(id));
   modeBox_->setEnabled(!id.isEmpty());
+  showTapTests(project().findTool(id));
   duplicate_->setEnabled(!id.isEmpty());
   remove_->setEnabled(!id.isEmpty());
   if (id != selected_) {

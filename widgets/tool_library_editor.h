@@ -63,6 +63,7 @@ class ToolLibraryEditor : public QWidget {
   void chooseImport(bool csv);
   void chooseExport(bool csv);
   void onSelectionChanged();
+  void showTapTests(const app::ToolSpec* tool);
   QString uniqueId(const QString& stem) const;
 
   ToolTableModel* tools_;
@@ -71,6 +72,8 @@ class ToolLibraryEditor : public QWidget {
   QTableView* toolView_;
   QTableView* modeViewX_ = nullptr;
   QTableView* modeViewY_ = nullptr;
+  QLabel* titleX_ = nullptr;  // "x direction", with its tap test when the tool has one
+  QLabel* titleY_ = nullptr;
   QLabel* toolError_;
   QLabel* modeError_;
   QGroupBox* modeBox_;

@@ -80,6 +80,17 @@ class TestToolLibraryEditor : public QObject {
     QCOMPARE(editor.modeModel(Axis::Y)->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 0.971);
   }
 
+  // An axis with a tap test names its file; one without says only its direction.
+  void showsTheTapTests() {
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(MX_PROJECTS_DIR "/tap-test-example.mxproj"));
+    QCOMPARE(editor.currentToolId(), QString("T9"));
+    QVERIFY(labelShows(editor, "x direction (tap test: taps/T9-x.uff, dataset 0)"));
+    QVERIFY(labelShows(editor, "y direction (tap test: taps/T9-y.uff, dataset 0)"));
+    editor.setProject(mx::app::loadProject(kRubio));
+    QVERIFY(!labelShows(editor, "tap test"));
+  }
+
   void invalidStiffnessIsRefused_data() {
     QTest::addColumn<QVariant>("value");
     QTest::addColumn<QString>("message");
