@@ -5,6 +5,7 @@
 
 #include "core/cancellation.h"
 #include "services/measured_dynamics.h"
+#include "services/service_errors.h"
 
 namespace mx::gui {
 
@@ -73,7 +74,13 @@ LobeJobResult runLobeJob(const LobeJobInput& input, quint64 generation, const st
         control.cancel = &cancel;
         const double done = static_cast<double>(3 * i);
         if (progress) control.progress = [&](double f) { progress((done + f) / jobs); };
-        t.measured = measuredLobes(input, t, *frf, control);
+        try {
+          t.measured = measuredLobes(input, t, *frf, control);
+        } catch (const app::InputError& e) {
+          if (!frf->has_modes) throw;  // nothing else to draw for this tool
+          // The modes still give lobes; the chart goes without the measured ones, and says why.
+          snapshot->warnings << QString::fromStdString(e.what());
+        }
         t.fitted_modes = frf->has_modes;
         t.measured_only = !frf->has_modes;
         if (t.measured_only) {

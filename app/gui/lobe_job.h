@@ -4,6 +4,7 @@
 // readouts without recomputing anything.
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 #include <atomic>
 #include <functional>
@@ -53,6 +54,7 @@ struct LobeSnapshot {
   double delta_per_s = 0.0;
   double alpha = 1.0;
   std::vector<ToolLobes> tools;
+  QStringList warnings;  // a tool's FRF that could not be read while its modes gave the lobes
   QVector<widgets::ToolLobeSeries> series() const;  // for the chart, in rpm and mm
 };
 

@@ -236,6 +236,8 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   else
     showPoint(context_.point());
   updatePowerLimit();
+  if (!snapshot_->warnings.isEmpty())
+    emit statusMessage(tr("Measured-FRF lobes left out: %1").arg(snapshot_->warnings.join("; ")), 15000);
   status_engine_->setText(
       tr("Lobes: %1, %2 tool(s)")
           .arg(snapshot_->method == LobeMethod::ZeroOrder ? tr("zeroth-order") : tr("semi-discretization"))

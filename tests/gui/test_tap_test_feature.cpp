@@ -94,6 +94,27 @@ class TestTapTestFeature : public QObject {
     QVERIFY(window.project()->tools[0].modes_x.empty());
   }
 
+  // T9-fit without its tap-test files: the modes still give the lobes, and the status says what is missing.
+  void aMissingFrfFileLeavesTheModalLobes() {
+    QTemporaryDir dir;
+    app::Project p = app::loadProject(test::projectsPath("tap-test-example.mxproj"));
+    p.tools.erase(p.tools.begin());
+    p.folder = dir.path();  // taps/ does not exist there
+    app::saveProject(p, dir.filePath("p.mxproj"));
+    gui::MainWindow window;
+    window.setQuiet(true);
+    auto* lobes = window.findChild<gui::LobesFeature*>("lobesFeature");
+    QSignalSpy shown(lobes, &gui::LobesFeature::lobesShown);
+    QVERIFY(window.openProject(dir.filePath("p.mxproj")));
+    QVERIFY(shown.wait(20000));
+    const auto& snapshot = *lobes->snapshot();
+    QCOMPARE(snapshot.tools.size(), std::size_t{1});
+    QVERIFY(!snapshot.tools[0].measured);
+    QCOMPARE(snapshot.warnings.size(), 1);
+    QVERIFY2(snapshot.warnings[0].contains("tool 'T9-fit'") && snapshot.warnings[0].contains("not found"),
+             qPrintable(snapshot.warnings[0]));
+  }
+
   void refusesAnFrfOfTheOtherDirection() {
     gui::MainWindow window;
     window.setQuiet(true);
