@@ -199,7 +199,7 @@ void LobesFeature::recompute() {
         continue;
       }
       if (!frf_snapshot) frf_snapshot = std::make_shared<const app::Project>(app::withAbsoluteFrfPaths(p));
-      input.frfs.push_back(LobeFrfSource{frf_snapshot, app::defaultDynamics(t) == DynamicsSource::Modal});
+      input.frfs.emplace_back(LobeFrfSource{frf_snapshot, app::defaultDynamics(t) == DynamicsSource::Modal});
     }
   } catch (const app::ProjectError& e) {
     chart_->clear();

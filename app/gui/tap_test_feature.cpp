@@ -232,8 +232,10 @@ void TapTestFeature::showToolFrfs() {
     const auto shown = measurements_.find(direction);
     if (shown != measurements_.end() && shown->second.path == path && shown->second.dataset == ref->datasetIndex())
       continue;
-    const bool loading = std::any_of(pending_.begin(), pending_.end(), [&](const auto& p) {
-      return p.second.direction == direction && p.second.path == path && p.second.dataset == ref->datasetIndex();
+    const PendingImport wanted{direction, path, ref->datasetIndex()};
+    const bool loading = std::any_of(pending_.begin(), pending_.end(), [&wanted](const auto& p) {
+      return p.second.direction == wanted.direction && p.second.path == wanted.path &&
+             p.second.dataset == wanted.dataset;
     });
     if (loading) continue;
     std::optional<FrfQuantity> quantity;
