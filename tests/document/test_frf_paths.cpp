@@ -13,7 +13,7 @@ using namespace mx::app;
 namespace {
 
 Project withFrfs(const QString& folder, const QString& x_file, const QString& y_file) {
-  Project p = loadProject(mx::test::projectsPath("rubio2006-adaptive-control.mxproj"));
+  Project p = loadProject(mx::test::projectsPath("rubio2006-tool-selection.mxproj"));  // R1, R2
   p.folder = folder;
   p.tools[0].frf_x = FrfRefSpec{x_file, std::nullopt, std::nullopt, {}};
   p.tools[0].frf_y = FrfRefSpec{y_file, 1, QString("accelerance"), {}};
@@ -92,7 +92,8 @@ class TestFrfPaths : public QObject {
     const Project snapshot = withAbsoluteFrfPaths(p);
     QCOMPARE(snapshot.tools[0].frf_x->file, QString("/shop/jobs/taps/T9-x.uff"));
     QCOMPARE(snapshot.tools[0].frf_y->file, QString("/data/T9-y.uff"));
-    QVERIFY(!snapshot.tools[1].frf_x);
+    QCOMPARE(snapshot.tools.size(), std::size_t{2});
+    QVERIFY(!snapshot.tools[1].frf_x);  // R2 has no tap test
   }
 
   void loadSetsTheFolderAndSaveAsRewrites() {
