@@ -8,8 +8,8 @@
 #include <QFile>
 #include <QTextStream>
 #include <QTimer>
-#include <memory>
 #include <clocale>
+#include <memory>
 
 #include "lobes_feature.h"
 #include "machining_feature.h"

@@ -41,7 +41,7 @@ class TapTestRunner : public QObject {
   // Fits modes to `receptance` as the panel's request says; fitted() or failed(). Cancels a running fit.
   quint64 fit(const Receptance& receptance, const widgets::TapTestFitRequest& request);
   void cancel();
-  void forgetLoads();  // the running loads' results are dropped (another project is loaded)
+  void forgetLoads();                         // the running loads' results are dropped (another project is loaded)
   bool busy() const { return running_ > 0; }  // a fit is running (reading a file is not "busy")
 
  signals:
