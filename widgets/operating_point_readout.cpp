@@ -31,7 +31,9 @@ OperatingPointReadout::OperatingPointReadout(QWidget* parent) : QWidget(parent),
       {"mrr", "MRR", "Material removal rate a * b * s_t * n_t * N"},
       {"blim", "b_lim(N)", "Alpha times the delta-margined stability limit at this speed"},
       {"dns", "\u0394N_s", "Spindle speed security change: distance in speed to the lobes (2006, section 3.B)"},
-      {"ros", "ROS", "Normalised distance to the stability boundary (negative when unstable)"},
+      {"ros", "ROS",
+       "Robustness: the smallest relative change of speed and depth that reaches the margined stability boundary (1 = "
+       "the depth could double; negative when unstable)"},
   };
   for (const auto& r : rows) values_.insert(r.key, addRow(r.key, tr(r.label), tr(r.tip)));
   refresh();

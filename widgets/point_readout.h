@@ -15,7 +15,7 @@ struct PointReadout {
   double mrr_mm3_per_s = 0.0;
   double blim_mm = 0.0;       // alpha * delta-lobe at this speed; +inf: none below the cap
   double delta_ns_rpm = 0.0;  // spindle speed security change (2006, section 3.B)
-  double ros = 0.0;           // normalised distance to the boundary (negative when unstable)
+  double ros = 0.0;           // StabilityBoundary::robustness (negative when unstable)
   bool stable = false;
   bool valid = false;  // false: no lobes yet, or the speed is outside the computed range
   QString message;     // why not valid

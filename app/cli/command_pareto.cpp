@@ -1,4 +1,5 @@
 // millexpert-cli pareto PROJECT [--w tol,mrr,surf,ros] [--fine] [--require mrr_cm3_s=LO:HI] [--auto-weights]
+//                    [--objective weighted|min_cost|max_rate] [--normalisation log|minmax|max] [--no-requirement]
 // The Pareto expert system (module V): objectives TOL, MRR, SURF, ROS over the admissible space Q of
 // the project's pareto.tool, Rule 9 normalisation, J = sum w_i n_i (Rule 8 weights), Rule 10.1 coarse
 // selection, Rule 10.2 fine search (--fine), Rule 11 requirement bounds (--require, modifies the MRR
@@ -28,6 +29,13 @@
 //   --db FILE: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
 //     added key "recorded") in the
 //     Rule 14 learning database; without --db nothing is recorded.
+// Rule 11 by default: the project's minimum MRR (pareto.requirements; shop default 25 % of Q's largest
+// MRR) unless --require replaces it or --no-requirement drops it; "requirement" adds "source", "binding"
+// (the selection would differ without it) and "text". "binding": [{"key", "direction", "text"}]: the
+// requirement when binding, operator rules q sits on, and the limits of Q one more step of depth or feed
+// would break. "objective" and "normalisation" as used; "economics" (with pareto.economics):
+// {"machining_time_min", "tool_changes_per_part", "time_per_part_min", "cost_per_part", "tool_life_min"}.
+// --objective min_cost|max_rate: q minimises Gilbert's cost or time per part instead of maximising J.
 // Exit 2: bad project/pareto section/flags/operator rules (parse error or contradiction); exit 1: empty
 // admissible space, or the operator rules exclude every point of it.
 #include <QJsonArray>
@@ -101,6 +109,9 @@ int runParetoCommand(const QStringList& arguments) {
       {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
       {"chatter-hz", "Module VI: the operator reports chatter at F Hz at q (implies --feedback; Rule 16).", "F"},
       {"front-limit", "At most N points in pareto_set, the best J first (default 2000; 0: all).", "N"},
+      {"objective", "weighted, min_cost or max_rate (default: pareto.objective, else weighted).", "KIND"},
+      {"normalisation", "Rule 9: log, minmax or max (default: pareto.normalisation, else log).", "KIND"},
+      {"no-requirement", "Apply no Rule 11 requirement, not even the project's minimum MRR."},
       dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
@@ -109,8 +120,15 @@ int runParetoCommand(const QStringList& arguments) {
   std::optional<ObjectiveRequirement> requirement;
   if (parser.isSet("require")) requirement = parseRequirement(parser.value("require"));
 
+  std::optional<ParetoObjectiveKind> objective;
+  if (parser.isSet("objective")) objective = paretoObjectiveFromName(parser.value("objective"), "--objective");
+  if (parser.isSet("normalisation"))
+    paretoNormalisationFromName(parser.value("normalisation"), "--normalisation");  // checks the name
+
   const std::optional<DynamicsSource> dynamics = dynamicsOption(parser);
-  const ParetoStudy study(loadProject(path), dynamics);
+  Project project = loadProject(path);
+  if (parser.isSet("normalisation") && project.pareto) project.pareto->normalisation = parser.value("normalisation");
+  const ParetoStudy study(std::move(project), dynamics);
   reportDynamicsNote(study.dynamics(), study.request().tool);
   requireFittedModes(study.tool(), "the time-domain simulation of q (eta)");
   const ExpertRequest& expert = study.expert();
@@ -119,18 +137,44 @@ int runParetoCommand(const QStringList& arguments) {
   const std::optional<ParetoRules>& rules = study.rules();
   const ObjectiveTable& table = study.table();
 
-  const ParetoChoice choice = study.choose({w_flag, requirement, parser.isSet("fine"), parser.isSet("auto-weights")});
+  ParetoChoiceOptions choose_options;
+  choose_options.weights = w_flag;
+  choose_options.requirement = requirement;
+  choose_options.fine = parser.isSet("fine");
+  choose_options.auto_weights = parser.isSet("auto-weights");
+  choose_options.project_requirement = !parser.isSet("no-requirement");
+  choose_options.objective = objective;
+  const ParetoChoice choice = study.choose(choose_options);
   const ParetoWeights weights = choice.weights;
   const ParetoSelection& chosen = choice.selection;
   const double coarse_j = choice.coarse_j;
   QJsonObject out;
-  if (requirement) {
-    const double scale = requirement->objective == Objective::Mrr ? 1e6 : 1.0;
-    out.insert("requirement", QJsonObject{{"key", parser.value("require").section('=', 0, 0)},
-                                          {"lo", requirement->lo * scale},
-                                          {"hi", requirement->hi * scale},
-                                          {"satisfied", choice.requirement_satisfied},
-                                          {"weights_changed", choice.requirement_changed}});
+  if (choice.requirement) {
+    const ObjectiveRequirement& r = *choice.requirement;
+    const double scale = r.objective == Objective::Mrr ? 1e6 : 1.0;
+    QJsonObject rj{{"key", requirement ? parser.value("require").section('=', 0, 0) : QString("mrr_cm3_s")},
+                   {"lo", r.lo * scale},
+                   {"hi", jsonNumberOrNull(r.hi * scale)},
+                   {"satisfied", choice.requirement_satisfied},
+                   {"weights_changed", choice.requirement_changed},
+                   {"binding", choice.requirement_binding},
+                   {"source", choice.requirement_source}};
+    if (!choice.requirement_text.isEmpty()) rj.insert("text", choice.requirement_text);
+    out.insert("requirement", rj);
+  }
+  QJsonArray binding;
+  for (const BindingLimit& b : choice.binding)
+    binding.append(QJsonObject{{"key", b.key}, {"direction", b.direction}, {"text", b.text}});
+  out.insert("binding", binding);
+  out.insert("objective", paretoObjectiveName(choice.objective));
+  out.insert("normalisation", paretoNormalisationName(study.request().normalisation));
+  if (choice.economics) {
+    const PartEconomics& e = *choice.economics;
+    out.insert("economics", QJsonObject{{"machining_time_min", e.machining_time_s / 60.0},
+                                        {"tool_changes_per_part", e.tool_changes},
+                                        {"time_per_part_min", e.time_per_part_s / 60.0},
+                                        {"cost_per_part", e.cost_per_part},
+                                        {"tool_life_min", choice.point().tol()}});
   }
   if (choice.ascent)
     out.insert("ascent",

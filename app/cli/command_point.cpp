@@ -67,7 +67,6 @@ int runPointCommand(const QStringList& arguments) {
   const LobeDiagram diagram = computeLobes(setup, speeds, lobe_settings);
   const StabilityBoundary boundary(diagram, alpha);
   const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;
-  const NormalisationSpans spans = boundary.envelopeSpans();
   const CutPerformance perf = evaluateCut(setup, {n, b, feed_mm * 1e-3});
   const double blim = boundary.depthLimit(n);
   const bool stable = boundary.isStable(n, b);
@@ -81,7 +80,7 @@ int runPointCommand(const QStringList& arguments) {
                   {"blim_mm", jsonNumberOrNull(blim * 1e3)},
                   {"stable", stable},
                   {"delta_Ns_rpm", revPerSToRpm(boundary.speedSecurity(n, b))},
-                  {"ROS", jsonNumberOrNull(boundary.robustness(n, b, spans))},
+                  {"ROS", jsonNumberOrNull(boundary.robustness(n, b))},
                   {"peak_power_W", perf.peak_power_w},
                   {"mean_power_W", perf.mean_power_w},
                   {"peak_torque_Nm", perf.peak_torque_nm},

@@ -205,6 +205,24 @@ struct ParetoAutoWeightsSpec {
   bool operator==(const ParetoAutoWeightsSpec&) const = default;
 };
 
+// "pareto.economics": Gilbert's machining economics (cost and time per part), shop units.
+struct ParetoEconomicsSpec {
+  double machine_rate_per_h = 0.0;  // machine and operator cost per hour, in the shop's currency
+  double tool_cost = 0.0;           // cost of one tool (or cutting edge) life, same currency
+  double tool_change_min = 0.0;     // time to change the tool
+  double removal_volume_cm3 = 0.0;  // material removed per part
+  bool operator==(const ParetoEconomicsSpec&) const = default;
+};
+
+// "pareto.requirements": Rule 11 requirements the selected point must meet (shop defaults apply).
+struct ParetoRequirementsSpec {
+  std::optional<double> min_mrr_cm3_s;       // absolute minimum MRR
+  std::optional<double> min_mrr_fraction;    // minimum MRR as a share of Q's largest, default 0.25
+  std::optional<double> max_time_min;        // machining time for removal_volume_cm3
+  std::optional<double> removal_volume_cm3;  // default: pareto.economics.removal_volume_cm3
+  bool operator==(const ParetoRequirementsSpec&) const = default;
+};
+
 // "pareto": the Pareto expert system.
 struct ParetoSection {
   std::optional<QString> tool;
@@ -213,6 +231,10 @@ struct ParetoSection {
   std::optional<std::vector<double>> weights;
   std::optional<ParetoFineSpec> fine;
   std::optional<ParetoAutoWeightsSpec> auto_weights;
+  std::optional<QString> normalisation;  // "minmax" | "max" | "log" (default "log")
+  std::optional<QString> objective;      // "weighted" (default) | "min_cost" | "max_rate"
+  std::optional<ParetoEconomicsSpec> economics;
+  std::optional<ParetoRequirementsSpec> requirements;
   bool operator==(const ParetoSection&) const = default;
 };
 

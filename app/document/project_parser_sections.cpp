@@ -180,6 +180,17 @@ ParetoSection readPareto(const ObjectReader& r) {
     return ParetoAutoWeightsSpec{a.optionalNumber("step"), a.optionalNumber("tolerance"),
                                  a.optionalNumber("max_iterations")};
   });
+  p.normalisation = r.optionalString("normalisation");
+  p.objective = r.optionalString("objective");
+  p.economics = readOptional<ParetoEconomicsSpec>(r, "economics", [](const ObjectReader& e) {
+    return ParetoEconomicsSpec{requiredNumber(e, "machine_rate_per_h", ">= 0"), requiredNumber(e, "tool_cost", ">= 0"),
+                               requiredNumber(e, "tool_change_min", ">= 0"),
+                               requiredNumber(e, "removal_volume_cm3", "> 0")};
+  });
+  p.requirements = readOptional<ParetoRequirementsSpec>(r, "requirements", [](const ObjectReader& q) {
+    return ParetoRequirementsSpec{q.optionalNumber("min_mrr_cm3_s"), q.optionalNumber("min_mrr_fraction"),
+                                  q.optionalNumber("max_time_min"), q.optionalNumber("removal_volume_cm3")};
+  });
   return p;
 }
 

@@ -150,6 +150,32 @@ void validatePowerLaw(const QString& path, const std::optional<PowerLawSpec>& m)
   checkField(path + ".feed_exponent", m->feed_exponent, {-10.0, 10.0, "in [-10, 10]"});
 }
 
+void validateParetoEconomics(const ParetoEconomicsSpec& e) {
+  checkField("pareto.economics.machine_rate_per_h", e.machine_rate_per_h, {0.0, 1e6, "in [0, 1e6]"});
+  checkField("pareto.economics.tool_cost", e.tool_cost, {0.0, 1e6, "in [0, 1e6]"});
+  checkField("pareto.economics.tool_change_min", e.tool_change_min, {0.0, 1e4, "in [0, 1e4]"});
+  checkField("pareto.economics.removal_volume_cm3", e.removal_volume_cm3, {1e-6, 1e9, "in (0, 1e9]"});
+  if (e.machine_rate_per_h == 0.0 && e.tool_cost == 0.0)
+    throw ProjectError("pareto.economics: machine_rate_per_h = 0 and tool_cost = 0: at least one must be > 0");
+}
+
+void validateParetoRequirements(const ParetoRequirementsSpec& q, bool has_economics) {
+  checkField("pareto.requirements.min_mrr_cm3_s", q.min_mrr_cm3_s, {0.0, 1e6, "in [0, 1e6]"});
+  checkField("pareto.requirements.min_mrr_fraction", q.min_mrr_fraction, {0.0, 1.0, "in [0, 1]"});
+  checkField("pareto.requirements.max_time_min", q.max_time_min, {1e-6, 1e6, "in (0, 1e6]"});
+  checkField("pareto.requirements.removal_volume_cm3", q.removal_volume_cm3, {1e-6, 1e9, "in (0, 1e9]"});
+  if (q.max_time_min && !q.removal_volume_cm3 && !has_economics)
+    throw ProjectError(
+        "pareto.requirements.max_time_min needs a removal volume: pareto.requirements.removal_volume_cm3 or "
+        "pareto.economics.removal_volume_cm3");
+  const int given =
+      int(q.min_mrr_cm3_s.has_value()) + int(q.min_mrr_fraction.has_value()) + int(q.max_time_min.has_value());
+  if (given > 1)
+    throw ProjectError(
+        "pareto.requirements: give one of min_mrr_cm3_s, min_mrr_fraction and max_time_min (each sets the "
+        "minimum MRR)");
+}
+
 void validatePareto(const ParetoSection& p) {
   validatePowerLaw("pareto.taylor", p.taylor);
   validatePowerLaw("pareto.roughness", p.roughness);
@@ -164,6 +190,15 @@ void validatePareto(const ParetoSection& p) {
     checkField("pareto.auto_weights.max_iterations", p.auto_weights->max_iterations,
                {1.0, 100000.0, "an integer in [1, 100000]", true});
   }
+  checkOneOf("pareto.normalisation", p.normalisation, {"minmax", "max", "log"}, "one of minmax, max, log");
+  checkOneOf("pareto.objective", p.objective, {"weighted", "min_cost", "max_rate"},
+             "one of weighted, min_cost, max_rate");
+  if (p.economics) validateParetoEconomics(*p.economics);
+  if (p.objective && *p.objective != "weighted" && !p.economics)
+    throw ProjectError(QString("pareto.objective = '%1' needs pareto.economics (machine_rate_per_h, tool_cost, "
+                               "tool_change_min, removal_volume_cm3)")
+                           .arg(*p.objective));
+  if (p.requirements) validateParetoRequirements(*p.requirements, p.economics.has_value());
 }
 
 }  // namespace

@@ -190,6 +190,20 @@ void writePareto(QJsonObject& o, const ParetoSection& p) {
     putOptional(a, "tolerance", v.tolerance);
     putOptional(a, "max_iterations", v.max_iterations);
   });
+  putString(o, "normalisation", p.normalisation);
+  putString(o, "objective", p.objective);
+  putObject(o, "economics", p.economics, [](QJsonObject& e, const ParetoEconomicsSpec& v) {
+    putNumber(e, "machine_rate_per_h", v.machine_rate_per_h);
+    putNumber(e, "tool_cost", v.tool_cost);
+    putNumber(e, "tool_change_min", v.tool_change_min);
+    putNumber(e, "removal_volume_cm3", v.removal_volume_cm3);
+  });
+  putObject(o, "requirements", p.requirements, [](QJsonObject& q, const ParetoRequirementsSpec& v) {
+    putOptional(q, "min_mrr_cm3_s", v.min_mrr_cm3_s);
+    putOptional(q, "min_mrr_fraction", v.min_mrr_fraction);
+    putOptional(q, "max_time_min", v.max_time_min);
+    putOptional(q, "removal_volume_cm3", v.removal_volume_cm3);
+  });
 }
 
 }  // namespace

@@ -226,7 +226,11 @@ std::optional<app::ParetoChoice> ParetoFeature::chooseWith(const ParetoWeights& 
   const auto& study = runner_->study();
   if (!study) return std::nullopt;
   try {
-    return study->choose({w, engineRequirement(requirements_->requirement()), false, auto_weights});
+    app::ParetoChoiceOptions options;
+    options.weights = w;
+    options.requirement = engineRequirement(requirements_->requirement());
+    options.auto_weights = auto_weights;
+    return study->choose(options);
   } catch (const std::exception& e) {
     emit statusMessage(tr("Pareto selection: %1").arg(e.what()), 10000);
     return std::nullopt;

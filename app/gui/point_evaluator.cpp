@@ -53,7 +53,7 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   r.blim_mm = boundary.depthLimit(n) * 1e3;
   r.stable = boundary.isStable(n, b);
   r.delta_ns_rpm = revPerSToRpm(boundary.speedSecurity(n, b));
-  r.ros = boundary.robustness(n, b, boundary.envelopeSpans());
+  r.ros = b > 0.0 ? boundary.robustness(n, b) : std::numeric_limits<double>::quiet_NaN();
   r.valid = true;
   return r;
 }

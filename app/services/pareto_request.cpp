@@ -45,7 +45,108 @@ ParetoWeights checkedWeights(const QString& name, const std::vector<double>& val
   throw InputError(message);
 }
 
+MachiningEconomics economicsFrom(const ParetoEconomicsSpec& e) {
+  MachiningEconomics m;
+  m.machine_rate_per_s = e.machine_rate_per_h / 3600.0;
+  m.tool_cost = e.tool_cost;
+  m.tool_change_s = e.tool_change_min * 60.0;
+  m.removal_volume_m3 = e.removal_volume_cm3 * 1e-6;
+  return m;
+}
+
+MinimumMrr minimumMrrFrom(const ParetoSection& p) {
+  MinimumMrr m;
+  if (!p.requirements) return m;
+  const ParetoRequirementsSpec& q = *p.requirements;
+  m.is_default = false;
+  if (q.min_mrr_cm3_s) {
+    m.basis = MinimumMrr::Basis::Absolute;
+    m.value = *q.min_mrr_cm3_s * 1e-6;
+    m.field = "pareto.requirements.min_mrr_cm3_s";
+  } else if (q.max_time_min) {
+    m.basis = MinimumMrr::Basis::TimeForVolume;
+    m.value = *q.max_time_min * 60.0;
+    m.volume_m3 = q.removal_volume_cm3.value_or(p.economics ? p.economics->removal_volume_cm3 : 0.0) * 1e-6;
+    m.field = "pareto.requirements.max_time_min";
+  } else if (q.min_mrr_fraction) {
+    m.value = *q.min_mrr_fraction;
+  } else {
+    m.is_default = true;
+  }
+  return m;
+}
+
 }  // namespace
+
+double MinimumMrr::resolve(double max_mrr) const {
+  switch (basis) {
+    case Basis::Absolute:
+      return value;
+    case Basis::TimeForVolume:
+      return volume_m3 / value;
+    case Basis::FractionOfMax:
+      break;
+  }
+  return value * max_mrr;
+}
+
+QString MinimumMrr::describe(double max_mrr) const {
+  const QString bound = QString("MRR >= %1 cm\u00b3/s").arg(resolve(max_mrr) * 1e6, 0, 'g', 4);
+  switch (basis) {
+    case Basis::Absolute:
+      return QString("%1 (%2)").arg(bound, field);
+    case Basis::TimeForVolume:
+      return QString("%1 (%2 = %3 min for %4 cm\u00b3)")
+          .arg(bound, field)
+          .arg(value / 60.0, 0, 'g', 4)
+          .arg(volume_m3 * 1e6, 0, 'g', 4);
+    case Basis::FractionOfMax:
+      break;
+  }
+  return QString("%1 (%2 = %3 of the largest MRR of Q, %4 cm\u00b3/s%5)")
+      .arg(bound, field)
+      .arg(value, 0, 'g', 3)
+      .arg(max_mrr * 1e6, 0, 'g', 4)
+      .arg(is_default ? QString(", the shop default") : QString());
+}
+
+ParetoNormalisation paretoNormalisationFromName(const QString& name, const QString& field) {
+  if (name == "minmax") return ParetoNormalisation::MinMax;
+  if (name == "max") return ParetoNormalisation::Max;
+  if (name == "log") return ParetoNormalisation::Log;
+  throw InputError(QString("%1 = '%2': must be one of minmax, max, log").arg(field, name));
+}
+
+QString paretoNormalisationName(ParetoNormalisation n) {
+  switch (n) {
+    case ParetoNormalisation::MinMax:
+      return "minmax";
+    case ParetoNormalisation::Max:
+      return "max";
+    case ParetoNormalisation::Log:
+      break;
+  }
+  return "log";
+}
+
+ParetoObjectiveKind paretoObjectiveFromName(const QString& name, const QString& field) {
+  if (name == "weighted") return ParetoObjectiveKind::Weighted;
+  if (name == "min_cost") return ParetoObjectiveKind::MinCost;
+  if (name == "max_rate") return ParetoObjectiveKind::MaxRate;
+  throw InputError(QString("%1 = '%2': must be one of weighted, min_cost, max_rate").arg(field, name));
+}
+
+QString paretoObjectiveName(ParetoObjectiveKind k) {
+  switch (k) {
+    case ParetoObjectiveKind::MinCost:
+      return "min_cost";
+    case ParetoObjectiveKind::MaxRate:
+      return "max_rate";
+    case ParetoObjectiveKind::Weighted:
+      break;
+  }
+  return "weighted";
+}
 
 ParetoRequest paretoRequestFrom(const ParetoSection& p, const Project& project) {
   ParetoRequest r;
@@ -65,6 +166,16 @@ ParetoRequest paretoRequestFrom(const ParetoSection& p, const Project& project) 
   r.ascent.tolerance = aw.tolerance.value_or(1e-4);
   r.ascent.max_iterations = static_cast<int>(aw.max_iterations.value_or(200.0));
   r.operator_rules = operatorRulesFromProject(project);
+  try {
+    if (p.normalisation) r.normalisation = paretoNormalisationFromName(*p.normalisation, "pareto.normalisation");
+    if (p.objective) r.objective = paretoObjectiveFromName(*p.objective, "pareto.objective");
+  } catch (const InputError& e) {
+    throw ProjectError(QString::fromStdString(e.what()));
+  }
+  if (p.economics) r.economics = economicsFrom(*p.economics);
+  if (r.objective != ParetoObjectiveKind::Weighted && !r.economics)
+    throw ProjectError(QString("pareto.objective = '%1' needs pareto.economics").arg(paretoObjectiveName(r.objective)));
+  r.minimum_mrr = minimumMrrFrom(p);
   return r;
 }
 

@@ -31,17 +31,34 @@ namespace mx::app {
 
 struct ParetoChoiceOptions {
   std::optional<ParetoWeights> weights;             // default: pareto.weights of the project
-  std::optional<ObjectiveRequirement> requirement;  // Rule 11
+  std::optional<ObjectiveRequirement> requirement;  // Rule 11; default: the project's minimum MRR
   bool fine = false;                                // Rule 10.2
   bool auto_weights = false;                        // Rule 12
+  bool project_requirement = true;                  // without `requirement`, apply the project's minimum MRR
+  std::optional<ParetoObjectiveKind> objective;     // default: pareto.objective
+};
+
+// Why the selected point is where it is: the Rule 11 requirement when it moved the selection, the
+// operator rules that fired, and the limits of Q that one more step of depth or feed would violate.
+struct BindingLimit {
+  QString key;        // "requirement", "stability", "spindle_power", "feed_drive", "feed_per_tooth", ...
+  QString direction;  // "depth", "feed" or "" (the requirement)
+  QString text;       // for the operator, with the limit's value and unit
 };
 
 struct ParetoChoice {
+  ParetoObjectiveKind objective = ParetoObjectiveKind::Weighted;
   ParetoWeights weights{};  // final weights (after rules, Rule 11 and Rule 12)
   ParetoSelection selection;
   double coarse_j = 0.0;
+  std::optional<ObjectiveRequirement> requirement;  // the one applied
+  QString requirement_source;                       // "--require" or the project field
+  QString requirement_text;
   bool requirement_changed = false;    // Rule 11 moved the weights
   bool requirement_satisfied = false;  // the chosen point meets the requirement
+  bool requirement_binding = false;    // without it another point would have been selected
+  std::vector<BindingLimit> binding;
+  std::optional<PartEconomics> economics;  // when the project has pareto.economics
   std::optional<GradientAscentResult> ascent;
   bool fine_rejected_by_rules = false;
   const ParetoPoint& point() const { return selection.point; }
@@ -80,6 +97,8 @@ class ParetoStudy {
 
   bool ruleAdmits(const ParetoPoint& p) const { return !rules_ || rules_->admits(p, setup_.teeth); }
   ParetoChoice choose(const ParetoChoiceOptions& options) const;
+  // The Rule 11 requirement MRR >= the project's minimum (MinimumMrr resolved on Q's largest MRR).
+  ObjectiveRequirement projectRequirement() const;
 
   // For each front point (aligned with front()), weights that select it by Rule 10.1 among the front,
   // found on the simplex lattice with `divisions` steps per unit: the mean of the lattice weights
@@ -106,6 +125,11 @@ class ParetoStudy {
   std::unique_ptr<AdmissibleGrid> grid_;
   std::unique_ptr<ObjectiveTable> table_;
   std::vector<std::size_t> front_;
+
+  ParetoSelection selectWeighted(const ParetoWeights& w, const std::optional<ObjectiveRequirement>& requirement) const;
+  ParetoSelection selectEconomic(EconomicObjective objective,
+                                 const std::optional<ObjectiveRequirement>& requirement) const;
+  std::vector<BindingLimit> bindingLimits(const ParetoChoice& choice) const;
 };
 
 }  // namespace mx::app

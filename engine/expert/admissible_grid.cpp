@@ -40,6 +40,9 @@ std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
     case QConstraint::None:
       out << "no constraint";
       break;
+    case QConstraint::OutsideGrid:
+      out << "the ends of the grid (speed range, first depth and feed step)";
+      break;
     case QConstraint::SpindleSpeed:
       out << "the spindle speed maximum (" << s.limits.max_spindle_rev_per_s * 60.0 << " rpm, grid from "
           << s.grid.speed_from_rev_per_s * 60.0 << " rpm)";
@@ -171,15 +174,21 @@ ExpertPoint AdmissibleGrid::point(std::size_t cell, int feed_index) const {
   return {c.speed_rev_per_s, c.depth_m, s, c.power_per_feed * s, c.mrr_per_feed * s, c.speed_security};
 }
 
-bool AdmissibleGrid::isAdmissible(double n, double b, double s) const {
+QConstraint AdmissibleGrid::violation(double n, double b, double s) const {
   const MachineLimits& lim = settings_.limits;
-  if (!boundary_.covers(n) || !(b > 0.0) || !(s > 0.0)) return false;
-  if (n > lim.max_spindle_rev_per_s * (1.0 + kEps)) return false;
-  if (!(b < boundary_.depthLimit(n)) || !(boundary_.speedSecurity(n, b) > 0.0)) return false;
-  if (s > lim.max_feed_per_tooth_m * (1.0 + kEps)) return false;
-  if (s * setup_.teeth * n > lim.max_feed_velocity_m_per_s * (1.0 + kEps)) return false;
+  if (!boundary_.covers(n) || !(b > 0.0) || !(s > 0.0)) return QConstraint::OutsideGrid;
+  if (n > lim.max_spindle_rev_per_s * (1.0 + kEps)) return QConstraint::SpindleSpeed;
+  if (!(b < boundary_.depthLimit(n))) return QConstraint::Stability;
+  if (s > lim.max_feed_per_tooth_m * (1.0 + kEps)) return QConstraint::FeedPerTooth;
+  if (s * setup_.teeth * n > lim.max_feed_velocity_m_per_s * (1.0 + kEps)) return QConstraint::FeedDrive;
   const CutPerformance perf = evaluateCut(setup_, {n, b, s});
-  return perf.peak_power_w <= lim.spindle_power_w * (1.0 + 1e-6);
+  if (!(perf.peak_power_w <= lim.spindle_power_w * (1.0 + 1e-6))) return QConstraint::SpindlePower;
+  if (!(boundary_.speedSecurity(n, b) > 0.0)) return QConstraint::SpeedSecurity;
+  return QConstraint::None;
+}
+
+bool AdmissibleGrid::isAdmissible(double n, double b, double s) const {
+  return violation(n, b, s) == QConstraint::None;
 }
 
 }  // namespace mx

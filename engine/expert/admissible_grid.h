@@ -39,7 +39,16 @@ struct ExpertPoint {
 
 // The constraints in the order they are applied; the first one after which no grid point is left is
 // the one that emptied Q.
-enum class QConstraint { None, SpindleSpeed, Stability, FeedPerTooth, FeedDrive, SpindlePower, SpeedSecurity };
+enum class QConstraint {
+  None,
+  SpindleSpeed,
+  Stability,
+  FeedPerTooth,
+  FeedDrive,
+  SpindlePower,
+  SpeedSecurity,
+  OutsideGrid  // outside the lobes' speed range or a non-positive depth or feed (violation() only)
+};
 
 struct ConstraintFunnel {
   std::int64_t speeds = 0;           // grid speeds
@@ -82,6 +91,8 @@ class AdmissibleGrid {
 
   // Independent re-check of every constraint of Q at an arbitrary point (tests, reports).
   bool isAdmissible(double speed_rev_per_s, double depth_m, double feed_per_tooth_m) const;
+  // The first constraint (funnel order, Delta N_s last) that excludes the point; None when admissible.
+  QConstraint violation(double speed_rev_per_s, double depth_m, double feed_per_tooth_m) const;
 
   // Lobe speeds used for a settings/grid pair: [low_factor * from, high_factor * to] by the lobe step.
   static std::vector<double> lobeSpeeds(const ExpertSettings& settings);

@@ -1,6 +1,7 @@
 #include "pareto/objective_table.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "model/cutting_force.h"
@@ -24,28 +25,20 @@ ParetoPoint makePoint(const MillingSetup& setup, const ParetoModels& m, double n
 }
 }  // namespace
 
-ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& models) : grid_(&grid), models_(models) {
+ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& models,
+                               ParetoNormalisation normalisation)
+    : grid_(&grid), models_(models), normalisation_(normalisation) {
   models_.tool_life.validate("taylor");
   models_.roughness.validate("roughness");
   const std::vector<GridCell>& cells = grid.cells();
   if (cells.empty()) return;
-  double n_lo = std::numeric_limits<double>::infinity(), n_hi = -n_lo, b_lo = n_lo, b_hi = -n_lo;
   std::size_t count = 0;
-  for (const GridCell& c : cells) {
-    n_lo = std::min(n_lo, c.speed_rev_per_s);
-    n_hi = std::max(n_hi, c.speed_rev_per_s);
-    b_lo = std::min(b_lo, c.depth_m);
-    b_hi = std::max(b_hi, c.depth_m);
-    count += static_cast<std::size_t>(c.feed_count);
-  }
-  // A degenerate span (one speed or one depth in Q) falls back to the value itself.
-  spans_.speed_rev_per_s = n_hi > n_lo ? n_hi - n_lo : n_hi;
-  spans_.depth_m = b_hi > b_lo ? b_hi - b_lo : b_hi;
+  for (const GridCell& c : cells) count += static_cast<std::size_t>(c.feed_count);
 
   points_.reserve(count);
   for (std::size_t ci = 0; ci < cells.size(); ++ci) {
     const GridCell& c = cells[ci];
-    const double ros = grid.boundary().robustness(c.speed_rev_per_s, c.depth_m, spans_);
+    const double ros = grid.boundary().robustness(c.speed_rev_per_s, c.depth_m);
     for (int f = 1; f <= c.feed_count; ++f) {
       const ExpertPoint q = grid.point(ci, f);
       points_.push_back(makePoint(grid.setup(), models_, q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m, q.power_w,
@@ -65,21 +58,34 @@ ObjectiveTable::ObjectiveTable(const AdmissibleGrid& grid, const ParetoModels& m
 
 ParetoPoint ObjectiveTable::evaluate(double n, double b, double s, std::optional<double> ros) const {
   const CutPerformance perf = evaluateCut(grid_->setup(), {n, b, s});
-  if (!ros) ros = grid_->boundary().robustness(n, b, spans_);
+  if (!ros) ros = grid_->boundary().robustness(n, b);
   return makePoint(grid_->setup(), models_, n, b, s, perf.peak_power_w, perf.mrr_m3_per_s, *ros);
 }
 
 ObjectiveVector ObjectiveTable::normalise(const ObjectiveVector& raw) const {
   ObjectiveVector out{};
-  for (std::size_t i = 0; i < kObjectiveCount; ++i) {
-    const double span = range_.max[i] - range_.min[i];
-    if (!(span > 0.0)) {
-      out[i] = 1.0;
-      continue;
-    }
-    out[i] = isMinimised(i) ? (range_.max[i] - raw[i]) / span : (raw[i] - range_.min[i]) / span;
-  }
+  for (std::size_t i = 0; i < kObjectiveCount; ++i) out[i] = normaliseOne(i, raw[i]);
   return out;
+}
+
+double ObjectiveTable::normaliseOne(std::size_t i, double x) const {
+  const double lo = range_.min[i], hi = range_.max[i];
+  if (!(hi > lo)) return 1.0;
+  const bool power_law = i == index(Objective::ToolLife) || i == index(Objective::Roughness);
+  switch (normalisation_) {
+    case ParetoNormalisation::Max:
+      if (!(hi > 0.0)) return 1.0;
+      return isMinimised(i) ? 1.0 - x / hi : x / hi;
+    case ParetoNormalisation::Log:
+      if (power_law && lo > 0.0) {
+        const double t = std::log(x / lo) / std::log(hi / lo);
+        return isMinimised(i) ? 1.0 - t : t;
+      }
+      break;
+    case ParetoNormalisation::MinMax:
+      break;
+  }
+  return isMinimised(i) ? (hi - x) / (hi - lo) : (x - lo) / (hi - lo);
 }
 
 }  // namespace mx

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "core/invalid_input.h"
 
@@ -107,14 +108,14 @@ double StabilityBoundary::speedSecurity(double speed, double depth) const {
   return std::isfinite(result) ? result : 0.0;
 }
 
-NormalisationSpans StabilityBoundary::envelopeSpans() const {
-  double depth_span = 0.0;
-  for (double b : depth_)
-    if (std::isfinite(b)) depth_span = std::max(depth_span, b);
-  return {speed_.back() - speed_.front(), depth_span > 0.0 ? depth_span : 1.0};
+double StabilityBoundary::robustness(double speed, double depth) const {
+  if (!(depth > 0.0) || !(speed > 0.0))
+    throw InvalidInput("ROS needs a positive speed and depth (got N = " + std::to_string(speed) +
+                       " rev/s, b = " + std::to_string(depth) + " m)");
+  return scaledDistance(speed, depth, {speed, depth});
 }
 
-double StabilityBoundary::robustness(double speed, double depth, const NormalisationSpans& spans) const {
+double StabilityBoundary::scaledDistance(double speed, double depth, const NormalisationSpans& spans) const {
   double best = kInf;
   const double px = speed / spans.speed_rev_per_s, py = depth / spans.depth_m;
   for (size_t i = 0; i + 1 < speed_.size(); ++i) {

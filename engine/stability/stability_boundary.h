@@ -8,9 +8,10 @@
 
 namespace mx {
 
+// Units in which a distance in the (N, b) plane is measured.
 struct NormalisationSpans {
-  double speed_rev_per_s = 1.0;  // span of the admissible speed grid
-  double depth_m = 1.0;          // span of the admissible depth grid
+  double speed_rev_per_s = 1.0;
+  double depth_m = 1.0;
 };
 
 class StabilityBoundary {
@@ -32,13 +33,16 @@ class StabilityBoundary {
   // left side counts on the highest-speed lobe. 0 on or above the boundary.
   double speedSecurity(double speed_rev_per_s, double depth_m) const;
 
-  // ROS: Euclidean distance to the nearest boundary point in coordinates normalised by the spans;
-  // negative (minus the distance) for an unstable point.
-  double robustness(double speed_rev_per_s, double depth_m, const NormalisationSpans& spans) const;
+  // Euclidean distance to the nearest point of the boundary in coordinates divided by `spans`;
+  // negative (minus the distance) for an unstable point; +inf when no lobe lies below the cap.
+  double scaledDistance(double speed_rev_per_s, double depth_m, const NormalisationSpans& spans) const;
 
-  // The spans the GUI and CLI normalise ROS with: the computed speed range and the largest finite
-  // alpha * b_lim (1 m when the envelope has no finite value).
-  NormalisationSpans envelopeSpans() const;
+  // ROS (Pareto paper, eq. 13; docs/robustness.md): the distance to the margined boundary with speed
+  // and depth each made non-dimensional by the point's own values, i.e. the smallest relative change
+  // of (N, b) that reaches the border. ROS = 1: the depth would have to double at constant speed (or
+  // the speed change by 100 %). Independent of any grid or chart range, so the lobe chart, `point`,
+  // the Pareto objective and the reports agree. Needs depth_m > 0.
+  double robustness(double speed_rev_per_s, double depth_m) const;
 
   // Local minima of alpha * envelope (speed, depth), ascending in speed.
   const std::vector<LobeMinimum>& minima() const { return minima_; }

@@ -68,8 +68,8 @@ class TestStabilityBoundary : public QObject {
     QCOMPARE_LE(std::abs(s.speedSecurity(speed, depth_mm * 1e-3) - expected), 0.01);
   }
 
-  // ROS: normalised distance to the boundary, against a brute-force search over the polyline.
-  void robustnessMatchesBruteForce() {
+  // Scaled distance to the boundary, against a brute-force search over the polyline.
+  void scaledDistanceMatchesBruteForce() {
     const LobeDiagram d = twoLobes();
     const StabilityBoundary s(d);
     const NormalisationSpans spans{170.0, 5e-3};
@@ -82,11 +82,41 @@ class TestStabilityBoundary : public QObject {
           const double db = (b - s.depthLimit(ns)) / spans.depth_m;
           best = std::min(best, std::hypot(dn, db));
         }
-        const double ros = s.robustness(n, b, spans);
-        QCOMPARE_LE(std::abs(std::abs(ros) - best), 1e-6);
-        QCOMPARE(ros > 0.0, s.isStable(n, b));
+        const double dist = s.scaledDistance(n, b, spans);
+        QCOMPARE_LE(std::abs(std::abs(dist) - best), 1e-6);
+        QCOMPARE(dist > 0.0, s.isStable(n, b));
       }
     }
+  }
+
+  // ROS is the scaled distance in units of the point's own speed and depth.
+  void robustnessIsRelativeToThePoint() {
+    const StabilityBoundary s(twoLobes());
+    for (double n : {90.0, 130.0, 175.0, 240.0})
+      for (double b : {0.5e-3, 1.5e-3, 4e-3}) QCOMPARE(s.robustness(n, b), s.scaledDistance(n, b, {n, b}));
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, s.robustness(100.0, 0.0));
+  }
+
+  // Analytic limit: under a flat boundary at b_lim, the nearest border point is straight above, so
+  // ROS = (b_lim - b) / b, whatever the speed; above it, -(b - b_lim) / b.
+  void robustnessUnderAFlatBoundary_data() {
+    QTest::addColumn<double>("depth_mm");
+    QTest::addColumn<double>("expected");
+    QTest::newRow("half the limit") << 1.0 << 1.0;
+    QTest::newRow("a tenth of the limit") << 0.2 << 9.0;
+    QTest::newRow("90 % of the limit") << 1.8 << 0.2 / 1.8;
+    QTest::newRow("10 % above the limit") << 2.2 << -0.2 / 2.2;
+  }
+  void robustnessUnderAFlatBoundary() {
+    QFETCH(double, depth_mm);
+    QFETCH(double, expected);
+    LobeDiagram d;
+    for (int n = 50; n <= 150; ++n) {
+      d.speed_rev_per_s.push_back(n);
+      d.envelope_depth_m.push_back(2e-3);
+      d.envelope_chatter_hz.push_back(0.0);
+    }
+    QCOMPARE_LE(std::abs(StabilityBoundary(d).robustness(100.0, depth_mm * 1e-3) - expected), 1e-12);
   }
 
   void outsideRangeIsRefused() {
