@@ -183,9 +183,9 @@ ParetoSection readPareto(const ObjectReader& r) {
   p.normalisation = r.optionalString("normalisation");
   p.objective = r.optionalString("objective");
   p.economics = readOptional<ParetoEconomicsSpec>(r, "economics", [](const ObjectReader& e) {
-    return ParetoEconomicsSpec{requiredNumber(e, "machine_rate_per_h", ">= 0"), requiredNumber(e, "tool_cost", ">= 0"),
-                               requiredNumber(e, "tool_change_min", ">= 0"),
-                               requiredNumber(e, "removal_volume_cm3", "> 0")};
+    return ParetoEconomicsSpec{
+        requiredNumber(e, "machine_rate_per_h", "in [0, 1e6]"), requiredNumber(e, "tool_cost", "in [0, 1e6]"),
+        requiredNumber(e, "tool_change_min", "in [0, 1e4]"), requiredNumber(e, "removal_volume_cm3", "in (0, 1e9]")};
   });
   p.requirements = readOptional<ParetoRequirementsSpec>(r, "requirements", [](const ObjectReader& q) {
     return ParetoRequirementsSpec{q.optionalNumber("min_mrr_cm3_s"), q.optionalNumber("min_mrr_fraction"),

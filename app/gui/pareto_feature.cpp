@@ -13,6 +13,7 @@
 #include "lobe_chart_view.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
+#include "pareto_choice_summary.h"
 #include "pareto_front_view.h"
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
@@ -42,6 +43,24 @@ widgets::ParetoPointView pointView(const ParetoPoint& p) {
   return v;
 }
 
+widgets::ParetoChoiceSummary choiceSummary(const app::ParetoChoice& c) {
+  const ParetoPoint& q = c.point();
+  widgets::ParetoChoiceSummary s;
+  s.speed_rpm = revPerSToRpm(q.speed_rev_per_s);
+  s.depth_mm = q.depth_m * 1e3;
+  s.feed_mm_per_tooth = q.feed_per_tooth_m * 1e3;
+  s.mrr_cm3_s = q.mrr() * 1e6;
+  s.tol_min = q.tol();
+  s.surf_um = q.surf();
+  s.ros = q.ros();
+  if (c.economics) {
+    s.cost_per_part = c.economics->cost_per_part;
+    s.time_per_part_min = c.economics->time_per_part_s / 60.0;
+  }
+  for (const app::BindingLimit& b : c.binding) s.binding << b.text;
+  return s;
+}
+
 app::PickedPoint pickedPoint(const ParetoPoint& q) {
   return {revPerSToRpm(q.speed_rev_per_s), q.depth_m * 1e3, q.feed_per_tooth_m * 1e3};
 }
@@ -62,6 +81,7 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       runner_(new ParetoRunner(context.enginePool(), this)),
       weights_panel_(new widgets::ParetoWeightsPanel),
       requirements_(new widgets::RequirementsPanel),
+      summary_(new widgets::ParetoChoiceSummaryPanel),
       front_view_(new widgets::ParetoFrontView),
       monitoring_(new widgets::MonitoringPanel),
       history_(new widgets::HistoryView),
@@ -99,6 +119,7 @@ QWidget* ParetoFeature::buildWeightsPanel() {
   auto* panel = new QWidget;
   auto* layout = new QVBoxLayout(panel);
   layout->addWidget(weights_panel_);
+  layout->addWidget(summary_);
   layout->addWidget(requirements_);
   layout->addWidget(record_button_);
   layout->addLayout(chatter_row);
@@ -141,6 +162,10 @@ void ParetoFeature::connectSignals() {
   connect(weights_panel_, &widgets::ParetoWeightsPanel::weightsCommitted, this,
           [this](const ParetoWeights& w) { commitWeights(w, tr("Change Pareto weights")); });
   connect(requirements_, &widgets::RequirementsPanel::requirementChanged, this, &ParetoFeature::onRequirementChanged);
+  connect(summary_, &widgets::ParetoChoiceSummaryPanel::objectiveChosen, this,
+          [this](const QString& key) { editParetoSetting("objective", key); });
+  connect(summary_, &widgets::ParetoChoiceSummaryPanel::normalisationChosen, this,
+          [this](const QString& key) { editParetoSetting("normalisation", key); });
   connect(requirements_, &widgets::RequirementsPanel::autoWeightsRequested, this, &ParetoFeature::onAutoWeights);
   connect(front_view_, &widgets::ParetoFrontView::pointActivated, this, &ParetoFeature::onFrontPointActivated);
   connect(record_button_, &QPushButton::clicked, this, [this] { recordOperatingPoint(); });
@@ -191,8 +216,8 @@ void ParetoFeature::disable() {
 
 // The controls that need a study: the front, the weights, the requirement, record and chatter.
 void ParetoFeature::setControlsEnabled(bool enabled) {
-  for (QWidget* w :
-       std::initializer_list<QWidget*>{front_view_, weights_panel_, requirements_, record_button_, report_chatter_})
+  for (QWidget* w : std::initializer_list<QWidget*>{front_view_, weights_panel_, summary_, requirements_,
+                                                    record_button_, report_chatter_})
     w->setEnabled(enabled);
 }
 
@@ -217,6 +242,9 @@ void ParetoFeature::onStudyReady(const QString& error) {
   }
   front_view_->setPoints(points);
   weights_panel_->setWeights(projectParetoWeightsOf(context_.project()));
+  summary_->setEconomicsAvailable(study->request().economics.has_value());
+  summary_->setObjective(app::paretoObjectiveName(study->request().objective));
+  summary_->setNormalisation(app::paretoNormalisationName(study->request().normalisation));
   showChoice(weights_panel_->weights());
   updateFiredRules();
   updateMonitoring();
@@ -249,13 +277,32 @@ void ParetoFeature::showChoice(const ParetoWeights& w) {
       if (it != front.end() && *it == *choice_->selection.table_index) selected = static_cast<int>(it - front.begin());
     }
     front_view_->setSelectedIndex(selected);
+    summary_->setSummary(choiceSummary(*choice_));
     if (requirements_->requirement())
       requirements_->setStatus(choice_->requirement_satisfied, choice_->requirement_changed);
     else
       requirements_->clearStatus();
   }
+  if (!choice_) summary_->setSummary(std::nullopt);
   showChoiceMarker();
   emit paretoShown();
+}
+
+// One undoable edit of pareto.objective or pareto.normalisation; the study is rebuilt from it.
+void ParetoFeature::editParetoSetting(const QString& field, const QString& value) {
+  app::Project edited = context_.project();
+  if (!edited.pareto) return;
+  if (field == "objective") {
+    if (value != "weighted" && !edited.pareto->economics) {
+      emit statusMessage(tr("pareto.objective = '%1' needs pareto.economics in the project").arg(value), 10000);
+      summary_->setObjective(edited.pareto->objective.value_or("weighted"));
+      return;
+    }
+    edited.pareto->objective = value;
+  } else {
+    edited.pareto->normalisation = value;
+  }
+  emit editRequested(edited, tr("Set pareto.%1 to %2").arg(field, value), 0);
 }
 
 // The choice on the chart when the active tool is the study's tool.

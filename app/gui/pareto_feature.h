@@ -25,6 +25,7 @@ class HistoryView;
 class LobeChartView;
 class MonitoringPanel;
 class OperatorRulesEditor;
+class ParetoChoiceSummaryPanel;
 class ParetoFrontView;
 class ParetoWeightsPanel;
 class RequirementsPanel;
@@ -74,6 +75,7 @@ class ParetoFeature : public WindowFeature {
   void commitWeights(const ParetoWeights& w, const QString& description,
                      const std::optional<ParetoPoint>& target = std::nullopt);
   void onFrontPointActivated(const widgets::ParetoPointView& point);
+  void editParetoSetting(const QString& field, const QString& value);
   void onRequirementChanged();
   void onAutoWeights();
   // pareto_feature_learning.cpp: the learning database, monitoring and operator rules.
@@ -89,6 +91,7 @@ class ParetoFeature : public WindowFeature {
   ParetoRunner* runner_;
   widgets::ParetoWeightsPanel* weights_panel_;
   widgets::RequirementsPanel* requirements_;
+  widgets::ParetoChoiceSummaryPanel* summary_;
   widgets::ParetoFrontView* front_view_;
   widgets::MonitoringPanel* monitoring_;
   widgets::HistoryView* history_;

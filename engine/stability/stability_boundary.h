@@ -37,7 +37,7 @@ class StabilityBoundary {
   // negative (minus the distance) for an unstable point; +inf when no lobe lies below the cap.
   double scaledDistance(double speed_rev_per_s, double depth_m, const NormalisationSpans& spans) const;
 
-  // ROS (Pareto paper, eq. 13; docs/robustness.md): the distance to the margined boundary with speed
+  // ROS (Pareto paper, eq. 13; docs/fidelity.md, "Delta N_s and ROS"): the distance to the margined boundary with speed
   // and depth each made non-dimensional by the point's own values, i.e. the smallest relative change
   // of (N, b) that reaches the border. ROS = 1: the depth would have to double at constant speed (or
   // the speed change by 100 %). Independent of any grid or chart range, so the lobe chart, `point`,

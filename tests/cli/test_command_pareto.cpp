@@ -101,6 +101,25 @@ class TestCliPareto : public QObject {
     QTest::newRow("--chatter-hz") << QStringList{} << QStringList{"--chatter-hz", "-5"} << "--chatter-hz";
     QTest::newRow("--front-limit") << QStringList{} << QStringList{"--front-limit", "-3"}
                                    << "--front-limit = -3: must be an integer >= 0";
+    QTest::newRow("--objective") << QStringList{} << QStringList{"--objective", "cheap"}
+                                 << "--objective = 'cheap': must be one of weighted, min_cost, max_rate";
+    QTest::newRow("--normalisation") << QStringList{} << QStringList{"--normalisation", "z"}
+                                     << "--normalisation = 'z': must be one of minmax, max, log";
+    QTest::newRow("normalisation field") << QStringList{"pareto/normalisation=\"linear\""} << QStringList{}
+                                         << "pareto.normalisation = 'linear': must be one of minmax, max, log";
+    QTest::newRow("objective field") << QStringList{"pareto/objective=\"fast\""} << QStringList{}
+                                     << "pareto.objective = 'fast': must be one of weighted, min_cost, max_rate";
+    QTest::newRow("min_cost without economics")
+        << QStringList{"-pareto/economics", "pareto/objective=\"min_cost\""} << QStringList{}
+        << "pareto.objective = 'min_cost' needs pareto.economics";
+    QTest::newRow("machine rate") << QStringList{"pareto/economics/machine_rate_per_h=-1"} << QStringList{}
+                                  << "pareto.economics.machine_rate_per_h = -1: must be in [0, 1e6]";
+    QTest::newRow("removal volume") << QStringList{"pareto/economics/removal_volume_cm3=0"} << QStringList{}
+                                    << "pareto.economics.removal_volume_cm3 = 0: must be in (0, 1e9]";
+    QTest::newRow("fraction") << QStringList{"pareto/requirements/min_mrr_fraction=1.5"} << QStringList{}
+                              << "pareto.requirements.min_mrr_fraction = 1.5: must be in [0, 1]";
+    QTest::newRow("two requirements") << QStringList{"pareto/requirements/min_mrr_cm3_s=0.1"} << QStringList{}
+                                      << "pareto.requirements: give one of min_mrr_cm3_s, min_mrr_fraction";
   }
   void errors() {
     QFETCH(QStringList, mutations);
@@ -111,6 +130,51 @@ class TestCliPareto : public QObject {
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+  }
+
+  // The project's weights with its minimum MRR (25 % of Q's largest): a cut away from the grid's
+  // lower corner, the requirement named as binding; without it (--no-requirement), the lower corner.
+  void defaultRequirement() {
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--front-limit", "1"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json["normalisation"].toString(), QString("log"));
+    QCOMPARE(r.json["objective"].toString(), QString("weighted"));
+    const QJsonObject req = r.json["requirement"].toObject();
+    QCOMPARE(req["source"].toString(), QString("pareto.requirements.min_mrr_fraction"));
+    QVERIFY(req["binding"].toBool() && req["satisfied"].toBool() && !req["weights_changed"].toBool());
+    QVERIFY(req["hi"].isNull());
+    QCOMPARE_GE(r.json["mrr_cm3_s"].toDouble(), req["lo"].toDouble());
+    QCOMPARE_GT(r.json["q"].toObject()["depth_mm"].toDouble(), 3 * 0.0721329);
+    QStringList keys;
+    for (const auto& b : r.json["binding"].toArray()) keys << b.toObject()["key"].toString();
+    QVERIFY2(keys.contains("requirement"), qPrintable(keys.join(',')));
+    const QJsonObject e = r.json["economics"].toObject();
+    // 150 cm^3 at the selected MRR.
+    QCOMPARE_LE(std::abs(e["machining_time_min"].toDouble() - 150.0 / r.json["mrr_cm3_s"].toDouble() / 60.0), 1e-9);
+
+    const mx::test::CliRun free = mx::test::runCli({"pareto", kCase, "--front-limit", "1", "--no-requirement"});
+    QCOMPARE(free.code, 0);
+    QVERIFY(!free.json.contains("requirement"));
+    QCOMPARE(free.json["q"].toObject()["depth_mm"].toDouble(), 0.0721329100458);
+    QCOMPARE(free.json["q"].toObject()["speed_rpm"].toDouble(), 1000.0);
+  }
+
+  // min_cost never costs more per part than the weighted choice, max_rate never takes longer.
+  void economicObjectives() {
+    QJsonObject economics[3];
+    const QString objectives[3] = {"weighted", "min_cost", "max_rate"};
+    for (int i = 0; i < 3; ++i) {
+      const mx::test::CliRun r =
+          mx::test::runCli({"pareto", kCase, "--front-limit", "1", "--objective", objectives[i]});
+      QVERIFY2(r.code == 0, qPrintable(r.err));
+      QCOMPARE(r.json["objective"].toString(), objectives[i]);
+      economics[i] = r.json["economics"].toObject();
+    }
+    const QJsonObject &weighted = economics[0], &cheap = economics[1], &fast = economics[2];
+    QCOMPARE_LE(cheap["cost_per_part"].toDouble(), weighted["cost_per_part"].toDouble());
+    QCOMPARE_LE(cheap["cost_per_part"].toDouble(), fast["cost_per_part"].toDouble());
+    QCOMPARE_LE(fast["time_per_part_min"].toDouble(), cheap["time_per_part_min"].toDouble());
+    QCOMPARE_LE(fast["time_per_part_min"].toDouble(), weighted["time_per_part_min"].toDouble());
   }
 
   // Module VI, reported by the operator: Rule 16 speed N_s = 60 f_c / (n_t k) nearest q, and a

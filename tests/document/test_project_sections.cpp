@@ -194,6 +194,10 @@ class TestProjectSections : public QObject {
     const Project r = loadProject(projectsPath("rubio-pareto-case.mxproj"));
     QVERIFY(r.pareto && r.pareto->taylor);
     QCOMPARE(r.pareto->taylor->K, 15300000.0);
+    QCOMPARE(*r.pareto->normalisation, QString("log"));
+    QCOMPARE(*r.pareto->objective, QString("weighted"));
+    QCOMPARE(r.pareto->economics->tool_change_min, 2.0);
+    QCOMPARE(*r.pareto->requirements->min_mrr_fraction, 0.25);
   }
 
   void typedEditsReachTheFile() {
@@ -257,6 +261,24 @@ class TestProjectSections : public QObject {
     QTest::newRow("pareto.taylor") << "pareto"
                                    << R"({})"
                                    << "pareto.taylor is missing: the model constants K and exponents";
+    const QString models = R"("taylor": {"K": 1, "speed_exponent": -3, "depth_exponent": -1, "feed_exponent": -1},
+        "roughness": {"K": 1, "speed_exponent": 0.4, "depth_exponent": 1, "feed_exponent": 0.4})";
+    QTest::newRow("max_time without a volume")
+        << "pareto"
+        << "{" + models + R"(, "requirements": {"max_time_min": 5}})"
+        << "pareto.requirements.max_time_min needs a removal volume: pareto.requirements.removal_volume_cm3 or "
+           "pareto.economics.removal_volume_cm3";
+    QTest::newRow("economics field missing") << "pareto"
+                                             << "{" + models + R"(, "economics": {"machine_rate_per_h": 60}})"
+                                             << "pareto.economics.tool_cost is missing: must be in [0, 1e6]";
+    QTest::newRow("rate and tool cost zero")
+        << "pareto"
+        << "{" + models +
+               R"(, "economics": {"machine_rate_per_h": 0, "tool_cost": 0, "tool_change_min": 1, "removal_volume_cm3": 1}})"
+        << "pareto.economics: machine_rate_per_h = 0 and tool_cost = 0: at least one must be > 0";
+    QTest::newRow("time") << "pareto"
+                          << "{" + models + R"(, "requirements": {"max_time_min": 0, "removal_volume_cm3": 1}})"
+                          << "pareto.requirements.max_time_min = 0: must be in (0, 1e6]";
   }
 
   void rangesAreCheckedOnLoad() {

@@ -23,7 +23,12 @@ Project caseProject(const QStringList& rules = {}, const QJsonObject& pareto_ext
   QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
   if (!rules.isEmpty()) root["operator_rules"] = QJsonArray::fromStringList(rules);
   QJsonObject pareto = root["pareto"].toObject();
-  for (auto it = pareto_extra.begin(); it != pareto_extra.end(); ++it) pareto[it.key()] = it.value();
+  for (auto it = pareto_extra.begin(); it != pareto_extra.end(); ++it) {
+    if (it.value().isNull())
+      pareto.remove(it.key());
+    else
+      pareto[it.key()] = it.value();
+  }
   root["pareto"] = pareto;
   return projectFromJson(root);
 }
@@ -116,8 +121,10 @@ class TestParetoStudy : public QObject {
   // default minimum MRR (25 % of Q's largest): a point on the front, away from the grid's lower corner,
   // inside every limit, with the requirement named as binding. Without it, the lower corner.
   void defaultWeightsGiveARunnablePoint() {
-    const ParetoStudy study(caseProject());
+    const ParetoStudy study(caseProject({}, {{"requirements", QJsonValue()}}));
+    QVERIFY(study.request().minimum_mrr.is_default);
     const ParetoChoice c = study.choose({});
+    QVERIFY2(c.requirement_text.contains("shop default"), qPrintable(c.requirement_text));
     const ParetoPoint& q = c.point();
     const AdmissibleGrid& g = study.grid();
     QVERIFY(onFront(study, c));
@@ -184,7 +191,8 @@ class TestParetoStudy : public QObject {
   }
 
   void economicObjectiveNeedsEconomics() {
-    QVERIFY_THROWS_EXCEPTION(ProjectError, ParetoStudy(caseProject({}, {{"objective", "min_cost"}})));
+    QVERIFY_THROWS_EXCEPTION(ProjectError,
+                             ParetoStudy(caseProject({}, {{"objective", "min_cost"}, {"economics", QJsonValue()}})));
   }
 };
 
