@@ -47,7 +47,7 @@ QString curveRows(const std::vector<app::SpindleCurveRowSpec>& rows) {
 // NF1's P_av: one value, or the speed-dependent limit (torque line, power curve) of the point's speed.
 QString availablePowerMeaning(const SpindlePowerCurve& p) {
   if (p.constant()) return "P<sub>av</sub> [W]";
-  return "P<sub>av</sub>(N) = min(P<sub>max</sub>, 2πN T<sub>max</sub>, curve) at the point's speed; "
+  return "P<sub>av</sub>(N) = min(P<sub>max</sub>, 2\u03c0N T<sub>max</sub>, curve) at the point's speed; "
          "P<sub>max</sub> [W]";
 }
 
@@ -101,12 +101,14 @@ QString ReportBuilder::projectSection() const {
   QList<QStringList> rows;
   rows << QStringList{"Project", esc(p.name), ""};
   if (p.machine) {
-    rows << QStringList{"Spindle power P<sub>av</sub>", formatNumber(p.machine->spindle_power_W, 1), "W"};
+    const bool speed_dependent = p.machine->max_torque_Nm || p.machine->spindle_curve;
+    rows << QStringList{speed_dependent ? "Spindle power P<sub>max</sub>" : "Spindle power P<sub>av</sub>",
+                        formatNumber(p.machine->spindle_power_W, 1), "W"};
     if (p.machine->max_torque_Nm)
-      rows << QStringList{"Spindle torque T<sub>max</sub> (P<sub>av</sub> ≤ 2πN T<sub>max</sub>)",
-                          formatNumber(*p.machine->max_torque_Nm, 2), "N·m"};
+      rows << QStringList{"Spindle torque T<sub>max</sub> (P<sub>av</sub> \u2264 2\u03c0N T<sub>max</sub>)",
+                          formatNumber(*p.machine->max_torque_Nm, 2), "N\u00b7m"};
     if (p.machine->spindle_curve)
-      rows << QStringList{"Spindle power curve (P<sub>av</sub> ≤ curve)", curveRows(*p.machine->spindle_curve),
+      rows << QStringList{"Spindle power curve (P<sub>av</sub> \u2264 curve)", curveRows(*p.machine->spindle_curve),
                           "rpm: W"};
     rows << QStringList{"Maximum spindle speed", optional(p.machine->max_spindle_rpm, 0), "rpm"};
     rows << QStringList{"Maximum feed velocity", optional(p.machine->max_feed_mm_s, 1), "mm/s"};
