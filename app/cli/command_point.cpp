@@ -2,8 +2,9 @@
 //                   [--delta V] [--alpha V] [--steps M] [--dynamics modal|measured]
 // Everything the lobe chart shows for one operating point: b_lim at the speed (alpha * delta-lobes,
 // Rule 1), the stability verdict, Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
-// torque and MRR (Pareto eq. 8); "dynamics_used" says whether the lobes ran on the tap-test FRF
-// (services/measured_dynamics.h).
+// torque and MRR (Pareto eq. 8), the available spindle power at the speed and the power's fraction of
+// it (machine.spindle_power_W, max_torque_Nm, spindle_curve); "dynamics_used" says whether the lobes ran on the
+// tap-test FRF (services/measured_dynamics.h).
 #include <QJsonArray>
 #include <algorithm>
 #include <cmath>
@@ -88,8 +89,10 @@ int runPointCommand(const QStringList& arguments) {
                   {"cutting_speed_m_min", perf.cutting_speed_m_per_s * 60.0},
                   {"feed_mm_s", feed_mm * setup.teeth * n}};
   if (project.machine) {
-    out.insert("power_fraction", perf.peak_power_w / project.machine->spindle_power_W);
-    out.insert("power_ok", perf.peak_power_w <= project.machine->spindle_power_W);
+    const double available = availablePowerW(project.machine, speed_rpm);  // torque-limited below the base speed
+    out.insert("available_power_W", available);
+    out.insert("power_fraction", perf.peak_power_w / available);
+    out.insert("power_ok", perf.peak_power_w <= available);
   }
   printJson(out);
   return kExitOk;

@@ -84,7 +84,8 @@ int runSimulateCommand(const QStringList& arguments) {
       {"steps_per_tooth_period", result.steps_per_tooth_period},
       {"diverged", result.diverged},
       {"simulated_revolutions", result.simulated_revolutions}};
-  if (project.machine) out.insert("power_fraction", ind.peak_power_w / project.machine->spindle_power_W);
+  if (project.machine)  // of P_av at the speed (torque-limited below the base speed)
+    out.insert("power_fraction", ind.peak_power_w / availablePowerW(project.machine, speed_rpm));
   printJson(out);
   return kExitOk;
 }

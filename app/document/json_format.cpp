@@ -24,7 +24,9 @@ const QStringList& keyOrder() {
                                  "expert",  // sections
                                  "spindle_power_W",
                                  "max_spindle_rpm",
-                                 "max_feed_mm_s",  // machine
+                                 "max_feed_mm_s",
+                                 "max_torque_Nm",
+                                 "spindle_curve",  // machine
                                  "milling",
                                  "radial_immersion",
                                  "radial_depth_mm",

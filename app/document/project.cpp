@@ -2,6 +2,7 @@
 #include "document/project.h"
 
 #include <QStringList>
+#include <limits>
 #include <numbers>
 
 #include "document/project_validation.h"
@@ -81,6 +82,20 @@ const MachineSpec& Project::requireMachine() const {
 const ExpertSpec& Project::requireExpert() const {
   if (!expert) throw ProjectError("section 'expert' is missing (needed by the expert system: delta_per_s, alpha)");
   return *expert;
+}
+
+SpindlePowerCurve spindlePowerOf(const MachineSpec& machine) {
+  SpindlePowerCurve p;
+  p.max_power_w = machine.spindle_power_W;
+  if (machine.max_torque_Nm) p.max_torque_nm = *machine.max_torque_Nm;
+  if (machine.spindle_curve)
+    for (const SpindleCurveRowSpec& row : *machine.spindle_curve)
+      p.curve.push_back({row.speed_rpm / 60.0, row.power_W});
+  return p;
+}
+
+double availablePowerW(const std::optional<MachineSpec>& machine, double speed_rpm) {
+  return machine ? spindlePowerOf(*machine).available(speed_rpm / 60.0) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace mx::app

@@ -11,6 +11,7 @@
 
 #include "document/process_sections.h"
 #include "model/milling_setup.h"
+#include "model/spindle_power.h"
 
 namespace mx::app {
 
@@ -57,11 +58,22 @@ struct ToolSpec {
   bool operator==(const ToolSpec&) const = default;
 };
 
+// A row of the spindle's power curve (machine.spindle_curve).
+struct SpindleCurveRowSpec {
+  double speed_rpm = 0.0;
+  double power_W = 0.0;
+  QJsonObject unknown;  // the file's keys this build does not know; they stay with this row
+  bool operator==(const SpindleCurveRowSpec&) const = default;
+};
+
+// The available spindle power is min(spindle_power_W, 2 pi N max_torque_Nm / 60, spindle_curve(N)).
 struct MachineSpec {
   std::optional<QString> name;  // shown to operator rules as machine.name
   double spindle_power_W = 0.0;
   std::optional<double> max_spindle_rpm;  // no limit when absent
   std::optional<double> max_feed_mm_s;    // feed-drive limit; no limit when absent
+  std::optional<double> max_torque_Nm;    // torque limit below the base speed; no limit when absent
+  std::optional<std::vector<SpindleCurveRowSpec>> spindle_curve;  // >= 2 rows by increasing speed
   bool operator==(const MachineSpec&) const = default;
 };
 
@@ -132,6 +144,12 @@ struct Project {
   const MachineSpec& requireMachine() const;  // throws ProjectError if the section is absent
   const ExpertSpec& requireExpert() const;
 };
+
+// The machine's available spindle power P_av(N) in SI: spindle_power_W, max_torque_Nm and
+// spindle_curve (rpm to rev/s); the limits a file leaves out are +inf.
+SpindlePowerCurve spindlePowerOf(const MachineSpec& machine);
+// P_av in W at speed_rpm of a project's machine; +inf without a machine section.
+double availablePowerW(const std::optional<MachineSpec>& machine, double speed_rpm);
 
 // Parse and validate; throws ProjectError whose message names the field path, the value and the
 // allowed range, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".

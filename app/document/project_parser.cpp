@@ -40,12 +40,27 @@ void readHeader(const ObjectReader& root) {
   if (v != kVersion) throw ProjectError(QString("version = %1: must be %2").arg(formatNumber(v)).arg(kVersion));
 }
 
+std::vector<SpindleCurveRowSpec> readSpindleCurve(const ObjectReader& machine, const QJsonArray& array) {
+  std::vector<SpindleCurveRowSpec> rows;
+  for (qsizetype i = 0; i < array.size(); ++i) {
+    const ObjectReader r = elementObject(array, i, machine.pathOf("spindle_curve"));
+    SpindleCurveRowSpec row;
+    row.speed_rpm = r.number("speed_rpm", rules::kNonNegative);
+    row.power_W = r.number("power_W", rules::kNonNegative);
+    row.unknown = withoutKeys(r.object(), {"speed_rpm", "power_W"});
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 MachineSpec readMachine(const ObjectReader& r) {
   MachineSpec m;
   m.name = r.optionalString("name");
   m.spindle_power_W = r.number("spindle_power_W", rules::kPositive);
   m.max_spindle_rpm = r.optionalNumber("max_spindle_rpm");
   m.max_feed_mm_s = r.optionalNumber("max_feed_mm_s");
+  m.max_torque_Nm = r.optionalNumber("max_torque_Nm");
+  if (auto curve = r.optionalArray("spindle_curve")) m.spindle_curve = readSpindleCurve(r, *curve);
   return m;
 }
 

@@ -29,6 +29,7 @@ inline constexpr NumberRule kNonNegative{B::Closed, 0.0, B::None, 0.0, false};
 inline constexpr NumberRule kPercent{B::Open, 0.0, B::Open, 100.0, false};   // damping_pct
 inline constexpr NumberRule kFraction{B::Open, 0.0, B::Closed, 1.0, false};  // alpha, a/D
 inline constexpr NumberRule kHelixDeg{B::Open, -90.0, B::Open, 90.0, false};
+inline constexpr NumberRule kTorqueNm{B::Open, 0.0, B::Closed, 1e5, false};         // machine.max_torque_Nm
 inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true};   // teeth, divisions
 inline constexpr NumberRule kCountAtLeastZero{B::Closed, 0.0, B::None, 0.0, true};  // indices
 // Radial depth of a tool of diameter D: (0, D].

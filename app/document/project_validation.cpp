@@ -14,10 +14,29 @@ void checkOptional(const QString& path, const std::optional<double>& value, cons
   if (value) checkNumber(path, *value, rule);
 }
 
+// At least two rows, speeds >= 0 and strictly increasing, powers >= 0.
+void validateSpindleCurve(const std::vector<SpindleCurveRowSpec>& rows) {
+  const QString path = "machine.spindle_curve";
+  if (rows.size() < 2)
+    throw ProjectError(
+        QString("%1 has %2 row(s): must have at least 2 rows of speed_rpm and power_W").arg(path).arg(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const QString row = indexPath(path, static_cast<qsizetype>(i));
+    checkNumber(row + ".speed_rpm", rows[i].speed_rpm, rules::kNonNegative);
+    if (i > 0 && !(rows[i].speed_rpm > rows[i - 1].speed_rpm))
+      throwBadField(row + ".speed_rpm", formatNumber(rows[i].speed_rpm),
+                    QString("> %1 (%2.speed_rpm: speeds strictly increasing)")
+                        .arg(formatNumber(rows[i - 1].speed_rpm), indexPath(path, static_cast<qsizetype>(i - 1))));
+    checkNumber(row + ".power_W", rows[i].power_W, rules::kNonNegative);
+  }
+}
+
 void validateMachine(const MachineSpec& m) {
   checkNumber("machine.spindle_power_W", m.spindle_power_W, rules::kPositive);
   checkOptional("machine.max_spindle_rpm", m.max_spindle_rpm, rules::kPositive);
   checkOptional("machine.max_feed_mm_s", m.max_feed_mm_s, rules::kPositive);
+  checkOptional("machine.max_torque_Nm", m.max_torque_Nm, rules::kTorqueNm);
+  if (m.spindle_curve) validateSpindleCurve(*m.spindle_curve);
 }
 
 void validateMaterial(const MaterialSpec& m) {

@@ -66,6 +66,17 @@ QJsonObject toolJson(const ToolSpec& tool) {
   return t;
 }
 
+QJsonArray spindleCurveJson(const std::vector<SpindleCurveRowSpec>& rows) {
+  QJsonArray out;
+  for (const SpindleCurveRowSpec& row : rows) {
+    QJsonObject r = row.unknown;
+    putNumber(r, "speed_rpm", row.speed_rpm);
+    putNumber(r, "power_W", row.power_W);
+    out.append(r);
+  }
+  return out;
+}
+
 QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
   if (m.name) {
     o.insert("name", *m.name);
@@ -75,6 +86,12 @@ QJsonObject machineJson(QJsonObject o, const MachineSpec& m) {
   putNumber(o, "spindle_power_W", m.spindle_power_W);
   putOptional(o, "max_spindle_rpm", m.max_spindle_rpm);
   putOptional(o, "max_feed_mm_s", m.max_feed_mm_s);
+  putOptional(o, "max_torque_Nm", m.max_torque_Nm);
+  if (m.spindle_curve) {
+    o.insert("spindle_curve", spindleCurveJson(*m.spindle_curve));
+  } else {
+    o.remove("spindle_curve");
+  }
   return o;
 }
 

@@ -226,7 +226,7 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   }
   snapshot_ = result.snapshot;
   const app::Project& p = context_.project();
-  evaluator_ = PointEvaluator(snapshot_, p.machine ? p.machine->spindle_power_W : 0.0);
+  evaluator_ = PointEvaluator(snapshot_, p.machine ? app::spindlePowerOf(*p.machine) : SpindlePowerCurve{});
   chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
   const int tool = std::max(0, evaluator_.toolIndex(context_.activeTool()));
   chart_->setActiveTool(tool);
@@ -268,16 +268,23 @@ void LobesFeature::pickInitialPoint(int tool) {
   emit context_.simulationRequested();
 }
 
+namespace {
+// "power limit 2745.3 W, 9 N·m at s_t = 0.100 mm/tooth": the limits that shape P_av(N).
+QString powerLimitLabel(const app::MachineSpec& m, double feed_mm_per_tooth) {
+  QString limits = QObject::tr("%1 W").arg(m.spindle_power_W);
+  if (m.max_torque_Nm) limits += QObject::tr(", %1 N\u00b7m").arg(*m.max_torque_Nm);
+  if (m.spindle_curve) limits += QObject::tr(", power curve");
+  return QObject::tr("power limit %1 at s_t = %2 mm/tooth").arg(limits).arg(feed_mm_per_tooth, 0, 'f', 3);
+}
+}  // namespace
+
 void LobesFeature::updatePowerLimit() {
   const int tool = evaluator_.toolIndex(context_.activeTool());
   const double feed = context_.point().feed_mm_per_tooth;
   power_limit_feed_ = feed;
   const app::Project& p = context_.project();
   const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
-  chart_->setPowerLimit(
-      limit, p.machine
-                 ? tr("power limit %1 W at s_t = %2 mm/tooth").arg(p.machine->spindle_power_W).arg(feed, 0, 'f', 3)
-                 : QString());
+  chart_->setPowerLimit(limit, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
 }
 
 void LobesFeature::showPoint(const app::PickedPoint& point) {

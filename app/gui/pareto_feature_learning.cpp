@@ -216,7 +216,8 @@ void ParetoFeature::updateMonitoring(const SimulationSummary* summary) {
     if (const app::ToolSpec* t = project.findTool(context_.activeTool()))
       v.feed_velocity_mm_s = r.feed_mm_per_tooth * t->teeth * r.speed_rpm / 60.0;
   }
-  if (project.machine) v.power_limit_w = project.machine->spindle_power_W;
+  if (project.machine)  // P_av at the point's speed (torque-limited below the base speed)
+    v.power_limit_w = r.valid ? app::availablePowerW(project.machine, r.speed_rpm) : project.machine->spindle_power_W;
   if (const auto q = currentParetoPoint()) {
     v.tol_min = finiteOrNone(q->tol());
     v.surf_um = finiteOrNone(q->surf());

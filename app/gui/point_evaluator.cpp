@@ -8,8 +8,8 @@
 
 namespace mx::gui {
 
-PointEvaluator::PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, double spindle_power_w)
-    : snapshot_(std::move(snapshot)), spindle_power_w_(spindle_power_w) {
+PointEvaluator::PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, SpindlePowerCurve spindle_power)
+    : snapshot_(std::move(snapshot)), spindle_power_(std::move(spindle_power)) {
   if (!snapshot_) return;
   for (const ToolLobes& t : snapshot_->tools) {
     if (t.margined.speed_rev_per_s.size() < 2) return;
@@ -31,7 +31,8 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   r.speed_rpm = speed_rpm;
   r.depth_mm = depth_mm;
   r.feed_mm_per_tooth = feed;
-  r.power_limit_w = spindle_power_w_;
+  const double available = spindle_power_.available(rpmToRevPerS(speed_rpm));
+  r.power_limit_w = std::isfinite(available) ? available : 0.0;  // P_av at the point's speed; 0: no limit
   if (!ready() || tool < 0 || tool >= toolCount()) {
     r.message = QObject::tr("no lobes computed yet");
     return r;
@@ -60,10 +61,14 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
 
 QVector<double> PointEvaluator::powerLimitMm(int tool, double feed) const {
   QVector<double> out;
-  if (!ready() || tool < 0 || tool >= toolCount() || spindle_power_w_ <= 0.0 || feed <= 0.0) return out;
+  if (!ready() || tool < 0 || tool >= toolCount() || feed <= 0.0) return out;
   const ToolLobes& t = snapshot_->tools[static_cast<size_t>(tool)];
   const double k = power_per_depth_feed_speed_[static_cast<size_t>(tool)] * feed * 1e-3;
-  for (double n : t.margined.speed_rev_per_s) out.push_back(spindle_power_w_ / (k * n) * 1e3);
+  for (double n : t.margined.speed_rev_per_s) {
+    const double available = spindle_power_.available(n);
+    if (!std::isfinite(available)) return {};
+    out.push_back(available / (k * n) * 1e3);
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lobe_job.h"
+#include "model/spindle_power.h"
 #include "point_readout.h"
 #include "stability/stability_boundary.h"
 
@@ -14,22 +15,24 @@ namespace mx::gui {
 class PointEvaluator {
  public:
   PointEvaluator() = default;
-  PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, double spindle_power_w);
+  // spindle_power: P_av(N) of the machine; the default (no limit) for a project without one.
+  PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, SpindlePowerCurve spindle_power);
 
   bool ready() const { return snapshot_ != nullptr && !boundaries_.empty(); }
   int toolCount() const { return static_cast<int>(boundaries_.size()); }
   int toolIndex(const QString& id) const;
   widgets::PointReadout evaluate(int tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) const;
 
-  // Depth [mm] at which the peak power reaches the spindle power, per speed of the snapshot
-  // (P = pi D N K_t b s_t S_max with S_max = max_theta sum_j sin(phi_j) over the immersion).
+  // Depth [mm] at which the peak power reaches the available power P_av(N), per speed of the snapshot:
+  // P_av(N) / (k N) with k N b s_t = pi D N K_t b s_t S_max, S_max = max_theta sum_j sin(phi_j) over the
+  // immersion. Empty without a power limit.
   QVector<double> powerLimitMm(int tool, double feed_mm_per_tooth) const;
 
  private:
   std::shared_ptr<const LobeSnapshot> snapshot_;
   std::vector<StabilityBoundary> boundaries_;
   std::vector<double> power_per_depth_feed_speed_;  // peak power / (b s_t N) [W s / m^2]
-  double spindle_power_w_ = 0.0;
+  SpindlePowerCurve spindle_power_;
 };
 
 }  // namespace mx::gui

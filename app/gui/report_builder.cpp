@@ -36,6 +36,20 @@ QString weights(const double* v, std::size_t n) {
 QString optional(const std::optional<double>& v, int decimals, const QString& absent = "no limit") {
   return v ? ReportBuilder::formatNumber(*v, decimals) : absent;
 }
+// "1000 rpm: 2000 W; 3000 rpm: 4000 W" (machine.spindle_curve).
+QString curveRows(const std::vector<app::SpindleCurveRowSpec>& rows) {
+  QStringList parts;
+  for (const app::SpindleCurveRowSpec& r : rows)
+    parts << QString("%1 rpm: %2 W")
+                 .arg(ReportBuilder::formatNumber(r.speed_rpm, 0), ReportBuilder::formatNumber(r.power_W, 1));
+  return parts.join("; ");
+}
+// NF1's P_av: one value, or the speed-dependent limit (torque line, power curve) of the point's speed.
+QString availablePowerMeaning(const SpindlePowerCurve& p) {
+  if (p.constant()) return "P<sub>av</sub> [W]";
+  return "P<sub>av</sub>(N) = min(P<sub>max</sub>, 2\u03c0N T<sub>max</sub>, curve) at the point's speed; "
+         "P<sub>max</sub> [W]";
+}
 
 }  // namespace
 
@@ -87,7 +101,15 @@ QString ReportBuilder::projectSection() const {
   QList<QStringList> rows;
   rows << QStringList{"Project", esc(p.name), ""};
   if (p.machine) {
-    rows << QStringList{"Spindle power P<sub>av</sub>", formatNumber(p.machine->spindle_power_W, 1), "W"};
+    const bool speed_dependent = p.machine->max_torque_Nm || p.machine->spindle_curve;
+    rows << QStringList{speed_dependent ? "Spindle power P<sub>max</sub>" : "Spindle power P<sub>av</sub>",
+                        formatNumber(p.machine->spindle_power_W, 1), "W"};
+    if (p.machine->max_torque_Nm)
+      rows << QStringList{"Spindle torque T<sub>max</sub> (P<sub>av</sub> \u2264 2\u03c0N T<sub>max</sub>)",
+                          formatNumber(*p.machine->max_torque_Nm, 2), "N\u00b7m"};
+    if (p.machine->spindle_curve)
+      rows << QStringList{"Spindle power curve (P<sub>av</sub> \u2264 curve)", curveRows(*p.machine->spindle_curve),
+                          "rpm: W"};
     rows << QStringList{"Maximum spindle speed", optional(p.machine->max_spindle_rpm, 0), "rpm"};
     rows << QStringList{"Maximum feed velocity", optional(p.machine->max_feed_mm_s, 1), "mm/s"};
   }
@@ -161,7 +183,8 @@ QString ReportBuilder::projectSection() const {
       {"c<sub>f</sub> = (c1f, c2f)", "frequency cost weights: R12h, R1ch (eq. 19)", weights(w.cf.data(), 2)},
       {"\u03b4 [1/s]", "lobe margin, Rule 1.1", formatNumber(d_.settings.stability.delta_per_s, 4)},
       {"\u03b1 [\u2013]", "depth margin, Rule 1.2", formatNumber(d_.settings.stability.alpha, 3)},
-      {"NF1 = 1/P<sub>av</sub>", "P<sub>av</sub> [W]", formatNumber(nf.available_power_w, 1)},
+      {"NF1 = 1/P<sub>av</sub>", availablePowerMeaning(nf.available_power),
+       formatNumber(nf.available_power.max_power_w, 1)},
       {"NF2 = MRR<sub>max</sub>", "over all tools [mm\u00b3/min]", mrr(nf.max_mrr_m3_per_s)},
       {"NF3 = \u0394N<sub>s,max</sub>", "over all tools [rpm]", rpm(nf.max_speed_security)}};
   out += table("Weights, margins and normalisation factors", {"Symbol", "Meaning", "Value"}, rows3);
@@ -203,7 +226,8 @@ QString ReportBuilder::selectionSection() const {
         star = &c;
   const RefinementCandidate* chosen = ref ? &ref->chosen() : nullptr;
   const auto terms = [&](const ExpertPoint& q) {
-    return toolCostTerms(d_.result.weights.c, d_.normalisation, q.power_w, q.mrr_m3_per_s, q.speed_security);
+    return toolCostTerms(d_.result.weights.c, d_.normalisation, q.speed_rev_per_s, q.power_w, q.mrr_m3_per_s,
+                         q.speed_security);
   };
   const CostTerms t1 = terms(sel.q);
   const CostTerms t2 = chosen ? terms(chosen->q) : CostTerms{};

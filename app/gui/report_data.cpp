@@ -64,9 +64,8 @@ ReportData collectReportData(const QString& project_path, const ReportOptions& o
   require(renderer.renderLobes(lobeFigure(d), d.lobe_image), d.lobe_image);
   if (d.simulation) {
     d.simulation_image = dir.filePath("figure-2-simulation.png");
-    require(renderer.renderSimulation(*d.simulation, d.settings.limits.spindle_power_w, d.simulation_title,
-                                      d.simulation_image),
-            d.simulation_image);
+    const double p_av = d.settings.limits.spindlePower().available(d.result.refinement->chosen().q.speed_rev_per_s);
+    require(renderer.renderSimulation(*d.simulation, p_av, d.simulation_title, d.simulation_image), d.simulation_image);
   }
   d.sweep_image = dir.filePath("figure-3-weights-sweep.png");
   require(renderer.renderSweep(sweepFigure(d), d.sweep_image), d.sweep_image);

@@ -60,7 +60,7 @@ void SimulationFeature::start() {
     app::requireFittedModes(*p.findTool(context_.activeTool()), tr("the time-domain simulation"));
     SimulationOptions options;
     options.revolutions = 60;
-    const double power = p.machine ? p.machine->spindle_power_W : 0.0;
+    const double power = p.machine ? app::availablePowerW(p.machine, pt.speed_rpm) : 0.0;  // P_av(N)
     const double max_speed = p.machine && p.machine->max_spindle_rpm ? rpmToRevPerS(*p.machine->max_spindle_rpm)
                                                                      : std::numeric_limits<double>::infinity();
     const OperatingPoint op{rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3};

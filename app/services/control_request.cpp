@@ -78,7 +78,7 @@ ControlRequest controlRequestFrom(const ControlSection& c, const Project& projec
     ToolForceLimits limits;
     limits.breakage_force_N = c.breakage_force_N.value_or(0.0);
     limits.safety_factor = c.safety_factor.value_or(1.0);
-    limits.spindle_power_W = project.machine ? project.machine->spindle_power_W : 0.0;
+    limits.spindle_power_W = project.machine ? availablePowerW(project.machine, p.spindle_rev_s * 60.0) : 0.0;
     limits.tool_diameter_m = tool->diameter_mm * 1e-3;
     limits.spindle_rev_s = p.spindle_rev_s;
     try {

@@ -39,7 +39,10 @@ ExpertRequest expertRequestFromProject(const Project& project) {
     r.tools.push_back(project.setupFor(t.id));
   }
   ExpertSettings& s = r.settings;
-  s.limits.spindle_power_w = machine.spindle_power_W;
+  const SpindlePowerCurve spindle = spindlePowerOf(machine);
+  s.limits.spindle_power_w = spindle.max_power_w;
+  s.limits.max_spindle_torque_nm = spindle.max_torque_nm;
+  s.limits.spindle_curve = spindle.curve;
   if (machine.max_spindle_rpm) s.limits.max_spindle_rev_per_s = rpmToRevPerS(*machine.max_spindle_rpm);
   if (machine.max_feed_mm_s) s.limits.max_feed_velocity_m_per_s = *machine.max_feed_mm_s * 1e-3;
   if (project.operation && project.operation->max_feed_per_tooth_mm > 0.0)

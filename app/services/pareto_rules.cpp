@@ -74,6 +74,7 @@ RuleContext ruleContextFor(const Project& project, const ToolSpec& tool) {
     c.set("machine.spindle_power_W", m.spindle_power_W);
     if (m.max_spindle_rpm) c.set("machine.max_spindle_rpm", *m.max_spindle_rpm);
     if (m.max_feed_mm_s) c.set("machine.max_feed_mm_s", *m.max_feed_mm_s);
+    if (m.max_torque_Nm) c.set("machine.max_torque_Nm", *m.max_torque_Nm);
     if (m.name) c.set("machine.name", m.name->toStdString());
   }
   return c;

@@ -55,12 +55,19 @@ ReportLobes selectedToolLobes(const ReportData& d, const MillingSetup& setup) {
   out.nominal_mm = envelopeMm(computeZoaLobes(setup, speeds, nominal), 1.0);
   out.margined_mm = envelopeMm(computeZoaLobes(setup, speeds, margined), d.settings.stability.alpha);
   const ExpertPoint& q = d.result.ranking.selected().q;
-  const double p_av = d.settings.limits.spindle_power_w;
-  if (std::isfinite(p_av) && q.power_w > 0.0) {
-    const double per_unit = q.power_w / (q.speed_rev_per_s * q.depth_m * 1e3);  // W per (rev/s * mm)
-    for (double n : speeds) out.power_limit_mm.push_back(p_av / (per_unit * n));
-    out.power_limit_label =
-        QString("power limit %1 W at s_t = %2 mm/tooth").arg(p_av, 0, 'f', 1).arg(q.feed_per_tooth_m * 1e3, 0, 'f', 3);
+  const SpindlePowerCurve spindle = d.settings.limits.spindlePower();
+  const double p_max = d.settings.limits.spindle_power_w;
+  if (std::isfinite(spindle.available(q.speed_rev_per_s)) && q.power_w > 0.0) {
+    const double per_unit = q.power_w / (q.speed_rev_per_s * q.depth_m * 1e3);                    // W per (rev/s * mm)
+    for (double n : speeds) out.power_limit_mm.push_back(spindle.available(n) / (per_unit * n));  // P_av(N) / (k N)
+    const QString torque = std::isfinite(spindle.max_torque_nm)
+                               ? QString(", %1 N\u00b7m").arg(spindle.max_torque_nm, 0, 'f', 2)
+                               : QString();
+    const QString curve = spindle.curve.empty() ? QString() : QString(", power curve");
+    out.power_limit_label = QString("power limit %1 W%2%3 at s_t = %4 mm/tooth")
+                                .arg(p_max, 0, 'f', 1)
+                                .arg(torque, curve)
+                                .arg(q.feed_per_tooth_m * 1e3, 0, 'f', 3);
   }
   return out;
 }

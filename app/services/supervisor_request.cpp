@@ -47,7 +47,8 @@ SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Projec
   sc.power_margin = s.power_margin.value_or(sc.power_margin);
   sc.chatter_detector.threshold_N = s.chatter_threshold_N.value_or(sc.chatter_detector.threshold_N);
   if (project.machine) {
-    sc.limits.spindle_power_limit_W = project.machine->spindle_power_W;
+    // P_av at the supervised spindle speed (torque-limited below the base speed).
+    sc.limits.spindle_power_limit_W = availablePowerW(project.machine, sc.process.spindle_speed_rpm);
     if (project.machine->max_feed_mm_s) sc.limits.max_feed_rate_m_per_s = *project.machine->max_feed_mm_s * 1e-3;
   }
   if (project.operation) sc.limits.max_feed_per_tooth_m = project.operation->max_feed_per_tooth_mm * 1e-3;

@@ -16,7 +16,8 @@
 //                {"t_s": 5, "type": "chatter"}],   timed operator events
 //     "charts": {"none": {...}, "smc1": {...}, "smc2": {...}}   Grafcet charts (docs/grafcet.md)
 //   }
-// Limits: machine.spindle_power_W, machine.max_feed_mm_s, operation.max_feed_per_tooth_mm.
+// Limits: machine.spindle_power_W (the available power at process.spindle_rpm when machine.max_torque_Nm or
+// machine.spindle_curve is given), machine.max_feed_mm_s, operation.max_feed_per_tooth_mm.
 #include <QString>
 #include <QStringList>
 

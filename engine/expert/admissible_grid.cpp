@@ -58,7 +58,10 @@ std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
       out << "the feed-drive maximum (" << s.limits.max_feed_velocity_m_per_s * 1e3 << " mm/s)";
       break;
     case QConstraint::SpindlePower:
-      out << "the spindle power limit (" << s.limits.spindle_power_w << " W)";
+      out << "the spindle power limit (" << s.limits.spindle_power_w << " W";
+      if (std::isfinite(s.limits.max_spindle_torque_nm)) out << ", " << s.limits.max_spindle_torque_nm << " N m torque";
+      if (!s.limits.spindle_curve.empty()) out << ", power curve of " << s.limits.spindle_curve.size() << " rows";
+      out << ")";
       break;
     case QConstraint::SpeedSecurity:
       out << "Delta N_s > 0 (every remaining point lies on the lobe boundary)";
@@ -98,6 +101,8 @@ void AdmissibleGrid::build() {
   const MachineLimits& lim = settings_.limits;
   if (!(g.feed_step_m > 0.0) || g.depth_divisions < 1)
     throw InvalidInput("expert grid: feed step must be > 0 and depth divisions >= 1");
+  const SpindlePowerCurve spindle = lim.spindlePower();
+  spindle.validate();
   speeds_ = rankingSpeeds(setup_, g);
   if (!boundary_.covers(speeds_.front()) || !boundary_.covers(speeds_.back()))
     throw InvalidInput("expert grid: the lobes do not cover the speed range of the grid");
@@ -135,7 +140,8 @@ void AdmissibleGrid::build() {
     if (grid_feeds == 0 || depths == 0) continue;
     const std::int64_t drive_feeds =
         std::min(grid_feeds, countUpTo(lim.max_feed_velocity_m_per_s / (setup_.teeth * n), feed_step_));
-    if (drive_feeds >= kUnbounded && !std::isfinite(lim.spindle_power_w))
+    const double available_power = spindle.available(n);  // P_av(N): torque-limited below the base speed
+    if (drive_feeds >= kUnbounded && !std::isfinite(available_power))
       throw InvalidInput(
           "expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum "
           "or a spindle power limit");
@@ -146,7 +152,7 @@ void AdmissibleGrid::build() {
     for (std::int64_t j = 1; j <= depths; ++j) {
       const double b = static_cast<double>(j) * depth_step_;
       const double power_per_feed = power_per_depth_feed * b;
-      const std::int64_t feeds = std::min(drive_feeds, countUpTo(lim.spindle_power_w / power_per_feed, feed_step_));
+      const std::int64_t feeds = std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_));
       if (feeds == 0) break;  // the power grows with b: no deeper cell fits either
       if (feeds > kMaxFeedsPerCell)
         throw InvalidInput("expert grid: more than 1e6 admissible feeds per cell; raise the feed step");
@@ -157,6 +163,7 @@ void AdmissibleGrid::build() {
       cell.speed_rev_per_s = n;
       cell.depth_m = b;
       cell.power_per_feed = power_per_feed;
+      cell.available_power_w = available_power;
       cell.mrr_per_feed = radial * b * setup_.teeth * n;
       cell.speed_security = dns;
       cell.feed_count = static_cast<int>(feeds);
@@ -182,7 +189,7 @@ QConstraint AdmissibleGrid::violation(double n, double b, double s) const {
   if (s > lim.max_feed_per_tooth_m * (1.0 + kEps)) return QConstraint::FeedPerTooth;
   if (s * setup_.teeth * n > lim.max_feed_velocity_m_per_s * (1.0 + kEps)) return QConstraint::FeedDrive;
   const CutPerformance perf = evaluateCut(setup_, {n, b, s});
-  if (!(perf.peak_power_w <= lim.spindle_power_w * (1.0 + 1e-6))) return QConstraint::SpindlePower;
+  if (!(perf.peak_power_w <= lim.spindlePower().available(n) * (1.0 + 1e-6))) return QConstraint::SpindlePower;
   if (!(boundary_.speedSecurity(n, b) > 0.0)) return QConstraint::SpeedSecurity;
   return QConstraint::None;
 }

@@ -3,11 +3,13 @@
 // paper, Rules 5-7): every (N, b, s_t) of the grid with
 //   b < alpha * b_lim,delta(N) and Delta N_s(N, b) > 0   (Rule 1; a zero Delta N_s is on the boundary),
 //   N <= spindle maximum, s_t <= feed per tooth maximum, s_t n_t N <= feed-drive maximum,
-//   peak cutting power P(N, b, s_t) <= available spindle power (Pareto eq. 8).
+//   peak cutting power P(N, b, s_t) <= available spindle power P_av(N) (Pareto eq. 8; torque-limited
+//   below the spindle's base speed, MachineLimits::spindlePower()).
 // At a given (N, b) the power and the MRR are proportional to s_t, and the admissible feeds are
 // feed_step * (1 .. feed_count). So Q is stored as cells (N, b) with their power and MRR per unit feed,
 // Delta N_s and feed count: a weight change only needs a pass over these arrays (ExpertSession).
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,8 @@ namespace mx {
 struct GridCell {
   double speed_rev_per_s = 0.0;
   double depth_m = 0.0;
-  double power_per_feed = 0.0;  // peak power [W] per metre of feed per tooth
+  double power_per_feed = 0.0;                                         // peak power [W] per metre of feed per tooth
+  double available_power_w = std::numeric_limits<double>::infinity();  // P_av at this speed
   double mrr_per_feed = 0.0;    // MRR [m^3/s] per metre of feed per tooth: a b n_t N
   double speed_security = 0.0;  // Delta N_s [rev/s], > 0
   int feed_count = 0;           // admissible feeds: i * feed_step, i = 1 .. feed_count

@@ -25,14 +25,13 @@ template <class Visit>
 void forEachPoint(const AdmissibleGrid& grid, const std::array<double, 3>& c, const CostNormalisation& nf,
                   const Admit& admit, const Visit& visit) {
   const double fs = grid.feedStep();
-  const double power_weight = std::isfinite(nf.available_power_w) ? c[0] / nf.available_power_w : 0.0;
   const double mrr_weight = c[1] * nf.max_mrr_m3_per_s;
   const double dns_weight = c[2] * nf.max_speed_security;
   const std::vector<GridCell>& cells = grid.cells();
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const GridCell& cell = cells[i];
-    const double a = power_weight * cell.power_per_feed;  // cost per unit feed
-    const double b = mrr_weight / cell.mrr_per_feed;      // cost times feed
+    const double a = powerCostTerm(c[0], cell.power_per_feed, cell.available_power_w);  // cost per unit feed
+    const double b = mrr_weight / cell.mrr_per_feed;                                    // cost times feed
     const double k = dns_weight / cell.speed_security;
     for (int f = 1; f <= cell.feed_count; ++f) {
       const double s = fs * f;
@@ -49,7 +48,7 @@ ToolChoice makeChoice(const AdmissibleGrid& grid, std::size_t tool, std::size_t 
   t.cell = cell;
   t.feed_index = feed;
   t.q = grid.point(cell, feed);
-  t.terms = toolCostTerms(c, nf, t.q.power_w, t.q.mrr_m3_per_s, t.q.speed_security);
+  t.terms = toolCostTerms(c, nf, t.q.speed_rev_per_s, t.q.power_w, t.q.mrr_m3_per_s, t.q.speed_security);
   t.min_cost = cost;
   return t;
 }
@@ -93,7 +92,7 @@ ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettin
               [&](std::size_t i) { built[i].emplace(tools_[i], settings_); });
   grids_.reserve(built.size());
   for (auto& g : built) grids_.push_back(std::move(*g));
-  nf_.available_power_w = settings_.limits.spindle_power_w;
+  nf_.available_power = settings_.limits.spindlePower();
   for (const AdmissibleGrid& g : grids_) {
     nf_.max_mrr_m3_per_s = std::max(nf_.max_mrr_m3_per_s, g.maxMrr());
     nf_.max_speed_security = std::max(nf_.max_speed_security, g.maxSpeedSecurity());

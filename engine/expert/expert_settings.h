@@ -3,7 +3,9 @@
 // the cutting-parameter grid, the machine and operation limits that bound the admissible space Q, the
 // stability method and margins (Rule 1), and the time-domain refinement (Rule 5). SI units.
 #include <limits>
+#include <vector>
 
+#include "model/spindle_power.h"
 #include "stability/lobe_computation.h"  // StabilityMethod, DynamicsSource
 
 namespace mx {
@@ -20,12 +22,17 @@ struct ExpertGrid {
   bool modal_candidate_speeds = true;  // Pareto Rule 7.2
 };
 
-// Constraints of the admissible space besides the lobes. +inf = no limit.
+// Constraints of the admissible space besides the lobes. +inf = no limit. The peak cutting power
+// (Pareto eq. 8) is bounded by the available power P_av(N) = min(P_max, 2 pi N T_max, curve(N)).
 struct MachineLimits {
-  double spindle_power_w = std::numeric_limits<double>::infinity();  // peak cutting power (Pareto eq. 8)
+  double spindle_power_w = std::numeric_limits<double>::infinity();        // P_max
+  double max_spindle_torque_nm = std::numeric_limits<double>::infinity();  // T_max: P <= 2 pi N T_max
+  std::vector<SpindlePowerPoint> spindle_curve;                            // the machine's power curve
   double max_spindle_rev_per_s = std::numeric_limits<double>::infinity();
   double max_feed_velocity_m_per_s = std::numeric_limits<double>::infinity();  // feed drive (Pareto Rule 6)
   double max_feed_per_tooth_m = std::numeric_limits<double>::infinity();       // operation maximum
+
+  SpindlePowerCurve spindlePower() const { return {spindle_power_w, max_spindle_torque_nm, spindle_curve}; }
 };
 
 struct StabilitySettings {

@@ -15,10 +15,14 @@ int compareWithTolerance(double a, double b) {
 }
 }  // namespace
 
-CostTerms toolCostTerms(const std::array<double, 3>& c, const CostNormalisation& nf, double power_w,
-                        double mrr_m3_per_s, double speed_security) {
+double powerCostTerm(double c1, double power_w, double available_power_w) {
+  return std::isfinite(available_power_w) ? c1 * power_w / available_power_w : 0.0;
+}
+
+CostTerms toolCostTerms(const std::array<double, 3>& c, const CostNormalisation& nf, double speed_rev_per_s,
+                        double power_w, double mrr_m3_per_s, double speed_security) {
   CostTerms t;
-  t.power = std::isfinite(nf.available_power_w) ? c[0] * power_w / nf.available_power_w : 0.0;
+  t.power = powerCostTerm(c[0], power_w, nf.available_power.available(speed_rev_per_s));
   t.mrr = c[1] * nf.max_mrr_m3_per_s / mrr_m3_per_s;
   t.speed_security = c[2] * nf.max_speed_security / speed_security;
   return t;

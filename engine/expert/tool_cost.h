@@ -1,17 +1,19 @@
 #pragma once
 // The 2006 tool cost function (eq. 13) and the deterministic order of candidate points.
 //   C = c1 P / P_av + c2 MRR_max / MRR + c3 Delta N_s,max / Delta N_s
-// NF1 = 1 / P_av (available spindle power), NF2 = MRR_max and NF3 = Delta N_s,max over the admissible
-// points of all candidate tools. Lower is better. Delta N_s = 0 points are not admissible, so the
-// third term is always finite.
+// NF1 = 1 / P_av (available spindle power at the point's speed: torque-limited below the spindle's
+// base speed), NF2 = MRR_max and NF3 = Delta N_s,max over the admissible points of all candidate tools. Lower is
+// better. Delta N_s = 0 points are not admissible, so the third term is always finite.
 #include <array>
+
+#include "model/spindle_power.h"
 
 namespace mx {
 
 struct CostNormalisation {
-  double available_power_w = 0.0;   // P_av (+inf: the power term vanishes)
-  double max_mrr_m3_per_s = 0.0;    // NF2
-  double max_speed_security = 0.0;  // NF3 [rev/s]
+  SpindlePowerCurve available_power;  // P_av(N) (+inf: the power term vanishes)
+  double max_mrr_m3_per_s = 0.0;      // NF2
+  double max_speed_security = 0.0;    // NF3 [rev/s]
 };
 
 struct CostTerms {
@@ -21,8 +23,11 @@ struct CostTerms {
   double total() const { return power + mrr + speed_security; }
 };
 
-CostTerms toolCostTerms(const std::array<double, 3>& c, const CostNormalisation& nf, double power_w,
-                        double mrr_m3_per_s, double speed_security);
+// The terms at a point of speed speed_rev_per_s (P_av is taken there).
+CostTerms toolCostTerms(const std::array<double, 3>& c, const CostNormalisation& nf, double speed_rev_per_s,
+                        double power_w, double mrr_m3_per_s, double speed_security);
+// c1 P / P_av with P_av = available_power_w; 0 when P_av is +inf.
+double powerCostTerm(double c1, double power_w, double available_power_w);
 
 // Candidate order (Rule 4 and q*): lower cost; costs within kCostTieTolerance (relative) are a tie,
 // broken by higher MRR, then lower power, then lower speed, then lower depth (each compared with the

@@ -31,6 +31,7 @@ const RuleSchema& RuleSchema::standard() {
     s.addPath("machine.spindle_power_W", N);
     s.addPath("machine.max_spindle_rpm", N);
     s.addPath("machine.max_feed_mm_s", N);
+    s.addPath("machine.max_torque_Nm", N);
     // Decision variables: the cutting point and the cost weights.
     for (const char* v :
          {"speed_rpm", "depth_mm", "feed_mm_per_tooth", "feed_velocity_mm_s", "mrr_cm3_s", "power_W", "weight.c1",

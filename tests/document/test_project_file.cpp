@@ -227,6 +227,36 @@ class TestProjectFile : public QObject {
     row("max rpm string", {"machine/max_spindle_rpm=\"fast\""},
         {"machine.max_spindle_rpm: expected a number, got string"});
     row("max feed negative", {"machine/max_feed_mm_s=-1"}, {"machine.max_feed_mm_s = -1: must be > 0"});
+    row("torque zero", {"machine/max_torque_Nm=0"}, {"machine.max_torque_Nm = 0: must be in (0, 1e+05]"});
+    row("torque negative", {"machine/max_torque_Nm=-9"}, {"machine.max_torque_Nm = -9: must be in (0, 1e+05]"});
+    row("torque too large", {"machine/max_torque_Nm=2e5"}, {"machine.max_torque_Nm = 2e+05: must be in (0, 1e+05]"});
+    row("torque infinite", {"machine/max_torque_Nm=inf"},
+        {"machine.max_torque_Nm = inf: must be a finite number in (0, 1e+05]"});
+    row("torque string", {"machine/max_torque_Nm=\"9 Nm\""}, {"machine.max_torque_Nm: expected a number, got string"});
+    const QString curve =
+        "machine/spindle_curve=[{\"speed_rpm\": 1000, \"power_W\": 2000}, "
+        "{\"speed_rpm\": 3000, \"power_W\": 4000}, {\"speed_rpm\": 6000, \"power_W\": 3000}]";
+    row("curve object", {"machine/spindle_curve={}"}, {"machine.spindle_curve: expected an array, got object"});
+    row("curve one row", {curve, "-machine/spindle_curve/2", "-machine/spindle_curve/1"},
+        {"machine.spindle_curve has 1 row(s): must have at least 2 rows of speed_rpm and power_W"});
+    row("curve empty", {"machine/spindle_curve=[]"}, {"machine.spindle_curve has 0 row(s): must have at least 2"});
+    row("curve row number", {curve, "machine/spindle_curve/1=5"},
+        {"machine.spindle_curve[1]: expected an object, got number"});
+    row("curve speed missing", {curve, "-machine/spindle_curve/0/speed_rpm"},
+        {"machine.spindle_curve[0].speed_rpm: missing (required number >= 0)"});
+    row("curve power string", {curve, "machine/spindle_curve/1/power_W=\"4 kW\""},
+        {"machine.spindle_curve[1].power_W: expected a number, got string"});
+    row("curve speed negative", {curve, "machine/spindle_curve/0/speed_rpm=-100"},
+        {"machine.spindle_curve[0].speed_rpm = -100: must be >= 0"});
+    row("curve speeds not increasing", {curve, "machine/spindle_curve/2/speed_rpm=3000"},
+        {"machine.spindle_curve[2].speed_rpm = 3000: must be > 3000 (machine.spindle_curve[1].speed_rpm: speeds "
+         "strictly increasing)"});
+    row("curve speeds decreasing", {curve, "machine/spindle_curve/2/speed_rpm=2500"},
+        {"machine.spindle_curve[2].speed_rpm = 2500: must be > 3000"});
+    row("curve power negative", {curve, "machine/spindle_curve/1/power_W=-1"},
+        {"machine.spindle_curve[1].power_W = -1: must be >= 0"});
+    row("curve power infinite", {curve, "machine/spindle_curve/2/power_W=inf"},
+        {"machine.spindle_curve[2].power_W = inf: must be a finite number >= 0"});
     // material
     row("Kt missing", {"-material/Kt_N_mm2"}, {"material.Kt_N_mm2: missing (required number > 0)"});
     row("Kt zero", {"material/Kt_N_mm2=0"}, {"material.Kt_N_mm2 = 0: must be > 0"});
@@ -495,6 +525,29 @@ class TestProjectFile : public QObject {
     QCOMPARE(expert["grid"].toObject()["speed_step_rpm"].toDouble(), 50.0);
     QVERIFY(!expert.contains("c"));  // defaults are not written out
     QCOMPARE(loadProject(out).tools[0].teeth, 4);
+  }
+
+  // machine.max_torque_Nm and machine.spindle_curve: read, written back, and a row's unknown key stays.
+  void spindleLimitsRoundTrip() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    const QJsonObject root = mutated(base, {"machine/max_torque_Nm=9", "machine/x_spindle_maker=\"ACME\"",
+                                            "machine/spindle_curve=[{\"speed_rpm\": 0, \"power_W\": 0}, "
+                                            "{\"speed_rpm\": 1500, \"power_W\": 1413.7, \"x_gear\": \"low\"}]"});
+    const Project p = projectFromJson(root);
+    QCOMPARE(*p.machine->max_torque_Nm, 9.0);
+    QCOMPARE(p.machine->spindle_curve->size(), std::size_t(2));
+    QCOMPARE(p.machine->spindle_curve->at(1).speed_rpm, 1500.0);
+    QCOMPARE(p.machine->spindle_curve->at(1).power_W, 1413.7);
+    const QJsonObject machine = projectToJson(p)["machine"].toObject();
+    QCOMPARE(machine["max_torque_Nm"].toDouble(), 9.0);
+    QCOMPARE(machine["x_spindle_maker"].toString(), QString("ACME"));
+    QCOMPARE(machine["spindle_curve"].toArray()[1].toObject()["x_gear"].toString(), QString("low"));
+    QCOMPARE(projectFromJson(projectToJson(p)).machine, p.machine);
+    Project removed = p;
+    removed.machine->max_torque_Nm.reset();
+    removed.machine->spindle_curve.reset();
+    const QJsonObject without = projectToJson(removed)["machine"].toObject();
+    QVERIFY(!without.contains("max_torque_Nm") && !without.contains("spindle_curve"));
   }
 
   void structuralEditsOnSave() {

@@ -1,6 +1,7 @@
 // The admissible space Q of one tool: b_min and the depth grid, every stored point re-checked against
 // every constraint independently, and the constraint that empties Q.
 #include <cmath>
+#include <numbers>
 
 #include "core/invalid_input.h"
 #include "expert/admissible_grid.h"
@@ -85,6 +86,67 @@ class TestAdmissibleGrid : public QObject {
     QCOMPARE(int(g.funnel().emptiedBy()), expected);
     const QString message = QString::fromStdString(describeConstraint(g.funnel().emptiedBy(), s));
     QVERIFY2(message.contains(text), qPrintable(message));
+  }
+
+  // A 1.5 N·m spindle with P_max = 745.3 W: P_av = 2 pi N 1.5 below the corner speed 745.3 / (2 pi 1.5)
+  // = 79.08 rev/s (4745 rpm). R1 at full immersion peaks at P = pi D K_t N b s_t (5.655e7 N b s_t W).
+  // At b = 0.5 mm (under b_min everywhere) and 1800 rpm: s_t = 0.3 mm takes 254.5 W <= 282.7 W
+  // (1.35 N·m), s_t = 0.4 mm takes 339.3 W > 282.7 W (1.8 N·m): excluded, though P_max alone admits it.
+  void torqueLineBoundsLowSpeeds() {
+    ExpertSettings s = test::rubioExpertSettings();
+    const AdmissibleGrid power_only(test::rubioR1(), s);
+    s.limits.max_spindle_torque_nm = 1.5;
+    const AdmissibleGrid g(test::rubioR1(), s);
+    const double n = 1800.0 / 60.0;
+    QCOMPARE_LE(std::abs(s.limits.spindlePower().available(n) - 282.743), 1e-3);
+    QCOMPARE_LE(std::abs(evaluateCut(g.setup(), {n, 0.5e-3, 0.3e-3}).peak_power_w - 254.5), 0.1);
+    QCOMPARE_LE(std::abs(evaluateCut(g.setup(), {n, 0.5e-3, 0.4e-3}).peak_power_w - 339.3), 0.1);
+    QVERIFY(g.isAdmissible(n, 0.5e-3, 0.3e-3));
+    QVERIFY(!g.isAdmissible(n, 0.5e-3, 0.4e-3));
+    QVERIFY(power_only.isAdmissible(n, 0.5e-3, 0.4e-3));
+    // Per cell: below the corner speed the feeds stop at the torque line, above it at P_max.
+    const double corner = 745.3 / (2.0 * std::numbers::pi * 1.5);
+    int torque_bound = 0, power_bound = 0;
+    for (const GridCell& c : g.cells()) {
+      const GridCell* same = nullptr;
+      for (const GridCell& p : power_only.cells())
+        if (p.speed_rev_per_s == c.speed_rev_per_s && p.depth_m == c.depth_m) same = &p;
+      QVERIFY(same != nullptr);
+      const double p_av = std::min(745.3, 2.0 * std::numbers::pi * c.speed_rev_per_s * 1.5);
+      QCOMPARE_LE(std::abs(c.available_power_w - p_av), 1e-9);
+      const int by_power = static_cast<int>(std::floor(p_av / (c.power_per_feed * g.feedStep()) * (1 + 1e-9)));
+      QCOMPARE(c.feed_count, std::min(by_power, 55));  // 55: the feed per tooth maximum, 0.55 mm
+      if (c.speed_rev_per_s < corner && c.feed_count < same->feed_count) ++torque_bound;
+      if (c.speed_rev_per_s >= corner) {
+        QCOMPARE(c.feed_count, same->feed_count);
+        ++power_bound;
+      }
+    }
+    QVERIFY(torque_bound > 0 && power_bound > 0);
+    QVERIFY(g.pointCount() < power_only.pointCount());
+  }
+
+  // A power curve whose torque rises with speed (a gear range): rows (2000 rpm, 200 W) and
+  // (6000 rpm, 2000 W) give 150 W at 1500 rpm (0.955 N·m, constant torque below the first row) and
+  // 650 W at 3000 rpm (2.07 N·m). The cut b = 0.5 mm, s_t = 0.25 mm needs 1.125 N·m: 176.7 W at
+  // 1500 rpm is excluded, the same cut at 3000 rpm (353.4 W <= 650 W and <= P_max) is admitted.
+  void powerCurveAdmitsTheCutAtAHigherSpeed() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.limits.spindle_curve = {{2000.0 / 60.0, 200.0}, {6000.0 / 60.0, 2000.0}};
+    const AdmissibleGrid g(test::rubioR1(), s);
+    const double low = 1500.0 / 60.0, high = 3000.0 / 60.0;
+    QCOMPARE_LE(std::abs(s.limits.spindlePower().available(low) - 150.0), 1e-9);
+    QCOMPARE_LE(std::abs(s.limits.spindlePower().available(high) - 650.0), 1e-9);
+    QCOMPARE_LE(std::abs(evaluateCut(g.setup(), {low, 0.5e-3, 0.25e-3}).peak_power_w - 176.7), 0.1);
+    QCOMPARE_LE(std::abs(evaluateCut(g.setup(), {high, 0.5e-3, 0.25e-3}).peak_power_w - 353.4), 0.1);
+    QVERIFY(!g.isAdmissible(low, 0.5e-3, 0.25e-3));
+    QVERIFY(g.isAdmissible(high, 0.5e-3, 0.25e-3));
+  }
+
+  void invalidCurveIsRefused() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.limits.spindle_curve = {{50.0, 200.0}, {40.0, 300.0}};
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, AdmissibleGrid(test::rubioR1(), s));
   }
 
   // A feed-drive limit removes exactly the feeds with s n_t N above it.

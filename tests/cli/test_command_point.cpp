@@ -1,0 +1,91 @@
+// millexpert-cli point: the available spindle power at the point's speed. Rubio et al. Pareto paper,
+// Table 4's P column (1696.5, 2273.3, 1894.4 W at 1800, 2412, 2010 rpm) is 0.3 pi N W, the 9 N·m
+// torque line of projects/rubio-pareto-case.mxproj (machine.max_torque_Nm = 9, P_max = 2745.3 W).
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <cmath>
+#include <numbers>
+
+#include "support/cli_runner.h"
+#include "support/json_mutation.h"
+#include "test_registry.h"
+
+namespace {
+const QString kCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
+
+mx::test::CliRun point(const QString& project, const QString& speed, const QString& depth, const QString& feed) {
+  return mx::test::runCli({"point", project, "--tool", "R1", "--speed", speed, "--depth", depth, "--feed", feed});
+}
+}  // namespace
+
+class TestCommandPoint : public QObject {
+  Q_OBJECT
+ private slots:
+  // Table 4's working points, s_t = v_f / (n_t N): P_av = 2 pi (N / 60) 9 within the paper's rounding;
+  // the peak cutting power (eq. 8) is far below it.
+  void table4PowerColumn_data() {
+    QTest::addColumn<QString>("speed");
+    QTest::addColumn<QString>("depth");
+    QTest::addColumn<double>("vf_mm_s");
+    QTest::addColumn<double>("paper_W");
+    QTest::addColumn<double>("cutting_W");
+    QTest::newRow("row 1") << "1800"
+                           << "0.3693" << 4.24 << 1696.5 << 29.5;
+    QTest::newRow("row 2") << "2412"
+                           << "0.3609" << 5.58 << 2273.3 << 38.0;
+    QTest::newRow("row 3") << "2010"
+                           << "1.5124" << 17.96 << 1894.4 << 512.0;
+  }
+  void table4PowerColumn() {
+    QFETCH(QString, speed);
+    QFETCH(QString, depth);
+    QFETCH(double, vf_mm_s);
+    QFETCH(double, paper_W);
+    QFETCH(double, cutting_W);
+    const double feed = vf_mm_s / (3.0 * speed.toDouble() / 60.0);
+    const mx::test::CliRun r = point(kCase, speed, depth, QString::number(feed, 'g', 10));
+    QCOMPARE(r.code, 0);
+    const double available = r.json["available_power_W"].toDouble();
+    QCOMPARE_LE(std::abs(available - paper_W), 0.05);
+    QCOMPARE_LE(std::abs(available - 0.3 * std::numbers::pi * speed.toDouble()), 1e-9 * available);
+    const double peak = r.json["peak_power_W"].toDouble();
+    QCOMPARE_LE(std::abs(peak - cutting_W), 0.1);
+    QCOMPARE_LE(std::abs(r.json["power_fraction"].toDouble() - peak / available), 1e-12);
+    QVERIFY(r.json["power_ok"].toBool());
+  }
+
+  // Above the corner speed 2745.3 / (2 pi 9) rev/s = 2912.85 rpm, P_max binds; without the torque
+  // P_av = P_max at every speed, and a cut of 4 mm at 0.3 mm/tooth, 1800 rpm (2035.8 W) passes only then.
+  void torqueLineAgainstPmax() {
+    QCOMPARE_LE(std::abs(point(kCase, "4000", "0.5", "0.1").json["available_power_W"].toDouble() - 2745.3), 1e-9);
+    const mx::test::CliRun limited = point(kCase, "1800", "4", "0.3");
+    QCOMPARE_LE(std::abs(limited.json["peak_power_W"].toDouble() - 2035.8), 0.5);
+    QVERIFY(!limited.json["power_ok"].toBool());
+    QCOMPARE_LE(std::abs(limited.json["power_fraction"].toDouble() - 2035.8 / 1696.46), 1e-3);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString plain =
+        mx::test::writeMutatedProject(kCase, {"-machine/max_torque_Nm"}, dir.filePath("plain.mxproj"));
+    const mx::test::CliRun r = point(plain, "1800", "4", "0.3");
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["available_power_W"].toDouble(), 2745.3);
+    QVERIFY(r.json["power_ok"].toBool());
+  }
+
+  // A power curve and the torque line together: the minimum of the three at the speed.
+  void curveAndTorqueTakeTheMinimum() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString project = mx::test::writeMutatedProject(
+        kCase,
+        {"machine/spindle_curve=[{\"speed_rpm\": 1000, \"power_W\": 500}, {\"speed_rpm\": 3000, \"power_W\": 2500}]"},
+        dir.filePath("curve.mxproj"));
+    // 2000 rpm: curve 1500 W, torque 1885.0 W, P_max 2745.3 W; 500 rpm: constant torque of the first
+    // row, 250 W (the 9 N·m line gives 471.2 W).
+    QCOMPARE_LE(std::abs(point(project, "2000", "0.5", "0.1").json["available_power_W"].toDouble() - 1500.0), 1e-9);
+    QCOMPARE_LE(std::abs(point(project, "500", "0.5", "0.1").json["available_power_W"].toDouble() - 250.0), 1e-9);
+  }
+};
+
+MX_REGISTER_TEST(TestCommandPoint)
+#include "test_command_point.moc"
