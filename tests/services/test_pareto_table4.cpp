@@ -292,6 +292,27 @@ class TestParetoTable4 : public QObject {
     QVERIFY(!req.satisfiedBy(p));
   }
 
+  // Row 3 (2010 rpm, 1.51 mm) lies far above our margined ZOA border (0.77 mm there, at most 0.91 mm
+  // between 1800 and 2300 rpm): outside Q, ROS < 0.
+  void row3IsOutsideQ() {
+    const Table4Row& r = kRows[2];
+    const ParetoPoint p = evaluateRow(r);
+    const StabilityBoundary& border = study().grid().boundary();
+    double peak = 0.0, peak_rpm = 0.0;  // the highest border of the lobe around 2010 rpm
+    for (double rpm = 1800; rpm <= 2300; rpm += 1)
+      if (border.depthLimit(rpmToRevPerS(rpm)) > peak) {
+        peak = border.depthLimit(rpmToRevPerS(rpm));
+        peak_rpm = rpm;
+      }
+    qInfo("row 3: ROS %.3f, border %.4f mm at 2010 rpm, highest %.4f mm at %.0f rpm", p.ros(),
+          border.depthLimit(rpmToRevPerS(r.rpm)) * 1e3, peak * 1e3, peak_rpm);
+    QCOMPARE_LE(std::abs(p.ros() - (-0.40)), 0.005);
+    // Half the row's depth: the paper's border there is about twice ours, not a few percent higher.
+    QCOMPARE_LE(std::abs(border.depthLimit(rpmToRevPerS(r.rpm)) * 1e3 - 0.7715), 0.0005);
+    QCOMPARE_LT(peak * 1e3, 0.6 * r.b_mm);
+    QCOMPARE(study().grid().violation(p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m), QConstraint::Stability);
+  }
+
   // ROS: the relative distance to a border c times ours reaches the printed 1.18 and 1.26 at
   // c = 1.12-1.13 for both rows, i.e. a paper b_min of about 0.81 mm against our 0.72 mm.
   void rosNeedsAHigherBorder() {
