@@ -146,7 +146,7 @@ class TestParetoTable4 : public QObject {
     QCOMPARE(fine, 5);
     const double b1 = kRows[0].b_mm, b2 = kRows[1].b_mm, b3 = kRows[2].b_mm;
 
-    // Scan Delta from 0.004 mm (2 * the smallest step that lets rows 1-2 differ by one) up to 0.1 mm.
+    // Scan Delta over [0.004, 0.1] mm; b1 - b2 = 0.0084 mm caps any step fitting both near 0.0084 mm.
     double fit12_lo = 0, fit12_hi = 0, fit3_lo = 0, fit3_hi = 0;
     bool row3_coarse = false;
     long n1 = 0, n2 = 0, n3 = 0;
