@@ -3,9 +3,9 @@
 //   y = K V^a b^c s_t^d,  V = pi D N [m/min], b [mm], s_t [mm/tooth].
 // The exponents of Table 3 were assigned to the variables from Table 4's ratios
 // (shared/notes/seed-reading.md): TOL = K1 V^-3.02 b^-1.14 s_t^-0.54, SURF = K2 V^0.4638 b^1.129
-// s_t^0.4461. The printed K1 = 1677110 and K2 = 6088 do not reproduce Table 4 in these units; the
-// calibrated K1 = 1.53e7 and K2 = 0.980 do (docs/fidelity.md). The constants come from the
-// project (pareto.taylor, pareto.roughness).
+// s_t^0.4461. In these units the printed K1 = 1677110 and K2 = 6088 are off Table 4 by one factor
+// each on all three rows (0.1096 and 6212); the calibrated K1 = 1.53e7 and K2 = 0.980 reproduce it
+// (docs/fidelity.md). The constants come from the project (pareto.taylor, pareto.roughness).
 #include <string>
 
 namespace mx {
