@@ -34,7 +34,9 @@
 // (the selection would differ without it) and "text". "binding": [{"key", "direction", "text"}]: the
 // requirement when binding, operator rules q sits on, and the limits of Q one more step of depth or feed
 // would break. "objective" and "normalisation" as used; "economics" (with pareto.economics):
-// {"machining_time_min", "tool_changes_per_part", "time_per_part_min", "cost_per_part", "tool_life_min"}.
+// {"machining_time_min", "tool_changes_per_part", "time_per_part_min", "cost_per_part", "tool_life_min",
+// "gilbert_tool_life_min"} (the tool life of Gilbert's optimum over speed alone; minimum cost for
+// "weighted"; null when the Taylor speed exponent is >= -1).
 // --objective min_cost|max_rate: q minimises Gilbert's cost or time per part instead of maximising J.
 // Exit 2: bad project/pareto section/flags/operator rules (parse error or contradiction); exit 1: empty
 // admissible space, or the operator rules exclude every point of it.
@@ -92,6 +94,15 @@ std::size_t frontLimit(const QCommandLineParser& parser) {
         QString("--front-limit = %1: must be an integer >= 0 (0: no limit)").arg(parser.value("front-limit")),
         kExitBadInput);
   return static_cast<std::size_t>(n);
+}
+
+// Gilbert's optimal tool life of the objective (min_cost for "weighted"), from the Taylor speed exponent.
+QJsonValue gilbertJson(const ParetoStudy& study, ParetoObjectiveKind objective) {
+  const EconomicObjective o =
+      objective == ParetoObjectiveKind::MaxRate ? EconomicObjective::MaxRate : EconomicObjective::MinCost;
+  const std::optional<double> t =
+      gilbertToolLife(*study.request().economics, study.request().models.tool_life.speed_exponent, o);
+  return t ? QJsonValue(*t / 60.0) : QJsonValue();
 }
 
 }  // namespace
@@ -174,7 +185,8 @@ int runParetoCommand(const QStringList& arguments) {
                                         {"tool_changes_per_part", e.tool_changes},
                                         {"time_per_part_min", e.time_per_part_s / 60.0},
                                         {"cost_per_part", e.cost_per_part},
-                                        {"tool_life_min", choice.point().tol()}});
+                                        {"tool_life_min", choice.point().tol()},
+                                        {"gilbert_tool_life_min", gilbertJson(study, choice.objective)}});
   }
   if (choice.ascent)
     out.insert("ascent",

@@ -171,6 +171,10 @@ class TestCliPareto : public QObject {
       economics[i] = r.json["economics"].toObject();
     }
     const QJsonObject &weighted = economics[0], &cheap = economics[1], &fast = economics[2];
+    // Gilbert (Taylor exponent -3.02, 2 min tool change, 45 per tool, 60 per hour): 2.02 (2 + 45) min,
+    // and 2.02 x 2 min for the maximum rate.
+    QCOMPARE_LE(std::abs(cheap["gilbert_tool_life_min"].toDouble() - 2.02 * 47.0), 1e-9);
+    QCOMPARE_LE(std::abs(fast["gilbert_tool_life_min"].toDouble() - 2.02 * 2.0), 1e-9);
     QCOMPARE_LE(cheap["cost_per_part"].toDouble(), weighted["cost_per_part"].toDouble());
     QCOMPARE_LE(cheap["cost_per_part"].toDouble(), fast["cost_per_part"].toDouble());
     QCOMPARE_LE(fast["time_per_part_min"].toDouble(), cheap["time_per_part_min"].toDouble());
