@@ -179,7 +179,8 @@ std::vector<BindingLimit> ParetoStudy::bindingLimits(const ParetoChoice& choice)
   const std::vector<double>& speeds = grid_->speeds();
   const double rpm = revPerSToRpm(q.speed_rev_per_s);
   if (std::abs(q.speed_rev_per_s - speeds.front()) <= 1e-9 * speeds.front())
-    out.push_back({"grid", "speed", QString("speed %1 rpm is the lowest of the grid (expert.grid.speed_from_rpm)").arg(rpm)});
+    out.push_back(
+        {"grid", "speed", QString("speed %1 rpm is the lowest of the grid (expert.grid.speed_from_rpm)").arg(rpm)});
   else if (std::abs(q.speed_rev_per_s - speeds.back()) <= 1e-9 * speeds.back())
     out.push_back({"grid", "speed", QString("speed %1 rpm is the highest of the grid").arg(rpm)});
   return out;
