@@ -1,12 +1,19 @@
 // millexpert-cli rank PROJECT [--c c1,c2,c3] [--cr c1r,c2r,c3r] [--no-simulation] [--method zoa|sdm]
-//                 [--dynamics modal|measured]
+//                 [--dynamics modal|measured] [--chatter-at SPEED:DEPTH[:FREQ_HZ]]... [--chatter-tool ID]
 // The 2006 expert system (section 3): Rule 4 tool ranking by minimum tool cost (eq. 13), q* of the
 // selected tool, Rule 5 q** by C_resultant (eq. 18-20) from time-domain simulations of the best K
 // points, Rule 6 malfunction loop. Prints
 //   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
 //    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
 //    "c" (the weights after Rule 6), "method", "dynamics_used": {tool: "modal"|"measured"},
-//    "excluded": [{"tool","reason"}...]}. Tools with a tap test use it with --dynamics measured.
+//    "excluded": [{"tool","reason"}...], "reported_chatter": [{"tool","speed_rpm","depth_mm","freq_Hz",
+//    "region","holds_chosen_point"}...], "reported_chatter_iterations", "malfunction_limit_reached"}.
+//    Tools with a tap test use it with --dynamics measured.
+// Rule 6 on evidence: chatter observed at the machine (the project's expert.reported_chatter and each
+//   --chatter-at, rpm:mm[:Hz], of --chatter-tool, default the tool Rule 4 selects at the given weights)
+//   steps the weights until the chosen point (q**, q* with --no-simulation) leaves every reported
+//   region of its tool (+-2 % in speed, the reported depth and deeper). Exit 1, after the JSON, when
+//   the loop stops at expert.max_malfunction_iterations with the point still in a region.
 // Module VII operator rules (Rule 18, docs/operator-rules.md), when the project has "operator_rules":
 //   each tool's rules are evaluated in its own context; fired constraints on the point variables
 //   restrict that tool's points (a tool left without points is "excluded" with the reason "operator
@@ -25,6 +32,7 @@
 #include "services/expert_request.h"
 #include "services/pareto_request.h"
 #include "services/pareto_rules.h"
+#include "services/reported_chatter.h"
 
 namespace mx::app {
 
@@ -52,6 +60,33 @@ ParetoPoint paretoPointOf(const ExpertPoint& q) {
   return p;
 }
 
+// The --chatter-at reports, for --chatter-tool or the tool Rule 4 selects at the request's weights.
+std::vector<ChatterReportSpec> commandLineReports(const QCommandLineParser& parser, const ExpertRequest& request,
+                                                  const ExpertSession& session) {
+  const QStringList texts = parser.values("chatter-at");
+  if (texts.isEmpty()) return {};
+  QString tool = parser.value("chatter-tool");
+  if (!parser.isSet("chatter-tool")) {
+    const Ranking r = session.rank(request.weights.c);
+    if (r.tools.empty())
+      throw CliError("--chatter-at: no tool has an admissible point to report it on", kExitComputationFailed);
+    tool = request.tool_ids[static_cast<qsizetype>(r.selected().tool)];
+  } else if (!request.tool_ids.contains(tool)) {
+    throw CliError(QString("--chatter-tool = '%1': must be one of %2").arg(tool, request.tool_ids.join(", ")),
+                   kExitBadInput);
+  }
+  std::vector<ChatterReportSpec> out;
+  for (const QString& t : texts) out.push_back(parseChatterAt(t, tool));
+  return out;
+}
+
+QJsonArray reportedChatterArray(const std::vector<ChatterReportSpec>& reports, const ExpertResult& result,
+                                const QStringList& tool_ids) {
+  QJsonArray out;
+  for (const ChatterReportSpec& c : reports) out.append(reportedChatterJson(c, result, tool_ids));
+  return out;
+}
+
 }  // namespace
 
 int runRankCommand(const QStringList& arguments) {
@@ -64,6 +99,11 @@ int runRankCommand(const QStringList& arguments) {
       {"no-simulation", "Rule 4 only: no time-domain refinement (q_star_star null, no Rule 6)."},
       {"method", "Lobes: zoa (default) or sdm; default: the project's expert.method.", "METHOD"},
       dynamicsCommandOption(),
+      {"chatter-at",
+       "Chatter observed at the machine at SPEED [rpm] and DEPTH [mm] (FREQ_HZ: its frequency); repeatable. "
+       "Rule 6 moves the weights until the chosen point leaves +-2 % of SPEED at DEPTH and deeper.",
+       "SPEED:DEPTH[:FREQ_HZ]"},
+      {"chatter-tool", "The tool of the --chatter-at reports (default: the tool Rule 4 selects).", "ID"},
   });
   const QString path = parseSubcommand(parser, arguments);
   std::optional<std::vector<double>> c, cr;
@@ -108,7 +148,10 @@ int runRankCommand(const QStringList& arguments) {
       any = any || (!session.grid(t).empty() && !session.filteredOut(t));
     if (!any) throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
   }
-  const ExpertResult result = session.run(request.weights, simulate);
+  std::vector<ChatterReportSpec> reports = project.requireExpert().reported_chatter;
+  const std::vector<ChatterReportSpec> flagged = commandLineReports(parser, request, session);
+  reports.insert(reports.end(), flagged.begin(), flagged.end());
+  const ExpertResult result = session.run(request.weights, simulate, engineChatterReports(reports, request.tool_ids));
 
   QJsonArray ranking;
   for (const ToolChoice& t : result.ranking.tools)
@@ -136,7 +179,10 @@ int runRankCommand(const QStringList& arguments) {
       {"c", QJsonArray{result.weights.c[0], result.weights.c[1], result.weights.c[2]}},
       {"method", request.settings.stability.method == StabilityMethod::ZeroOrder ? "zoa" : "sdm"},
       {"dynamics_used", dynamics_used},
-      {"excluded", excluded}};
+      {"excluded", excluded},
+      {"reported_chatter", reportedChatterArray(reports, result, request.tool_ids)},
+      {"reported_chatter_iterations", result.reported_chatter_iterations},
+      {"malfunction_limit_reached", result.malfunction_limit_reached}};
   if (!toolRules.empty()) {
     QJsonObject rules =
         rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);
@@ -144,6 +190,9 @@ int runRankCommand(const QStringList& arguments) {
     out.insert("rules", rules);
   }
   printJson(out);
+  const QString unresolved = unresolvedChatterMessage(result, reports, request.tool_ids,
+                                                      request.settings.refinement.max_malfunction_iterations);
+  if (!unresolved.isEmpty()) throw CliError(unresolved, kExitComputationFailed);
   return kExitOk;
 }
 

@@ -53,7 +53,12 @@ const QStringList& keyOrder() {
                                  "cr",
                                  "ct",
                                  "cf",
-                                 "grid",  // expert
+                                 "grid",
+                                 "max_malfunction_iterations",
+                                 "reported_chatter",  // expert
+                                 "tool",
+                                 "speed_rpm",
+                                 "depth_mm",  // reported chatter
                                  "speed_from_rpm",
                                  "speed_to_rpm",
                                  "speed_step_rpm",

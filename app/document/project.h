@@ -102,6 +102,16 @@ struct ExpertGridSpec {
   bool operator==(const ExpertGridSpec&) const = default;
 };
 
+// Chatter observed at the machine with one tool (expert.reported_chatter): the evidence of Rule 6.
+struct ChatterReportSpec {
+  QString tool;                   // a tool id of the project
+  double speed_rpm = 0.0;         // where it chattered
+  double depth_mm = 0.0;          // axial depth of cut
+  std::optional<double> freq_Hz;  // the chatter frequency, when measured
+  QJsonObject unknown;            // the file's keys this build does not know; they stay with this row
+  bool operator==(const ChatterReportSpec&) const = default;
+};
+
 struct ExpertSpec {
   double delta_per_s = 0.0;
   double alpha = 1.0;
@@ -110,8 +120,10 @@ struct ExpertSpec {
   std::vector<double> ct{0.5, 0.5};
   std::vector<double> cf{0.5, 0.5};
   std::optional<ExpertGridSpec> grid;
-  std::optional<QString> method;        // "zoa" (default) or "sdm"
-  std::optional<int> simulated_points;  // K of Rule 5, [1, 1000], default 12
+  std::optional<QString> method;                    // "zoa" (default) or "sdm"
+  std::optional<int> simulated_points;              // K of Rule 5, [1, 1000], default 12
+  std::optional<int> max_malfunction_iterations;    // bound of the Rule 6 loop, [0, 10000], default 200
+  std::vector<ChatterReportSpec> reported_chatter;  // Rule 6 evidence; empty: none
   bool operator==(const ExpertSpec&) const = default;
 };
 

@@ -6,16 +6,24 @@ namespace mx::app {
 
 namespace {
 
-using ExpertWeights = std::array<std::vector<double>, 4>;
+// The expert inputs a re-ranking takes without a new session: the weights and the Rule 6 evidence.
+struct ExpertRerankInputs {
+  std::array<std::vector<double>, 4> weights;
+  std::vector<ChatterReportSpec> reported_chatter;
+  bool operator==(const ExpertRerankInputs&) const = default;
+};
 
 std::optional<ExpertSpec> withoutWeights(std::optional<ExpertSpec> e) {
-  if (e) e->c = e->cr = e->ct = e->cf = {};
+  if (e) {
+    e->c = e->cr = e->ct = e->cf = {};
+    e->reported_chatter.clear();
+  }
   return e;
 }
 
-std::optional<ExpertWeights> weightsOf(const std::optional<ExpertSpec>& e) {
+std::optional<ExpertRerankInputs> weightsOf(const std::optional<ExpertSpec>& e) {
   if (!e) return std::nullopt;
-  return ExpertWeights{e->c, e->cr, e->ct, e->cf};
+  return ExpertRerankInputs{{e->c, e->cr, e->ct, e->cf}, e->reported_chatter};
 }
 
 std::optional<ControlSection> withoutBeta(std::optional<ControlSection> c) {

@@ -15,7 +15,7 @@ enum class ProjectSection : unsigned {
   Material = 1u << 3,
   Operation = 1u << 4,
   Expert = 1u << 5,         // everything of "expert" but the cost weights
-  ExpertWeights = 1u << 6,  // expert.c, cr, ct, cf
+  ExpertWeights = 1u << 6,  // expert.c, cr, ct, cf, reported_chatter (no new session)
   Control = 1u << 7,        // everything of "control" but beta
   ControlBeta = 1u << 8,
   Sdnrp = 1u << 9,

@@ -6,6 +6,7 @@
 
 #include "document/json_reader.h"
 #include "document/project.h"
+#include "document/project_reported_chatter.h"
 #include "document/project_sections_io.h"
 #include "document/project_validation.h"
 
@@ -167,6 +168,7 @@ ExpertSpec readExpert(const ObjectReader& r) {
   if (auto cf = r.optionalNumbers("cf")) e.cf = *cf;
   if (auto grid = r.optionalObject("grid")) e.grid = readGrid(*grid);
   readExpertExtras(r, e);
+  readReportedChatter(r, e);
   return e;
 }
 

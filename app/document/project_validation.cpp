@@ -3,6 +3,7 @@
 #include <QHash>
 #include <QStringList>
 
+#include "document/project_reported_chatter.h"
 #include "document/project_rules.h"
 #include "document/project_sections_io.h"
 
@@ -165,6 +166,7 @@ void validateProject(const Project& project) {
   if (project.operation) validateOperation(*project.operation);
   validateTools(project.tools, project.operation);
   if (project.expert) validateExpert(*project.expert);
+  if (project.expert) validateReportedChatter(*project.expert, project.tools);
   validateProcessSections(project);
 }
 

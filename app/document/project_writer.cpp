@@ -4,6 +4,7 @@
 #include <QJsonArray>
 
 #include "document/project.h"
+#include "document/project_reported_chatter.h"
 #include "document/project_sections_io.h"
 
 namespace mx::app {
@@ -133,6 +134,7 @@ QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
     o.remove("grid");
   }
   putExpertExtras(o, e);
+  putReportedChatter(o, e);
   return o;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/invalid_input.h"
+#include "services/reported_chatter.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -58,6 +59,8 @@ ExpertRequest expertRequestFromProject(const Project& project) {
 
   if (expert.method) s.stability.method = stabilityMethodFromText(*expert.method, "expert.method");
   if (expert.simulated_points) s.refinement.simulated_points = *expert.simulated_points;
+  if (expert.max_malfunction_iterations) s.refinement.max_malfunction_iterations = *expert.max_malfunction_iterations;
+  r.reported_chatter = engineChatterReports(expert.reported_chatter, r.tool_ids);
   if (expert.grid && expert.grid->modal_candidate_speeds)
     s.grid.modal_candidate_speeds = *expert.grid->modal_candidate_speeds;
 

@@ -196,21 +196,28 @@ Refinement ExpertSession::refine(std::size_t tool, const CostWeights& weights) {
   return r;
 }
 
-ExpertResult ExpertSession::run(const CostWeights& weights, bool simulate) {
+ExpertResult ExpertSession::run(const CostWeights& weights, bool simulate, const std::vector<ChatterReport>& reported) {
   weights.validate();
+  for (std::size_t i = 0; i < reported.size(); ++i)
+    validateChatterReport(reported[i], toolCount(), "reported chatter #" + std::to_string(i + 1));
   ExpertResult result;
   result.weights = weights;
   for (;;) {
     result.ranking = rank(result.weights.c);
-    if (result.ranking.tools.empty() || !simulate) return result;
-    result.refinement = refine(result.ranking.selected().tool, result.weights);
-    if (!result.refinement->chosen().metrics.malfunction(settings_.refinement.malfunction_ratio)) break;
+    if (result.ranking.tools.empty()) return result;
+    if (simulate) result.refinement = refine(result.ranking.selected().tool, result.weights);
+    const std::optional<std::size_t> holding = reportHolding(reported, result.chosenTool(), result.chosenPoint());
+    const bool simulated =
+        simulate && result.refinement->chosen().metrics.malfunction(settings_.refinement.malfunction_ratio);
+    if (!holding && !simulated) break;
     if (result.malfunction_iterations >= settings_.refinement.max_malfunction_iterations) {
       result.malfunction_limit_reached = true;
+      result.unresolved_report = holding;
       break;
     }
     result.weights.c = malfunctionStep(result.weights.c);
     ++result.malfunction_iterations;
+    if (holding) ++result.reported_chatter_iterations;
   }
   return result;
 }

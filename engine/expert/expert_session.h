@@ -6,7 +6,7 @@
 // (N, b) cell), and the normalisation factors NF1..NF3 over all tools. Afterwards
 //   rank(c)      Rule 4: one pass over the cached cells (no lobes, no simulation),
 //   refine(...)  Rule 5: simulates the best K points of a tool through the SimulationCache,
-//   run(...)     Rules 4, 5 and 6 (the malfunction loop).
+//   run(...)     Rules 4, 5 and 6 (the malfunction loop, on simulated or reported chatter).
 // A weight change re-uses every cached grid and simulation. Thread-safety: const members may run
 // concurrently; refine/run mutate the simulation cache (internally locked).
 #include <array>
@@ -19,6 +19,7 @@
 #include "expert/admissible_grid.h"
 #include "expert/cost_weights.h"
 #include "expert/expert_settings.h"
+#include "expert/reported_chatter.h"
 #include "expert/resultant_cost.h"
 #include "expert/simulation_cache.h"
 #include "expert/tool_cost.h"
@@ -54,7 +55,15 @@ struct ExpertResult {
   Ranking ranking;
   std::optional<Refinement> refinement;  // absent without simulation
   int malfunction_iterations = 0;
+  int reported_chatter_iterations = 0;     // the steps a reported chatter region triggered
   bool malfunction_limit_reached = false;  // Rule 6 stopped at the iteration limit
+  // At the limit: the report whose region still holds the chosen point (nullopt: the simulated
+  // malfunction persists).
+  std::optional<std::size_t> unresolved_report;
+
+  // q** with simulation, else q*: the point Rule 6 judges.
+  const ExpertPoint& chosenPoint() const { return refinement ? refinement->chosen().q : ranking.selected().q; }
+  std::size_t chosenTool() const { return refinement ? refinement->tool : ranking.selected().tool; }
 };
 
 class ExpertSession {
@@ -87,8 +96,11 @@ class ExpertSession {
 
   // Rule 5 for one tool: simulate its best K points (cached) and pick q** by C_resultant.
   Refinement refine(std::size_t tool, const CostWeights& weights);
-  // Rules 4-6. Without simulation: Rule 4 only (no q**, no Rule 6).
-  ExpertResult run(const CostWeights& weights, bool simulate);
+  // Rules 4-6. Rule 6 steps the weights (malfunctionStep) while the chosen point (q**, or q* without
+  // simulation) lies in a reported chatter region of its tool or, with simulation, while its simulated
+  // A_chatter exceeds A_toothpass; at most refinement.max_malfunction_iterations steps. Throws
+  // InvalidInput for a bad report (validateChatterReport).
+  ExpertResult run(const CostWeights& weights, bool simulate, const std::vector<ChatterReport>& reported = {});
 
   const SimulationCache& simulations() const { return cache_; }
 

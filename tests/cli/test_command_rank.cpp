@@ -45,6 +45,21 @@ QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
   out.write(QJsonDocument(root).toJson());
   return path;
 }
+
+// The Rubio project with this expert key set, written to dir.
+QString rubioWithExpert(const QTemporaryDir& dir, const QString& key, const QJsonValue& value) {
+  QFile in(kRubio);
+  in.open(QIODevice::ReadOnly);
+  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+  QJsonObject expert = root["expert"].toObject();
+  expert[key] = value;
+  root["expert"] = expert;
+  QString path = dir.filePath("expert.mxproj");
+  QFile out(path);
+  out.open(QIODevice::WriteOnly);
+  out.write(QJsonDocument(root).toJson());
+  return path;
+}
 }  // namespace
 
 class TestCliRank : public QObject {
@@ -86,6 +101,68 @@ class TestCliRank : public QObject {
     QVERIFY(r.json["q_star_star"].isNull());
     QCOMPARE(r.json["selected"].toString(), QString("R1"));
     QCOMPARE(r.json["c"].toArray()[1].toDouble(), 0.8);
+  }
+
+  // Rule 6 on chatter heard at q* (5800 rpm, 0.5048 mm): the weights take n Rule 6 steps
+  // (c2 = 0.99^n 0.725) and q* leaves the reported region.
+  void chatterAtMovesTheWeights() {
+    const Run r = cli({"rank", kRubio, "--no-simulation", "--chatter-at", "5800:0.5:640"});
+    QCOMPARE(r.code, 0);
+    const int n = r.json["malfunction_iterations"].toInt();
+    QVERIFY(n > 0);
+    QCOMPARE(r.json["reported_chatter_iterations"].toInt(), n);
+    QCOMPARE(r.json["malfunction_limit_reached"].toBool(), false);
+    QCOMPARE_LE(std::abs(r.json["c"].toArray()[1].toDouble() - 0.725 * std::pow(0.99, n)), 1e-12);
+    const QJsonArray reports = r.json["reported_chatter"].toArray();
+    QCOMPARE(reports.size(), 1);
+    const QJsonObject report = reports[0].toObject();
+    QCOMPARE(report["tool"].toString(), QString("R1"));
+    QCOMPARE(report["freq_Hz"].toDouble(), 640.0);
+    QCOMPARE(report["holds_chosen_point"].toBool(), false);
+    const QJsonObject region = report["region"].toObject();
+    QCOMPARE_LE(std::abs(region["speed_from_rpm"].toDouble() - 5684.0), 1e-9);
+    QCOMPARE_LE(std::abs(region["speed_to_rpm"].toDouble() - 5916.0), 1e-9);
+    const QJsonObject q = r.json["q_star"].toObject();
+    const bool outside = q["depth_mm"].toDouble() < 0.5 || std::abs(q["speed_rpm"].toDouble() / 5800.0 - 1.0) > 0.02;
+    QVERIFY(outside);
+  }
+
+  // The project's reported chatter and the bound: every depth at 5800 rpm chatters, three steps allowed.
+  void reportedChatterStopsAtBound() {
+    QTemporaryDir dir;
+    const QString bounded = rubioWithExpert(dir, "max_malfunction_iterations", 3);
+    const Run r = cli({"rank", bounded, "--no-simulation", "--chatter-at", "5800:0.001"});
+    QCOMPARE(r.code, 1);
+    QCOMPARE(r.json["malfunction_iterations"].toInt(), 3);
+    QCOMPARE(r.json["malfunction_limit_reached"].toBool(), true);
+    QVERIFY(r.json["reported_chatter"].toArray()[0].toObject()["holds_chosen_point"].toBool());
+    QVERIFY2(r.err.contains("Rule 6 stopped at its bound of 3 iterations") && r.err.contains("5800 rpm, 0.001 mm"),
+             qPrintable(r.err));
+    const QJsonArray fromFile{QJsonObject{{"tool", "R1"}, {"speed_rpm", 5800}, {"depth_mm", 0.5}}};
+    const Run p = cli({"rank", rubioWithExpert(dir, "reported_chatter", fromFile), "--no-simulation"});
+    QCOMPARE(p.code, 0);
+    QVERIFY(p.json["malfunction_iterations"].toInt() > 0);
+    QVERIFY(p.json["reported_chatter"].toArray()[0].toObject()["freq_Hz"].isNull());
+  }
+
+  void badChatterAt_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no depth") << QStringList{"--chatter-at", "5800"} << "SPEED_RPM:DEPTH_MM";
+    QTest::newRow("negative depth") << QStringList{"--chatter-at", "5800:-1"} << "depth [mm] '-1'";
+    QTest::newRow("text speed") << QStringList{"--chatter-at", "fast:0.5"} << "speed [rpm] 'fast'";
+    QTest::newRow("zero frequency") << QStringList{"--chatter-at", "5800:0.5:0"} << "frequency [Hz] '0'";
+    QTest::newRow("four fields") << QStringList{"--chatter-at", "1:2:3:4"} << "SPEED_RPM:DEPTH_MM";
+    QTest::newRow("unknown tool") << QStringList{"--chatter-at", "5800:0.5", "--chatter-tool", "R9"}
+                                  << "--chatter-tool = 'R9': must be one of R1, R2";
+  }
+  void badChatterAt() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    const Run r = cli(QStringList{"rank", kRubio, "--no-simulation"} + args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(r.json.isEmpty());
   }
 
   void badWeights_data() {

@@ -156,6 +156,75 @@ class TestExpertSession : public QObject {
     QCOMPARE_LE(std::abs(c[1] - 0.725 * std::pow(0.99, 200)), 1e-12);
   }
 
+  // Rule 6 on reported chatter, Rule 4 only: chatter heard at q* moves the weights by the Rule 6 step
+  // until q* leaves the reported region; one step fewer leaves it inside (the loop stops at once).
+  void reportedChatterMovesQStar() {
+    ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
+    const CostWeights w;
+    const ExpertPoint q0 = session.rank(w.c).selected().q;
+    ChatterReport heard;
+    heard.tool = kR1;
+    heard.speed_rev_per_s = q0.speed_rev_per_s;
+    heard.depth_m = q0.depth_m;
+    heard.frequency_hz = 640.0;
+    const ExpertResult r = session.run(w, false, {heard});
+    const int n = r.malfunction_iterations;
+    const ExpertPoint& q = r.chosenPoint();
+    qInfo("reported at q* (%.0f rpm, %.4f mm): %d steps, q* -> (%.0f rpm, %.4f mm, %.3f mm), c = (%.4f, %.4f, %.4f)",
+          q0.speed_rev_per_s * 60, q0.depth_m * 1e3, n, q.speed_rev_per_s * 60, q.depth_m * 1e3,
+          q.feed_per_tooth_m * 1e3, r.weights.c[0], r.weights.c[1], r.weights.c[2]);
+    QVERIFY(n > 0);
+    QCOMPARE(r.reported_chatter_iterations, n);
+    QVERIFY(!r.malfunction_limit_reached);
+    QVERIFY(!chatterRegionOf(heard).contains(q.speed_rev_per_s, q.depth_m));
+    QVERIFY(session.grid(r.chosenTool()).isAdmissible(q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m));
+    // The Rule 6 step moves 1 % of c2 to c3 each time: c2 = 0.99^n c2(0), c1 unchanged.
+    QCOMPARE_LE(std::abs(r.weights.c[1] - 0.725 * std::pow(0.99, n)), 1e-12);
+    QCOMPARE_LE(std::abs(r.weights.c[2] - (0.075 + 0.725 * (1.0 - std::pow(0.99, n)))), 1e-12);
+    QCOMPARE_LE(std::abs(r.weights.c[0] - 0.2), 1e-12);
+    std::array<double, 3> before = w.c;
+    for (int i = 0; i + 1 < n; ++i) before = malfunctionStep(before);
+    const Ranking previous = session.rank(before);
+    QCOMPARE(previous.selected().tool, kR1);
+    QVERIFY(chatterRegionOf(heard).contains(previous.selected().q.speed_rev_per_s, previous.selected().q.depth_m));
+  }
+
+  // A report of the other tool, or clear of q*, does not fire Rule 6.
+  void reportElsewhereDoesNotFire() {
+    ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
+    const ExpertPoint q0 = session.rank(CostWeights{}.c).selected().q;
+    ChatterReport other;
+    other.tool = kR2;
+    other.speed_rev_per_s = q0.speed_rev_per_s;
+    other.depth_m = q0.depth_m;
+    ChatterReport deeper;
+    deeper.tool = kR1;
+    deeper.speed_rev_per_s = q0.speed_rev_per_s;
+    deeper.depth_m = 1.5 * q0.depth_m;
+    const ExpertResult r = session.run(CostWeights{}, false, {other, deeper});
+    QCOMPARE(r.malfunction_iterations, 0);
+    QCOMPARE(r.chosenPoint().depth_m, q0.depth_m);
+  }
+
+  // At its bound the loop stops with the report that still holds the chosen point.
+  void reportedChatterStopsAtBound() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.refinement.max_malfunction_iterations = 2;
+    ExpertSession session({test::rubioR1(), test::rubioR2()}, s);
+    const ExpertPoint q0 = session.rank(CostWeights{}.c).selected().q;
+    ChatterReport heard;
+    heard.tool = kR1;
+    heard.speed_rev_per_s = q0.speed_rev_per_s;
+    heard.depth_m = 1e-6;  // every depth at this speed chatters
+    const ExpertResult r = session.run(CostWeights{}, false, {heard});
+    QCOMPARE(r.malfunction_iterations, 2);
+    QVERIFY(r.malfunction_limit_reached);
+    QCOMPARE(r.unresolved_report, std::optional<std::size_t>(0));
+    ChatterReport bad = heard;
+    bad.tool = 5;
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, session.run(CostWeights{}, false, {bad}));
+  }
+
   void emptySpaceNamesConstraint() {
     ExpertSettings s = test::rubioExpertSettings();
     s.limits.spindle_power_w = 1e-3;
