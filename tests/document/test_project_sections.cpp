@@ -313,6 +313,74 @@ class TestProjectSections : public QObject {
     QCOMPARE(c.exit_angle_rad, im.exit_rad);
   }
 
+  void reportedChatterIsChecked_data() {
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("json");
+    QTest::addColumn<QString>("message");  // empty: accepted
+    QTest::newRow("valid") << "reported_chatter"
+                           << R"([{"tool": "R1", "speed_rpm": 5800, "depth_mm": 0.5}])"
+                           << "";
+    QTest::newRow("unknown tool") << "reported_chatter"
+                                  << R"([{"tool": "R7", "speed_rpm": 5800, "depth_mm": 0.5}])"
+                                  << "expert.reported_chatter[0].tool = 'R7': must be the id of a tool of the project";
+    QTest::newRow("zero speed") << "reported_chatter"
+                                << R"([{"tool": "R1", "speed_rpm": 0, "depth_mm": 0.5}])"
+                                << "expert.reported_chatter[0].speed_rpm = 0: must be in [0.001, 1e6]";
+    QTest::newRow("huge depth") << "reported_chatter"
+                                << R"([{"tool": "R1", "speed_rpm": 5800, "depth_mm": 5000}])"
+                                << "expert.reported_chatter[0].depth_mm = 5000: must be in [1e-6, 1000]";
+    QTest::newRow("missing depth") << "reported_chatter"
+                                   << R"([{"tool": "R1", "speed_rpm": 5800}])"
+                                   << "expert.reported_chatter[0].depth_mm: missing (required number > 0)";
+    QTest::newRow("negative frequency") << "reported_chatter"
+                                        << R"([{"tool": "R1", "speed_rpm": 5800, "depth_mm": 0.5, "freq_Hz": -3}])"
+                                        << "expert.reported_chatter[0].freq_Hz = -3: must be in [0.001, 1e6]";
+    QTest::newRow("not an array") << "reported_chatter"
+                                  << R"({"tool": "R1"})"
+                                  << "expert.reported_chatter: expected an array, got object";
+    QTest::newRow("bound negative") << "max_malfunction_iterations"
+                                    << "-1"
+                                    << "expert.max_malfunction_iterations = -1: must be an integer in [0, 10000]";
+    QTest::newRow("bound fractional") << "max_malfunction_iterations"
+                                      << "2.5"
+                                      << "expert.max_malfunction_iterations = 2.5: must be an integer in [0, 10000]";
+    QTest::newRow("bound zero") << "max_malfunction_iterations"
+                                << "0"
+                                << "";
+  }
+  void reportedChatterIsChecked() {
+    QFETCH(QString, key);
+    QFETCH(QString, json);
+    QFETCH(QString, message);
+    QJsonObject root = readJson(projectsPath("rubio2006-tool-selection.mxproj"));
+    QJsonObject expert = root["expert"].toObject();
+    expert[key] = QJsonDocument::fromJson(("{\"v\": " + json + "}").toUtf8()).object()["v"];
+    root["expert"] = expert;
+    QCOMPARE(errorOf(root), message);
+  }
+
+  // The reports are typed, written back in order, and a row keeps the keys this build does not know.
+  void reportedChatterRoundTrips() {
+    QJsonObject root = readJson(projectsPath("rubio2006-tool-selection.mxproj"));
+    QJsonObject expert = root["expert"].toObject();
+    expert["reported_chatter"] = QJsonArray{
+        QJsonObject{{"tool", "R2"}, {"speed_rpm", 4000}, {"depth_mm", 0.2}, {"freq_Hz", 950.5}, {"heard_by", "Ana"}},
+        QJsonObject{{"tool", "R1"}, {"speed_rpm", 5800}, {"depth_mm", 0.5}}};
+    expert["max_malfunction_iterations"] = 50;
+    root["expert"] = expert;
+    const Project p = projectFromJson(root);
+    QCOMPARE(p.expert->reported_chatter.size(), std::size_t(2));
+    QCOMPARE(p.expert->reported_chatter[0].tool, QString("R2"));
+    QCOMPARE(*p.expert->reported_chatter[0].freq_Hz, 950.5);
+    QVERIFY(!p.expert->reported_chatter[1].freq_Hz);
+    QCOMPARE(*p.expert->max_malfunction_iterations, 50);
+    const QJsonObject written = projectToJson(p);
+    const QJsonArray rows = written["expert"].toObject()["reported_chatter"].toArray();
+    QCOMPARE(rows[0].toObject()["heard_by"].toString(), QString("Ana"));
+    QCOMPARE(rows[1].toObject()["speed_rpm"].toDouble(), 5800.0);
+    QVERIFY(projectFromJson(written).expert == p.expert);
+  }
+
   void expertExtrasAreChecked() {
     QJsonObject expert{{"delta_per_s", 0.0}, {"alpha", 1.0}, {"method", "fem"}};
     QCOMPARE(errorOf(minimalWith("expert", expert)), QString("expert.method = 'fem': must be zoa or sdm"));
