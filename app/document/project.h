@@ -102,6 +102,16 @@ struct ExpertGridSpec {
   bool operator==(const ExpertGridSpec&) const = default;
 };
 
+// The Rule 5 pattern search around q* (engine/expert/rule5_search.h); an absent step is derived from
+// the grid (speed step / 4, depth step / 2, feed step / 2).
+struct Rule5SearchSpec {
+  std::optional<double> speed_step_rpm;  // (0, 1e5]
+  std::optional<double> depth_step_mm;   // (0, 100]
+  std::optional<double> feed_step_mm;    // (0, 10]
+  std::optional<int> max_iterations;     // [0, 1000], default 20; 0: the best K points by C only
+  bool operator==(const Rule5SearchSpec&) const = default;
+};
+
 struct ExpertSpec {
   double delta_per_s = 0.0;
   double alpha = 1.0;
@@ -112,6 +122,7 @@ struct ExpertSpec {
   std::optional<ExpertGridSpec> grid;
   std::optional<QString> method;        // "zoa" (default) or "sdm"
   std::optional<int> simulated_points;  // K of Rule 5, [1, 1000], default 12
+  std::optional<Rule5SearchSpec> rule5_search;
   bool operator==(const ExpertSpec&) const = default;
 };
 
