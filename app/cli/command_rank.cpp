@@ -1,13 +1,16 @@
 // millexpert-cli rank PROJECT [--c c1,c2,c3] [--cr c1r,c2r,c3r] [--no-simulation] [--method zoa|sdm]
 //                 [--dynamics modal|measured] [--chatter-at SPEED:DEPTH[:FREQ_HZ]]... [--chatter-tool ID]
 // The 2006 expert system (section 3): Rule 4 tool ranking by minimum tool cost (eq. 13), q* of the
-// selected tool, Rule 5 q** by C_resultant (eq. 18-20) from time-domain simulations of the best K
-// points, Rule 6 malfunction loop. Prints
+// selected tool, Rule 5 q** by C_resultant (eq. 18-20) from a pattern search around q* (seeded with the
+// best K points by C, every point simulated in the time domain), Rule 6 malfunction loop. Prints
 //   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
 //    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
 //    "c" (the weights after Rule 6), "method", "dynamics_used": {tool: "modal"|"measured"},
 //    "excluded": [{"tool","reason"}...], "reported_chatter": [{"tool","speed_rpm","depth_mm","freq_Hz",
-//    "region","holds_chosen_point"}...], "reported_chatter_iterations", "malfunction_limit_reached"}.
+//    "region","holds_chosen_point"}...], "reported_chatter_iterations", "malfunction_limit_reached",
+//    "rule5": {"candidates" (points scored), "seeds" (of them the best K by C), "iterations",
+//              "converged" (steps below the resolutions), "simulations" (run, not from the cache),
+//              "c_resultant" (at q**)} (null with --no-simulation)}.
 //    Tools with a tap test use it with --dynamics measured.
 // Rule 6 on evidence: chatter observed at the machine (the project's expert.reported_chatter and each
 //   --chatter-at, rpm:mm[:Hz], of --chatter-tool, default the tool Rule 4 selects at the given weights)
@@ -47,6 +50,16 @@ QJsonObject pointJson(const ExpertPoint& q) {
   return {{"speed_rpm", rounded(revPerSToRpm(q.speed_rev_per_s))},
           {"depth_mm", rounded(q.depth_m * 1e3)},
           {"feed_mm_per_tooth", rounded(q.feed_per_tooth_m * 1e3)}};
+}
+
+// The Rule 5 pattern search (rule5_search.h) behind q**.
+QJsonObject rule5Json(const Refinement& r) {
+  return {{"candidates", static_cast<qint64>(r.candidates.size())},
+          {"seeds", static_cast<qint64>(r.seed_count)},
+          {"iterations", r.search_iterations},
+          {"converged", r.search_converged},
+          {"simulations", static_cast<qint64>(r.simulations_run)},
+          {"c_resultant", r.chosen().resultant}};
 }
 
 // The rules' point variables of an expert point (MRR in the objective slot).
@@ -183,6 +196,7 @@ int runRankCommand(const QStringList& arguments) {
       {"reported_chatter", reportedChatterArray(reports, result, request.tool_ids)},
       {"reported_chatter_iterations", result.reported_chatter_iterations},
       {"malfunction_limit_reached", result.malfunction_limit_reached}};
+  out.insert("rule5", result.refinement ? QJsonValue(rule5Json(*result.refinement)) : QJsonValue());
   if (!toolRules.empty()) {
     QJsonObject rules =
         rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);

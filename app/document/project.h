@@ -112,6 +112,16 @@ struct ChatterReportSpec {
   bool operator==(const ChatterReportSpec&) const = default;
 };
 
+// The Rule 5 pattern search around q* (engine/expert/rule5_search.h); an absent step is derived from
+// the grid (speed step / 4, depth step / 2, feed step / 2).
+struct Rule5SearchSpec {
+  std::optional<double> speed_step_rpm;  // (0, 1e5]
+  std::optional<double> depth_step_mm;   // (0, 100]
+  std::optional<double> feed_step_mm;    // (0, 10]
+  std::optional<int> max_iterations;     // [0, 1000], default 20; 0: the best K points by C only
+  bool operator==(const Rule5SearchSpec&) const = default;
+};
+
 struct ExpertSpec {
   double delta_per_s = 0.0;
   double alpha = 1.0;
@@ -124,6 +134,7 @@ struct ExpertSpec {
   std::optional<int> simulated_points;              // K of Rule 5, [1, 1000], default 12
   std::optional<int> max_malfunction_iterations;    // bound of the Rule 6 loop, [0, 10000], default 200
   std::vector<ChatterReportSpec> reported_chatter;  // Rule 6 evidence; empty: none
+  std::optional<Rule5SearchSpec> rule5_search;
   bool operator==(const ExpertSpec&) const = default;
 };
 

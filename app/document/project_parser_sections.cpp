@@ -220,6 +220,28 @@ void readProcessSections(const ObjectReader& root, Project& p) {
   p.operator_rules = readOperatorRules(root);
 }
 
+namespace {
+constexpr FieldRange kRule5SpeedStep{1e-9, 1e5, "in (0, 1e5]"};
+constexpr FieldRange kRule5DepthStep{1e-12, 100.0, "in (0, 100]"};
+constexpr FieldRange kRule5FeedStep{1e-12, 10.0, "in (0, 10]"};
+constexpr FieldRange kRule5Iterations{0.0, 1000.0, "an integer in [0, 1000]", true};
+
+std::optional<double> checkedNumber(const ObjectReader& r, const QString& key, const FieldRange& range) {
+  const std::optional<double> v = r.optionalNumber(key);
+  if (v) checkField(r.pathOf(key), *v, range);
+  return v;
+}
+
+Rule5SearchSpec readRule5Search(const ObjectReader& r) {
+  Rule5SearchSpec s;
+  s.speed_step_rpm = checkedNumber(r, "speed_step_rpm", kRule5SpeedStep);
+  s.depth_step_mm = checkedNumber(r, "depth_step_mm", kRule5DepthStep);
+  s.feed_step_mm = checkedNumber(r, "feed_step_mm", kRule5FeedStep);
+  if (const auto n = checkedNumber(r, "max_iterations", kRule5Iterations)) s.max_iterations = static_cast<int>(*n);
+  return s;
+}
+}  // namespace
+
 void readExpertExtras(const ObjectReader& r, ExpertSpec& e) {
   e.method = r.optionalString("method");
   if (r.has("simulated_points")) {
@@ -227,6 +249,7 @@ void readExpertExtras(const ObjectReader& r, ExpertSpec& e) {
     checkField(r.pathOf("simulated_points"), k, {1.0, 1000.0, "an integer in [1, 1000]", true});
     e.simulated_points = static_cast<int>(k);
   }
+  if (auto search = r.optionalObject("rule5_search")) e.rule5_search = readRule5Search(*search);
   if (auto grid = r.optionalObject("grid"); grid && e.grid)
     e.grid->modal_candidate_speeds = grid->optionalBool("modal_candidate_speeds");
 }

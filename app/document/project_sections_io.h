@@ -11,7 +11,7 @@ namespace mx::app {
 
 // Reads every process section present in `root` (presence and types; ranges come later).
 void readProcessSections(const ObjectReader& root, Project& project);
-// The expert keys beyond the core ones: method, simulated_points, grid.modal_candidate_speeds.
+// The expert keys beyond the core ones: method, simulated_points, rule5_search, grid.modal_candidate_speeds.
 void readExpertExtras(const ObjectReader& expert, ExpertSpec& spec);
 
 void validateProcessSections(const Project& project);

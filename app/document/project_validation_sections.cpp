@@ -221,6 +221,14 @@ void validateExpertExtras(const ExpertSpec& e) {
   checkOneOf("expert.method", e.method, {"zoa", "sdm"}, "zoa or sdm");
   if (e.simulated_points)
     checkField("expert.simulated_points", *e.simulated_points, {1.0, 1000.0, "an integer in [1, 1000]", true});
+  if (const auto& s = e.rule5_search) {
+    checkField("expert.rule5_search.speed_step_rpm", s->speed_step_rpm, {1e-9, 1e5, "in (0, 1e5]"});
+    checkField("expert.rule5_search.depth_step_mm", s->depth_step_mm, {1e-12, 100.0, "in (0, 100]"});
+    checkField("expert.rule5_search.feed_step_mm", s->feed_step_mm, {1e-12, 10.0, "in (0, 10]"});
+    if (s->max_iterations)
+      checkField("expert.rule5_search.max_iterations", *s->max_iterations,
+                 {0.0, 1000.0, "an integer in [0, 1000]", true});
+  }
 }
 
 }  // namespace mx::app

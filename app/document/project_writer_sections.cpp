@@ -253,6 +253,24 @@ void putExpertExtras(QJsonObject& o, const ExpertSpec& e) {
   } else {
     o.remove("simulated_points");
   }
+  if (e.rule5_search) {
+    QJsonObject search = o.value("rule5_search").toObject();
+    const Rule5SearchSpec& s = *e.rule5_search;
+    const auto put = [&search](const QString& key, const auto& value) {
+      if (value) {
+        putNumber(search, key, static_cast<double>(*value));
+      } else {
+        search.remove(key);
+      }
+    };
+    put("speed_step_rpm", s.speed_step_rpm);
+    put("depth_step_mm", s.depth_step_mm);
+    put("feed_step_mm", s.feed_step_mm);
+    put("max_iterations", s.max_iterations);
+    o.insert("rule5_search", search);
+  } else {
+    o.remove("rule5_search");
+  }
   if (e.grid && o.value("grid").isObject()) {
     QJsonObject grid = o.value("grid").toObject();
     putBool(grid, "modal_candidate_speeds", e.grid->modal_candidate_speeds);

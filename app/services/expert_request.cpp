@@ -59,6 +59,13 @@ ExpertRequest expertRequestFromProject(const Project& project) {
 
   if (expert.method) s.stability.method = stabilityMethodFromText(*expert.method, "expert.method");
   if (expert.simulated_points) s.refinement.simulated_points = *expert.simulated_points;
+  if (const auto& search = expert.rule5_search) {
+    Rule5SearchSettings& t = s.refinement.search;
+    if (search->speed_step_rpm) t.speed_step_rev_per_s = rpmToRevPerS(*search->speed_step_rpm);
+    if (search->depth_step_mm) t.depth_step_m = *search->depth_step_mm * 1e-3;
+    if (search->feed_step_mm) t.feed_step_m = *search->feed_step_mm * 1e-3;
+    if (search->max_iterations) t.max_iterations = *search->max_iterations;
+  }
   if (expert.max_malfunction_iterations) s.refinement.max_malfunction_iterations = *expert.max_malfunction_iterations;
   r.reported_chatter = engineChatterReports(expert.reported_chatter, r.tool_ids);
   if (expert.grid && expert.grid->modal_candidate_speeds)

@@ -176,23 +176,36 @@ std::vector<ToolChoice> ExpertSession::bestPoints(std::size_t tool, const std::a
 Refinement ExpertSession::refine(std::size_t tool, const CostWeights& weights) {
   weights.validate();
   const int k = std::max(1, settings_.refinement.simulated_points);
-  const std::vector<ToolChoice> points = bestPoints(tool, weights.c, static_cast<std::size_t>(k));
-  if (points.empty()) throw InvalidInput("Rule 5: the tool has no admissible point");
-  std::vector<SimulationCache::Request> requests;
-  requests.reserve(points.size());
-  for (const ToolChoice& p : points)
-    requests.push_back({tool, &tools_[tool], {p.q.speed_rev_per_s, p.q.depth_m, p.q.feed_per_tooth_m}});
-  const std::vector<ResponseMetrics> metrics = cache_.evaluate(requests);
+  const std::vector<ToolChoice> best_by_cost = bestPoints(tool, weights.c, static_cast<std::size_t>(k));
+  if (best_by_cost.empty()) throw InvalidInput("Rule 5: the tool has no admissible point");
+  std::vector<ExpertPoint> seeds;
+  for (const ToolChoice& p : best_by_cost) seeds.push_back(p.q);
+  const AdmissibleGrid& grid = grids_.at(tool);
+  Rule5Problem problem;
+  problem.grid = &grid;
+  problem.speed_from_rev_per_s = settings_.grid.speed_from_rev_per_s;
+  problem.speed_to_rev_per_s = settings_.grid.speed_to_rev_per_s;
+  problem.nf = nf_;
+  problem.weights = weights;
+  problem.admit = admitFor(tool);
+  problem.simulate = [&](const std::vector<ExpertPoint>& points) {
+    std::vector<SimulationCache::Request> requests;
+    requests.reserve(points.size());
+    for (const ExpertPoint& q : points)
+      requests.push_back({tool, &tools_[tool], {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}});
+    return cache_.evaluate(requests);
+  };
+  const Rule5SearchSettings& search = settings_.refinement.search;
+  const std::size_t runs_before = cache_.simulationsRun();
+  Rule5Result found = searchRule5(problem, seeds.front(), seeds, rule5StartSteps(grid, settings_.grid, search), search);
   Refinement r;
   r.tool = tool;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    RefinementCandidate c;
-    c.q = points[i].q;
-    c.cost = points[i].min_cost;
-    c.metrics = metrics[i];
-    r.candidates.push_back(c);
-  }
-  r.best = selectByResultantCost(r.candidates, weights);
+  r.candidates = std::move(found.candidates);
+  r.best = found.best;
+  r.seed_count = seeds.size();
+  r.search_iterations = found.iterations;
+  r.search_converged = found.converged;
+  r.simulations_run = cache_.simulationsRun() - runs_before;
   return r;
 }
 

@@ -5,7 +5,8 @@
 // admissible grid Q (AdmissibleGrid: power and MRR per unit feed, Delta N_s and feed count of every
 // (N, b) cell), and the normalisation factors NF1..NF3 over all tools. Afterwards
 //   rank(c)      Rule 4: one pass over the cached cells (no lobes, no simulation),
-//   refine(...)  Rule 5: simulates the best K points of a tool through the SimulationCache,
+//   refine(...)  Rule 5: a pattern search around q*, seeded with the best K points by C, simulated
+//                through the SimulationCache,
 //   run(...)     Rules 4, 5 and 6 (the malfunction loop, on simulated or reported chatter).
 // A weight change re-uses every cached grid and simulation. Thread-safety: const members may run
 // concurrently; refine/run mutate the simulation cache (internally locked).
@@ -21,6 +22,7 @@
 #include "expert/expert_settings.h"
 #include "expert/reported_chatter.h"
 #include "expert/resultant_cost.h"
+#include "expert/rule5_search.h"
 #include "expert/simulation_cache.h"
 #include "expert/tool_cost.h"
 #include "model/milling_setup.h"
@@ -45,8 +47,14 @@ struct Ranking {
 
 struct Refinement {
   std::size_t tool = 0;
-  std::vector<RefinementCandidate> candidates;  // the best K points by C, in that order
-  std::size_t best = 0;                         // q** = candidates[best].q
+  // Every point simulated for Rule 5: the best K points by C (best first), then the pattern search's
+  // points in the order scored (rule5_search.h). C_t and C_f are normalised over all of them.
+  std::vector<RefinementCandidate> candidates;
+  std::size_t best = 0;        // q** = candidates[best].q
+  std::size_t seed_count = 0;  // the leading candidates that are the best K by C
+  int search_iterations = 0;
+  bool search_converged = false;    // the steps reached the resolutions (not the iteration limit)
+  std::size_t simulations_run = 0;  // simulated by this call; the other candidates came from the cache
   const RefinementCandidate& chosen() const { return candidates[best]; }
 };
 
@@ -94,7 +102,8 @@ class ExpertSession {
   // The best `count` points of one tool by C, best first.
   std::vector<ToolChoice> bestPoints(std::size_t tool, const std::array<double, 3>& c, std::size_t count) const;
 
-  // Rule 5 for one tool: simulate its best K points (cached) and pick q** by C_resultant.
+  // Rule 5 for one tool: the pattern search around its q* (rule5_search.h), seeded with its best K points
+  // by C, every point simulated through the cache; q** minimises C_resultant over all of them.
   Refinement refine(std::size_t tool, const CostWeights& weights);
   // Rules 4-6. Rule 6 steps the weights (malfunctionStep) while the chosen point (q**, or q* without
   // simulation) lies in a reported chatter region of its tool or, with simulation, while its simulated

@@ -51,9 +51,22 @@ struct StabilitySettings {
   DynamicsSource dynamics = DynamicsSource::Modal;  // ZOA: Measured uses the tools' measured FRFs (delta = 0)
 };
 
+// Rule 5 pattern search around q* (rule5_search.h). A start step of 0 is derived from the grid.
+struct Rule5SearchSettings {
+  double speed_step_rev_per_s = 0.0;  // 0: a quarter of the grid's speed step
+  double depth_step_m = 0.0;          // 0: half the grid's depth step (b_min / depth_divisions)
+  double feed_step_m = 0.0;           // 0: half the grid's feed step
+  // A variable whose step has fallen below its resolution is no longer varied.
+  double speed_resolution_rev_per_s = 10.0 / 60.0;
+  double depth_resolution_m = 1e-6;
+  double feed_resolution_m = 1e-6;
+  int max_iterations = 20;  // 0: only the best K points by C are simulated
+};
+
 // Rule 5 refinement and Rule 6 malfunction loop.
 struct RefinementSettings {
-  int simulated_points = 12;             // K: the best K points by C of the selected tool are simulated
+  int simulated_points = 12;  // K: the best K points by C of the selected tool seed the Rule 5 search
+  Rule5SearchSettings search;
   int revolutions = 60;                  // per simulation, from rest
   int evaluated_revolutions = 20;        // spectra over the last ones
   int threads = 0;                       // 0 = std::thread::hardware_concurrency()

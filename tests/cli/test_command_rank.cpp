@@ -92,6 +92,17 @@ class TestCliRank : public QObject {
                 1e-9);
     const QJsonObject qss = r.json["q_star_star"].toObject();
     for (const char* key : {"speed_rpm", "depth_mm", "feed_mm_per_tooth"}) QVERIFY2(qss.contains(key), key);
+    // Rule 5 pattern search: ours (5800 rpm, 0.2885 mm, 0.4725 mm); the paper's q** = (5680, 0.457, 0.265).
+    QCOMPARE(qss["speed_rpm"].toDouble(), 5800.0);
+    QCOMPARE_LE(std::abs(qss["depth_mm"].toDouble() - 0.28846), 1e-5);
+    QCOMPARE_LE(std::abs(qss["feed_mm_per_tooth"].toDouble() - 0.4725), 1e-6);
+    const QJsonObject rule5 = r.json["rule5"].toObject();
+    for (const char* key : {"candidates", "seeds", "iterations", "converged", "simulations", "c_resultant"})
+      QVERIFY2(rule5.contains(key), key);
+    QCOMPARE(rule5["seeds"].toInt(), 12);
+    QVERIFY(rule5["candidates"].toInt() > 12);
+    QCOMPARE(rule5["simulations"].toInt(), rule5["candidates"].toInt());
+    QVERIFY(rule5["converged"].toBool());
     QCOMPARE(r.json["malfunction_iterations"].toInt(), 0);
   }
 

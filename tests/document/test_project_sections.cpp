@@ -392,6 +392,34 @@ class TestProjectSections : public QObject {
     const Project p = projectFromJson(minimalWith("expert", expert));
     QCOMPARE(*p.expert->simulated_points, 20);
     QCOMPARE(*p.expert->method, QString("sdm"));
+    QVERIFY(!p.expert->rule5_search);
+  }
+
+  // expert.rule5_search: optional steps and iteration limit, checked and written back.
+  void expertRule5Search() {
+    QJsonObject expert{{"delta_per_s", 0.0}, {"alpha", 1.0}};
+    expert.insert("rule5_search", QJsonObject{{"speed_step_rpm", 0.0}});
+    QCOMPARE(errorOf(minimalWith("expert", expert)),
+             QString("expert.rule5_search.speed_step_rpm = 0: must be in (0, 1e5]"));
+    expert.insert("rule5_search", QJsonObject{{"max_iterations", 2.5}});
+    QCOMPARE(errorOf(minimalWith("expert", expert)),
+             QString("expert.rule5_search.max_iterations = 2.5: must be an integer in [0, 1000]"));
+    expert.insert("rule5_search", QJsonObject{{"speed_step_rpm", 100.0},
+                                              {"depth_step_mm", 0.02},
+                                              {"feed_step_mm", 0.004},
+                                              {"max_iterations", 7},
+                                              {"future_key", 1}});
+    const Project p = projectFromJson(minimalWith("expert", expert));
+    QVERIFY(p.expert->rule5_search);
+    const Rule5SearchSpec& s = *p.expert->rule5_search;
+    QCOMPARE(*s.speed_step_rpm, 100.0);
+    QCOMPARE(*s.depth_step_mm, 0.02);
+    QCOMPARE(*s.feed_step_mm, 0.004);
+    QCOMPARE(*s.max_iterations, 7);
+    const QJsonObject written = projectToJson(p).value("expert").toObject().value("rule5_search").toObject();
+    QCOMPARE(written.value("max_iterations").toInt(), 7);
+    QCOMPARE(written.value("future_key").toInt(), 1);  // unknown keys survive
+    QVERIFY(*projectFromJson(projectToJson(p)).expert == *p.expert);
   }
 };
 
