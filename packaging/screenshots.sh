@@ -12,6 +12,7 @@ shot projects/benchmark-insperger-1dof.mxproj --screenshot docs/screenshots/insp
 shot projects/rubio-pareto-case.mxproj --pareto --docks paretoFrontDock,paretoWeightsDock --screenshot docs/screenshots/pareto-front.png
 shot projects/rubio-pareto-case.mxproj --pareto --docks monitoringDock,operatorRulesDock --screenshot docs/screenshots/pareto-monitoring.png
 shot projects/rubio2006-adaptive-control.mxproj --docks controlDock --screenshot docs/screenshots/force-control.png
+shot projects/rubio-pareto-case.mxproj --docks controlDock --screenshot docs/screenshots/force-control-programme.png
 shot projects/cus-zuperl-sdnrp.mxproj --sdnrp --docks surfaceFinishDock --screenshot docs/screenshots/surface-finish.png
 shot projects/cus-zuperl-sdnrp.mxproj --program projects/programs/pocket_mm.nc --docks partProgramDock --screenshot docs/screenshots/part-program.png
 shot projects/landers-face-milling.mxproj --supervise smc2 --docks supervisorDock --screenshot docs/screenshots/supervisor.png

@@ -17,6 +17,7 @@ struct ControlTraces {                                                        //
   QStringList theta_names;                                                    // e.g. "a1","a2","b0","b1"
   QVector<double> dense_t_s, dense_force_n, dense_feed_mm_s;                  // continuous plant output between samples
   QVector<double> depth_t_s, depth_mm;                                        // depth of cut seen by the tool over time
+  QVector<double> change_t_s;  // the tool enters the next programmed point (N, b) or depth step
 };
 
 struct ControlMetricsView {

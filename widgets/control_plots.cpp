@@ -84,6 +84,10 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   f->setLineStyle(QCPGraph::lsNone);
   f->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 4));
   addGraph(2, feed_axis, "feed limit", tr("Feed limit f_max"), QPen(kLimitColor, 1.5, Qt::DashLine));
+  // Pareto paper, Fig. 6: the programmed point (N, b) changes, as vertical lines over the feed
+  QCPGraph* changes = addGraph(2, feed_axis, "changes", tr("Change of programmed N or b"),
+                               QPen(QColor(120, 70, 160), 1.2, Qt::DashDotLine));
+  changes->setLineStyle(QCPGraph::lsImpulse);
 
   if (rows_ == Rows::All) addRow(tr("Estimates \u03b8 [\u2013]"), 0);
   rects_.back()->axis(QCPAxis::atBottom)->setLabel(timeAxisLabel());
@@ -175,6 +179,9 @@ void ControlPlots::setTraces(const ControlTraces& t) {
   setSeries(graphs_["error"], t.t_s, t.error_n);
   setSeries(graphs_["feed"], t.t_s, t.feed_mm_s);
   setSeries(graphs_["feed continuous"], t.dense_t_s, t.dense_feed_mm_s);
+  const double top = t.feed_mm_s.isEmpty() ? 1.0 : *std::max_element(t.feed_mm_s.begin(), t.feed_mm_s.end());
+  setSeries(graphs_["changes"], t.change_t_s, QVector<double>(t.change_t_s.size(), top));
+  graphs_["changes"]->setVisible(!t.change_t_s.isEmpty());
   // Without the continuous feed, the samples are joined.
   graphs_["feed"]->setLineStyle(graphs_["feed continuous"]->dataCount() > 0 ? QCPGraph::lsNone : QCPGraph::lsLine);
   rebuildThetaGraphs(t.theta_names);

@@ -4,7 +4,8 @@
 //   (1) force F [N]: reference (steps), model output, plant output at the samples (markers) and between
 //       them (thin line), with the depth of cut b [mm] on the right axis;
 //   (2) tracking error e = F_p - F_m [N];
-//   (3) feed, the control law [mm/s], at the samples and between them, with the feed limit;
+//   (3) feed, the control law [mm/s], at the samples and between them, with the feed limit and the changes of the
+//       programmed point (N, b) as vertical lines (the Pareto paper's Fig. 6, lower panel);
 //   (4) parameter estimates theta [-] (Rows::All only).
 // Each row has its legend above it. QCustomPlot stays behind this class.
 #include <QHash>
@@ -37,7 +38,7 @@ class ControlPlots : public QWidget {
   void clear();
 
   // Points of a named graph: "reference", "model", "force sampled", "force continuous", "depth",
-  // "error", "feed", "feed continuous", "feed limit", "theta <name>"; -1 for an unknown name.
+  // "error", "feed", "feed continuous", "feed limit", "changes", "theta <name>"; -1 for an unknown name.
   int graphPointCount(const QString& name) const;
   QStringList graphNames() const;
   int rowCount() const { return static_cast<int>(rects_.size()); }

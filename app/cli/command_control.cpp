@@ -8,6 +8,10 @@
 //     "sampling_period_s", "tau_c_ms", "threshold_beta", "completed", "duration_s", "samples",
 //     "rls_resets", "poles", "zeros" ([re, im] of H_beta of the true plant at the first depth).
 //     Without --beta: the project's control.beta.
+//     Every run adds "sample_period" ("spindle" | "rule4", control.sample_period or --sample-period),
+//     "rule4_periods", "sampling_period_min_s", "sampling_period_max_s" and "spindle_revolutions" (the samples a
+//     once-per-revolution loop would take); with control.programme (Pareto paper, Fig. 6), "programme": the
+//     per-point summary and the feed and force history (control_programme_json.h).
 //   --csv FILE: one row per sample (t, reference, model, sampled force, error, feed, depth, estimates);
 //   --csv-continuous FILE: the continuous output between samples (force, its interpolation, feeds).
 //   --sweep-beta prints {"beta": [...], "Jc": [...], "best_beta"} plus "unstable_zero": [...],
@@ -18,6 +22,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "cli/control_programme_json.h"
 #include "control/beta_sweep.h"
 #include "core/invalid_input.h"
 #include "services/control_request.h"
@@ -86,6 +91,8 @@ int runControlCommand(const QStringList& arguments) {
       {"csv", "Write the sampled signals (one row per spindle period) to FILE.", "FILE"},
       {"csv-continuous", "Write the continuous output between samples to FILE.", "FILE"},
       {"sweep-beta", "J_c(beta) over FROM:TO:STEP instead of one run.", "FROM:TO:STEP"},
+      {"sample-period", "spindle or rule4 (Pareto paper, Rule 4). Default: control.sample_period.", "RULE"},
+      {"rule4-periods", "k of Rule 4, an integer in [1, 100]. Default: control.rule4_periods.", "K"},
   });
   const QString path = parseSubcommand(parser, arguments);
   const std::optional<double> beta = numberOption(parser, "beta", -1.0, 1.0);
@@ -95,6 +102,13 @@ int runControlCommand(const QStringList& arguments) {
   ControlRequest request = controlRequestFromProject(project);
   AdaptiveControlSettings& s = request.settings;
   if (beta) s.beta = *beta;
+  if (parser.isSet("sample-period")) {
+    const QString rule = parser.value("sample-period");
+    if (rule != "spindle" && rule != "rule4")
+      throw CliError(QString("--sample-period = '%1': must be one of spindle, rule4").arg(rule), kExitBadInput);
+    s.sample_period = rule == "rule4" ? SamplePeriodRule::Rule4 : SamplePeriodRule::Spindle;
+  }
+  if (const std::optional<int> k = integerOption(parser, "rule4-periods", 1, 100)) s.rule4_periods = *k;
   const double threshold = closedLoopZeroThreshold(s);
 
   QJsonObject out;
@@ -138,6 +152,8 @@ int runControlCommand(const QStringList& arguments) {
              {"rls_resets", m.rls_resets},
              {"poles", complexJson(r.plant.poles())},
              {"zeros", complexJson(r.plant.zeros())}};
+      addSamplingPeriodJson(s, r, out);
+      if (request.programme) out.insert("programme", programmeJson(request, r));
       if (parser.isSet("csv")) writeSamples(parser.value("csv"), r);
       if (parser.isSet("csv-continuous")) writeContinuous(parser.value("csv-continuous"), r);
     }

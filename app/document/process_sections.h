@@ -38,6 +38,16 @@ struct ControlRlsSpec {
   bool operator==(const ControlRlsSpec&) const = default;
 };
 
+// One programmed point of "control.programme" (Pareto paper, Fig. 6: the Table 4 points in sequence).
+struct ControlProgrammePointSpec {
+  double speed_rpm = 0.0;           // (0, 100000]
+  double depth_mm = 0.0;            // (0, 1000]
+  double length_mm = 0.0;           // (0, 1e7], tool path cut at this point
+  std::optional<double> feed_mm_s;  // (0, 1e5], the point's own programmed feed, reported beside the controller's
+  QJsonObject unknown;              // the file's keys this build does not know
+  bool operator==(const ControlProgrammePointSpec&) const = default;
+};
+
 // "control": adaptive force control under beta-FROH.
 struct ControlSection {
   std::optional<QString> tool;                   // default the first tool
@@ -55,6 +65,9 @@ struct ControlSection {
   std::optional<ControlReferenceModelSpec> reference_model;
   std::optional<ControlRlsSpec> rls;
   std::optional<std::vector<DepthStepSpec>> workpiece;
+  std::optional<QString> sample_period;  // "spindle" (default) or "rule4" (Pareto paper, Rule 4)
+  std::optional<double> rule4_periods;   // k of Rule 4, an integer in [1, 100], default 4
+  std::optional<std::vector<ControlProgrammePointSpec>> programme;  // replaces spindle_rpm and workpiece
   bool operator==(const ControlSection&) const = default;
 };
 

@@ -41,6 +41,23 @@ std::optional<std::vector<double>> readNumberArray(const ObjectReader& r, const 
   return r.optionalNumbers(key);
 }
 
+std::optional<std::vector<ControlProgrammePointSpec>> readProgramme(const ObjectReader& r, const QString& key) {
+  const std::optional<QJsonArray> array = r.optionalArray(key);
+  if (!array) return std::nullopt;
+  std::vector<ControlProgrammePointSpec> points;
+  for (qsizetype i = 0; i < array->size(); ++i) {
+    const ObjectReader e = elementObject(*array, i, r.pathOf(key));
+    ControlProgrammePointSpec p;
+    p.speed_rpm = requiredNumber(e, "speed_rpm", "in (0, 100000]");
+    p.depth_mm = requiredNumber(e, "depth_mm", "in (0, 1000]");
+    p.length_mm = requiredNumber(e, "length_mm", "in (0, 1e7]");
+    p.feed_mm_s = e.optionalNumber("feed_mm_s");
+    p.unknown = withoutKeys(e.object(), {"speed_rpm", "depth_mm", "length_mm", "feed_mm_s"});
+    points.push_back(p);
+  }
+  return points;
+}
+
 ControlSection readControl(const ObjectReader& r) {
   ControlSection c;
   c.tool = r.optionalString("tool");
@@ -70,6 +87,9 @@ ControlSection readControl(const ObjectReader& r) {
     return s;
   });
   c.workpiece = readDepthSteps(r, "workpiece");
+  c.sample_period = r.optionalString("sample_period");
+  c.rule4_periods = r.optionalNumber("rule4_periods");
+  c.programme = readProgramme(r, "programme");
   return c;
 }
 

@@ -27,8 +27,22 @@ void checkOneOf(const QString& path, const std::optional<QString>& value, const 
   if (value && !allowed.contains(*value)) throwBadField(path, "'" + *value + "'", wording);
 }
 
+void validateProgramme(const QString& path, const std::optional<std::vector<ControlProgrammePointSpec>>& points) {
+  if (!points) return;
+  if (points->empty())
+    throwBadField(path, "(not a non-empty array)", "an array of {speed_rpm, depth_mm, length_mm[, feed_mm_s]}");
+  for (std::size_t i = 0; i < points->size(); ++i) {
+    const QString element = indexPath(path, static_cast<qsizetype>(i));
+    const ControlProgrammePointSpec& point = (*points)[i];
+    checkField(element + ".speed_rpm", point.speed_rpm, {1e-3, 1e5, "in (0, 100000]"});
+    checkField(element + ".depth_mm", point.depth_mm, {1e-9, 1e3, "in (0, 1000]"});
+    checkField(element + ".length_mm", point.length_mm, kLength);
+    checkField(element + ".feed_mm_s", point.feed_mm_s, {1e-6, 1e5, "in (0, 1e5]"});
+  }
+}
+
 void validateControl(const ControlSection& c, const Project& p) {
-  if (!c.spindle_rpm) throwMissingField("control.spindle_rpm", "in (0, 100000]");
+  if (!c.spindle_rpm && !c.programme) throwMissingField("control.spindle_rpm", "in (0, 100000]");
   checkField("control.spindle_rpm", c.spindle_rpm, {1e-3, 1e5, "in (0, 100000]"});
   const double kt = p.material ? p.material->Kt_N_mm2 : 0.0;
   if (!c.cutting_pressure_N_mm2 && !(kt > 0.0)) throwMissingField("control.cutting_pressure_N_mm2", "in (0, 1e6]");
@@ -61,6 +75,9 @@ void validateControl(const ControlSection& c, const Project& p) {
       throwBadField("control.rls.trace_max", QString::number(trace_max), "greater than control.rls.trace_min");
   }
   validateDepthSteps("control.workpiece", c.workpiece);
+  checkOneOf("control.sample_period", c.sample_period, {"spindle", "rule4"}, "one of spindle, rule4");
+  checkField("control.rule4_periods", c.rule4_periods, {1.0, 100.0, "an integer in [1, 100]", true});
+  validateProgramme("control.programme", c.programme);
 }
 
 void validateSdnrp(const SdnrpSection& s) {

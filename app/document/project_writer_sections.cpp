@@ -60,6 +60,24 @@ void putDepthSteps(QJsonObject& o, const QString& key, const std::optional<std::
   o.insert(key, out);
 }
 
+void putProgramme(QJsonObject& o, const QString& key,
+                  const std::optional<std::vector<ControlProgrammePointSpec>>& points) {
+  if (!points) {
+    o.remove(key);
+    return;
+  }
+  QJsonArray out;
+  for (const ControlProgrammePointSpec& point : *points) {
+    QJsonObject e = point.unknown;
+    putNumber(e, "speed_rpm", point.speed_rpm);
+    putNumber(e, "depth_mm", point.depth_mm);
+    putNumber(e, "length_mm", point.length_mm);
+    putOptional(e, "feed_mm_s", point.feed_mm_s);
+    out.append(e);
+  }
+  o.insert(key, out);
+}
+
 void writeControl(QJsonObject& o, const ControlSection& c) {
   putString(o, "tool", c.tool);
   putOptional(o, "spindle_rpm", c.spindle_rpm);
@@ -87,6 +105,9 @@ void writeControl(QJsonObject& o, const ControlSection& c) {
     putOptional(m, "trace_max", s.trace_max);
   });
   putDepthSteps(o, "workpiece", c.workpiece);
+  putString(o, "sample_period", c.sample_period);
+  putOptional(o, "rule4_periods", c.rule4_periods);
+  putProgramme(o, "programme", c.programme);
 }
 
 void writeSdnrp(QJsonObject& o, const SdnrpSection& s) {

@@ -39,7 +39,7 @@ void ControlFeature::connectView() {
     editSection([v](app::ControlRequest& r) { applyControllerSettings(v, r); }, tr("Change controller settings"));
   });
   connect(view_, &widgets::ControlView::workpieceEdited, this, [this](const QVector<widgets::DepthStepView>& steps) {
-    editSection([steps](app::ControlRequest& r) { r.settings.workpiece = workpieceOf(steps); },
+    editSection([steps](app::ControlRequest& r) { r.settings.workpiece = workpieceOf(steps, r.settings.workpiece); },
                 tr("Change workpiece depth profile"));
   });
   connect(view_, &widgets::ControlView::sweepRequested, this, &ControlFeature::startSweep);
@@ -55,12 +55,19 @@ void ControlFeature::connectRunner() {
     view_->setTraces(controlTracesOf(*o.result));
     view_->setMetrics(controlMetricsOf(*o.result));
     view_->setPoleZero(poleZeroOf(*o.result));
-    view_->setStatus(tr("beta = %1: %2 samples, T = %3 ms, tau_c = %4 ms%5")
+    const ClosedLoopMetrics& m = o.result->metrics;
+    // Rule 4 (Pareto paper) or a programme of several spindle speeds: the range of the sampling periods
+    const QString period =
+        m.max_sampling_period_s > m.min_sampling_period_s
+            ? tr("%1-%2").arg(m.min_sampling_period_s * 1e3, 0, 'f', 2).arg(m.max_sampling_period_s * 1e3, 0, 'f', 2)
+            : QString::number(o.result->sampling_period_s * 1e3, 'f', 2);
+    view_->setStatus(tr("beta = %1: %2 samples (%3 spindle revolutions), T = %4 ms, tau_c = %5 ms%6")
                          .arg(o.result->beta)
-                         .arg(o.result->metrics.samples)
-                         .arg(o.result->sampling_period_s * 1e3, 0, 'f', 2)
+                         .arg(m.samples)
+                         .arg(m.spindle_revolutions, 0, 'f', 0)
+                         .arg(period)
                          .arg(o.result->tau_c_s * 1e3, 0, 'f', 2)
-                         .arg(o.result->metrics.completed ? QString() : tr(" - did not finish the workpiece")));
+                         .arg(m.completed ? QString() : tr(" - did not finish the workpiece")));
     emit controlShown();
   });
   connect(runner_, &ControlRunner::sweepFinished, this, [this](const SweepOutcome& o) {

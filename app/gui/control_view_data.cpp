@@ -23,6 +23,7 @@ widgets::ControlTraces controlTracesOf(const ClosedLoopResult& r) {
     t.depth_t_s << d.t;
     t.depth_mm << d.depth_m * 1e3;
   }
+  t.change_t_s = QVector<double>(r.depth_change_times_s.begin(), r.depth_change_times_s.end());
   return t;
 }
 
@@ -97,9 +98,13 @@ QVector<widgets::DepthStepView> workpieceViewOf(const ControlWorkpiece& w) {
   return out;
 }
 
-ControlWorkpiece workpieceOf(const QVector<widgets::DepthStepView>& steps) {
+ControlWorkpiece workpieceOf(const QVector<widgets::DepthStepView>& steps, const ControlWorkpiece& previous) {
   ControlWorkpiece w;
-  for (const widgets::DepthStepView& s : steps) w.steps.push_back({s.length_mm * 1e-3, s.depth_mm * 1e-3});
+  for (const widgets::DepthStepView& s : steps) {
+    const std::size_t i = w.steps.size();
+    const double speed = i < previous.steps.size() ? previous.steps[i].spindle_rev_s : 0.0;
+    w.steps.push_back({s.length_mm * 1e-3, s.depth_mm * 1e-3, speed});
+  }
   return w;
 }
 

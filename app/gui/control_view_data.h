@@ -18,6 +18,7 @@ widgets::ControllerSettingsView controllerSettingsOf(const app::ControlRequest& 
 void applyControllerSettings(const widgets::ControllerSettingsView& view, app::ControlRequest& request);
 
 QVector<widgets::DepthStepView> workpieceViewOf(const ControlWorkpiece& w);
-ControlWorkpiece workpieceOf(const QVector<widgets::DepthStepView>& steps);
+// The edited steps keep the spindle speeds of `previous`'s steps at the same index (a programme's points).
+ControlWorkpiece workpieceOf(const QVector<widgets::DepthStepView>& steps, const ControlWorkpiece& previous = {});
 
 }  // namespace mx::gui

@@ -42,6 +42,23 @@ void engagementOf(const Project& p, const ToolSpec& tool, CuttingProcess& c) {
   c.exit_angle_rad = im.exit_rad;
 }
 
+SamplePeriodRule samplePeriodOf(const std::optional<QString>& name) {
+  return name && *name == "rule4" ? SamplePeriodRule::Rule4 : SamplePeriodRule::Spindle;
+}
+
+void programmeOf(const std::vector<ControlProgrammePointSpec>& points, ControlRequest& r) {
+  r.programme = true;
+  r.settings.workpiece.steps.clear();
+  for (const ControlProgrammePointSpec& point : points) {
+    ControlDepthStep step;
+    step.length_m = point.length_mm * 1e-3;
+    step.depth_m = point.depth_mm * 1e-3;
+    step.spindle_rev_s = point.speed_rpm / 60.0;
+    r.settings.workpiece.steps.push_back(step);
+    r.programmed_feed_m_s.push_back(point.feed_mm_s ? std::optional<double>(*point.feed_mm_s * 1e-3) : std::nullopt);
+  }
+}
+
 }  // namespace
 
 ControlRequest controlRequestFrom(const ControlSection& c, const Project& project) {
@@ -50,12 +67,13 @@ ControlRequest controlRequestFrom(const ControlSection& c, const Project& projec
   r.tool = c.tool.value_or(project.tools.front().id);
   const ToolSpec* tool = project.findTool(r.tool);
   if (!tool) throwBadField("control.tool", "'" + r.tool + "'", "the id of a tool of the project");
-  if (!c.spindle_rpm) throwMissingField("control.spindle_rpm", "in (0, 100000]");
+  const bool programme = c.programme && !c.programme->empty();
+  if (!c.spindle_rpm && !programme) throwMissingField("control.spindle_rpm", "in (0, 100000]");
 
   AdaptiveControlSettings& s = r.settings;
   CuttingProcess& p = s.process;
   p.teeth = tool->teeth;
-  p.spindle_rev_s = *c.spindle_rpm / 60.0;
+  p.spindle_rev_s = (programme ? c.programme->front().speed_rpm : *c.spindle_rpm) / 60.0;
   const double kt = project.material ? project.material->Kt_N_mm2 : 0.0;
   if (!c.cutting_pressure_N_mm2 && !(kt > 0.0)) throwMissingField("control.cutting_pressure_N_mm2", "in (0, 1e6]");
   p.cutting_pressure_Pa = c.cutting_pressure_N_mm2.value_or(kt) * 1e6;
@@ -107,8 +125,11 @@ ControlRequest controlRequestFrom(const ControlSection& c, const Project& projec
   if (c.workpiece) {
     s.workpiece.steps.clear();
     for (const DepthStepSpec& step : *c.workpiece)
-      s.workpiece.steps.push_back({step.length_mm * 1e-3, step.depth_mm * 1e-3});
+      s.workpiece.steps.push_back({step.length_mm * 1e-3, step.depth_mm * 1e-3, 0.0});
   }
+  if (programme) programmeOf(*c.programme, r);
+  s.sample_period = samplePeriodOf(c.sample_period);
+  s.rule4_periods = static_cast<int>(c.rule4_periods.value_or(4.0));
   try {
     validateAdaptiveControlSettings(s);
   } catch (const InvalidInput& e) {
@@ -126,7 +147,10 @@ ControlRequest controlRequestFromProject(const Project& project) {
 ControlSection controlSectionFrom(const ControlRequest& request, ControlSection c) {
   const AdaptiveControlSettings& s = request.settings;
   c.tool = request.tool;
-  c.spindle_rpm = s.process.spindle_rev_s * 60.0;
+  if (s.sample_period == SamplePeriodRule::Rule4 || c.sample_period)
+    c.sample_period = s.sample_period == SamplePeriodRule::Rule4 ? "rule4" : "spindle";
+  if (s.rule4_periods != 4 || c.rule4_periods) c.rule4_periods = s.rule4_periods;
+  if (!request.programme) c.spindle_rpm = s.process.spindle_rev_s * 60.0;
   c.process_time_constant_ms = s.process.process_time_constant_s * 1e3;
   c.beta = s.beta;
   c.feed_max_mm_s = s.feed_max_m_s * 1e3;
@@ -139,6 +163,20 @@ ControlSection controlSectionFrom(const ControlRequest& request, ControlSection 
   rls.reset = resetName(s.rls.reset);
   rls.reset_fraction = s.rls.reset_error_fraction;
   c.rls = rls;
+  if (request.programme) {  // the steps back into the programme's points, which keep their own feeds
+    std::vector<ControlProgrammePointSpec> points;
+    for (std::size_t i = 0; i < s.workpiece.steps.size(); ++i) {
+      const ControlDepthStep& step = s.workpiece.steps[i];
+      ControlProgrammePointSpec point =
+          c.programme && i < c.programme->size() ? (*c.programme)[i] : ControlProgrammePointSpec{};
+      point.speed_rpm = stepProcess(s.process, step).spindle_rev_s * 60.0;
+      point.depth_mm = step.depth_m * 1e3;
+      point.length_mm = step.length_m * 1e3;
+      points.push_back(point);
+    }
+    c.programme = points;
+    return c;
+  }
   std::vector<DepthStepSpec> steps;
   for (const ControlDepthStep& step : s.workpiece.steps) steps.push_back({step.length_m * 1e3, step.depth_m * 1e3, {}});
   c.workpiece = steps;

@@ -15,6 +15,10 @@ struct ControlRequest {
   QString tool;
   AdaptiveControlSettings settings;
   ForceReference reference;  // how F_r was chosen ("project" when given explicitly)
+  // control.programme: one workpiece step per programmed point (with its spindle speed), and each point's own
+  // programmed feed (m/s) when the project gives it, reported beside the controller's.
+  bool programme = false;
+  std::vector<std::optional<double>> programmed_feed_m_s;
 };
 
 ControlRequest controlRequestFrom(const ControlSection& section, const Project& project);

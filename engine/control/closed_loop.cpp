@@ -5,7 +5,9 @@
 #include <string>
 
 #include "control/rst_controller.h"
+#include "control/sampled_reference_model.h"
 #include "control/zero_threshold.h"
+#include "pareto/sampling_time.h"
 
 namespace mx {
 
@@ -15,27 +17,26 @@ namespace {
   throw InvalidInput("adaptive control: " + field + " = " + std::to_string(value) + ": must be " + range);
 }
 
-// Direct-form filter num/den (den monic) with zero initial conditions.
-class TfFilter {
+// The period that starts now: one spindle period, or Rule 4 of the Pareto paper (k periods while the programmed
+// N and b stay constant, one after a change).
+class SamplePeriodClock {
  public:
-  explicit TfFilter(const DiscreteTransferFunction& h) : num_(h.num), den_(h.den) {}
-  double step(double u) {
-    u_.insert(u_.begin(), u);
-    const std::size_t n = den_.size() - 1, delay = n - (num_.size() - 1);
-    double y = 0.0;
-    for (std::size_t i = 1; i <= n && i - 1 < y_.size(); ++i) y -= den_[i] * y_[i - 1];
-    for (std::size_t j = 0; j < num_.size(); ++j)
-      if (delay + j < u_.size()) y += num_[j] * u_[delay + j];
-    y_.insert(y_.begin(), y);
-    if (u_.size() > 8) u_.pop_back();
-    if (y_.size() > 8) y_.pop_back();
-    return y;
+  explicit SamplePeriodClock(const AdaptiveControlSettings& s)
+      : rule_(s.sample_period), selector_(SamplingTimeSettings{s.rule4_periods, 1e-9}) {}
+  double next(double spindle_rev_s, double depth_m) {
+    return rule_ == SamplePeriodRule::Rule4 ? selector_.update(spindle_rev_s, depth_m) : 1.0 / spindle_rev_s;
   }
 
  private:
-  Poly num_, den_;
-  std::vector<double> u_, y_;
+  SamplePeriodRule rule_;
+  SamplingTimeSelector selector_;
 };
+
+double fastestSpindlePeriod(const AdaptiveControlSettings& s) {
+  double T = spindlePeriod(s.process);
+  for (const auto& step : s.workpiece.steps) T = std::min(T, spindlePeriod(stepProcess(s.process, step)));
+  return T;
+}
 
 double lagged(const std::vector<double>& v, std::size_t k, std::size_t lag) {
   return k >= lag ? v[k - lag] : 0.0;
@@ -64,18 +65,24 @@ void validateAdaptiveControlSettings(const AdaptiveControlSettings& s) {
   if (!(s.rtol >= 1e-13 && s.rtol <= 1e-4)) bad("rtol", s.rtol, "in [1e-13, 1e-4]");
   if (!(s.max_time_s > 0.0 && s.max_time_s <= 3600.0)) bad("max_time_s", s.max_time_s, "in (0, 3600]");
   if (!(s.settling_band > 0.0 && s.settling_band < 1.0)) bad("settling_band", s.settling_band, "in (0, 1)");
+  if (s.rule4_periods < 1 || s.rule4_periods > 100) bad("rule4_periods", s.rule4_periods, "an integer in [1, 100]");
 }
 
 ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, const JobControl& job) {
   validateAdaptiveControlSettings(s);
   ClosedLoopResult run;
-  const double T = spindlePeriod(s.process);
+  const CuttingProcess first = stepProcess(s.process, s.workpiece.steps.front());
+  const double T0 = spindlePeriod(first);
   run.beta = s.beta;
-  run.sampling_period_s = T;
-  run.tau_c_s = processTimeConstant(s.process);
-  run.plant = frohDiscretize(makeForcePlant(s.process, s.workpiece.steps.front().depth_m).stateSpace(), T, s.beta);
-  const double wn = 2.5 / (s.rise_time_periods * T);
-  run.model = frohDiscretize(referenceModel(s.damping_ratio, wn), T, s.beta);
+  run.sampling_period_s = T0;
+  run.tau_c_s = processTimeConstant(first);
+  run.plant = frohDiscretize(makeForcePlant(first, s.workpiece.steps.front().depth_m).stateSpace(), T0, s.beta);
+  // The reference model's rise time is rise_time_periods sampling periods, T_r = 4 T with T the sampling period
+  // (Pareto paper, section 6; 2006 paper): with Rule 4 it follows the actual period, and the RST design follows its
+  // discretisation at each change of T.
+  const auto naturalFrequency = [&](double T) { return 2.5 / (s.rise_time_periods * T); };
+  run.model = frohDiscretize(referenceModel(s.damping_ratio, naturalFrequency(T0)), T0, s.beta);
+  DiscreteTransferFunction model_at_T = run.model;
 
   const bool third_order = s.beta != 0.0;  // eq. 30-33
   const int nb = third_order ? 3 : 2;
@@ -83,7 +90,8 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
   const double unit = s.control_feed_unit_m_s;
   RstController controller(0.0, s.feed_max_m_s / unit);
   ForcePlantIntegrator plant(s.process, s.workpiece, s.rtol);
-  TfFilter model(run.model);
+  SampledReferenceModel model(s.damping_ratio, naturalFrequency(T0), s.beta);
+  SamplePeriodClock clock(s);
 
   const double funit = s.control_force_unit_N;
   const double fr = s.force_reference_N / funit;
@@ -91,19 +99,20 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
   std::vector<PlantDensePoint> dense;
   dense.push_back({0.0, 0.0, 0.0, 0.0, 0.0, s.workpiece.steps.front().depth_m});
   const double length = s.workpiece.totalLength();
-  const int max_samples = static_cast<int>(std::ceil(s.max_time_s / T)) + 1;
-  double u_prev = 0.0;
+  const int max_samples = static_cast<int>(std::ceil(s.max_time_s / fastestSpindlePeriod(s))) + 1;
+  double u_prev = 0.0, T_prev = T0;
 
-  for (int k = 0; k < max_samples; ++k) {
+  for (int k = 0; k < max_samples && plant.time() < s.max_time_s + T0; ++k) {
     if (job.cancelled()) throw Cancelled();
     const std::size_t kk = static_cast<std::size_t>(k);
     ClosedLoopSample smp;
     smp.t = plant.time();
     smp.force_N = plant.force();
     smp.depth_m = plant.depth();
+    smp.spindle_rev_s = plant.spindleRevS();
     smp.position_m = plant.position();
     smp.reference_N = s.force_reference_N;
-    smp.model_N = model.step(s.force_reference_N);
+    smp.model_N = model.output();
     smp.error_N = smp.force_N - smp.model_N;
     y.push_back(smp.force_N / funit);
 
@@ -118,6 +127,15 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
     smp.theta.assign(th.data(), th.data() + th.size());
 
     const bool done = plant.position() >= length;
+    const double T = done ? 0.0 : clock.next(smp.spindle_rev_s, smp.depth_m);
+    if (!done && T != T_prev) {
+      // The estimated discrete model belongs to the previous period: re-identify it (covariance reset) and
+      // design for the reference model sampled at the new period.
+      model_at_T = frohDiscretize(referenceModel(s.damping_ratio, naturalFrequency(T)), T, s.beta);
+      if (k > 0) rls.resetCovariance();
+      T_prev = T;
+    }
+    smp.sampling_period_s = T;
     if (done && !run.samples.empty()) {  // last sample: measured only, no new control
       const ClosedLoopSample& prev = run.samples.back();
       smp.design_ok = prev.design_ok;
@@ -130,7 +148,7 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
         A.push_back(0.0);
         B.push_back(th(4));
       }
-      const RstDesign design = designModelFollowing(A, B, run.model.den, run.model.num, s.design);
+      const RstDesign design = designModelFollowing(A, B, model_at_T.den, model_at_T.num, s.design);
       smp.design_ok = design.ok;
       smp.model_zeros_followed = design.ok && design.model_zeros_followed;
       smp.common_factors_removed = design.common_factors_removed;
@@ -144,6 +162,7 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
     run.samples.push_back(smp);
     if (done) break;
 
+    model.advance(s.force_reference_N, T, naturalFrequency(T));
     const FrohHold hold{plant.time(), T, uk * unit, u_prev * unit, s.beta, 0.0, s.feed_max_m_s};
     plant.advance(hold, s.dense_points_per_sample, dense);
     u_prev = uk;
@@ -169,14 +188,27 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
   run.metrics = closedLoopMetrics(run, s.force_reference_N, s.settling_band);
   run.metrics.completed = plant.position() >= length;
   run.metrics.cvode_steps = plant.cvodeSteps();
+  samplingMetrics(run.samples, run.metrics);
   return run;
+}
+
+void samplingMetrics(const std::vector<ClosedLoopSample>& samples, ClosedLoopMetrics& m) {
+  m.min_sampling_period_s = m.max_sampling_period_s = m.spindle_revolutions = 0.0;
+  bool first = true;
+  for (const auto& smp : samples) {
+    if (!(smp.sampling_period_s > 0.0)) continue;
+    m.min_sampling_period_s = first ? smp.sampling_period_s : std::min(m.min_sampling_period_s, smp.sampling_period_s);
+    m.max_sampling_period_s = std::max(m.max_sampling_period_s, smp.sampling_period_s);
+    m.spindle_revolutions += smp.sampling_period_s * smp.spindle_rev_s;
+    first = false;
+  }
 }
 
 double closedLoopZeroThreshold(const AdaptiveControlSettings& s) {
   if (s.workpiece.steps.empty()) return -1.0;
   const double depth = s.workpiece.steps.front().depth_m > 0.0 ? s.workpiece.steps.front().depth_m : 1e-3;
-  return unstableZeroThreshold(makeForcePlant(s.process, depth).stateSpace(), 1.0 / s.process.spindle_rev_s)
-      .threshold_beta;
+  const CuttingProcess first = stepProcess(s.process, s.workpiece.steps.front());
+  return unstableZeroThreshold(makeForcePlant(first, depth).stateSpace(), 1.0 / first.spindle_rev_s).threshold_beta;
 }
 
 }  // namespace mx

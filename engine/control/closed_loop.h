@@ -1,9 +1,11 @@
 #pragma once
 // Adaptive model-following force control under beta-FROH (2006 paper, section 4), simulated over a workpiece
-// depth profile. Each spindle period T: sample the force, update the RLS estimate (eq. 26), redesign the RST
-// controller by pole placement (eq. 27-29), compute the saturated feed command, hold it with the beta-FROH, and
-// integrate the continuous plant with CVODE until the next sample. The tool position (integral of the actual
-// feed) decides the depth of cut.
+// depth profile (and, for a sequence of programmed points, a spindle speed per step: Pareto paper, Fig. 6). Each
+// sampling period T (one spindle period, or Rule 4 of the Pareto paper: k spindle periods while the programmed N
+// and b stay constant, one after any change): sample the force, update the RLS estimate (eq. 26), redesign the RST
+// controller by pole placement (eq. 27-29) for the reference model sampled at this T, compute the saturated feed
+// command, hold it with the beta-FROH over T, and integrate the continuous plant with CVODE until the next sample.
+// The tool position (integral of the actual feed) decides the depth of cut and the programmed point.
 //
 // Units: SI everywhere in the API (N, m/s, m, s). The estimator and controller work internally in kN and mm/s
 // (control_force_unit_N = 1e3, control_feed_unit_m_s = 1e-3): the paper's theta(0) = 0.2 and P(0) = 1e5 I are
@@ -18,6 +20,12 @@
 #include "core/invalid_input.h"
 
 namespace mx {
+
+// How the sampling period is chosen (Pareto paper, Rule 4).
+enum class SamplePeriodRule {
+  Spindle,  // T = 60/N at every sample
+  Rule4,    // T = k 60/N while N and b stay constant, 60/N after a change (SamplingTimeSelector)
+};
 
 struct AdaptiveControlSettings {
   CuttingProcess process;  // 715 rpm, 4 teeth, K_c = 1200 N/mm^2, full immersion
@@ -35,12 +43,16 @@ struct AdaptiveControlSettings {
   double rtol = 1e-8;                   // CVODE relative tolerance
   double max_time_s = 30.0;             // stop if the tool has not left the profile by then
   double settling_band = 0.05;          // +-5 % of F_r
+  SamplePeriodRule sample_period = SamplePeriodRule::Spindle;
+  int rule4_periods = 4;  // k of Rule 4, in [1, 100]
 };
 
 void validateAdaptiveControlSettings(const AdaptiveControlSettings& s);  // InvalidInput naming the field
 
 struct ClosedLoopSample {
   double t = 0.0;
+  double sampling_period_s = 0.0;  // T of the period that starts at t (0 for the last sample)
+  double spindle_rev_s = 0.0;      // programmed N at t
   double reference_N = 0.0, model_N = 0.0, force_N = 0.0, error_N = 0.0;  // error = F_p - F_pm
   double feed_m_s = 0.0;                                                  // applied (saturated) command u_k
   double feed_unsaturated_m_s = 0.0;                                      // the RST law before saturation
@@ -85,12 +97,14 @@ struct ClosedLoopMetrics {
   int samples = 0, rls_resets = 0, design_failures = 0, fallback_samples = 0;
   double max_diophantine_residual = 0.0;
   long cvode_steps = 0;
+  double min_sampling_period_s = 0.0, max_sampling_period_s = 0.0;
+  double spindle_revolutions = 0.0;  // sum of T N over the periods: the samples a once-per-revolution loop takes
 };
 
 struct ClosedLoopResult {
-  double beta = 0.0, sampling_period_s = 0.0, tau_c_s = 0.0;
-  DiscreteTransferFunction plant;  // H_beta of the true plant at the first depth
-  DiscreteTransferFunction model;  // H_m,beta
+  double beta = 0.0, sampling_period_s = 0.0, tau_c_s = 0.0;  // at the first point, one spindle period
+  DiscreteTransferFunction plant;                             // H_beta of the true plant at the first depth
+  DiscreteTransferFunction model;                             // H_m,beta at sampling_period_s
   std::vector<ClosedLoopSample> samples;
   std::vector<ClosedLoopDensePoint> dense;
   std::vector<double> depth_change_times_s;
@@ -105,5 +119,7 @@ double closedLoopZeroThreshold(const AdaptiveControlSettings& settings);
 
 // The metrics from finished time series (used by simulateAdaptiveForceControl; public for tests and tools).
 ClosedLoopMetrics closedLoopMetrics(const ClosedLoopResult& run, double force_reference_N, double settling_band);
+// The sampling-period extremes and the spindle revolutions the samples cover.
+void samplingMetrics(const std::vector<ClosedLoopSample>& samples, ClosedLoopMetrics& metrics);
 
 }  // namespace mx

@@ -32,7 +32,7 @@ int ControlWorkpiece::segmentAt(double position_m) const {
 }
 
 ControlWorkpiece rubio2006ControlWorkpiece() {
-  return {{{5.87e-3, 2e-3}, {5.87e-3, 3e-3}, {5.87e-3, 5e-3}, {7.55e-3, 3e-3}}};
+  return {{{5.87e-3, 2e-3, 0.0}, {5.87e-3, 3e-3, 0.0}, {5.87e-3, 5e-3, 0.0}, {7.55e-3, 3e-3, 0.0}}};
 }
 
 void validateControlWorkpiece(const ControlWorkpiece& w) {
@@ -45,7 +45,16 @@ void validateControlWorkpiece(const ControlWorkpiece& w) {
     if (!(s.depth_m > 0.0) || !std::isfinite(s.depth_m))
       throw InvalidInput("workpiece: steps[" + std::to_string(i) + "].depth = " + std::to_string(s.depth_m) +
                          " m: must be finite and > 0");
+    if (!(s.spindle_rev_s >= 0.0) || !std::isfinite(s.spindle_rev_s))
+      throw InvalidInput("workpiece: steps[" + std::to_string(i) + "].spindle_rev_s = " +
+                         std::to_string(s.spindle_rev_s) + " rev/s: must be finite and >= 0 (0: the process's)");
   }
+}
+
+CuttingProcess stepProcess(const CuttingProcess& process, const ControlDepthStep& step) {
+  CuttingProcess p = process;
+  if (step.spindle_rev_s > 0.0) p.spindle_rev_s = step.spindle_rev_s;
+  return p;
 }
 
 double FrohHold::at(double t) const {
@@ -59,7 +68,16 @@ ForcePlantIntegrator::ForcePlantIntegrator(const CuttingProcess& process, const 
   validateControlWorkpiece(workpiece_);
   if (!(rtol > 0.0 && rtol < 1e-2))
     throw InvalidInput("plant integrator: rtol = " + std::to_string(rtol) + ": must be in (0, 1e-2)");
-  for (const auto& s : workpiece_.steps) gains_.push_back(makeForcePlant(process_, s.depth_m).gain_N_s_per_m);
+  for (const auto& s : workpiece_.steps) {
+    const CuttingProcess p = stepProcess(process_, s);
+    gains_.push_back(makeForcePlant(p, s.depth_m).gain_N_s_per_m);
+    tau_c_s_.push_back(processTimeConstant(p));
+    speeds_.push_back(p.spindle_rev_s);
+  }
+}
+
+double ForcePlantIntegrator::spindleRevS() const {
+  return speeds_[static_cast<std::size_t>(segment_)];
 }
 
 double ForcePlantIntegrator::depth() const {
@@ -74,7 +92,7 @@ void ForcePlantIntegrator::integrate(const FrohHold& hold, double t_end, std::un
   if (t_end <= t_) return;
   if (!ode) {
     const double gain = gains_[static_cast<std::size_t>(segment_)];
-    const double tau_m = process_.drive_time_constant_s, tau_c = processTimeConstant(process_);
+    const double tau_m = process_.drive_time_constant_s, tau_c = tau_c_s_[static_cast<std::size_t>(segment_)];
     // `hold` outlives `ode` (both live for one call of advance)
     auto rhs = [&hold, gain, tau_m, tau_c](double t, const double* x, double* dx) {
       dx[0] = (hold.at(t) - x[0]) / tau_m;

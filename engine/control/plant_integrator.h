@@ -3,7 +3,8 @@
 // T / tau_m ~ 840 the drive makes the system stiff). State: actual feed f_a (m/s), force F (N), tool position p (m):
 //   tau_m f_a' = f_c(t) - f_a,   tau_c F' = K_p(b(p)) f_a - F,   p' = f_a,
 // where f_c(t) is the beta-FROH hold output clamped to the drive's range and the depth b(p) is piecewise constant
-// along the tool path. A depth change is located exactly (Newton on the position with fresh integrations), the
+// along the tool path, as are K_p and tau_c when a step programmes its own spindle speed (a sequence of programmed
+// points, Pareto paper Fig. 6). A depth change is located exactly (Newton on the position with fresh integrations), the
 // integrator is restarted there, and the crossing becomes a dense output point.
 #include <memory>
 #include <vector>
@@ -15,8 +16,9 @@ namespace mx {
 class CvodeIntegrator;
 
 struct ControlDepthStep {
-  double length_m = 0.0;  // along the feed direction
-  double depth_m = 0.0;   // axial depth of cut b
+  double length_m = 0.0;       // along the feed direction
+  double depth_m = 0.0;        // axial depth of cut b
+  double spindle_rev_s = 0.0;  // programmed N of the step; 0: the process's
 };
 
 struct ControlWorkpiece {
@@ -28,6 +30,8 @@ struct ControlWorkpiece {
 // Paper (2006, fig. 7): 2, 3, 5 and 3 mm over 5.87, 5.87, 5.87 and 7.55 mm.
 ControlWorkpiece rubio2006ControlWorkpiece();
 void validateControlWorkpiece(const ControlWorkpiece& w);  // InvalidInput naming the step and field
+// The process while cutting `step`: its spindle speed when it programmes one.
+CuttingProcess stepProcess(const CuttingProcess& process, const ControlDepthStep& step);
 
 // The beta-FROH hold over [t0, t0 + T): f(t) = u_k + beta (u_k - u_{k-1}) (t - t0) / T, clamped to [lo, hi].
 struct FrohHold {
@@ -53,6 +57,7 @@ class ForcePlantIntegrator {
   double position() const { return x_[2]; }
   int segment() const { return segment_; }
   double depth() const;
+  double spindleRevS() const;  // programmed N of the current segment
   std::vector<double> crossingTimes() const { return crossings_; }
   long cvodeSteps() const { return steps_; }
 
@@ -65,7 +70,9 @@ class ForcePlantIntegrator {
   CuttingProcess process_;
   ControlWorkpiece workpiece_;
   double rtol_;
-  std::vector<double> gains_;  // K_p per segment
+  std::vector<double> gains_;    // K_p per segment
+  std::vector<double> tau_c_s_;  // tau_c per segment
+  std::vector<double> speeds_;   // N per segment (rev/s)
   double t_ = 0.0;
   double x_[3] = {0.0, 0.0, 0.0};
   int segment_ = 0;

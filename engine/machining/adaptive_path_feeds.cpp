@@ -33,7 +33,7 @@ AdaptivePathFeeds::AdaptivePathFeeds(const AdaptiveControlSettings& base, const 
     if (!s.workpiece.steps.empty() && s.workpiece.steps.back().depth_m == c.depth_m)
       s.workpiece.steps.back().length_m += c.length_m;
     else
-      s.workpiece.steps.push_back({c.length_m, c.depth_m});
+      s.workpiece.steps.push_back({c.length_m, c.depth_m, 0.0});
     total += c.length_m;
   }
   // Enough simulated time to cross the path at a tenth of the drive maximum.

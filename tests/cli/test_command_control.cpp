@@ -1,7 +1,9 @@
 // millexpert-cli control: the fixed JSON keys; the paper's four betas keep the feed within
 // [0, f_max] and the force bounded; the unstable-zero threshold agrees with the first-order formula
 // of the reading notes; the sweep flags exactly the betas below the threshold and its best beta is
-// the argmin of J_c over the others; --csv has one row per sample; bad input exits 2 naming the field.
+// the argmin of J_c over the others; --csv has one row per sample; bad input exits 2 naming the field; the
+// spindle sampling period reproduces the figure 9 run key by key, Rule 4 saves samples, and the Pareto case's
+// programme (Fig. 6) reports each point's settled feed beside the analytic 600 N feed and Table 4's.
 #include <QFile>
 #include <QJsonArray>
 #include <QTemporaryDir>
@@ -13,7 +15,8 @@
 
 namespace {
 const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
-}
+const QString kParetoCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
+}  // namespace
 
 class TestCliControl : public QObject {
   Q_OBJECT
@@ -92,6 +95,66 @@ class TestCliControl : public QObject {
     QVERIFY(g.readAll().count('\n') > 32 * (lines.size() - 2));  // 32 continuous points per period
   }
 
+  // The figure 9 run (beta = -0.3) as it was before Rule 4 existed: every number of its JSON.
+  void spindleReproducesTheFigure9Run() {
+    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--sample-period", "spindle"});
+    QCOMPARE(r.code, 0);
+    const std::pair<const char*, double> expected[] = {{"Jc", 172.28782454282913},
+                                                       {"duration_s", 2.7692307692307683},
+                                                       {"max_feed_mm_s", 15.893475619690872},
+                                                       {"max_force_N", 2482.8646650982573},
+                                                       {"min_feed_mm_s", 0.4909373969104549},
+                                                       {"settling_time_s", 0.5942980918645104},
+                                                       {"samples", 34},
+                                                       {"rls_resets", 20}};
+    for (const auto& [key, value] : expected)
+      QVERIFY2(std::abs(r.json[key].toDouble() - value) <= 1e-9 * std::abs(value),
+               qPrintable(QString("%1 = %2").arg(key).arg(r.json[key].toDouble(), 0, 'g', 17)));
+    QCOMPARE(r.json["sample_period"].toString(), QString("spindle"));
+    QCOMPARE(r.json["sampling_period_min_s"].toDouble(), 60.0 / 715.0);
+    QCOMPARE(r.json["sampling_period_max_s"].toDouble(), 60.0 / 715.0);
+    QVERIFY(!r.json.contains("programme"));
+  }
+
+  void rule4SavesSamples() {
+    const mx::test::CliRun spindle = mx::test::runCli({"control", kProject});
+    const mx::test::CliRun r =
+        mx::test::runCli({"control", kProject, "--sample-period", "rule4", "--rule4-periods", "4"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["sample_period"].toString(), QString("rule4"));
+    QCOMPARE(r.json["rule4_periods"].toInt(), 4);
+    QCOMPARE(r.json["sampling_period_max_s"].toDouble(), 4 * 60.0 / 715.0);
+    QVERIFY(r.json["samples"].toInt() < spindle.json["samples"].toInt());
+    QVERIFY(r.json["completed"].toBool());
+  }
+
+  void paretoProgramme() {
+    const mx::test::CliRun r = mx::test::runCli({"control", kParetoCase});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["force_reference_N"].toDouble(), 600.0);
+    QCOMPARE(r.json["sample_period"].toString(), QString("rule4"));
+    const QJsonArray segments = r.json["programme"]["segments"].toArray();
+    QCOMPARE(segments.size(), 3);
+    const double table_feed[3] = {4.24, 5.58, 17.96};
+    for (qsizetype i = 0; i < 3; ++i) {
+      const QJsonObject seg = segments[i].toObject();
+      const double analytic = seg["analytic_feed_mm_s"].toDouble();
+      QVERIFY2(std::abs(seg["settled_feed_mm_s"].toDouble() - analytic) < 0.01 * analytic,
+               qPrintable(QString::number(i)));
+      QVERIFY(std::abs(seg["settled_force_N"].toDouble() - 600.0) < 6.0);
+      QCOMPARE(seg["programmed_feed_mm_s"].toDouble(), table_feed[i]);
+      QVERIFY(seg["force_at_programmed_feed_N"].toDouble() < 600.0);  // Table 4's feeds give far less than 600 N
+      for (const char* key :
+           {"speed_rpm", "depth_mm", "start_s", "end_s", "samples", "mean_force_N", "peak_force_N", "overshoot_pct"})
+        QVERIFY2(seg.contains(key), key);
+    }
+    const QJsonObject history = r.json["programme"]["history"].toObject();
+    QCOMPARE(history["t_s"].toArray().size(), r.json["samples"].toInt());
+    QCOMPARE(history["feed_mm_s"].toArray().size(), r.json["samples"].toInt());
+    QCOMPARE(history["force_N"].toArray().size(), r.json["samples"].toInt());
+    QVERIFY(r.json["spindle_revolutions"].toDouble() > r.json["samples"].toInt());
+  }
+
   void badInput_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QStringList>("flags");
@@ -108,6 +171,13 @@ class TestCliControl : public QObject {
                                 << "control.rls.reset = 'sometimes': must be one of error, trace, none";
     QTest::newRow("unknown tool") << QStringList{"control/tool=\"X\""} << QStringList{} << "control.tool = 'X'";
     QTest::newRow("angles") << QStringList{"control/exit_angle_deg=0"} << QStringList{} << "control.exit_angle_deg";
+    QTest::newRow("sample period flag") << QStringList{} << QStringList{"--sample-period", "foo"}
+                                        << "--sample-period = 'foo': must be one of spindle, rule4";
+    QTest::newRow("rule4 periods flag") << QStringList{} << QStringList{"--rule4-periods", "0"} << "--rule4-periods";
+    QTest::newRow("sample period") << QStringList{"control/sample_period=\"foo\""} << QStringList{}
+                                   << "control.sample_period = 'foo': must be one of spindle, rule4";
+    QTest::newRow("rule4 periods") << QStringList{"control/rule4_periods=1.5"} << QStringList{}
+                                   << "control.rule4_periods = 1.5: must be an integer in [1, 100]";
   }
   void badInput() {
     QFETCH(QStringList, mutations);

@@ -200,6 +200,43 @@ class TestProjectSections : public QObject {
     QCOMPARE(*r.pareto->requirements->min_mrr_fraction, 0.25);
   }
 
+  // control.programme, sample_period and rule4_periods: typed, mapped to one workpiece step per point with its
+  // spindle speed (Pareto paper, Fig. 6), and written back unchanged.
+  void controlProgrammeIsTypedAndMapped() {
+    const Project p = loadProject(projectsPath("rubio-pareto-case.mxproj"));
+    QVERIFY(p.control && p.control->programme);
+    QCOMPARE(p.control->programme->size(), std::size_t{3});
+    QCOMPARE(*p.control->sample_period, QString("rule4"));
+    QCOMPARE(*p.control->rule4_periods, 4.0);
+    QCOMPARE((*p.control->programme)[2].depth_mm, 1.5124);
+    QCOMPARE(*(*p.control->programme)[1].feed_mm_s, 5.58);
+    const ControlRequest r = controlRequestFromProject(p);
+    QVERIFY(r.programme);
+    QCOMPARE(r.settings.sample_period, SamplePeriodRule::Rule4);
+    QCOMPARE(r.settings.rule4_periods, 4);
+    QCOMPARE(r.settings.force_reference_N, 600.0);
+    QCOMPARE(r.settings.process.spindle_rev_s, 30.0);  // the first point
+    QCOMPARE(r.settings.workpiece.steps.size(), std::size_t{3});
+    QCOMPARE(r.settings.workpiece.steps[1].spindle_rev_s, 2412.0 / 60.0);
+    QCOMPARE(r.settings.workpiece.steps[2].length_m, 1.0);
+    QCOMPARE(*r.programmed_feed_m_s[2], 17.96e-3);
+    const Project back = projectFromJson(projectToJson(p));
+    QVERIFY(*back.control == *p.control);
+    const ControlSection written = controlSectionFrom(r, *p.control);
+    QVERIFY(!written.workpiece && written.programme);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const ControlProgrammePointSpec &a = (*written.programme)[i], &b = (*p.control->programme)[i];
+      QVERIFY(std::abs(a.speed_rpm - b.speed_rpm) < 1e-9 && std::abs(a.depth_mm - b.depth_mm) < 1e-12);
+      QVERIFY(std::abs(a.length_mm - b.length_mm) < 1e-9 && a.feed_mm_s == b.feed_mm_s);
+    }
+    QCOMPARE(*written.sample_period, QString("rule4"));
+    // the defaults: spindle period, k = 4
+    const Project d = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
+    QCOMPARE(controlRequestFromProject(d).settings.sample_period, SamplePeriodRule::Spindle);
+    QCOMPARE(controlRequestFromProject(d).settings.rule4_periods, 4);
+    QVERIFY(!controlRequestFromProject(d).programme);
+  }
+
   void typedEditsReachTheFile() {
     Project p = loadProject(projectsPath("rubio2006-adaptive-control.mxproj"));
     p.control->beta = 0.4;
@@ -246,6 +283,30 @@ class TestProjectSections : public QObject {
         << "control"
         << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "workpiece": [{"length_mm": 0, "depth_mm": 1}]})"
         << "control.workpiece[0].length_mm = 0: must be in (0, 1e7]";
+    QTest::newRow("sample_period foo") << "control"
+                                       << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "sample_period": "foo"})"
+                                       << "control.sample_period = 'foo': must be one of spindle, rule4";
+    QTest::newRow("rule4_periods 0") << "control"
+                                     << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rule4_periods": 0})"
+                                     << "control.rule4_periods = 0: must be an integer in [1, 100]";
+    QTest::newRow("rule4_periods 101") << "control"
+                                       << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rule4_periods": 101})"
+                                       << "control.rule4_periods = 101: must be an integer in [1, 100]";
+    QTest::newRow("rule4_periods 1.5") << "control"
+                                       << R"({"spindle_rpm": 7, "cutting_pressure_N_mm2": 1, "rule4_periods": 1.5})"
+                                       << "control.rule4_periods = 1.5: must be an integer in [1, 100]";
+    QTest::newRow("programme depth")
+        << "control"
+        << R"({"cutting_pressure_N_mm2": 1, "programme": [{"speed_rpm": 1800, "depth_mm": 0, "length_mm": 1}]})"
+        << "control.programme[0].depth_mm = 0: must be in (0, 1000]";
+    QTest::newRow("programme length missing")
+        << "control"
+        << R"({"cutting_pressure_N_mm2": 1, "programme": [{"speed_rpm": 1800, "depth_mm": 1}]})"
+        << "control.programme[0].length_mm is missing: must be in (0, 1e7]";
+    QTest::newRow("programme empty") << "control"
+                                     << R"({"cutting_pressure_N_mm2": 1, "programme": []})"
+                                     << "control.programme = (not a non-empty array): must be an array of "
+                                        "{speed_rpm, depth_mm, length_mm[, feed_mm_s]}";
     QTest::newRow("passes") << "supervisor"
                             << R"({"passes_mm": {"smc1": [1, 30]}})"
                             << "supervisor.passes_mm.smc1[1] = 30: must be a depth in (0, 20] mm";

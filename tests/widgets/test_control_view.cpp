@@ -212,6 +212,21 @@ class TestControlView : public QObject {
     QCOMPARE(responses.graphPointCount("theta a1"), -1);
   }
 
+  // Pareto paper, Fig. 6: the changes of programmed point as vertical lines in the feed row, named in its legend,
+  // up to the largest sampled feed; no entry without changes.
+  void programmeChangesAreMarkedInTheFeedRow() {
+    ControlPlots plots;
+    ControlTraces t = syntheticTraces(30, 2, 4);
+    plots.setTraces(t);
+    QCOMPARE(plots.graphPointCount("changes"), 0);
+    QVERIFY(!plots.legendNames(2).contains("Change of programmed N or b"));
+    t.change_t_s = {t.t_s[10], t.t_s[20]};
+    plots.setTraces(t);
+    QCOMPARE(plots.graphPointCount("changes"), 2);
+    QVERIFY(plots.legendNames(2).contains("Change of programmed N or b"));
+    QVERIFY(plots.valueRange(2).second >= *std::max_element(t.feed_mm_s.begin(), t.feed_mm_s.end()));
+  }
+
   void feedLimitLine_data() {
     QTest::addColumn<double>("limit");
     QTest::addColumn<int>("points");
