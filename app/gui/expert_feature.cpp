@@ -14,6 +14,7 @@
 #include "lobe_chart_view.h"
 #include "ranking_table.h"
 #include "services/expert_request.h"
+#include "services/reported_chatter.h"
 #include "weights_panel.h"
 
 namespace mx::gui {
@@ -62,6 +63,7 @@ ExpertFeature::ExpertFeature(QMainWindow* window, FeatureContext& context, widge
   connect(runner_, &ExpertRunner::refined, this, &ExpertFeature::onRefined);
   connect(&context_, &FeatureContext::activeToolChanged, this, &ExpertFeature::updateOverlays);
   connect(&context_, &FeatureContext::lobesShown, this, &ExpertFeature::updateOverlays);
+  connect(&context_, &FeatureContext::rankingChatterReported, this, &ExpertFeature::reportChatter);
 }
 
 // Weights share the right area with the operating point; the ranking shares the bottom with the
@@ -115,7 +117,7 @@ void ExpertFeature::projectChanged(const app::Project& project, Features recompu
     weights_panel_->setWeights(w);
     if (runner_->session()) {
       rerank(w);
-      runner_->refine(w);
+      runner_->refine(w, reportedChatter());
     }
   }
 }
@@ -149,7 +151,7 @@ void ExpertFeature::onSessionReady(const QString& error) {
     return;
   }
   rerank(weights_panel_->weights());
-  runner_->refine(weights_panel_->weights());
+  runner_->refine(weights_panel_->weights(), reportedChatter());
 }
 
 // Rule 4 from the cached session: no lobes, grids or simulations are recomputed.
@@ -179,12 +181,56 @@ void ExpertFeature::commitWeights(const CostWeights& weights) {
   emit editRequested(edited, tr("Change cost weights"), 0);
 }
 
+// The project's expert.reported_chatter for the session's tools (none for a stale tool list).
+std::vector<ChatterReport> ExpertFeature::reportedChatter() const {
+  const app::Project& p = context_.project();
+  if (!p.expert) return {};
+  try {
+    return app::engineChatterReports(p.expert->reported_chatter, runner_->toolIds());
+  } catch (const std::exception&) {
+    return {};  // the session predates the tool edit; the next session takes the reports
+  }
+}
+
+// Rule 6 on evidence: the chatter heard at the operating point of the active tool joins
+// expert.reported_chatter (one undoable edit); the re-run moves the weights until q** leaves it.
+void ExpertFeature::reportChatter(double chatter_hz) {
+  app::Project edited = context_.project();
+  const QString tool = context_.activeTool();
+  const app::PickedPoint& q = context_.point();
+  if (!edited.expert || tool.isEmpty() || !(q.speed_rpm > 0.0) || !(q.depth_mm > 0.0)) {
+    emit errorRaised(tr("Chatter feedback"), tr("Pick an operating point of a tool of the expert system first"));
+    return;
+  }
+  app::ChatterReportSpec report;
+  report.tool = tool;
+  report.speed_rpm = q.speed_rpm;
+  report.depth_mm = q.depth_mm;
+  report.freq_Hz = chatter_hz;
+  edited.expert->reported_chatter.push_back(report);
+  emit editRequested(edited,
+                     tr("Report chatter at %1 rpm, %2 mm").arg(q.speed_rpm, 0, 'f', 0).arg(q.depth_mm, 0, 'f', 3), 0);
+  emit statusMessage(tr("Rule 6: chatter at %1 rpm, %2 mm (%3 Hz) reported for %4; re-running Rules 4-6")
+                         .arg(q.speed_rpm, 0, 'f', 0)
+                         .arg(q.depth_mm, 0, 'f', 3)
+                         .arg(chatter_hz, 0, 'f', 1)
+                         .arg(tool),
+                     10000);
+}
+
 void ExpertFeature::onRefined(const RefinementOutcome& outcome) {
   if (!outcome.error.isEmpty()) {
     emit statusMessage(tr("Rules 5-6 failed: %1").arg(outcome.error), 10000);
     return;
   }
   refinement_ = outcome.result;
+  if (refinement_ && refinement_->unresolved_report && runner_->session()) {
+    const app::Project& p = context_.project();
+    emit errorRaised(tr("Rule 6"),
+                     app::unresolvedChatterMessage(
+                         *refinement_, p.expert ? p.expert->reported_chatter : std::vector<app::ChatterReportSpec>{},
+                         runner_->toolIds(), runner_->session()->settings().refinement.max_malfunction_iterations));
+  }
   if (refinement_ && refinement_->malfunction_iterations > 0) {
     emit statusMessage(tr("Rule 6: %1 malfunction iteration(s), weights c = (%2, %3, %4)")
                            .arg(refinement_->malfunction_iterations)

@@ -39,6 +39,7 @@ class ExpertFeature : public WindowFeature {
 
   ExpertRunner* runner() const { return runner_; }
   const CostWeights& weights() const { return weights_; }
+  void reportChatter(double chatter_hz);  // Rule 6 evidence at the operating point (undoable)
 
  signals:
   void rankingShown();     // the ranking table was refreshed (a weight change or a new session)
@@ -50,6 +51,7 @@ class ExpertFeature : public WindowFeature {
   void onSessionReady(const QString& error);
   void rerank(const CostWeights& weights);
   void onRefined(const RefinementOutcome& outcome);
+  std::vector<ChatterReport> reportedChatter() const;
   void commitWeights(const CostWeights& weights);
   void updateOverlays();
   void drawSessionOverlays(int tool);

@@ -61,16 +61,16 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
   return generation;
 }
 
-quint64 ExpertRunner::refine(const CostWeights& weights) {
+quint64 ExpertRunner::refine(const CostWeights& weights, const std::vector<ChatterReport>& reported) {
   const quint64 generation = ++refine_generation_;
   auto session = session_;
   if (!session || session->empty()) return generation;
   started();
-  channel_.start(pool_, [this, session, weights, generation](const EngineReply& reply) {
+  channel_.start(pool_, [this, session, weights, reported, generation](const EngineReply& reply) {
     RefinementOutcome outcome;
     outcome.generation = generation;
     try {
-      outcome.result = session->run(weights, true);
+      outcome.result = session->run(weights, true, reported);
     } catch (const std::exception& e) {
       outcome.error = QString::fromStdString(e.what());
     }

@@ -41,8 +41,9 @@ class ExpertRunner : public QObject {
   // The same from a project snapshot: its expert request, with the tools' tap-test FRFs (read on the
   // engine thread; `project` names them by absolute path), is made on the engine thread.
   quint64 build(const app::Project& project);
-  // Rules 4-6 with simulations for the current session and weights, on the engine thread.
-  quint64 refine(const CostWeights& weights);
+  // Rules 4-6 with simulations for the current session and weights, on the engine thread; Rule 6 also
+  // acts on the chatter reported at the machine (tools by index in toolIds()).
+  quint64 refine(const CostWeights& weights, const std::vector<ChatterReport>& reported = {});
 
   const std::shared_ptr<ExpertSession>& session() const { return session_; }
   const QStringList& toolIds() const { return tool_ids_; }

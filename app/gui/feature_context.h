@@ -39,6 +39,8 @@ class FeatureContext : public QObject {
   void lobesShown();           // the chart was rebuilt (its markers and overlays are gone)
   void simulationRequested();  // simulate the operating point of the active tool
   void simulationFinished(const mx::gui::SimulationSummary& summary);
+  // Chatter reported at the operating point while the 2006 ranking is the active study (Rule 6).
+  void rankingChatterReported(double chatter_hz);
 
  private:
   const app::ProjectDocument& document_;

@@ -87,7 +87,7 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       history_(new widgets::HistoryView),
       rules_editor_(new widgets::OperatorRulesEditor),
       record_button_(new QPushButton(tr("Record point in learning database"))),
-      report_chatter_(new QPushButton(tr("Report chatter (Rule 16)"))),
+      report_chatter_(new QPushButton(tr("Report chatter (Rule 16 / Rule 6)"))),
       chatter_hz_(new QDoubleSpinBox) {
   setObjectName("paretoFeature");
   buildDocks(window);
@@ -109,9 +109,10 @@ QWidget* ParetoFeature::buildWeightsPanel() {
   chatter_hz_->setToolTip(tr("Chatter frequency heard or measured at the machine [Hz]"));
   report_chatter_->setObjectName("report_chatter_button");
   report_chatter_->setToolTip(
-      tr("Module VI: chatter at this frequency at the operating point. The Smith-Tlusty "
-         "speed N = 60 f_c / (n_t k) nearest it is computed, the point is re-selected "
-         "within +-2 % of N, moved there and recorded (source feedback)"));
+      tr("Chatter at this frequency at the operating point. Pareto study (active tool = pareto.tool): "
+         "Module VI, the Smith-Tlusty speed N = 60 f_c / (n_t k) nearest it, the point re-selected within "
+         "+-2 % of N, moved there and recorded. Otherwise the 2006 ranking: Rule 6 moves the cost weights "
+         "until q** leaves +-2 % of the speed at that depth and deeper (expert.reported_chatter)"));
   auto* chatter_row = new QHBoxLayout;
   chatter_row->addWidget(new QLabel(tr("Chatter frequency [Hz]")));
   chatter_row->addWidget(chatter_hz_);
@@ -169,7 +170,7 @@ void ParetoFeature::connectSignals() {
   connect(requirements_, &widgets::RequirementsPanel::autoWeightsRequested, this, &ParetoFeature::onAutoWeights);
   connect(front_view_, &widgets::ParetoFrontView::pointActivated, this, &ParetoFeature::onFrontPointActivated);
   connect(record_button_, &QPushButton::clicked, this, [this] { recordOperatingPoint(); });
-  connect(report_chatter_, &QPushButton::clicked, this, [this] { reportChatter(chatter_hz_->value()); });
+  connect(report_chatter_, &QPushButton::clicked, this, [this] { routeChatterReport(chatter_hz_->value()); });
   connect(rules_editor_, &widgets::OperatorRulesEditor::rulesChanged, this, &ParetoFeature::onRulesEdited);
   connect(history_, &widgets::HistoryView::filterChanged, this, [this] { refreshHistory(); });
   connect(history_, &widgets::HistoryView::refreshRequested, this, [this] { refreshHistory(); });
@@ -214,10 +215,11 @@ void ParetoFeature::disable() {
   showChoiceMarker();
 }
 
-// The controls that need a study: the front, the weights, the requirement, record and chatter.
+// The controls that need a study: the front, the weights, the requirement and record. Reporting
+// chatter needs none: without the Pareto study it feeds the 2006 ranking (routeChatterReport).
 void ParetoFeature::setControlsEnabled(bool enabled) {
-  for (QWidget* w : std::initializer_list<QWidget*>{front_view_, weights_panel_, summary_, requirements_,
-                                                    record_button_, report_chatter_})
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{front_view_, weights_panel_, summary_, requirements_, record_button_})
     w->setEnabled(enabled);
 }
 
@@ -403,6 +405,21 @@ void ParetoFeature::reportChatter(double chatter_hz) {
                      15000);
   recordFeedback(p);
   emit context_.simulationRequested();
+}
+
+// The active study is the Pareto one when it is built and the active tool is its pareto.tool;
+// otherwise the report is Rule 6 evidence for the 2006 ranking (Module VI and Rule 6 of 2006 answer
+// the same observation, each in its own study).
+void ParetoFeature::routeChatterReport(double chatter_hz) {
+  const auto& study = runner_->study();
+  const app::Project& p = context_.project();
+  const QString pareto_tool =
+      p.pareto && p.pareto->tool ? *p.pareto->tool : (p.tools.empty() ? QString() : p.tools.front().id);
+  if (study && context_.activeTool() == pareto_tool) {
+    reportChatter(chatter_hz);
+  } else {
+    emit context_.rankingChatterReported(chatter_hz);
+  }
 }
 
 void ParetoFeature::onRequirementChanged() {

@@ -55,6 +55,8 @@ class ParetoFeature : public WindowFeature {
   void recordOperatingPoint();            // Rule 14, source operator or automatic
   void moveToChoice();                    // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);  // Module VI: Rule 16 speed, re-selection, record, simulate
+  // The Report chatter button: Module VI when the Pareto study is active, else the 2006 Rule 6 loop.
+  void routeChatterReport(double chatter_hz);
 
  signals:
   void paretoShown();   // the choice was recomputed (study ready, weights or requirement changed)

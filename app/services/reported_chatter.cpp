@@ -77,6 +77,8 @@ QJsonObject reportedChatterJson(const ChatterReportSpec& c, const ExpertResult& 
 QString unresolvedChatterMessage(const ExpertResult& result, const std::vector<ChatterReportSpec>& reports,
                                  const QStringList& tool_ids, int bound) {
   if (!result.malfunction_limit_reached || !result.unresolved_report) return {};
+  if (*result.unresolved_report >= reports.size())
+    return QString("Rule 6 stopped at its bound of %1 iterations with the chosen point in reported chatter").arg(bound);
   const ChatterReportSpec& c = reports.at(*result.unresolved_report);
   const auto& w = result.weights.c;
   return QString(

@@ -4,6 +4,7 @@
 // heat map covers the admissible cells.
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 
@@ -63,6 +64,42 @@ class TestExpertFeature : public QObject {
     QCOMPARE_LE(std::abs(window.project()->expert->c[1] - 0.725), 1e-12);
     QCOMPARE_LE(std::abs(test::windowPart<widgets::WeightsPanel>(window)->weights().c[1] - 0.725), 1e-12);
     QCOMPARE(test::expertOf(window)->runner()->session().get(), session);
+  }
+
+  // The Report chatter button without a Pareto study is Rule 6 evidence for the 2006 ranking: the
+  // report at q** joins expert.reported_chatter (one undo step) and the re-run moves q** out of it.
+  void reportedChatterFeedsRule6() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.show();
+    QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(refined.wait(60000));
+    const auto& first = test::expertOf(window)->runner()->session();
+    QVERIFY(first);
+    const CostWeights w = test::expertOf(window)->weights();
+    ExpertResult before = first->run(w, true);
+    const ExpertPoint q = before.chosenPoint();
+    window.document()->setPoint({q.speed_rev_per_s * 60.0, q.depth_m * 1e3, q.feed_per_tooth_m * 1e3});
+    auto* button = window.findChild<QPushButton*>("report_chatter_button");
+    QVERIFY(button && button->isEnabled());
+    refined.clear();
+    button->click();
+    QCOMPARE(window.project()->expert->reported_chatter.size(), std::size_t(1));
+    const app::ChatterReportSpec& report = window.project()->expert->reported_chatter.front();
+    QCOMPARE(report.tool, QString("R1"));
+    QCOMPARE_LE(std::abs(report.depth_mm - q.depth_m * 1e3), 1e-9);
+    QVERIFY(refined.wait(120000));
+    ChatterReport heard;
+    heard.tool = 0;
+    heard.speed_rev_per_s = report.speed_rpm / 60.0;
+    heard.depth_m = report.depth_mm * 1e-3;
+    const ExpertResult after = test::expertOf(window)->runner()->session()->run(w, true, {heard});
+    QVERIFY(after.malfunction_iterations > 0);
+    QVERIFY(!chatterRegionOf(heard).contains(after.chosenPoint().speed_rev_per_s, after.chosenPoint().depth_m));
+    QVERIFY(std::abs(test::expertOf(window)->weights().c[2] - w.c[2]) > 1e-6);  // the table shows Rule 6's c
+    window.document()->undoStack()->undo();
+    QVERIFY(window.project()->expert->reported_chatter.empty());
   }
 
   // Re-ranking the 20-tool library after a weight change (target 100 ms; reported, not gated: docs/performance.md).
