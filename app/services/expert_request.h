@@ -21,7 +21,7 @@ struct ExpertRequest {
   QStringList tool_ids;
   std::vector<MillingSetup> tools;
   ExpertSettings settings;
-  CostWeights weights;  // the project's, validated (exit 2 when off the simplex)
+  CostWeights weights;                          // the project's, validated (exit 2 when off the simplex)
   std::vector<ChatterReport> reported_chatter;  // expert.reported_chatter, tools by index
 };
 
