@@ -18,47 +18,40 @@ Run cli(const QStringList& args) {
   return mx::test::runCli(args);
 }
 
-// The Rubio project with one machine value replaced, written to dir.
+// The Rubio project after `edit` of its root object, written to dir as `name`.
+template <class Edit>
+QString rubioEdited(const QTemporaryDir& dir, const QString& name, Edit edit) {
+  QFile in(kRubio);
+  in.open(QIODevice::ReadOnly);
+  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+  edit(root);
+  QString path = dir.filePath(name);
+  QFile out(path);
+  out.open(QIODevice::WriteOnly);
+  out.write(QJsonDocument(root).toJson());
+  return path;
+}
+
+// The Rubio project with one key of `section` replaced.
+QString rubioWithKey(const QTemporaryDir& dir, const QString& section, const QString& key, const QJsonValue& value) {
+  return rubioEdited(dir, section + ".mxproj", [&](QJsonObject& root) {
+    QJsonObject object = root[section].toObject();
+    object[key] = value;
+    root[section] = object;
+  });
+}
+
 QString rubioWith(const QTemporaryDir& dir, const QString& key, double value) {
-  QFile in(kRubio);
-  in.open(QIODevice::ReadOnly);
-  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
-  QJsonObject machine = root["machine"].toObject();
-  machine[key] = value;
-  root["machine"] = machine;
-  QString path = dir.filePath("p.mxproj");
-  QFile out(path);
-  out.open(QIODevice::WriteOnly);
-  out.write(QJsonDocument(root).toJson());
-  return path;
+  return rubioWithKey(dir, "machine", key, value);
 }
 
-// The Rubio project with these operator_rules, written to dir.
-QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
-  QFile in(kRubio);
-  in.open(QIODevice::ReadOnly);
-  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
-  root["operator_rules"] = QJsonArray::fromStringList(rules);
-  QString path = dir.filePath("rules.mxproj");
-  QFile out(path);
-  out.open(QIODevice::WriteOnly);
-  out.write(QJsonDocument(root).toJson());
-  return path;
-}
-
-// The Rubio project with this expert key set, written to dir.
 QString rubioWithExpert(const QTemporaryDir& dir, const QString& key, const QJsonValue& value) {
-  QFile in(kRubio);
-  in.open(QIODevice::ReadOnly);
-  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
-  QJsonObject expert = root["expert"].toObject();
-  expert[key] = value;
-  root["expert"] = expert;
-  QString path = dir.filePath("expert.mxproj");
-  QFile out(path);
-  out.open(QIODevice::WriteOnly);
-  out.write(QJsonDocument(root).toJson());
-  return path;
+  return rubioWithKey(dir, "expert", key, value);
+}
+
+QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
+  return rubioEdited(dir, "rules.mxproj",
+                     [&](QJsonObject& root) { root["operator_rules"] = QJsonArray::fromStringList(rules); });
 }
 }  // namespace
 
