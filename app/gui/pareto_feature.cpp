@@ -412,10 +412,7 @@ void ParetoFeature::reportChatter(double chatter_hz) {
 // the same observation, each in its own study).
 void ParetoFeature::routeChatterReport(double chatter_hz) {
   const auto& study = runner_->study();
-  const app::Project& p = context_.project();
-  const QString pareto_tool =
-      p.pareto && p.pareto->tool ? *p.pareto->tool : (p.tools.empty() ? QString() : p.tools.front().id);
-  if (study && context_.activeTool() == pareto_tool) {
+  if (study && context_.activeTool() == study->request().tool) {
     reportChatter(chatter_hz);
   } else {
     emit context_.rankingChatterReported(chatter_hz);

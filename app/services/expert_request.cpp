@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "core/invalid_input.h"
-#include "services/reported_chatter.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -67,7 +66,6 @@ ExpertRequest expertRequestFromProject(const Project& project) {
     if (search->max_iterations) t.max_iterations = *search->max_iterations;
   }
   if (expert.max_malfunction_iterations) s.refinement.max_malfunction_iterations = *expert.max_malfunction_iterations;
-  r.reported_chatter = engineChatterReports(expert.reported_chatter, r.tool_ids);
   if (expert.grid && expert.grid->modal_candidate_speeds)
     s.grid.modal_candidate_speeds = *expert.grid->modal_candidate_speeds;
 

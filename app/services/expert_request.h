@@ -11,7 +11,6 @@
 #include "document/project.h"
 #include "expert/cost_weights.h"
 #include "expert/expert_settings.h"
-#include "expert/reported_chatter.h"
 #include "model/milling_setup.h"
 #include "services/measured_dynamics.h"
 
@@ -21,8 +20,7 @@ struct ExpertRequest {
   QStringList tool_ids;
   std::vector<MillingSetup> tools;
   ExpertSettings settings;
-  CostWeights weights;                          // the project's, validated (exit 2 when off the simplex)
-  std::vector<ChatterReport> reported_chatter;  // expert.reported_chatter, tools by index
+  CostWeights weights;  // the project's, validated (exit 2 when off the simplex)
 };
 
 // Throws ProjectError (exit 2) for missing sections and weights off the simplex.

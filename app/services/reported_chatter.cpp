@@ -62,8 +62,7 @@ std::vector<ChatterReport> engineChatterReports(const std::vector<ChatterReportS
 QJsonObject reportedChatterJson(const ChatterReportSpec& c, const ExpertResult& result, const QStringList& tool_ids) {
   const ChatterReport r = engineChatterReports({c}, tool_ids).front();
   const ChatterRegion region = chatterRegionOf(r);
-  const bool holds = !result.ranking.tools.empty() && r.tool == result.chosenTool() &&
-                     region.contains(result.chosenPoint().speed_rev_per_s, result.chosenPoint().depth_m);
+  const bool holds = !result.ranking.tools.empty() && reportHolds(r, result.chosenTool(), result.chosenPoint());
   return {{"tool", c.tool},
           {"speed_rpm", c.speed_rpm},
           {"depth_mm", c.depth_mm},

@@ -44,12 +44,14 @@ void validateChatterReport(const ChatterReport& report, std::size_t tool_count, 
   if (report.frequency_hz) requirePositiveFinite(name, "frequency", *report.frequency_hz, "Hz");
 }
 
+bool reportHolds(const ChatterReport& report, std::size_t tool, const ExpertPoint& q) {
+  return report.tool == tool && chatterRegionOf(report).contains(q.speed_rev_per_s, q.depth_m);
+}
+
 std::optional<std::size_t> reportHolding(const std::vector<ChatterReport>& reports, std::size_t tool,
                                          const ExpertPoint& q) {
-  for (std::size_t i = 0; i < reports.size(); ++i) {
-    if (reports[i].tool != tool) continue;
-    if (chatterRegionOf(reports[i]).contains(q.speed_rev_per_s, q.depth_m)) return i;
-  }
+  for (std::size_t i = 0; i < reports.size(); ++i)
+    if (reportHolds(reports[i], tool, q)) return i;
   return std::nullopt;
 }
 

@@ -37,6 +37,9 @@ ChatterRegion chatterRegionOf(const ChatterReport& report);
 // range, a non-finite or non-positive speed, depth or frequency.
 void validateChatterReport(const ChatterReport& report, std::size_t tool_count, const std::string& name);
 
+// True when q, a point of `tool`, lies in the region of a report of that tool.
+bool reportHolds(const ChatterReport& report, std::size_t tool, const ExpertPoint& q);
+
 // The first report of `tool` whose region holds q; nullopt when q is clear of every report.
 std::optional<std::size_t> reportHolding(const std::vector<ChatterReport>& reports, std::size_t tool,
                                          const ExpertPoint& q);

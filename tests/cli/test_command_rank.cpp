@@ -53,6 +53,16 @@ QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
   return rubioEdited(dir, "rules.mxproj",
                      [&](QJsonObject& root) { root["operator_rules"] = QJsonArray::fromStringList(rules); });
 }
+// The --chatter-at rows of badWeights (the same check: exit 2, the message, no JSON).
+void addBadChatterAtRows() {
+  QTest::newRow("no depth") << QStringList{"--chatter-at", "5800"} << "SPEED_RPM:DEPTH_MM";
+  QTest::newRow("negative depth") << QStringList{"--chatter-at", "5800:-1"} << "depth [mm] '-1'";
+  QTest::newRow("text speed") << QStringList{"--chatter-at", "fast:0.5"} << "speed [rpm] 'fast'";
+  QTest::newRow("zero frequency") << QStringList{"--chatter-at", "5800:0.5:0"} << "frequency [Hz] '0'";
+  QTest::newRow("four fields") << QStringList{"--chatter-at", "1:2:3:4"} << "SPEED_RPM:DEPTH_MM";
+  QTest::newRow("unknown tool") << QStringList{"--chatter-at", "5800:0.5", "--chatter-tool", "R9"}
+                                << "--chatter-tool = 'R9': must be one of R1, R2";
+}
 }  // namespace
 
 class TestCliRank : public QObject {
@@ -149,26 +159,6 @@ class TestCliRank : public QObject {
     QVERIFY(p.json["reported_chatter"].toArray()[0].toObject()["freq_Hz"].isNull());
   }
 
-  void badChatterAt_data() {
-    QTest::addColumn<QStringList>("args");
-    QTest::addColumn<QString>("message");
-    QTest::newRow("no depth") << QStringList{"--chatter-at", "5800"} << "SPEED_RPM:DEPTH_MM";
-    QTest::newRow("negative depth") << QStringList{"--chatter-at", "5800:-1"} << "depth [mm] '-1'";
-    QTest::newRow("text speed") << QStringList{"--chatter-at", "fast:0.5"} << "speed [rpm] 'fast'";
-    QTest::newRow("zero frequency") << QStringList{"--chatter-at", "5800:0.5:0"} << "frequency [Hz] '0'";
-    QTest::newRow("four fields") << QStringList{"--chatter-at", "1:2:3:4"} << "SPEED_RPM:DEPTH_MM";
-    QTest::newRow("unknown tool") << QStringList{"--chatter-at", "5800:0.5", "--chatter-tool", "R9"}
-                                  << "--chatter-tool = 'R9': must be one of R1, R2";
-  }
-  void badChatterAt() {
-    QFETCH(QStringList, args);
-    QFETCH(QString, message);
-    const Run r = cli(QStringList{"rank", kRubio, "--no-simulation"} + args);
-    QCOMPARE(r.code, 2);
-    QVERIFY2(r.err.contains(message), qPrintable(r.err));
-    QVERIFY(r.json.isEmpty());
-  }
-
   void badWeights_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message");
@@ -177,6 +167,7 @@ class TestCliRank : public QObject {
     QTest::newRow("c count") << QStringList{"--c", "0.5,0.5"} << "expected 3";
     QTest::newRow("cr sum") << QStringList{"--cr", "0.8,0.1,0.2"} << "--cr";
     QTest::newRow("c text") << QStringList{"--c", "a,b,c"} << "not a finite number";
+    addBadChatterAtRows();
   }
   void badWeights() {
     QFETCH(QStringList, args);
