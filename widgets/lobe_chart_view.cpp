@@ -24,7 +24,7 @@ QColor verdictColor(PointVerdict v) {
       return QColor(30, 150, 30);
     case PointVerdict::Unstable:
       return QColor(200, 20, 20);
-    case PointVerdict::PowerExceeded:
+    case PointVerdict::LimitExceeded:
       return QColor(230, 120, 0);
     case PointVerdict::Unknown:
       break;

@@ -34,7 +34,8 @@ struct ToolLobeSeries {
   bool margin_needs_modes = false;  // measured lobes only: delta > 0 could not be applied
 };
 
-enum class PointVerdict { Unknown, Stable, Unstable, PowerExceeded };
+// LimitExceeded: stable, but over the spindle power or the tool force limit.
+enum class PointVerdict { Unknown, Stable, Unstable, LimitExceeded };
 
 class LobeChartView : public QWidget {
   Q_OBJECT

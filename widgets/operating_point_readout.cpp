@@ -28,6 +28,10 @@ OperatingPointReadout::OperatingPointReadout(QWidget* parent) : QWidget(parent),
       {"feed", "Feed per tooth s_t", "Feed per tooth used for power and MRR"},
       {"power", "Peak power P", "Peak cutting power over a tooth period, v * sum F_t (Pareto paper eq. 8)"},
       {"power_fraction", "P / P_spindle", "Peak power as a fraction of the spindle power"},
+      {"force", "Peak force F", "Peak resultant cutting force over a tooth period (rigid tool)"},
+      {"force_fraction", "F / F_allow",
+       "Peak force as a fraction of the tool's allowable force (tools[].max_force_N, else the control section's "
+       "breakage limit; Pareto paper Rule 3)"},
       {"mrr", "MRR", "Material removal rate a * b * s_t * n_t * N"},
       {"blim", "b_lim(N)", "Alpha times the delta-margined stability limit at this speed"},
       {"dns", "\u0394N_s", "Spindle speed security change: distance in speed to the lobes (2006, section 3.B)"},
@@ -80,6 +84,11 @@ void OperatingPointReadout::refresh() {
   values_["power"]->setText(QString("%1 W").arg(r.peak_power_w, 0, 'f', 1));
   values_["power_fraction"]->setText(r.power_limit_w > 0 ? QString("%1 %").arg(100.0 * r.powerFraction(), 0, 'f', 1)
                                                          : tr("no spindle limit"));
+  values_["force"]->setText(QString("%1 N").arg(r.peak_force_n, 0, 'f', 1));
+  values_["force_fraction"]->setText(
+      r.force_limit_n > 0
+          ? QString("%1 % of %2 N").arg(100.0 * r.forceFraction(), 0, 'f', 1).arg(r.force_limit_n, 0, 'f', 0)
+          : tr("no tool force limit"));
   const QString volume = u + QStringLiteral("\u00b3/s");  // "%2\u00b3" would read as placeholder %23
   values_["mrr"]->setText(QString("%1 %2").arg(r.mrr_mm3_per_s * f * f * f, 0, 'f', f != 1.0 ? 4 : 1).arg(volume));
   const bool valid = r.valid;
@@ -95,6 +104,9 @@ void OperatingPointReadout::refresh() {
     color = "#c81414";
   } else if (!r.powerOk()) {
     verdict = tr("Stable, but spindle power exceeded");
+    color = "#e67800";
+  } else if (!r.forceOk()) {
+    verdict = tr("Stable, but tool force limit exceeded");
     color = "#e67800";
   } else {
     verdict = tr("STABLE");

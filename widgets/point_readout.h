@@ -13,15 +13,19 @@ struct PointReadout {
   double peak_power_w = 0.0;
   double power_limit_w = 0.0;  // 0 = no machine section
   double mrr_mm3_per_s = 0.0;
-  double blim_mm = 0.0;       // alpha * delta-lobe at this speed; +inf: none below the cap
-  double delta_ns_rpm = 0.0;  // spindle speed security change (2006, section 3.B)
-  double ros = 0.0;           // StabilityBoundary::robustness (negative when unstable)
+  double peak_force_n = 0.0;   // peak resultant static force over a tooth period
+  double force_limit_n = 0.0;  // the tool's F_allow (Rule 3); 0 = none
+  double blim_mm = 0.0;        // alpha * delta-lobe at this speed; +inf: none below the cap
+  double delta_ns_rpm = 0.0;   // spindle speed security change (2006, section 3.B)
+  double ros = 0.0;            // StabilityBoundary::robustness (negative when unstable)
   bool stable = false;
   bool valid = false;  // false: no lobes yet, or the speed is outside the computed range
   QString message;     // why not valid
 
   double powerFraction() const { return power_limit_w > 0.0 ? peak_power_w / power_limit_w : 0.0; }
   bool powerOk() const { return power_limit_w <= 0.0 || peak_power_w <= power_limit_w; }
+  double forceFraction() const { return force_limit_n > 0.0 ? peak_force_n / force_limit_n : 0.0; }
+  bool forceOk() const { return force_limit_n <= 0.0 || peak_force_n <= force_limit_n; }
 };
 
 }  // namespace mx::widgets

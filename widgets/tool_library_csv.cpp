@@ -17,7 +17,26 @@ namespace {
 
 namespace rules = app::rules;
 
-enum Col { kId, kTeeth, kDiameter, kHelix, kKt, kKr, kRadial, kAxis, kFreq, kDamping, kStiffness, kColumnCount };
+enum Col {
+  kId,
+  kTeeth,
+  kDiameter,
+  kHelix,
+  kKt,
+  kKr,
+  kRadial,
+  kMaxForce,
+  kAxis,
+  kFreq,
+  kDamping,
+  kStiffness,
+  kColumnCount
+};
+
+// Columns a header may leave out (a library written before they existed); their cells read as blank.
+bool optionalColumn(int col) {
+  return col == kMaxForce;
+}
 
 // Splits one CSV line (RFC 4180 quoting, no line breaks inside a field). Cells are trimmed unless quoted.
 bool splitCsvLine(const QString& line, QStringList& cells) {
@@ -74,7 +93,7 @@ class CsvReader {
       pos_[known] = static_cast<int>(c);
     }
     for (int k = 0; k < kColumnCount; ++k) {
-      if (pos_[k] < 0)
+      if (pos_[k] < 0 && !optionalColumn(k))
         return fail(QString("line %1: missing column '%2' (the header must be %3)")
                         .arg(line)
                         .arg(ToolLibraryCsv::columns()[k], ToolLibraryCsv::columns().join(',')));
@@ -108,7 +127,8 @@ class CsvReader {
           !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
           !required(kHelix, rules::kHelixDeg, tool.helix_deg) || !optional(kKt, rules::kPositive, tool.Kt_N_mm2) ||
           !optional(kKr, rules::kNonNegative, tool.Kr) ||
-          !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm))
+          !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm) ||
+          !optional(kMaxForce, rules::kToolForceN, tool.max_force_N))
         return false;
       tool.teeth = static_cast<int>(teeth);
       firstLine_.insert(id, line);
@@ -121,7 +141,7 @@ class CsvReader {
   }
 
  private:
-  QString cell(int col) const { return cells_.at(pos_[col]); }
+  QString cell(int col) const { return pos_[col] < 0 ? QString() : cells_.at(pos_[col]); }
 
   bool fail(const QString& message) {
     error = message;
@@ -154,8 +174,8 @@ class CsvReader {
   // A continuation row leaves the tool fields blank or repeats them exactly.
   bool sameAsFirst(const app::ToolSpec& t) {
     const std::pair<int, std::optional<double>> fields[] = {
-        {kTeeth, double(t.teeth)},   {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg}, {kKt, t.Kt_N_mm2}, {kKr, t.Kr},
-        {kRadial, t.radial_depth_mm}};
+        {kTeeth, double(t.teeth)},    {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg}, {kKt, t.Kt_N_mm2}, {kKr, t.Kr},
+        {kRadial, t.radial_depth_mm}, {kMaxForce, t.max_force_N}};
     for (const auto& [col, first] : fields) {
       if (cell(col).isEmpty()) continue;
       bool ok = false;
@@ -195,8 +215,9 @@ class CsvReader {
 }  // namespace
 
 const QStringList& ToolLibraryCsv::columns() {
-  static const QStringList kColumns{"tool_id",         "teeth", "diameter_mm", "helix_deg",   "Kt_N_mm2",          "Kr",
-                                    "radial_depth_mm", "axis",  "freq_Hz",     "damping_pct", "stiffness_N_per_um"};
+  static const QStringList kColumns{"tool_id",  "teeth",   "diameter_mm",     "helix_deg",
+                                    "Kt_N_mm2", "Kr",      "radial_depth_mm", "max_force_N",
+                                    "axis",     "freq_Hz", "damping_pct",     "stiffness_N_per_um"};
   return kColumns;
 }
 
@@ -210,7 +231,8 @@ QByteArray ToolLibraryCsv::toCsv(const std::vector<app::ToolSpec>& tools) {
                                      app::formatNumber(t.helix_deg),
                                      opt(t.Kt_N_mm2),
                                      opt(t.Kr),
-                                     opt(t.radial_depth_mm)}
+                                     opt(t.radial_depth_mm),
+                                     opt(t.max_force_N)}
                              .join(',');
     const auto mode = [&](const char* axis, const app::ModeSpec& m) {
       lines << QStringList{head, axis, app::formatNumber(m.freq_Hz), app::formatNumber(m.damping_pct),

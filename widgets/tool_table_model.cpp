@@ -16,7 +16,7 @@ QString number(double value) {
 
 const char* fieldName(int column) {
   static const char* kNames[] = {"id", "teeth",           "diameter_mm", "helix_deg", "Kt_N_mm2",
-                                 "Kr", "radial_depth_mm", "modes_x",     "modes_y"};
+                                 "Kr", "radial_depth_mm", "max_force_N", "modes_x",   "modes_y"};
   return kNames[column];
 }
 
@@ -83,6 +83,8 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
       return opt(t.Kr);
     case RadialDepth:
       return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
+    case MaxForce:
+      return opt(t.max_force_N);
     case ModesX:
       return static_cast<int>(t.modes_x.size());
     case ModesY:
@@ -124,6 +126,9 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
     case RadialDepth:
       r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"};
       break;
+    case MaxForce:
+      r = {0, 1e7, 0, 100, "none"};
+      break;
     default:
       return {};
   }
@@ -139,6 +144,7 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
     case D::SpecialTextRole:
       return QString(r.special);
     case D::SuffixRole:
+      if (column == MaxForce) return QStringLiteral(" N");
       return column == Diameter || column == RadialDepth ? " " + lengthUnit() : QString();
     default:
       return {};
@@ -165,6 +171,14 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
                                : tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's");
     case RadialDepth:
       return tr("Radial depth of cut a [%1] in (0, D]; empty = the operation's radial engagement").arg(lengthUnit());
+    case MaxForce: {
+      const double fallback = project_.toolForceLimitN(app::ToolSpec{});
+      return std::isfinite(fallback) ? tr("Allowable peak resultant force F_allow [N] in (0, 1e7] (Rule 3, tool "
+                                          "breakage); empty = the control section's breakage limit %1 N")
+                                           .arg(app::formatNumber(fallback))
+                                     : tr("Allowable peak resultant force F_allow [N] in (0, 1e7] (Rule 3, tool "
+                                          "breakage); empty = no limit");
+    }
     case ModesX:
       return tr("%n mode(s) in x; edit them in the mode tables below", nullptr, int(t.modes_x.size()));
     case ModesY:
@@ -214,6 +228,8 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
         return tr("K_r");
       case RadialDepth:
         return tr("radial depth [%1]").arg(unit);
+      case MaxForce:
+        return tr("max force [N]");
       case ModesX:
         return tr("modes x");
       case ModesY:
@@ -271,6 +287,9 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
       break;
     case RadialDepth:
       optional(t.radial_depth_mm, true);
+      break;
+    case MaxForce:
+      optional(t.max_force_N, false);
       break;
     default:
       return false;

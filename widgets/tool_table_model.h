@@ -14,7 +14,7 @@ namespace mx::widgets {
 class ToolTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Id, Teeth, Diameter, Helix, Kt, Kr, RadialDepth, ModesX, ModesY, ColumnCount };
+  enum Column { Id, Teeth, Diameter, Helix, Kt, Kr, RadialDepth, MaxForce, ModesX, ModesY, ColumnCount };
   explicit ToolTableModel(QObject* parent = nullptr);
 
   // Keeps the row structure when the number of tools is unchanged (the view keeps its selection).
@@ -30,7 +30,7 @@ class ToolTableModel : public QAbstractTableModel {
   QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
   Qt::ItemFlags flags(const QModelIndex& index) const override;
   // Validates and requests the edit; returns false (and emits editRefused) when it is refused.
-  // An invalid QVariant clears an optional column (K_t, K_r, radial depth).
+  // An invalid QVariant clears an optional column (K_t, K_r, radial depth, maximum force).
   bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
  signals:

@@ -85,6 +85,7 @@ int runPointCommand(const QStringList& arguments) {
                   {"peak_power_W", perf.peak_power_w},
                   {"mean_power_W", perf.mean_power_w},
                   {"peak_torque_Nm", perf.peak_torque_nm},
+                  {"peak_force_N", perf.peak_force_n},
                   {"MRR_mm3_s", perf.mrr_m3_per_s * 1e9},
                   {"cutting_speed_m_min", perf.cutting_speed_m_per_s * 60.0},
                   {"feed_mm_s", feed_mm * setup.teeth * n}};
@@ -93,6 +94,12 @@ int runPointCommand(const QStringList& arguments) {
     out.insert("available_power_W", available);
     out.insert("power_fraction", perf.peak_power_w / available);
     out.insert("power_ok", perf.peak_power_w <= available);
+  }
+  const double force_limit = project.toolForceLimitN(requireTool(project, tool));  // Rule 3 F_allow
+  if (std::isfinite(force_limit)) {
+    out.insert("max_force_N", force_limit);
+    out.insert("force_fraction", perf.peak_force_n / force_limit);
+    out.insert("force_ok", perf.peak_force_n <= force_limit);
   }
   printJson(out);
   return kExitOk;

@@ -3,7 +3,8 @@
 // The 2006 expert system (section 3): Rule 4 tool ranking by minimum tool cost (eq. 13), q* of the
 // selected tool, Rule 5 q** by C_resultant (eq. 18-20) from a pattern search around q* (seeded with the
 // best K points by C, every point simulated in the time domain), Rule 6 malfunction loop. Prints
-//   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","mrr_mm3_min","dNs_rpm"}...],
+//   {"selected", "ranking": [{"tool","min_cost","q":{...},"power_W","peak_force_N","max_force_N" (F_allow,
+//    null: none),"mrr_mm3_min","dNs_rpm"}...],
 //    "q_star", "q_star_star" (null with --no-simulation), "malfunction_iterations",
 //    "c" (the weights after Rule 6), "method", "dynamics_used": {tool: "modal"|"measured"},
 //    "excluded": [{"tool","reason"}...], "reported_chatter": [{"tool","speed_rpm","depth_mm","freq_Hz",
@@ -25,6 +26,7 @@
 // Exit 2: weights off the simplex, a bad project or operator rules; exit 1: empty admissible space
 // (message names the constraint that emptied it) or the operator rules exclude every point.
 #include <QJsonArray>
+#include <cmath>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
@@ -32,6 +34,7 @@
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "expert/expert_session.h"
+#include "model/cutting_force.h"
 #include "services/expert_request.h"
 #include "services/pareto_request.h"
 #include "services/pareto_rules.h"
@@ -150,7 +153,7 @@ int runRankCommand(const QStringList& arguments) {
     std::copy(bounded.begin(), bounded.end(), request.weights.c.begin());
   }
 
-  ExpertSession session(request.tools, request.settings);
+  ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
   if (!toolRules.empty()) {
     session.setPointFilter([&](std::size_t tool, const ExpertPoint& q) {
@@ -167,21 +170,28 @@ int runRankCommand(const QStringList& arguments) {
   const ExpertResult result = session.run(request.weights, simulate, engineChatterReports(reports, request.tool_ids));
 
   QJsonArray ranking;
-  for (const ToolChoice& t : result.ranking.tools)
-    ranking.append(QJsonObject{{"tool", request.tool_ids[static_cast<qsizetype>(t.tool)]},
-                               {"min_cost", t.min_cost},
-                               {"q", pointJson(t.q)},
-                               {"power_W", t.q.power_w},
-                               {"mrr_mm3_min", t.q.mrr_m3_per_s * 1e9 * 60.0},
-                               {"dNs_rpm", revPerSToRpm(t.q.speed_security)}});
+  for (const ToolChoice& t : result.ranking.tools) {
+    const AdmissibleGrid& grid = session.grid(t.tool);
+    const double force_limit = grid.settings().limits.max_tool_force_n;
+    ranking.append(
+        QJsonObject{{"tool", request.tool_ids[static_cast<qsizetype>(t.tool)]},
+                    {"min_cost", t.min_cost},
+                    {"q", pointJson(t.q)},
+                    {"power_W", t.q.power_w},
+                    {"peak_force_N",
+                     evaluateCut(grid.setup(), {t.q.speed_rev_per_s, t.q.depth_m, t.q.feed_per_tooth_m}).peak_force_n},
+                    {"max_force_N", std::isfinite(force_limit) ? QJsonValue(force_limit) : QJsonValue()},
+                    {"mrr_mm3_min", t.q.mrr_m3_per_s * 1e9 * 60.0},
+                    {"dNs_rpm", revPerSToRpm(t.q.speed_security)}});
+  }
   QJsonArray excluded;
   for (std::size_t t : result.ranking.excluded)
-    excluded.append(QJsonObject{
-        {"tool", request.tool_ids[static_cast<qsizetype>(t)]},
-        {"reason",
-         session.filteredOut(t)
-             ? QString("operator rules: no admissible point satisfies the fired constraints")
-             : QString::fromStdString(describeConstraint(session.grid(t).funnel().emptiedBy(), request.settings))}});
+    excluded.append(
+        QJsonObject{{"tool", request.tool_ids[static_cast<qsizetype>(t)]},
+                    {"reason", session.filteredOut(t)
+                                   ? QString("operator rules: no admissible point satisfies the fired constraints")
+                                   : QString::fromStdString(describeConstraint(session.grid(t).funnel().emptiedBy(),
+                                                                               session.grid(t).settings()))}});
   const ToolChoice& selected = result.ranking.selected();
   QJsonObject out{
       {"selected", request.tool_ids[static_cast<qsizetype>(selected.tool)]},

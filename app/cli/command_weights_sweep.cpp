@@ -39,7 +39,7 @@ int runWeightsSweepCommand(const QStringList& arguments) {
   const Project project = loadProject(path);
   ExpertRequest request = expertRequestFromProject(project);
   applyMethodOption(parser, request.settings);
-  const ExpertSession session(request.tools, request.settings);
+  const ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
   const auto id = [&](std::size_t t) { return request.tool_ids[static_cast<qsizetype>(t)]; };
 

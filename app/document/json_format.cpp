@@ -37,6 +37,7 @@ const QStringList& keyOrder() {
                                  "helix_deg",
                                  "Kt_N_mm2",
                                  "Kr",
+                                 "max_force_N",
                                  "modes_x",
                                  "modes_y",
                                  "frf_x",

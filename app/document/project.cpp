@@ -37,6 +37,13 @@ const ToolSpec* Project::findTool(const QString& id) const {
   return nullptr;
 }
 
+double Project::toolForceLimitN(const ToolSpec& tool) const {
+  if (tool.max_force_N) return *tool.max_force_N;
+  if (control && control->breakage_force_N.value_or(0.0) > 0.0)
+    return control->safety_factor.value_or(1.0) * *control->breakage_force_N;
+  return std::numeric_limits<double>::infinity();
+}
+
 MillingSetup Project::setupFor(const QString& toolId) const {
   const ToolSpec* tool = findTool(toolId);
   if (tool == nullptr) throw ProjectError(QString("tool '%1' not found; available: %2").arg(toolId, toolIds(tools)));

@@ -49,6 +49,7 @@ struct ToolSpec {
   std::optional<double> Kt_N_mm2;         // overrides material.Kt_N_mm2
   std::optional<double> Kr;               // overrides material.Kr
   std::optional<double> radial_depth_mm;  // overrides the operation's radial engagement
+  std::optional<double> max_force_N;      // F_allow: allowable peak resultant force (Rule 3, breakage)
   std::vector<ModeSpec> modes_x;
   std::vector<ModeSpec> modes_y;
   std::optional<FrfRefSpec> frf_x;  // measured dynamics; an axis may have modes, an FRF or both
@@ -164,6 +165,10 @@ struct Project {
   // The engine description of one tool in this project's cut (SI). Throws ProjectError naming the
   // missing tool or section ("tool 'X' not found", "section 'material' is missing", ...).
   MillingSetup setupFor(const QString& toolId) const;
+  // A tool's allowable peak resultant force F_allow [N] (Pareto Rules 3 and 7.1): its max_force_N, else
+  // the control section's breakage limit safety_factor * breakage_force_N (the force reference's own
+  // convention, control/force_reference.h), else +inf (no limit).
+  double toolForceLimitN(const ToolSpec& tool) const;
   const MachineSpec& requireMachine() const;  // throws ProjectError if the section is absent
   const ExpertSpec& requireExpert() const;
 };

@@ -133,12 +133,13 @@ ToolSpec readTool(const ObjectReader& r) {
   t.Kt_N_mm2 = r.optionalNumber("Kt_N_mm2");
   t.Kr = r.optionalNumber("Kr");
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
+  t.max_force_N = r.optionalNumber("max_force_N");
   t.frf_x = readFrfRef(r, "frf_x");
   t.frf_y = readFrfRef(r, "frf_y");
   t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
   t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
   t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm",
-                                       "modes_x", "modes_y", "frf_x", "frf_y"});
+                                       "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y"});
   return t;
 }
 

@@ -12,9 +12,9 @@ namespace {
 
 const QString kReports = "expert.reported_chatter";
 const QStringList kReportKeys{"tool", "speed_rpm", "depth_mm", "freq_Hz"};
-constexpr FieldRange kSpeedRpm{1e-3, 1e6, "in [0.001, 1e6]"};
-constexpr FieldRange kDepthMm{1e-6, 1e3, "in [1e-6, 1000]"};
-constexpr FieldRange kFrequencyHz{1e-3, 1e6, "in [0.001, 1e6]"};
+using chatter_report::kDepthMm;
+using chatter_report::kFrequencyHz;
+using chatter_report::kSpeedRpm;
 constexpr FieldRange kIterations{0.0, 10000.0, "an integer in [0, 10000]", true};
 
 ChatterReportSpec readReport(const ObjectReader& r) {

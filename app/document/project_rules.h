@@ -30,6 +30,7 @@ inline constexpr NumberRule kPercent{B::Open, 0.0, B::Open, 100.0, false};   // 
 inline constexpr NumberRule kFraction{B::Open, 0.0, B::Closed, 1.0, false};  // alpha, a/D
 inline constexpr NumberRule kHelixDeg{B::Open, -90.0, B::Open, 90.0, false};
 inline constexpr NumberRule kTorqueNm{B::Open, 0.0, B::Closed, 1e5, false};         // machine.max_torque_Nm
+inline constexpr NumberRule kToolForceN{B::Open, 0.0, B::Closed, 1e7, false};       // tools[].max_force_N
 inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true};   // teeth, divisions
 inline constexpr NumberRule kCountAtLeastZero{B::Closed, 0.0, B::None, 0.0, true};  // indices
 // Radial depth of a tool of diameter D: (0, D].
@@ -60,6 +61,14 @@ struct FieldRange {
   const char* text = "";  // "in (0, 1e5]": the wording of the message
   bool integer = false;
 };
+// The ranges of a chatter report, in the project (expert.reported_chatter[]) and on the command line
+// (rank --chatter-at).
+namespace chatter_report {
+inline constexpr FieldRange kSpeedRpm{1e-3, 1e6, "in [0.001, 1e6]"};
+inline constexpr FieldRange kDepthMm{1e-6, 1e3, "in [1e-6, 1000]"};
+inline constexpr FieldRange kFrequencyHz{1e-3, 1e6, "in [0.001, 1e6]"};
+}  // namespace chatter_report
+
 // Throws ProjectError("PATH = VALUE: must be RANGE") unless value is finite, in [lo, hi] (and integral).
 void checkField(const QString& path, double value, const FieldRange& range);
 void checkField(const QString& path, const std::optional<double>& value, const FieldRange& range);

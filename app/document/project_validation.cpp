@@ -87,6 +87,7 @@ void validateTool(const QString& path, const ToolSpec& t) {
   checkNumber(path + ".helix_deg", t.helix_deg, rules::kHelixDeg);
   checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kPositive);
   checkOptional(path + ".Kr", t.Kr, rules::kNonNegative);
+  checkOptional(path + ".max_force_N", t.max_force_N, rules::kToolForceN);
   validateModes(path + ".modes_x", t.modes_x);
   validateModes(path + ".modes_y", t.modes_y);
   validateFrfRef(path + ".frf_x", t.frf_x);

@@ -62,6 +62,7 @@ QJsonObject toolJson(const ToolSpec& tool) {
   putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
   putOptional(t, "Kr", tool.Kr);
   putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
+  putOptional(t, "max_force_N", tool.max_force_N);
   putAxis(t, "modes_x", tool.modes_x, "frf_x", tool.frf_x);
   putAxis(t, "modes_y", tool.modes_y, "frf_y", tool.frf_y);
   return t;

@@ -19,7 +19,7 @@ void ExpertRunner::stopped() {
 
 quint64 ExpertRunner::build(std::vector<MillingSetup> tools, const ExpertSettings& settings,
                             const QStringList& tool_ids) {
-  auto request = std::make_shared<Request>(Request{std::move(tools), settings, tool_ids});
+  auto request = std::make_shared<Request>(Request{std::move(tools), settings, tool_ids, {}});
   return startBuild([request] { return std::move(*request); });
 }
 
@@ -27,7 +27,7 @@ quint64 ExpertRunner::build(const app::Project& project) {
   return startBuild([project] {
     app::ExpertRequest request = app::expertRequestFromProject(project);
     app::applyExpertDynamics(project, request, std::nullopt, true);
-    return Request{std::move(request.tools), request.settings, request.tool_ids};
+    return Request{std::move(request.tools), request.settings, request.tool_ids, request.tool_force_limits_n};
   });
 }
 
@@ -41,7 +41,8 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
     try {
       Request request = make_request();
       outcome.tool_ids = request.tool_ids;
-      outcome.session = std::make_shared<ExpertSession>(std::move(request.tools), request.settings);
+      outcome.session =
+          std::make_shared<ExpertSession>(std::move(request.tools), request.settings, request.tool_force_limits_n);
       if (outcome.session->empty()) {
         outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
                                                outcome.session->emptyReason());

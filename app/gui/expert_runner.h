@@ -60,6 +60,7 @@ class ExpertRunner : public QObject {
     std::vector<MillingSetup> tools;
     ExpertSettings settings;
     QStringList tool_ids;
+    std::vector<double> tool_force_limits_n;  // empty: settings.limits.max_tool_force_n for every tool
   };
   quint64 startBuild(std::function<Request()> make_request);
   void started();

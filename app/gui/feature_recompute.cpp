@@ -16,9 +16,9 @@ const std::pair<Feature, app::ProjectChanges> kInputs[] = {
     {Feature::Editors, kCut},
     {Feature::Lobes, kCut | S::Expert},  // delta, alpha and the speed grid
     {Feature::Simulation, kCut},
-    {Feature::ExpertSession, kCut | S::Expert},
+    {Feature::ExpertSession, kCut | S::Expert | S::Control},  // the breakage limit bounds Q without max_force_N
     {Feature::ExpertRerank, S::ExpertWeights},
-    {Feature::ParetoStudy, kCut | S::Expert | S::Pareto | S::Rules},  // Rule 18 constraints bound the table
+    {Feature::ParetoStudy, kCut | S::Expert | S::Pareto | S::Rules | S::Control},  // Rules 18 and 3 bound Q
     {Feature::ParetoChoice, S::ParetoWeights},
     {Feature::ControlSweep, kCut | S::Control},
     {Feature::ControlRun, kCut | S::Control | S::ControlBeta},

@@ -155,6 +155,21 @@ void LobesFeature::setMethod(LobeMethod method) {
 void LobesFeature::projectChanged(const app::Project& project, Features recompute) {
   if (recompute & Feature::Editors) refreshToolChoices(project);
   if (recompute & Feature::Lobes) recompute_timer_.start();
+  if (snapshot_ && (recompute & (Feature::ExpertSession | Feature::Editors))) {  // a tool's or the breakage limit
+    updateForceLimits();
+    showPoint(context_.point());
+  }
+}
+
+// F_allow of each snapshot tool from the current project (a removed tool: no limit until new lobes).
+void LobesFeature::updateForceLimits() {
+  const app::Project& p = context_.project();
+  std::vector<double> limits;
+  for (const ToolLobes& t : snapshot_->tools) {
+    const app::ToolSpec* spec = p.findTool(QString::fromStdString(t.setup.tool_id));
+    limits.push_back(spec ? p.toolForceLimitN(*spec) : std::numeric_limits<double>::infinity());
+  }
+  evaluator_.setForceLimits(std::move(limits));
 }
 
 // The toolbar's tool choice and View > Tools on the chart; the active tool stays when it still exists.
@@ -227,6 +242,7 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   snapshot_ = result.snapshot;
   const app::Project& p = context_.project();
   evaluator_ = PointEvaluator(snapshot_, p.machine ? app::spindlePowerOf(*p.machine) : SpindlePowerCurve{});
+  updateForceLimits();
   chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
   const int tool = std::max(0, evaluator_.toolIndex(context_.activeTool()));
   chart_->setActiveTool(tool);
@@ -294,9 +310,9 @@ void LobesFeature::showPoint(const app::PickedPoint& point) {
   readout_->setReadout(r);
   widgets::PointVerdict verdict = widgets::PointVerdict::Unknown;
   if (r.valid)
-    verdict = !r.stable      ? widgets::PointVerdict::Unstable
-              : !r.powerOk() ? widgets::PointVerdict::PowerExceeded
-                             : widgets::PointVerdict::Stable;
+    verdict = !r.stable                      ? widgets::PointVerdict::Unstable
+              : !r.powerOk() || !r.forceOk() ? widgets::PointVerdict::LimitExceeded
+                                             : widgets::PointVerdict::Stable;
   chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
   feed_spin_->blockSignals(true);
   feed_spin_->setValue(context_.units()->fromMm(point.feed_mm_per_tooth));

@@ -52,6 +52,7 @@ class LobesFeature : public WindowFeature {
   void setSnapGrid(int tool);
   void pickInitialPoint(int tool);
   void updatePowerLimit();
+  void updateForceLimits();
   void showPoint(const app::PickedPoint& point);
   void showActiveTool();
   void onPointDragged(double speed_rpm, double depth_mm);

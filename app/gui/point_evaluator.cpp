@@ -43,6 +43,9 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;
   const CutPerformance perf = evaluateCut(t.setup, {n, b, feed * 1e-3});
   r.peak_power_w = perf.peak_power_w;
+  r.peak_force_n = perf.peak_force_n;
+  const std::size_t i = static_cast<std::size_t>(tool);
+  if (i < force_limits_n_.size() && std::isfinite(force_limits_n_[i])) r.force_limit_n = force_limits_n_[i];
   r.mrr_mm3_per_s = perf.mrr_m3_per_s * 1e9;
   if (!boundary.covers(n)) {
     r.message = QObject::tr("%1 rpm is outside the computed lobes (%2-%3 rpm)")

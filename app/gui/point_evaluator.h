@@ -28,11 +28,16 @@ class PointEvaluator {
   // immersion. Empty without a power limit.
   QVector<double> powerLimitMm(int tool, double feed_mm_per_tooth) const;
 
+  // Each snapshot tool's allowable force F_allow [N] (Rule 3), aligned with the snapshot's tools;
+  // +inf or an absent entry: no limit. Set apart from the snapshot: the limit may change without new lobes.
+  void setForceLimits(std::vector<double> force_limits_n) { force_limits_n_ = std::move(force_limits_n); }
+
  private:
   std::shared_ptr<const LobeSnapshot> snapshot_;
   std::vector<StabilityBoundary> boundaries_;
   std::vector<double> power_per_depth_feed_speed_;  // peak power / (b s_t N) [W s / m^2]
   SpindlePowerCurve spindle_power_;
+  std::vector<double> force_limits_n_;
 };
 
 }  // namespace mx::gui

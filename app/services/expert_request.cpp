@@ -37,6 +37,7 @@ ExpertRequest expertRequestFromProject(const Project& project) {
   for (const ToolSpec& t : project.tools) {
     r.tool_ids << t.id;
     r.tools.push_back(project.setupFor(t.id));
+    r.tool_force_limits_n.push_back(project.toolForceLimitN(t));
   }
   ExpertSettings& s = r.settings;
   const SpindlePowerCurve spindle = spindlePowerOf(machine);

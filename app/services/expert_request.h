@@ -20,7 +20,8 @@ struct ExpertRequest {
   QStringList tool_ids;
   std::vector<MillingSetup> tools;
   ExpertSettings settings;
-  CostWeights weights;  // the project's, validated (exit 2 when off the simplex)
+  std::vector<double> tool_force_limits_n;  // F_allow per tool (Project::toolForceLimitN), aligned with tools
+  CostWeights weights;                      // the project's, validated (exit 2 when off the simplex)
 };
 
 // Throws ProjectError (exit 2) for missing sections and weights off the simplex.

@@ -20,6 +20,7 @@ ParetoStudy::ParetoStudy(Project project, std::optional<DynamicsSource> dynamics
           chooseDynamics(tool(), dynamics, expert_.settings.stability.delta_per_s, expert_.settings.stability.method)),
       setup_(dynamicsSetupFor(project_, request_.tool, dynamics_.used)) {
   expert_.settings.stability.dynamics = dynamics_.used;
+  expert_.settings.limits.max_tool_force_n = project_.toolForceLimitN(tool());  // Module II, Rule 3
   if (!request_.operator_rules.isEmpty()) rules_ = evaluateParetoRules(request_.operator_rules, project_, tool());
   grid_ = std::make_unique<AdmissibleGrid>(setup_, expert_.settings);
   if (grid_->empty())

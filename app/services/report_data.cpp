@@ -111,7 +111,7 @@ ReportData computeReportData(const QString& project_path, const ReportRequest& o
   d.version = options.version;
   d.generated = QDateTime::currentDateTime();
 
-  ExpertSession session(request.tools, request.settings);
+  ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw ComputationError(QString::fromStdString(session.emptyReason()));
   d.result = session.run(request.weights, true);
   d.normalisation = session.normalisation();

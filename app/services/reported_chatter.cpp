@@ -2,18 +2,19 @@
 
 #include <cmath>
 
+#include "document/project_rules.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
 
 namespace {
 
-double positiveNumber(const QString& text, const QString& whole, const char* what, double hi) {
+// The same ranges as expert.reported_chatter[] in the project file.
+double numberIn(const QString& text, const QString& whole, const char* what, const FieldRange& range) {
   bool ok = false;
   const double v = text.trimmed().toDouble(&ok);
-  if (!ok || !std::isfinite(v) || v <= 0.0 || v > hi)
-    throw InputError(
-        QString("--chatter-at = '%1': %2 '%3' must be a number in (0, %4]").arg(whole, what, text).arg(hi, 0, 'g', 6));
+  if (!ok || !std::isfinite(v) || v < range.lo || v > range.hi)
+    throw InputError(QString("--chatter-at = '%1': %2 '%3' must be a number %4").arg(whole, what, text, range.text));
   return v;
 }
 
@@ -33,9 +34,9 @@ ChatterReportSpec parseChatterAt(const QString& text, const QString& tool) {
         QString("--chatter-at = '%1': must be SPEED_RPM:DEPTH_MM or SPEED_RPM:DEPTH_MM:FREQ_HZ").arg(text));
   ChatterReportSpec c;
   c.tool = tool;
-  c.speed_rpm = positiveNumber(parts[0], text, "speed [rpm]", 1e6);
-  c.depth_mm = positiveNumber(parts[1], text, "depth [mm]", 1e3);
-  if (parts.size() == 3) c.freq_Hz = positiveNumber(parts[2], text, "frequency [Hz]", 1e6);
+  c.speed_rpm = numberIn(parts[0], text, "speed [rpm]", chatter_report::kSpeedRpm);
+  c.depth_mm = numberIn(parts[1], text, "depth [mm]", chatter_report::kDepthMm);
+  if (parts.size() == 3) c.freq_Hz = numberIn(parts[2], text, "frequency [Hz]", chatter_report::kFrequencyHz);
   return c;
 }
 

@@ -31,6 +31,7 @@ QConstraint ConstraintFunnel::emptiedBy() const {
   if (feeds == 0) return QConstraint::FeedPerTooth;
   if (feed_drive_points == 0) return QConstraint::FeedDrive;
   if (power_points == 0) return QConstraint::SpindlePower;
+  if (force_points == 0) return QConstraint::ToolForce;
   return QConstraint::SpeedSecurity;
 }
 
@@ -62,6 +63,9 @@ std::string describeConstraint(QConstraint c, const ExpertSettings& s) {
       if (std::isfinite(s.limits.max_spindle_torque_nm)) out << ", " << s.limits.max_spindle_torque_nm << " N m torque";
       if (!s.limits.spindle_curve.empty()) out << ", power curve of " << s.limits.spindle_curve.size() << " rows";
       out << ")";
+      break;
+    case QConstraint::ToolForce:
+      out << "the tool force limit F_allow (" << s.limits.max_tool_force_n << " N peak resultant, Rule 3)";
       break;
     case QConstraint::SpeedSecurity:
       out << "Delta N_s > 0 (every remaining point lies on the lobe boundary)";
@@ -125,6 +129,10 @@ void AdmissibleGrid::build() {
   // The peak power per (b s_t) is proportional to N (v = pi D N; the force pattern over a tooth period
   // does not depend on N), so one evaluation per tool serves every speed.
   const double power_per_depth_feed_per_speed = peakPowerPerDepthFeed(setup_, 1.0);
+  // The same holds for the peak resultant force, which does not depend on N at all.
+  const double force_per_depth_feed = peakForcePerDepthFeed(setup_);
+  if (!(lim.max_tool_force_n > 0.0))
+    throw InvalidInput("expert grid: the tool force limit must be > 0 N (+inf: no limit)");
   cells_.clear();
   max_mrr_ = 0.0;
   max_dns_ = 0.0;
@@ -141,10 +149,10 @@ void AdmissibleGrid::build() {
     const std::int64_t drive_feeds =
         std::min(grid_feeds, countUpTo(lim.max_feed_velocity_m_per_s / (setup_.teeth * n), feed_step_));
     const double available_power = spindle.available(n);  // P_av(N): torque-limited below the base speed
-    if (drive_feeds >= kUnbounded && !std::isfinite(available_power))
+    if (drive_feeds >= kUnbounded && !std::isfinite(available_power) && !std::isfinite(lim.max_tool_force_n))
       throw InvalidInput(
-          "expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum "
-          "or a spindle power limit");
+          "expert grid: the feed is unbounded; set a feed per tooth maximum, a feed-drive maximum, "
+          "a spindle power limit or a tool force limit");
     funnel_.feed_drive_points =
         drive_feeds >= kUnbounded ? kUnbounded : std::min(kUnbounded, funnel_.feed_drive_points + depths * drive_feeds);
     if (drive_feeds == 0) continue;
@@ -152,11 +160,15 @@ void AdmissibleGrid::build() {
     for (std::int64_t j = 1; j <= depths; ++j) {
       const double b = static_cast<double>(j) * depth_step_;
       const double power_per_feed = power_per_depth_feed * b;
-      const std::int64_t feeds = std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_));
-      if (feeds == 0) break;  // the power grows with b: no deeper cell fits either
+      const std::int64_t power_feeds = std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_));
+      if (power_feeds == 0) break;  // the power grows with b: no deeper cell fits either
+      funnel_.power_points = std::min(kUnbounded, funnel_.power_points + power_feeds);
+      const std::int64_t feeds =
+          std::min(power_feeds, countUpTo(lim.max_tool_force_n / (force_per_depth_feed * b), feed_step_));
+      if (feeds == 0) break;  // so does the force
       if (feeds > kMaxFeedsPerCell)
         throw InvalidInput("expert grid: more than 1e6 admissible feeds per cell; raise the feed step");
-      funnel_.power_points += feeds;
+      funnel_.force_points += feeds;
       const double dns = boundary_.speedSecurity(n, b);
       if (!(dns > 0.0)) continue;
       GridCell cell;
@@ -190,6 +202,7 @@ QConstraint AdmissibleGrid::violation(double n, double b, double s) const {
   if (s * setup_.teeth * n > lim.max_feed_velocity_m_per_s * (1.0 + kEps)) return QConstraint::FeedDrive;
   const CutPerformance perf = evaluateCut(setup_, {n, b, s});
   if (!(perf.peak_power_w <= lim.spindlePower().available(n) * (1.0 + 1e-6))) return QConstraint::SpindlePower;
+  if (!(perf.peak_force_n <= lim.max_tool_force_n * (1.0 + 1e-6))) return QConstraint::ToolForce;
   if (!(boundary_.speedSecurity(n, b) > 0.0)) return QConstraint::SpeedSecurity;
   return QConstraint::None;
 }

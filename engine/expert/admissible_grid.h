@@ -4,7 +4,8 @@
 //   b < alpha * b_lim,delta(N) and Delta N_s(N, b) > 0   (Rule 1; a zero Delta N_s is on the boundary),
 //   N <= spindle maximum, s_t <= feed per tooth maximum, s_t n_t N <= feed-drive maximum,
 //   peak cutting power P(N, b, s_t) <= available spindle power P_av(N) (Pareto eq. 8; torque-limited
-//   below the spindle's base speed, MachineLimits::spindlePower()).
+//   below the spindle's base speed, MachineLimits::spindlePower()),
+//   peak resultant force |F|(b, s_t) <= the tool's allowable force F_allow (Pareto Rules 3 and 7.1).
 // At a given (N, b) the power and the MRR are proportional to s_t, and the admissible feeds are
 // feed_step * (1 .. feed_count). So Q is stored as cells (N, b) with their power and MRR per unit feed,
 // Delta N_s and feed count: a weight change only needs a pass over these arrays (ExpertSession).
@@ -49,6 +50,7 @@ enum class QConstraint {
   FeedPerTooth,
   FeedDrive,
   SpindlePower,
+  ToolForce,
   SpeedSecurity,
   OutsideGrid  // outside the lobes' speed range or a non-positive depth or feed (violation() only)
 };
@@ -60,6 +62,7 @@ struct ConstraintFunnel {
   std::int64_t feeds = 0;            // grid feeds <= feed per tooth maximum (-1: unbounded)
   std::int64_t feed_drive_points = 0;
   std::int64_t power_points = 0;
+  std::int64_t force_points = 0;
   std::int64_t admissible_points = 0;  // also Delta N_s > 0
 
   QConstraint emptiedBy() const;
@@ -76,6 +79,7 @@ class AdmissibleGrid {
   AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes);
 
   const MillingSetup& setup() const { return setup_; }
+  const ExpertSettings& settings() const { return settings_; }
   const LobeDiagram& lobes() const { return lobes_; }
   const StabilityBoundary& boundary() const { return boundary_; }
   const std::vector<double>& speeds() const { return speeds_; }

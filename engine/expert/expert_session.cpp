@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "core/invalid_input.h"
 #include "core/parallel_for.h"
@@ -83,13 +84,20 @@ std::optional<ToolChoice> bestOfGrid(const AdmissibleGrid& grid, std::size_t too
 
 }  // namespace
 
-ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings)
+ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings,
+                             const std::vector<double>& tool_force_limits_n)
     : settings_(settings), tools_(std::move(tools)), cache_(settings.refinement) {
   clearUpperVectorState();
   if (tools_.empty()) throw InvalidInput("the expert system needs at least one candidate tool");
+  if (!tool_force_limits_n.empty() && tool_force_limits_n.size() != tools_.size())
+    throw InvalidInput("the expert system needs one tool force limit per tool (" + std::to_string(tools_.size()) +
+                       "), got " + std::to_string(tool_force_limits_n.size()));
   std::vector<std::optional<AdmissibleGrid>> built(tools_.size());
-  parallelFor(tools_.size(), settings_.refinement.threads,
-              [&](std::size_t i) { built[i].emplace(tools_[i], settings_); });
+  parallelFor(tools_.size(), settings_.refinement.threads, [&](std::size_t i) {
+    ExpertSettings own = settings_;
+    if (!tool_force_limits_n.empty()) own.limits.max_tool_force_n = tool_force_limits_n[i];
+    built[i].emplace(tools_[i], own);
+  });
   grids_.reserve(built.size());
   for (auto& g : built) grids_.push_back(std::move(*g));
   nf_.available_power = settings_.limits.spindlePower();
@@ -118,11 +126,13 @@ bool ExpertSession::empty() const {
 
 std::string ExpertSession::emptyReason() const {
   if (!empty()) return {};
-  QConstraint latest = QConstraint::None;  // the constraint that removed the last point of the longest-lived tool
-  for (const AdmissibleGrid& g : grids_) latest = std::max(latest, g.funnel().emptiedBy());
+  // The constraint that removed the last point of the longest-lived tool, with that tool's limits.
+  const AdmissibleGrid* latest = &grids_.front();
+  for (const AdmissibleGrid& g : grids_)
+    if (g.funnel().emptiedBy() > latest->funnel().emptiedBy()) latest = &g;
   std::ostringstream out;
-  out << "the admissible cutting-parameter space is empty for every tool: " << describeConstraint(latest, settings_)
-      << " leaves no grid point";
+  out << "the admissible cutting-parameter space is empty for every tool: "
+      << describeConstraint(latest->funnel().emptiedBy(), latest->settings()) << " leaves no grid point";
   return out.str();
 }
 

@@ -76,8 +76,12 @@ struct ExpertResult {
 
 class ExpertSession {
  public:
-  // Builds every tool's grid (in parallel). Throws InvalidInput for an empty library or bad settings.
-  ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings);
+  // Builds every tool's grid (in parallel). `tool_force_limits_n`, when not empty, holds each tool's
+  // allowable force F_allow (Rule 3; +inf: none), aligned with `tools`, and replaces
+  // settings.limits.max_tool_force_n for that tool. Throws InvalidInput for an empty library, a
+  // misaligned limit list or bad settings.
+  ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings,
+                const std::vector<double>& tool_force_limits_n = {});
 
   std::size_t toolCount() const { return grids_.size(); }
   const AdmissibleGrid& grid(std::size_t tool) const { return grids_.at(tool); }

@@ -23,7 +23,8 @@ struct ExpertGrid {
 };
 
 // Constraints of the admissible space besides the lobes. +inf = no limit. The peak cutting power
-// (Pareto eq. 8) is bounded by the available power P_av(N) = min(P_max, 2 pi N T_max, curve(N)).
+// (Pareto eq. 8) is bounded by the available power P_av(N) = min(P_max, 2 pi N T_max, curve(N)), and the
+// peak resultant force by the tool's allowable force F_allow (Pareto Rules 3 and 7.1: breakage).
 struct MachineLimits {
   double spindle_power_w = std::numeric_limits<double>::infinity();        // P_max
   double max_spindle_torque_nm = std::numeric_limits<double>::infinity();  // T_max: P <= 2 pi N T_max
@@ -31,6 +32,7 @@ struct MachineLimits {
   double max_spindle_rev_per_s = std::numeric_limits<double>::infinity();
   double max_feed_velocity_m_per_s = std::numeric_limits<double>::infinity();  // feed drive (Pareto Rule 6)
   double max_feed_per_tooth_m = std::numeric_limits<double>::infinity();       // operation maximum
+  double max_tool_force_n = std::numeric_limits<double>::infinity();           // F_allow of the tool
 
   SpindlePowerCurve spindlePower() const { return {spindle_power_w, max_spindle_torque_nm, spindle_curve}; }
 };

@@ -23,6 +23,8 @@ const char* constraintKey(QConstraint c) {
       return "feed_drive";
     case QConstraint::SpindlePower:
       return "spindle_power";
+    case QConstraint::ToolForce:
+      return "tool_force";
     case QConstraint::SpeedSecurity:
       return "speed_security";
     case QConstraint::OutsideGrid:

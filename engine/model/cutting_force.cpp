@@ -75,4 +75,9 @@ double peakPowerPerDepthFeed(const MillingSetup& setup, double spindle_rev_per_s
   return evaluateCut(setup, unit).peak_power_w;
 }
 
+double peakForcePerDepthFeed(const MillingSetup& setup) {
+  const OperatingPoint unit{1.0, 1.0, 1.0};
+  return evaluateCut(setup, unit).peak_force_n;
+}
+
 }  // namespace mx

@@ -43,5 +43,8 @@ CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& poin
 
 // Peak power per unit (b * s_t): P = b s_t * powerPerDepthFeed; used for power-limit curves.
 double peakPowerPerDepthFeed(const MillingSetup& setup, double spindle_rev_per_s);
+// Peak resultant force per unit (b * s_t): |F|_max = b s_t * peakForcePerDepthFeed (independent of N);
+// bounds the Rule 3 tool-force limit (Pareto paper, Module II).
+double peakForcePerDepthFeed(const MillingSetup& setup);
 
 }  // namespace mx

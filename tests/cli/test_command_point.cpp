@@ -85,6 +85,40 @@ class TestCommandPoint : public QObject {
     QCOMPARE_LE(std::abs(point(project, "2000", "0.5", "0.1").json["available_power_W"].toDouble() - 1500.0), 1e-9);
     QCOMPARE_LE(std::abs(point(project, "500", "0.5", "0.1").json["available_power_W"].toDouble() - 250.0), 1e-9);
   }
+
+  // Rule 3 (Module II): Table 4 row 3 (2010 rpm, 1.5124 mm, 17.96 mm/s) peaks at K_t sqrt(1 + K_r^2) b s_t
+  // = 169.3 N, under the case tool's 600 N. With tools[0].max_force_N = 150 it is refused; with no tool
+  // limit the control section's safety_factor * breakage_force_N (0.5 * 1000 N) is used; with neither
+  // there is no limit key.
+  void toolForceLimit() {
+    const QString feed = QString::number(17.96 / (3.0 * 2010.0 / 60.0), 'g', 10);
+    const mx::test::CliRun own = point(kCase, "2010", "1.5124", feed);
+    QCOMPARE(own.code, 0);
+    const double expected = 600.0 * std::sqrt(1.0 + 0.3 * 0.3) * 1.5124 * feed.toDouble();
+    QCOMPARE_LE(std::abs(own.json["peak_force_N"].toDouble() - expected), 1e-3 * expected);
+    QCOMPARE_LE(std::abs(expected - 169.3), 0.05);
+    QCOMPARE(own.json["max_force_N"].toDouble(), 600.0);
+    QVERIFY(own.json["force_ok"].toBool());
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString none = mx::test::writeMutatedProject(kCase, {"-tools/0/max_force_N"}, dir.filePath("none.mxproj"));
+    const mx::test::CliRun free = point(none, "2010", "1.5124", feed);
+    QCOMPARE(free.code, 0);
+    QVERIFY(!free.json.contains("max_force_N") && !free.json.contains("force_ok"));
+    const QString limited =
+        mx::test::writeMutatedProject(kCase, {"tools/0/max_force_N=150"}, dir.filePath("limited.mxproj"));
+    const mx::test::CliRun r = point(limited, "2010", "1.5124", feed);
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["max_force_N"].toDouble(), 150.0);
+    QVERIFY(!r.json["force_ok"].toBool());
+    QCOMPARE_LE(std::abs(r.json["force_fraction"].toDouble() - r.json["peak_force_N"].toDouble() / 150.0), 1e-12);
+    const QString breakage = mx::test::writeMutatedProject(
+        kCase, {"-tools/0/max_force_N", "control/breakage_force_N=1000", "control/safety_factor=0.5"},
+        dir.filePath("breakage.mxproj"));
+    const mx::test::CliRun b = point(breakage, "2010", "1.5124", feed);
+    QCOMPARE(b.json["max_force_N"].toDouble(), 500.0);
+    QVERIFY(b.json["force_ok"].toBool());
+  }
 };
 
 MX_REGISTER_TEST(TestCommandPoint)

@@ -57,6 +57,9 @@ QString rubioWithRules(const QTemporaryDir& dir, const QStringList& rules) {
 void addBadChatterAtRows() {
   QTest::newRow("no depth") << QStringList{"--chatter-at", "5800"} << "SPEED_RPM:DEPTH_MM";
   QTest::newRow("negative depth") << QStringList{"--chatter-at", "5800:-1"} << "depth [mm] '-1'";
+  // the project field's range (expert.reported_chatter[].depth_mm)
+  QTest::newRow("depth below 1e-6") << QStringList{"--chatter-at", "5800:1e-7"}
+                                    << "depth [mm] '1e-7' must be a number in [1e-6, 1000]";
   QTest::newRow("text speed") << QStringList{"--chatter-at", "fast:0.5"} << "speed [rpm] 'fast'";
   QTest::newRow("zero frequency") << QStringList{"--chatter-at", "5800:0.5:0"} << "frequency [Hz] '0'";
   QTest::newRow("four fields") << QStringList{"--chatter-at", "1:2:3:4"} << "SPEED_RPM:DEPTH_MM";
@@ -188,6 +191,44 @@ class TestCliRank : public QObject {
     QVERIFY2(s.err.contains("spindle speed maximum (500 rpm"), qPrintable(s.err));
     const Run w = cli({"weights-sweep", rubioWith(dir, "spindle_power_W", 0.001), "--c3", "0.075"});
     QCOMPARE(w.code, 1);
+  }
+
+  // Module II: R1's tools[0].max_force_N = 60 N. Its unlimited q* peaks near 85 N (K_t sqrt(1 + K_r^2)
+  // b s_t on the power limit); limited, q* stays under 60 N and the ranking reports both forces. A
+  // 1 mN limit excludes R1, naming the limit, and R2 is selected.
+  void toolForceLimitBoundsQStar() {
+    const Run free = cli({"rank", kRubio, "--no-simulation"});
+    QCOMPARE(free.code, 0);
+    const QJsonObject free_r1 = free.json["ranking"].toArray()[0].toObject();
+    QCOMPARE(free_r1["tool"].toString(), QString("R1"));
+    QVERIFY(free_r1["max_force_N"].isNull());
+    QCOMPARE_GE(free_r1["peak_force_N"].toDouble(), 80.0);
+    QTemporaryDir dir;
+    const auto withR1Limit = [&](double limit) {
+      return rubioEdited(dir, QString("force-%1.mxproj").arg(limit), [&](QJsonObject& root) {
+        QJsonArray tools = root["tools"].toArray();
+        QJsonObject r1 = tools[0].toObject();
+        r1["max_force_N"] = limit;
+        tools[0] = r1;
+        root["tools"] = tools;
+      });
+    };
+    const Run r = cli({"rank", withR1Limit(60.0), "--no-simulation"});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["selected"].toString(), QString("R1"));
+    const QJsonObject r1 = r.json["ranking"].toArray()[0].toObject();
+    QCOMPARE(r1["max_force_N"].toDouble(), 60.0);
+    QCOMPARE_LE(r1["peak_force_N"].toDouble(), 60.0);
+    const QJsonObject q = r.json["q_star"].toObject();
+    const double force = 600.0 * std::sqrt(1.09) * q["depth_mm"].toDouble() * q["feed_mm_per_tooth"].toDouble();
+    QCOMPARE_LE(std::abs(force - r1["peak_force_N"].toDouble()), 0.01 * force);  // q is rounded in the JSON
+    const Run out = cli({"rank", withR1Limit(0.001), "--no-simulation"});
+    QCOMPARE(out.code, 0);
+    QCOMPARE(out.json["selected"].toString(), QString("R2"));
+    const QJsonObject excluded = out.json["excluded"].toArray()[0].toObject();
+    QCOMPARE(excluded["tool"].toString(), QString("R1"));
+    QVERIFY2(excluded["reason"].toString().contains("tool force limit F_allow (0.001 N"),
+             qPrintable(excluded["reason"].toString()));
   }
 
   // Figure 4: c3 = 0.075, c1 = 0 .. 0.925; R1 cheaper everywhere.

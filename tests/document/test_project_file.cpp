@@ -310,6 +310,13 @@ class TestProjectFile : public QObject {
     row("tool depth just above D", {"tools/0/radial_depth_mm=16.5"},
         {"tools[0].radial_depth_mm = 16.5: must be in (0, 16]"});
     row("tool depth with D 0", {"tools/1/diameter_mm=0"}, {"tools[1].diameter_mm = 0: must be > 0"});
+    row("tool force zero", {"tools/0/max_force_N=0"}, {"tools[0].max_force_N = 0: must be in (0, 1e+07]"});
+    row("tool force negative", {"tools/1/max_force_N=-50"}, {"tools[1].max_force_N = -50: must be in (0, 1e+07]"});
+    row("tool force too large", {"tools/0/max_force_N=2e7"}, {"tools[0].max_force_N = 2e+07: must be in (0, 1e+07]"});
+    row("tool force infinite", {"tools/0/max_force_N=inf"},
+        {"tools[0].max_force_N = inf: must be a finite number in (0, 1e+07]"});
+    row("tool force string", {"tools/0/max_force_N=\"600 N\""},
+        {"tools[0].max_force_N: expected a number, got string"});
     // modes
     row("modes_x missing", {"-tools/0/modes_x"}, {"tools[0].modes_x: missing (required array of modes"});
     row("modes_y object", {"tools/0/modes_y={}"}, {"tools[0].modes_y: expected an array, got object"});
@@ -548,6 +555,31 @@ class TestProjectFile : public QObject {
     removed.machine->spindle_curve.reset();
     const QJsonObject without = projectToJson(removed)["machine"].toObject();
     QVERIFY(!without.contains("max_torque_Nm") && !without.contains("spindle_curve"));
+  }
+
+  // tools[].max_force_N: read, written back, removed; F_allow falls back to the control section's
+  // safety_factor * breakage_force_N, and is unbounded without either.
+  void toolForceLimitRoundTripAndFallback() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    const Project p = projectFromJson(mutated(base, {"tools/0/max_force_N=450"}));
+    QCOMPARE(*p.tools[0].max_force_N, 450.0);
+    QVERIFY(!p.tools[1].max_force_N);
+    QCOMPARE(projectToJson(p)["tools"].toArray()[0].toObject()["max_force_N"].toDouble(), 450.0);
+    QCOMPARE(projectFromJson(projectToJson(p)).tools, p.tools);
+    QCOMPARE(p.toolForceLimitN(p.tools[0]), 450.0);
+    Project q = p;
+    q.control.reset();
+    QVERIFY(std::isinf(q.toolForceLimitN(q.tools[1])));
+    q.control = ControlSection{};
+    q.control->breakage_force_N = 2000.0;
+    QCOMPARE(q.toolForceLimitN(q.tools[1]), 2000.0);  // safety factor 1 by default
+    q.control->safety_factor = 0.4;
+    QCOMPARE(q.toolForceLimitN(q.tools[1]), 800.0);
+    QCOMPARE(q.toolForceLimitN(q.tools[0]), 450.0);  // the tool's own limit comes first
+    q.control->breakage_force_N = 0.0;               // 0: not given
+    QVERIFY(std::isinf(q.toolForceLimitN(q.tools[1])));
+    q.tools[0].max_force_N.reset();
+    QVERIFY(!projectToJson(q)["tools"].toArray()[0].toObject().contains("max_force_N"));
   }
 
   void structuralEditsOnSave() {

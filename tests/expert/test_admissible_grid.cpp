@@ -71,6 +71,7 @@ class TestAdmissibleGrid : public QObject {
     QTest::newRow("feed per tooth") << 1 << int(QConstraint::FeedPerTooth) << "feed per tooth maximum (0.005 mm";
     QTest::newRow("feed drive") << 2 << int(QConstraint::FeedDrive) << "feed-drive maximum (0.01 mm/s)";
     QTest::newRow("power") << 3 << int(QConstraint::SpindlePower) << "spindle power limit (0.001 W)";
+    QTest::newRow("tool force") << 4 << int(QConstraint::ToolForce) << "tool force limit F_allow (0.001 N";
   }
   void emptiedBy() {
     QFETCH(int, which);
@@ -81,6 +82,7 @@ class TestAdmissibleGrid : public QObject {
     if (which == 1) s.limits.max_feed_per_tooth_m = 0.005e-3;
     if (which == 2) s.limits.max_feed_velocity_m_per_s = 0.01e-3;
     if (which == 3) s.limits.spindle_power_w = 0.001;
+    if (which == 4) s.limits.max_tool_force_n = 0.001;
     const AdmissibleGrid g(test::rubioR1(), s);
     QVERIFY(g.empty());
     QCOMPARE(int(g.funnel().emptiedBy()), expected);
@@ -141,6 +143,41 @@ class TestAdmissibleGrid : public QObject {
     QCOMPARE_LE(std::abs(evaluateCut(g.setup(), {high, 0.5e-3, 0.25e-3}).peak_power_w - 353.4), 0.1);
     QVERIFY(!g.isAdmissible(low, 0.5e-3, 0.25e-3));
     QVERIFY(g.isAdmissible(high, 0.5e-3, 0.25e-3));
+  }
+
+  // Rule 3 (Module II): F_allow = 150 N on R1. The peak resultant is k_F b s_t, so each cell's feeds stop
+  // at floor(F_allow / (k_F b feed_step)) or at the limits Q had without it; the next feed step of a
+  // force-bound cell is refused for the force, and the force bounds cells that power alone admits.
+  void toolForceLimitBoundsTheFeeds() {
+    ExpertSettings s = test::rubioExpertSettings();
+    const AdmissibleGrid unlimited(test::rubioR1(), s);
+    s.limits.max_tool_force_n = 150.0;
+    const AdmissibleGrid g(test::rubioR1(), s);
+    const double k_force = peakForcePerDepthFeed(g.setup());
+    int force_bound = 0;
+    for (std::size_t i = 0; i < g.cells().size(); ++i) {
+      const GridCell& c = g.cells()[i];
+      const GridCell* same = nullptr;
+      for (const GridCell& u : unlimited.cells())
+        if (u.speed_rev_per_s == c.speed_rev_per_s && u.depth_m == c.depth_m) same = &u;
+      QVERIFY(same != nullptr);
+      const int by_force = static_cast<int>(std::floor(150.0 / (k_force * c.depth_m * g.feedStep()) * (1 + 1e-9)));
+      QCOMPARE(c.feed_count, std::min(same->feed_count, by_force));
+      const ExpertPoint last = g.point(i, c.feed_count);
+      QVERIFY(evaluateCut(g.setup(), {last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m}).peak_force_n <=
+              150.0 * (1 + 1e-9));
+      if (c.feed_count < same->feed_count) {
+        ++force_bound;
+        QCOMPARE(g.violation(last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m + g.feedStep()),
+                 QConstraint::ToolForce);
+      }
+    }
+    QVERIFY(force_bound > 0);
+    QVERIFY(g.pointCount() < unlimited.pointCount());
+    QCOMPARE_GE(g.funnel().power_points, g.funnel().force_points);
+    QCOMPARE_GE(g.funnel().force_points, g.funnel().admissible_points);
+    s.limits.max_tool_force_n = 0.0;
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, AdmissibleGrid(test::rubioR1(), s));
   }
 
   void invalidCurveIsRefused() {

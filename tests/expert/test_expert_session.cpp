@@ -2,10 +2,12 @@
 // power limit at 5800 rpm, Rule 5 from cached simulations, Rule 6 keeps the weights on the simplex,
 // and the invariants of the ranking (admissible points, MRR monotone in c2).
 #include <cmath>
+#include <limits>
 
 #include "core/invalid_input.h"
 #include "expert/expert_session.h"
 #include "expert_fixtures.h"
+#include "model/cutting_force.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -225,6 +227,41 @@ class TestExpertSession : public QObject {
     ChatterReport bad = heard;
     bad.tool = 5;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, session.run(CostWeights{}, false, {bad}));
+  }
+
+  // Module II per tool: R1's F_allow = 60 N (its unlimited q* peaks near 85 N) keeps R1's q* under
+  // 60 N; R2 without a limit keeps its Q; a 1 mN limit on R1 leaves R2 alone in the ranking.
+  void toolForceLimitsActPerTool() {
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::array<double, 3> c{0.2, 0.725, 0.075};
+    const ExpertSession limited({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {60.0, inf});
+    const std::vector<ToolChoice> free_best = rubio().bestPoints(kR1, c, 1);
+    const ExpertPoint free_q = free_best.front().q;
+    QCOMPARE_GE(
+        evaluateCut(test::rubioR1(), {free_q.speed_rev_per_s, free_q.depth_m, free_q.feed_per_tooth_m}).peak_force_n,
+        80.0);
+    const ExpertPoint q = limited.bestPoints(kR1, c, 1).front().q;
+    QCOMPARE_LE(evaluateCut(test::rubioR1(), {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}).peak_force_n,
+                60.0 * (1 + 1e-9));
+    QCOMPARE(limited.grid(kR1).settings().limits.max_tool_force_n, 60.0);
+    // R2's Q is untouched (its q* may move: NF1..NF3 are taken over every tool's Q).
+    QVERIFY(std::isinf(limited.grid(kR2).settings().limits.max_tool_force_n));
+    QCOMPARE(limited.grid(kR2).pointCount(), rubio().grid(kR2).pointCount());
+    QCOMPARE_LT(limited.grid(kR1).pointCount(), rubio().grid(kR1).pointCount());
+
+    const ExpertSession r1_out({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {1e-3, inf});
+    QVERIFY(!r1_out.empty());
+    const Ranking ranking = r1_out.rank(c);
+    QCOMPARE(ranking.tools.size(), std::size_t(1));
+    QCOMPARE(ranking.selected().tool, kR2);
+    QCOMPARE(ranking.excluded, std::vector<std::size_t>{kR1});
+
+    const ExpertSession none({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {1e-3, 1e-3});
+    QVERIFY(none.empty());
+    QVERIFY2(QString::fromStdString(none.emptyReason()).contains("tool force limit F_allow (0.001 N"),
+             none.emptyReason().c_str());
+    QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                             ExpertSession({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {60.0}));
   }
 
   void emptySpaceNamesConstraint() {

@@ -38,7 +38,10 @@ class TestFeatureRecompute : public QObject {
     row("pareto", ProjectSection::Pareto, Feature::ParetoStudy);
     row("pareto weights", ProjectSection::ParetoWeights, Feature::ParetoChoice);
     row("pareto and its weights", ProjectSection::Pareto | ProjectSection::ParetoWeights, Feature::ParetoStudy);
-    row("control", ProjectSection::Control, Feature::ControlSweep | Feature::ControlRun | Feature::PartProgram);
+    // The control section's breakage limit bounds Q of a tool without max_force_N (Rule 3).
+    row("control", ProjectSection::Control,
+        Feature::ControlSweep | Feature::ControlRun | Feature::PartProgram | Feature::ExpertSession |
+            Feature::ParetoStudy);
     row("control beta", ProjectSection::ControlBeta, Feature::ControlRun);
     row("sdnrp", ProjectSection::Sdnrp, Feature::SurfaceFinish);
     row("force control", ProjectSection::ForceControl, Feature::PartProgram);

@@ -90,6 +90,33 @@ class TestLobesFeature : public QObject {
     QVERIFY(std::abs(window.document()->point().speed_rpm - 4200.0) > 30.0);
   }
 
+  // The readout's peak force against the tool's F_allow (Rule 3): a max_force_N edit below the point's
+  // force turns a stable verdict into "tool force limit exceeded" at once, without new lobes; undo
+  // restores it.
+  void toolForceLimitInTheReadout() {
+    gui::MainWindow window;
+    QVERIFY(openAndShow(window, kRubio));
+    app::PickedPoint p = window.document()->point();
+    p.speed_rpm = 3000.0;
+    p.depth_mm = 0.2;
+    p.feed_mm_per_tooth = 0.1;
+    window.document()->setPoint(p);
+    const MillingSetup setup = window.project()->setupFor("R1");
+    const double force = evaluateCut(setup, {rpmToRevPerS(3000.0), 0.2e-3, 0.1e-3}).peak_force_n;
+    QCOMPARE_LE(std::abs(readoutNumber(window, "force") - force), 0.05);
+    const gui::LobesFeature* lobes = test::lobesOf(window);
+    QCOMPARE(lobes->readout()->text("force_fraction"), QString("no tool force limit"));
+    QVERIFY(lobes->readout()->text("verdict").startsWith("STABLE"));
+    app::Project edited = *window.project();
+    edited.tools[0].max_force_N = 0.5 * force;
+    QCOMPARE(window.document()->applyEdit(edited, "F_allow"), QString());
+    QTRY_VERIFY(lobes->readout()->text("verdict").contains("tool force limit exceeded"));
+    QVERIFY2(lobes->readout()->text("force_fraction").startsWith("200.0 % of"),
+             qPrintable(lobes->readout()->text("force_fraction")));
+    window.document()->undoStack()->undo();
+    QTRY_VERIFY(lobes->readout()->text("verdict").startsWith("STABLE"));
+  }
+
   // Inch display: the chart and readouts convert; the document stays in mm.
   void inchUnitsOnChartAndReadouts() {
     gui::MainWindow window;

@@ -2,6 +2,7 @@
 // T_max the depth limit P_av(N) / (k N s_t) is the constant 2 pi T_max / (k s_t) below the corner speed
 // (constant torque) and falls as P_max / (k N s_t) above it. R1 (2006 example), k = pi D K_t = 5.655e7.
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 
@@ -56,6 +57,23 @@ class TestPointEvaluator : public QObject {
     const PointEvaluator e(rubioSnapshot({3000.0 / 60.0, 6000.0 / 60.0}), SpindlePowerCurve{});
     QVERIFY(e.powerLimitMm(0, 0.1).isEmpty());
     QCOMPARE(e.evaluate(0, 3000.0, 0.5, 0.1).power_limit_w, 0.0);
+  }
+
+  // The readout's force: K_t sqrt(1 + K_r^2) b s_t for R1 slotting (626.4 N/mm^2 * 0.5 mm * 0.1 mm =
+  // 31.32 N) against F_allow; no limit (+inf or no entry) reads as 0 and passes.
+  void forceAgainstTheToolLimit() {
+    PointEvaluator e(rubioSnapshot({3000.0 / 60.0, 6000.0 / 60.0}), SpindlePowerCurve{});
+    widgets::PointReadout r = e.evaluate(0, 3000.0, 0.5, 0.1);
+    QCOMPARE_LE(std::abs(r.peak_force_n - 600.0 * std::sqrt(1.09) * 0.5 * 0.1), 1e-6);
+    QCOMPARE(r.force_limit_n, 0.0);
+    QVERIFY(r.forceOk());
+    e.setForceLimits({30.0});
+    r = e.evaluate(0, 3000.0, 0.5, 0.1);
+    QCOMPARE(r.force_limit_n, 30.0);
+    QVERIFY(!r.forceOk());
+    QCOMPARE_LE(std::abs(r.forceFraction() - r.peak_force_n / 30.0), 1e-12);
+    e.setForceLimits({std::numeric_limits<double>::infinity()});
+    QCOMPARE(e.evaluate(0, 3000.0, 0.5, 0.1).force_limit_n, 0.0);
   }
 };
 

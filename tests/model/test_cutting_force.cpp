@@ -1,5 +1,6 @@
 // Static cutting forces, directional factors, power, torque and MRR (Rubio et al. 2006 eq. 2-5;
 // Pareto paper eq. 8).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -94,6 +95,36 @@ class TestCuttingForce : public QObject {
         Immersion::fromRadialDepth(ratio * 0.02, 0.02, direction == 0 ? MillingDirection::Up : MillingDirection::Down);
     QCOMPARE_LE(std::abs(im.entry_rad - entry), 1e-12);
     QCOMPARE_LE(std::abs(im.exit_rad - exit), 1e-12);
+  }
+
+  // One tooth slotting: the resultant K_t b s_t sin(phi) sqrt(1 + K_r^2) peaks at phi = 90 deg, so the
+  // peak force per (b s_t) is K_t sqrt(1 + K_r^2) exactly (the sampling contains 90 deg).
+  void peakForceOfOneToothIsAnalytic() {
+    MillingSetup s = test::rubioR1();
+    s.teeth = 1;
+    QCOMPARE_LE(std::abs(peakForcePerDepthFeed(s) / (6e8 * std::sqrt(1.0 + 0.3 * 0.3)) - 1.0), 1e-12);
+  }
+
+  // R1 (3 teeth, slotting): the peak resultant per (b s_t) against a fine sweep of the summed tooth
+  // forces written out here, and linear in b s_t.
+  void peakForceMatchesASweepAndScales() {
+    const MillingSetup s = test::rubioR1();
+    double swept = 0.0;
+    for (int i = 0; i < 360000; ++i) {
+      const double theta = 2.0 * kPi / 3.0 * i / 360000.0;
+      double fx = 0.0, fy = 0.0;
+      for (int j = 0; j < 3; ++j) {
+        const double phi = theta + j * 2.0 * kPi / 3.0;
+        if (phi > kPi) continue;
+        const double ft = 6e8 * std::sin(phi), fr = 0.3 * ft;
+        fx += -ft * std::cos(phi) - fr * std::sin(phi);
+        fy += ft * std::sin(phi) - fr * std::cos(phi);
+      }
+      swept = std::max(swept, std::hypot(fx, fy));
+    }
+    QCOMPARE_LE(std::abs(peakForcePerDepthFeed(s) / swept - 1.0), 1e-5);
+    const CutPerformance p = evaluateCut(s, {80.0, 0.5e-3, 0.2e-3});
+    QCOMPARE_LE(std::abs(p.peak_force_n / (peakForcePerDepthFeed(s) * 0.5e-3 * 0.2e-3) - 1.0), 1e-12);
   }
 
   void powerScalesWithDepthAndFeed() {

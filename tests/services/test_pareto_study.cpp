@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "document/project.h"
+#include "model/cutting_force.h"
 #include "pareto/economic_selection.h"
 #include "pareto/pareto_front.h"
 #include "services/pareto_study.h"
@@ -31,6 +32,17 @@ Project caseProject(const QStringList& rules = {}, const QJsonObject& pareto_ext
   }
   root["pareto"] = pareto;
   return projectFromJson(root);
+}
+
+// The case study with R1's tools[0].max_force_N replaced (<= 0: removed), and a control breakage limit.
+Project caseWithForceLimit(double max_force_n, double breakage_n = 0.0, double safety_factor = 1.0) {
+  Project p = caseProject();
+  p.tools[0].max_force_N = max_force_n > 0.0 ? std::optional<double>(max_force_n) : std::nullopt;
+  if (breakage_n > 0.0) {
+    p.control->breakage_force_N = breakage_n;
+    p.control->safety_factor = safety_factor;
+  }
+  return p;
 }
 
 bool onFront(const ParetoStudy& study, const ParetoChoice& c) {
@@ -145,6 +157,48 @@ class TestParetoStudy : public QObject {
     QCOMPARE(corner.point().feed_per_tooth_m, g.feedStep());
     QVERIFY(!hasBinding(corner, "requirement"));
     QVERIFY(hasBinding(corner, "grid"));  // the lowest speed of the grid
+  }
+
+  // Module II in Q (Rules 3 and 7.1): F_allow = 30 N on R1. Every point of Q peaks at or under 30 N, and
+  // the largest MRR (weights 0, 1, 0, 0) sits on the force limit: one more step of depth or of feed
+  // breaks it (binding "tool_force" both ways). The control section's breakage limit 0.5 x 60 N gives
+  // the same Q when the tool has no limit of its own.
+  void toolForceLimitBoundsQ() {
+    // The case project's own F_allow (600 N, its force reference) does not bind: Q's largest peak force
+    // is far below it, and Q is the same without the limit.
+    Project unlimited_project = caseProject();
+    QCOMPARE(unlimited_project.tools[0].max_force_N, std::optional<double>(600.0));
+    unlimited_project.tools[0].max_force_N.reset();
+    const ParetoStudy free(unlimited_project);
+    double largest = 0.0;
+    for (const ParetoPoint& p : free.table().points())
+      largest = std::max(
+          largest, evaluateCut(free.grid().setup(), {p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m}).peak_force_n);
+    qInfo("largest peak force over Q: %.2f N", largest);
+    QCOMPARE_LT(largest, 200.0);
+    QCOMPARE(ParetoStudy(caseProject()).table().size(), free.table().size());
+    const ParetoStudy study(caseWithForceLimit(30.0));
+    QCOMPARE_LT(study.table().size(), free.table().size());
+    for (const ParetoPoint& p : study.table().points())
+      QVERIFY(evaluateCut(study.grid().setup(), {p.speed_rev_per_s, p.depth_m, p.feed_per_tooth_m}).peak_force_n <=
+              30.0 * (1 + 1e-9));
+    ParetoChoiceOptions mrr;
+    mrr.weights = ParetoWeights{0.0, 1.0, 0.0, 0.0};
+    mrr.project_requirement = false;
+    const ParetoChoice c = study.choose(mrr);
+    const ParetoPoint& q = c.point();
+    const double force =
+        evaluateCut(study.grid().setup(), {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}).peak_force_n;
+    QCOMPARE_LE(force, 30.0);
+    int force_bound = 0;
+    for (const BindingLimit& b : c.binding) {
+      if (b.key != "tool_force") continue;
+      ++force_bound;
+      QVERIFY2(b.text.contains("tool force limit F_allow (30 N"), qPrintable(b.text));
+    }
+    QCOMPARE(force_bound, 2);  // depth and feed
+    const ParetoStudy breakage(caseWithForceLimit(0.0, 60.0, 0.5));
+    QCOMPARE(breakage.table().size(), study.table().size());
   }
 
   void requirementBases_data() {

@@ -74,11 +74,31 @@ class TestToolLibraryCsv : public QObject {
     std::vector<ToolSpec> tools = rubio().tools;
     for (const ToolSpec& t : ToolLibraryCsv::fromCsv(text).tools) tools.push_back(t);
     tools.push_back(ToolSpec{
-        "Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, {}, {}, std::nullopt, std::nullopt, {}});  // no modes at all
+        "Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, 250.5, {}, {}, std::nullopt, std::nullopt, {}});  // no modes
     const auto back = ToolLibraryCsv::fromCsv(ToolLibraryCsv::toCsv(tools));
     QVERIFY2(back.ok(), qPrintable(back.error));
     QCOMPARE(toolsJson(back.tools), toolsJson(tools));
     QCOMPARE(back.tools.back().diameter_mm, 0.1 + 0.2);  // shortest round-trip text, no rounding
+    QCOMPARE(*back.tools.back().max_force_N, 250.5);
+  }
+
+  // max_force_N is an optional column: a header without it (kHeader) reads as before, one with it gives
+  // the tool's F_allow; blank is no limit.
+  void maxForceColumnIsOptional() {
+    const QByteArray header =
+        "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,max_force_N,axis,freq_Hz,damping_pct,"
+        "stiffness_N_per_um\n";
+    QCOMPARE(ToolLibraryCsv::toCsv({}), header);
+    const auto with = ToolLibraryCsv::fromCsv(header + "A,2,10,0,,,,450,x,1000,2,10\nB,2,10,0,,,,,x,1000,2,10\n");
+    QVERIFY2(with.ok(), qPrintable(with.error));
+    QCOMPARE(*with.tools[0].max_force_N, 450.0);
+    QVERIFY(!with.tools[1].max_force_N);
+    const auto without = ToolLibraryCsv::fromCsv(kHeader + "A,2,10,0,,,,x,1000,2,10\n");
+    QVERIFY2(without.ok(), qPrintable(without.error));
+    QVERIFY(!without.tools[0].max_force_N);
+    const auto bad = ToolLibraryCsv::fromCsv(header + "A,2,10,0,,,,0,x,1000,2,10\n");
+    QVERIFY(!bad.ok());
+    QVERIFY2(bad.error.startsWith("line 2, column 8 (max_force_N): '0' must be in (0, 1e+07]"), qPrintable(bad.error));
   }
 
   void editorExportImportRoundTrip() {

@@ -222,6 +222,8 @@ class TestToolLibraryEditor : public QObject {
                                   << "tools[1].id = \"R2\": duplicate of tools[0].id";
     QTest::newRow("radial depth > D") << int(ToolTableModel::RadialDepth) << QVariant(31.0)
                                       << "tools[0].radial_depth_mm = 31: must be in (0, 30]";
+    QTest::newRow("max force zero") << int(ToolTableModel::MaxForce) << QVariant(0.0)
+                                    << "tools[0].max_force_N = 0: must be in (0, 1e+07]";
   }
   void invalidToolEditsAreRefused() {
     QFETCH(int, column);
@@ -250,6 +252,15 @@ class TestToolLibraryEditor : public QObject {
     QVERIFY(!spy.at(1).at(0).value<Project>().tools[0].Kr);
     QVERIFY(m->setData(m->index(1, ToolTableModel::Id), "R2b"));
     QCOMPARE(spy.at(2).at(0).value<Project>().tools[1].id, QString("R2b"));
+    // F_allow (Rule 3): set in N, cleared back to "none" (the project has no breakage limit).
+    QCOMPARE(m->headerData(ToolTableModel::MaxForce, Qt::Horizontal).toString(), QString("max force [N]"));
+    QVERIFY(m->index(0, ToolTableModel::MaxForce).data(Qt::ToolTipRole).toString().contains("empty = no limit"));
+    QVERIFY(m->setData(m->index(0, ToolTableModel::MaxForce), 450.0));
+    QCOMPARE(*spy.at(3).at(0).value<Project>().tools[0].max_force_N, 450.0);
+    editor.setProject(spy.at(3).at(0).value<Project>());
+    QCOMPARE(m->index(0, ToolTableModel::MaxForce).data().toString(), QString("450"));
+    QVERIFY(m->setData(m->index(0, ToolTableModel::MaxForce), QVariant()));
+    QVERIFY(!spy.at(4).at(0).value<Project>().tools[0].max_force_N);
   }
 
   void inchUnits() {
