@@ -11,6 +11,7 @@ static void sdmEnvelope(benchmark::State& state, int speeds, int steps) {
   const auto grid = mx::SpeedGrid{2000.0 / 60, (2000.0 + (speeds - 1) * step_rpm) / 60, step_rpm / 60}.values();
   mx::SdmOptions options;
   options.steps_per_period = steps;
+  options.delay_order = 1;  // the first-order SDM these figures were first taken with
   options.depth_tolerance = 1e-3;
   for (auto _ : state) benchmark::DoNotOptimize(mx::computeSdmLobes(setup, grid, options));
   state.counters["speeds"] = static_cast<double>(grid.size());
@@ -26,6 +27,31 @@ static void BM_SdmEnvelope_R1_200speeds_40steps(benchmark::State& state) {
   sdmEnvelope(state, 200, 40);
 }
 BENCHMARK(BM_SdmEnvelope_R1_200speeds_40steps)->Unit(benchmark::kMillisecond);
+
+// Accuracy against time (docs/performance.md): Insperger's benchmark, 5000-25000 rpm by 100 rpm
+// (201 speeds), first-order SDM at fixed steps (Arg 1: steps) against the default (cubic delay
+// interpolation, steps per autoSdmSteps: Arg 0). Arg 2: a/D in percent.
+static void BM_SdmLobes_Insperger(benchmark::State& state) {
+  const mx::MillingSetup setup = mx::bench::insperger(static_cast<double>(state.range(2)) / 100.0);
+  const auto grid = mx::SpeedGrid{5000.0 / 60, 25000.0 / 60, 100.0 / 60}.values();
+  mx::SdmOptions options;
+  if (state.range(1) > 0) {
+    options.steps_per_period = static_cast<int>(state.range(1));
+    options.delay_order = static_cast<int>(state.range(0));
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(mx::computeSdmLobes(setup, grid, options));
+}
+BENCHMARK(BM_SdmLobes_Insperger)
+    ->ArgNames({"order", "steps", "aD_pct"})
+    ->Args({1, 40, 100})
+    ->Args({1, 100, 100})
+    ->Args({1, 200, 100})
+    ->Args({1, 400, 100})
+    ->Args({3, 0, 100})
+    ->Args({1, 40, 5})
+    ->Args({1, 100, 5})
+    ->Args({3, 0, 5})
+    ->Unit(benchmark::kMillisecond);
 
 // One dominant-multiplier evaluation (cold Arnoldi start, including the step exponentials).
 static void BM_SdmSpectralRadius_R1_40steps(benchmark::State& state) {

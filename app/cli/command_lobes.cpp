@@ -1,6 +1,8 @@
 // millexpert-cli lobes PROJECT --tool ID [--method zoa|sdm] [--from RPM --to RPM --step RPM]
-//                  [--delta V] [--alpha V] [--steps M] [--max-depth MM] [--dynamics modal|measured]
-// Prints {"tool","method","dynamics_used","speed_rpm":[...],"blim_mm":[...]}: alpha times the
+//                  [--delta V] [--alpha V] [--steps M] [--delay-order P] [--max-depth MM]
+//                  [--dynamics modal|measured]
+// Prints {"tool","method","dynamics_used","speed_rpm":[...],"blim_mm":[...]} (with sdm also
+// "sdm_delay_order" and "sdm_steps", per speed): alpha times the
 // delta-margined lower envelope (Rule 1), null where no instability lies below --max-depth. With
 // measured dynamics the ZOA runs on the tap-test FRF; delta > 0 or sdm use the fitted modes
 // (services/measured_dynamics.h), and stderr says so.
@@ -27,7 +29,8 @@ struct LobesRequest {
   double step_rpm = 0.0;
   double delta_per_s = 0.0;
   double alpha = 1.0;
-  int steps = 40;
+  int steps = kAutoSdmSteps;
+  int delay_order = 3;
   double max_depth_m = 0.02;
   std::optional<DynamicsSource> dynamics;
 };
@@ -51,6 +54,7 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.delta_per_s = numberOption(parser, "delta", 0.0, 1e6).value_or(inputs.delta_per_s);
   r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(inputs.alpha);
   r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
+  r.delay_order = integerOption(parser, "delay-order", 1, 3).value_or(r.delay_order);
   r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
   r.dynamics = dynamicsOption(parser);
   return r;
@@ -70,8 +74,9 @@ int runLobesCommand(const QStringList& arguments) {
       {"step", "Speed step [rpm]; default: the project's expert grid, else 100.", "RPM"},
       {"delta", "Stability margin delta [1/s] (Rule 1.1); default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1] (Rule 1.2); default: the project's.", "V"},
-      {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
+      {"steps", "Semi-discretization steps per tooth period, 4-2000 (default: chosen per speed).", "M"},
       {"max-depth", "Depth cap [mm]: null where no instability below it (default 20).", "MM"},
+      {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
       dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
@@ -89,8 +94,9 @@ int runLobesCommand(const QStringList& arguments) {
   for (size_t i = 0; i < speeds.size(); ++i)
     rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
 
-  const LobeDiagram diagram =
-      computeLobes(setup, speeds, {method, request.delta_per_s, request.max_depth_m, request.steps, dynamics.used});
+  const LobeDiagram diagram = computeLobes(
+      setup, speeds,
+      {method, request.delta_per_s, request.max_depth_m, request.steps, dynamics.used, request.delay_order});
 
   QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
   for (size_t i = 0; i < speeds.size(); ++i) {
@@ -103,15 +109,22 @@ int runLobesCommand(const QStringList& arguments) {
     minima.append(QJsonObject{{"speed_rpm", revPerSToRpm(m.speed_rev_per_s)},
                               {"blim_mm", request.alpha * m.depth_m * 1e3},
                               {"chatter_frequency_Hz", m.chatter_hz}});
-  printJson({{"tool", request.tool},
-             {"method", request.method},
-             {"dynamics_used", dynamicsName(dynamics.used)},
-             {"delta_per_s", request.delta_per_s},
-             {"alpha", request.alpha},
-             {"speed_rpm", speed_rpm},
-             {"blim_mm", blim_mm},
-             {"chatter_frequency_Hz", chatter_hz},
-             {"minima", minima}});
+  QJsonObject out{{"tool", request.tool},
+                  {"method", request.method},
+                  {"dynamics_used", dynamicsName(dynamics.used)},
+                  {"delta_per_s", request.delta_per_s},
+                  {"alpha", request.alpha},
+                  {"speed_rpm", speed_rpm},
+                  {"blim_mm", blim_mm},
+                  {"chatter_frequency_Hz", chatter_hz},
+                  {"minima", minima}};
+  if (method == StabilityMethod::SemiDiscretization) {
+    out.insert("sdm_delay_order", request.delay_order);
+    QJsonArray steps;  // per speed: the steps per tooth period used
+    for (double n : speeds) steps.append(request.steps == kAutoSdmSteps ? autoSdmSteps(setup, n) : request.steps);
+    out.insert("sdm_steps", steps);
+  }
+  printJson(out);
   return kExitOk;
 }
 

@@ -29,7 +29,8 @@ int runPointCommand(const QStringList& arguments) {
       {"method", "zoa or sdm (default zoa).", "METHOD", "zoa"},
       {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
-      {"steps", "Semi-discretization steps per tooth period (default 40).", "M"},
+      {"steps", "Semi-discretization steps per tooth period, 4-2000 (default: chosen per speed).", "M"},
+      {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
       dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
@@ -46,7 +47,8 @@ int runPointCommand(const QStringList& arguments) {
   double alpha = project.expert ? project.expert->alpha : 1.0;
   delta = numberOption(parser, "delta", 0.0, 1e6).value_or(delta);
   alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(alpha);
-  const int steps = integerOption(parser, "steps", 4, 2000).value_or(40);
+  const int steps = integerOption(parser, "steps", 4, 2000).value_or(kAutoSdmSteps);
+  const int delay_order = integerOption(parser, "delay-order", 1, 3).value_or(3);
   const StabilityMethod stability_method =
       method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
   const DynamicsChoice dynamics = chooseDynamics(requireTool(project, tool), requested, delta, stability_method);
@@ -65,6 +67,7 @@ int runPointCommand(const QStringList& arguments) {
   lobe_settings.dynamics = dynamics.used;
   lobe_settings.delta_per_s = delta;
   lobe_settings.sdm_steps_per_period = steps;
+  lobe_settings.sdm_delay_order = delay_order;
   const LobeDiagram diagram = computeLobes(setup, speeds, lobe_settings);
   const StabilityBoundary boundary(diagram, alpha);
   const double n = rpmToRevPerS(speed_rpm), b = depth_mm * 1e-3;

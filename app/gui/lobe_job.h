@@ -34,7 +34,7 @@ struct LobeJobInput {
   std::vector<std::optional<LobeFrfSource>> frfs;  // aligned with tools, or empty: no FRFs
   std::vector<double> speeds_rev_per_s;
   LobeMethod method = LobeMethod::ZeroOrder;
-  int sdm_steps = 40;
+  int sdm_steps = kAutoSdmSteps;  // autoSdmSteps per speed
   double delta_per_s = 0.0;
   double alpha = 1.0;
   double max_depth_m = 0.02;

@@ -43,8 +43,8 @@ struct StabilitySettings {
   double alpha = 1.0;                             // Rule 1.2
   double lobe_step_rev_per_s = 10.0 / 60.0;       // speed resolution of the lobes used for b_lim and Delta N_s (ZOA)
   double sdm_lobe_step_rev_per_s = 100.0 / 60.0;  // the same for semi-discretization (cost ~2 ms per speed)
-  int sdm_steps_per_period = 40;
-  double max_depth_m = 0.02;  // depth cap where no lobe lies below
+  int sdm_steps_per_period = kAutoSdmSteps;       // autoSdmSteps per speed
+  double max_depth_m = 0.02;                      // depth cap where no lobe lies below
   // The lobes are computed over [low_factor * from, high_factor * to] so that the lobe minima that
   // bound Delta N_s at the ends of the speed range are known (a minimum beyond 2 * to can never be the
   // nearer side of a point at or below `to`).

@@ -21,6 +21,7 @@ LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& s
   o.delta_per_s = settings.delta_per_s;
   o.max_depth_m = settings.max_depth_m;
   o.steps_per_period = settings.sdm_steps_per_period;
+  o.delay_order = settings.sdm_delay_order;
   return computeSdmLobes(setup, speeds_rev_per_s, o, control);
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // One entry point for the stability lobes of either method (Rule 1): the zeroth-order approximation
-// (Rubio et al. 2006, eq. 8-10) or first-order semi-discretization, with the delta margin.
+// (Rubio et al. 2006, eq. 8-10) or semi-discretization, with the delta margin.
 #include <vector>
 
 #include "core/cancellation.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_diagram.h"
+#include "stability/semi_discretization.h"
 
 namespace mx {
 
@@ -13,11 +14,12 @@ enum class StabilityMethod { ZeroOrder, SemiDiscretization };
 
 struct LobeSettings {
   StabilityMethod method = StabilityMethod::ZeroOrder;
-  double delta_per_s = 0.0;       // Rule 1.1
-  double max_depth_m = 0.02;      // envelope = kNone where no lobe lies below
-  int sdm_steps_per_period = 40;  // semi-discretization only
+  double delta_per_s = 0.0;                  // Rule 1.1
+  double max_depth_m = 0.02;                 // envelope = kNone where no lobe lies below
+  int sdm_steps_per_period = kAutoSdmSteps;  // semi-discretization only; kAutoSdmSteps: autoSdmSteps per speed
   // ZOA only: Measured takes each axis's measured FRF where present (delta must be 0).
   DynamicsSource dynamics = DynamicsSource::Modal;
+  int sdm_delay_order = 3;  // semi-discretization: degree of the delayed-state interpolation (sdm_model.h)
 };
 
 // Throws InvalidInput for semi-discretization with DynamicsSource::Measured (it needs a state-space

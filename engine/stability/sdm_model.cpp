@@ -4,7 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <unsupported/Eigen/MatrixFunctions>
+
+#include "core/invalid_input.h"
 
 namespace mx {
 
@@ -34,9 +37,89 @@ void addInCut(const Immersion& im, double a, double len, TrigIntegrals& acc) {
   for (double shift : {0.0, kTwoPi}) acc.add(std::max(a, entry + shift), std::min(b, exit + shift));
 }
 
+// a_jk of the Lagrange basis l_j(s) = sum_k a_jk s^k through the nodes s_j = j - back, j = 0 .. p.
+Eigen::MatrixXd lagrangeMonomials(int p, int back) {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(p + 1, p + 1);
+  for (int j = 0; j <= p; ++j) {
+    Eigen::VectorXd poly = Eigen::VectorXd::Zero(p + 1);  // coefficients by power, built factor by factor
+    poly[0] = 1.0;
+    int degree = 0;
+    for (int l = 0; l <= p; ++l) {
+      if (l == j) continue;
+      const double node = l - back, scale = 1.0 / (j - l);
+      for (int k = degree + 1; k >= 0; --k)
+        poly[k] = ((k > 0 ? poly[k - 1] : 0.0) - node * (k <= degree ? poly[k] : 0.0)) * scale;
+      ++degree;
+    }
+    a.row(j) = poly.transpose();
+  }
+  return a;
+}
+
+// Phi = e^X and F_k = integral_0^1 e^{X(1 - s)} B s^k / k! ds = sum_j X^j B / (j + k + 1)!, k = 0 .. p
+// (Beta integral). With ||X||_1 <= 1 the Taylor sums are cut after kTaylorTerms terms (remainder below
+// 1 / 20! = 4e-19 of the leading term); otherwise one exponential of the augmented matrix
+// [X B 0 ..; 0 0 I ..; ..; 0 .. 0] (Van Loan 1978), whose blocks are the same F_k.
+constexpr int kTaylorTerms = 20;
+
+class StepIntegrals {
+ public:
+  StepIntegrals(Eigen::Index n, int p) : n_(n), p_(p), f_(static_cast<size_t>(p + 1)) {
+    inverse_factorial_.resize(static_cast<size_t>(kTaylorTerms + p + 2));
+    double f = 1.0;
+    for (size_t j = 0; j < inverse_factorial_.size(); ++j) {
+      if (j > 0) f *= static_cast<double>(j);
+      inverse_factorial_[j] = 1.0 / f;
+    }
+    const Eigen::Index size = n + 2 * (p + 1);
+    aug_ = Eigen::MatrixXd::Zero(size, size);
+    for (int k = 0; k < p; ++k) aug_.block(n + 2 * k, n + 2 * (k + 1), 2, 2).setIdentity();
+  }
+
+  void compute(const Eigen::MatrixXd& x, const SdmMonodromy::StepInput& b) {
+    if (x.cwiseAbs().colwise().sum().maxCoeff() <= 1.0) {
+      taylor(x, b);
+      return;
+    }
+    aug_.topLeftCorner(n_, n_) = x;
+    aug_.block(0, n_, n_, 2) = b;
+    const Eigen::MatrixXd e = aug_.exp();
+    phi_ = e.topLeftCorner(n_, n_);
+    for (int k = 0; k <= p_; ++k) f_[static_cast<size_t>(k)] = e.block(0, n_ + 2 * k, n_, 2);
+  }
+  const Eigen::MatrixXd& phi() const { return phi_; }
+  const SdmMonodromy::StepInput& f(int k) const { return f_[static_cast<size_t>(k)]; }
+
+ private:
+  void taylor(const Eigen::MatrixXd& x, const SdmMonodromy::StepInput& b) {
+    phi_.setIdentity(n_, n_);
+    term_.setIdentity(n_, n_);
+    column_ = b;  // X^j B
+    for (auto& fk : f_) fk.setZero(n_, 2);
+    for (int j = 0; j < kTaylorTerms; ++j) {
+      for (int k = 0; k <= p_; ++k) f_[static_cast<size_t>(k)] += inverse_factorial_[static_cast<size_t>(j + k + 1)] * column_;
+      column_ = x * column_;
+      term_ = x * term_ * (1.0 / (j + 1));
+      phi_ += term_;
+    }
+  }
+
+  Eigen::Index n_;
+  int p_;
+  std::vector<double> inverse_factorial_;
+  Eigen::MatrixXd aug_, phi_, term_;
+  std::vector<SdmMonodromy::StepInput> f_;
+  SdmMonodromy::StepInput column_;
+};
+
 }  // namespace
 
-SdmModel::SdmModel(const MillingSetup& setup, int steps_per_period) : steps_(steps_per_period), teeth_(setup.teeth) {
+SdmModel::SdmModel(const MillingSetup& setup, int steps_per_period, int delay_order)
+    : steps_(steps_per_period), order_(delay_order), teeth_(setup.teeth) {
+  if (order_ < 1 || order_ > kMaxDelayOrder || order_ > steps_)
+    throw InvalidInput("delay interpolation order = " + std::to_string(order_) + " is outside the allowed range [1, " +
+                       std::to_string(std::min(kMaxDelayOrder, steps_)) + "]");
+  lagrange_ = lagrangeMonomials(order_, historyBack());
   struct Dof {
     const Mode* mode;
     int axis;
@@ -92,20 +175,24 @@ double SdmModel::freeDecay(double spindle_rev_per_s) const {
 void SdmModel::build(double spindle_rev_per_s, double depth_m, const Eigen::MatrixXd& free_step,
                      SdmMonodromy& out) const {
   const Eigen::Index n = a0_.rows();
+  const int p = order_;
   const double dt = toothPeriodS(spindle_rev_per_s) / steps_;
-  out.reset(c_, steps_);
+  out.reset(c_, steps_, historyBack(), p + 1);
   out.setFreeStep(free_step);
-  Eigen::MatrixXd aug = Eigen::MatrixXd::Zero(n + 4, n + 4);
-  aug.block(n, n + 2, 2, 2).setIdentity();
-  Eigen::MatrixXd e(n + 4, n + 4);
+  StepIntegrals integrals(n, p);
+  std::vector<SdmMonodromy::StepInput> g(static_cast<size_t>(p + 1));
   for (int i = 0; i < steps_; ++i) {
     if (!in_cut_[static_cast<size_t>(i)]) continue;
     const Eigen::Matrix<double, Eigen::Dynamic, 2> r = depth_m * p_ * h_[static_cast<size_t>(i)];
-    aug.topLeftCorner(n, n) = (a0_ + r * c_) * dt;
-    aug.block(0, n, n, 2) = -r * dt;
-    e = aug.exp();
-    const SdmMonodromy::StepInput e13 = e.block(0, n + 2, n, 2);
-    out.setCutStep(i, e.topLeftCorner(n, n), e.block(0, n, n, 2) - e13, e13);
+    integrals.compute((a0_ + r * c_) * dt, -r * dt);
+    double factorial = 1.0;
+    for (auto& gj : g) gj.setZero(n, 2);
+    for (int k = 0; k <= p; ++k) {
+      if (k > 0) factorial *= k;
+      const SdmMonodromy::StepInput fk = factorial * integrals.f(k);  // the integral of s^k
+      for (int j = 0; j <= p; ++j) g[static_cast<size_t>(j)] += lagrange_(j, k) * fk;
+    }
+    out.setCutStep(i, integrals.phi(), g);
   }
 }
 

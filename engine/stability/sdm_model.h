@@ -10,10 +10,15 @@
 // phi_j = Omega t + j 2 pi / n_t, g = 1 inside [entry, exit] (Immersion::contains).
 // So z' = (A0 + b P H C) z - b P H r(t - T). On step i, [t_i, t_i + dt], dt = T/m, H is replaced by its
 // time average H_i over the step (evaluated in closed form; it depends only on i, not on speed), and
-// r(t - T) by the line through r_{i-m}, r_{i-m+1}. The step maps come from one exponential of the
-// augmented matrix (Van Loan 1978):
-//   exp( dt [ L  -R  0 ; 0  0  I/dt ; 0  0  0 ] ) = [ Phi  E12  E13 ; ... ],  L = A0 + b P H_i C, R = b P H_i,
-//   Phi_i = Phi, G0_i = E12 - E13, G1_i = E13.
+// r(t - T), in the step's normalised time s = (t - t_i)/dt, by the Lagrange polynomial of degree p
+// through r_{i-m+j-back} at s = j - back, j = 0 .. p (delay order p: 1 is the first-order SDM, the line
+// through r_{i-m}, r_{i-m+1}; 3, back = 1, the cubic through r_{i-m-1} .. r_{i-m+2}, whose error falls
+// as (omega dt)^4 instead of (omega dt)^2; Insperger, Stepan & Turi 2008). With l_j(s) = sum_k a_jk s^k
+// the step maps come from one exponential of the augmented matrix (Van Loan 1978) with the chain of
+// integrators u_0' = u_1, .., u_p' = 0 in s:
+//   exp([ L dt  -R dt  0 .. 0 ; 0  0  I .. ; .. ; 0 .. 0 ]) = [ Phi  F_0 .. F_p ; ... ],
+//   F_k = integral_0^1 e^{L dt (1 - s)} (-R dt) s^k / k! ds,  L = A0 + b P H_i C, R = b P H_i,
+//   Phi_i = Phi, G_ij = sum_k a_jk k! F_k.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -24,9 +29,13 @@ namespace mx {
 
 class SdmModel {
  public:
-  SdmModel(const MillingSetup& setup, int steps_per_period);
+  // delay_order p in [1, kMaxDelayOrder], at most steps_per_period.
+  SdmModel(const MillingSetup& setup, int steps_per_period, int delay_order = 1);
+  static constexpr int kMaxDelayOrder = 3;
 
   int steps() const { return steps_; }
+  int delayOrder() const { return order_; }
+  int historyBack() const { return order_ / 2; }  // samples before r_{i-m}: 0, 1, 1 for p = 1, 2, 3
   int modalStates() const { return static_cast<int>(a0_.rows()); }
   int teeth() const { return teeth_; }
   double toothPeriodS(double spindle_rev_per_s) const { return 1.0 / (spindle_rev_per_s * teeth_); }
@@ -45,7 +54,9 @@ class SdmModel {
 
  private:
   int steps_ = 0;
+  int order_ = 1;
   int teeth_ = 1;
+  Eigen::MatrixXd lagrange_;  // a_jk: node j, power k of s
   double min_decay_rate_ = 0.0;
   Eigen::MatrixXd a0_;                          // N x N
   Eigen::Matrix<double, Eigen::Dynamic, 2> p_;  // N x 2 force input

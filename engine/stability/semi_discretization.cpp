@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -19,6 +21,23 @@ void requireSteps(int steps) {
     throw InvalidInput("steps_per_period = " + std::to_string(steps) + " is outside the allowed range [4, inf)");
   }
 }
+
+void requireDelayOrder(int order) {
+  if (order < 1 || order > SdmModel::kMaxDelayOrder)
+    throw InvalidInput("delay_order = " + std::to_string(order) + " is outside the allowed range [1, " +
+                       std::to_string(SdmModel::kMaxDelayOrder) + "]");
+}
+
+constexpr int kMinAutoSteps = 60;
+constexpr int kMaxAutoSteps = 1000;
+constexpr double kAutoPhasePerStep = 0.3;  // rad of the fastest mode per step
+constexpr double kAutoStepsInCut = 20.0;
+
+// Models by step count, each with its own boundary search (the Arnoldi warm start has the model's size).
+struct SdmSolvers {
+  std::unique_ptr<SdmModel> model;
+  std::unique_ptr<SdmBoundarySearch> search;
+};
 
 void requireSpeed(double speed) {
   if (!(speed > 0.0) || !std::isfinite(speed)) {
@@ -42,7 +61,8 @@ void requireTeeth(const MillingSetup& setup) {
 
 void validate(const MillingSetup& setup, const std::vector<double>& speeds, const SdmOptions& o) {
   requireTeeth(setup);
-  requireSteps(o.steps_per_period);
+  if (o.steps_per_period != kAutoSdmSteps) requireSteps(o.steps_per_period);
+  requireDelayOrder(o.delay_order);
   for (double n : speeds) requireSpeed(n);
   const double limit = smallestDecayRate(setup.modes_x, setup.modes_y);
   if (!(o.delta_per_s >= 0.0 && o.delta_per_s < limit)) {
@@ -65,14 +85,29 @@ void validate(const MillingSetup& setup, const std::vector<double>& speeds, cons
 
 }  // namespace
 
+int autoSdmSteps(const MillingSetup& setup, double spindle_rev_per_s) {
+  requireTeeth(setup);
+  requireSpeed(spindle_rev_per_s);
+  double omega_max = 0.0;
+  for (const ModalAxis* axis : {&setup.modes_x, &setup.modes_y})
+    for (const Mode& m : *axis) omega_max = std::max(omega_max, m.angularFrequency());
+  const double period = 1.0 / (spindle_rev_per_s * setup.teeth);
+  const double pitch = setup.toothPitchRad();
+  const double cut = std::clamp(setup.immersion.exit_rad - setup.immersion.entry_rad, 1e-6, pitch);
+  const double wanted =
+      std::max({double(kMinAutoSteps), omega_max * period / kAutoPhasePerStep, kAutoStepsInCut * pitch / cut});
+  const double rounded = 10.0 * std::ceil(std::min(wanted, double(kMaxAutoSteps)) / 10.0);
+  return static_cast<int>(rounded);
+}
+
 SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_rev_per_s, double depth_m,
-                                    int steps_per_period) {
+                                    int steps_per_period, int delay_order) {
   clearUpperVectorState();
   requireTeeth(setup);
   requireSteps(steps_per_period);
   requireSpeed(spindle_rev_per_s);
   requireDepth(depth_m);
-  const SdmModel model(setup, steps_per_period);
+  const SdmModel model(setup, steps_per_period, delay_order);
   if (model.modalStates() == 0) return {};  // rigid tool: no dynamics, no regeneration
   SdmMonodromy map;
   model.build(spindle_rev_per_s, depth_m, model.freeStep(spindle_rev_per_s), map);
@@ -80,8 +115,9 @@ SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_re
   return {pair.value, map.chatterFrequencyHz(pair.value, pair.vector, model.toothPeriodS(spindle_rev_per_s))};
 }
 
-double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period) {
-  return std::abs(sdmDominantMultiplier(setup, spindle_rev_per_s, depth_m, steps_per_period).value);
+double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period,
+                         int delay_order) {
+  return std::abs(sdmDominantMultiplier(setup, spindle_rev_per_s, depth_m, steps_per_period, delay_order).value);
 }
 
 // Continuation in speed: each speed's search (SdmBoundarySearch::solve) starts from the previous
@@ -99,16 +135,26 @@ LobeDiagram computeSdmLobes(const MillingSetup& setup, const std::vector<double>
   out.envelope_depth_m.assign(speeds_rev_per_s.size(), LobeDiagram::kNone);
   out.envelope_chatter_hz.assign(speeds_rev_per_s.size(), 0.0);
 
-  const SdmModel model(setup, options.steps_per_period);
-  SdmBoundarySearch search(model, options);
-  search.setColdGuess(SdmBoundarySearch::coldGuess(setup, options.max_depth_m));
+  const double cold = SdmBoundarySearch::coldGuess(setup, options.max_depth_m);
+  std::map<int, SdmSolvers> solvers;
+  auto solverFor = [&](double speed) -> SdmSolvers& {
+    const int m = options.steps_per_period == kAutoSdmSteps ? autoSdmSteps(setup, speed) : options.steps_per_period;
+    SdmSolvers& s = solvers[m];
+    if (!s.model) {
+      s.model = std::make_unique<SdmModel>(setup, m, options.delay_order);
+      s.search = std::make_unique<SdmBoundarySearch>(*s.model, options);
+      s.search->setColdGuess(cold);
+    }
+    return s;
+  };
+  const bool rigid = setup.modes_x.empty() && setup.modes_y.empty();
   double guess = 0.0;
   double lowest = LobeDiagram::kNone;
   const size_t count = speeds_rev_per_s.size();
   for (size_t i = 0; i < count; ++i) {
     if (control.cancelled()) throw Cancelled();
-    if (model.modalStates() > 0) {
-      const SdmBoundaryPoint p = search.solve(speeds_rev_per_s[i], guess, lowest);
+    if (!rigid) {
+      const SdmBoundaryPoint p = solverFor(speeds_rev_per_s[i]).search->solve(speeds_rev_per_s[i], guess, lowest);
       out.envelope_depth_m[i] = p.depth_m;
       if (std::isfinite(p.depth_m)) {
         out.envelope_chatter_hz[i] = p.chatter_hz;

@@ -4,10 +4,11 @@
 // (eq. 1-7), linearised about the static chip. Model and step maps: stability/sdm_model.h.
 // Stability: every Floquet multiplier mu of the tooth-period monodromy map has |mu| <= exp(-delta T)
 // (Rule 1.1 margin; delta = 0 gives the nominal lobes).
-// Accuracy: the multiplier error is O(dt^2), dt = T/m. With m = 40 it reaches a few % in |mu| when
-// omega_c dt ~ 1 (low speeds); where a lobe flank makes rho(b) cross 1 at a shallow angle this moves
-// b_lim by up to ~17 % (Insperger benchmark, slot, 5000-8500 rpm), mostly towards larger (unsafe)
-// depths. Raise steps_per_period there (100 keeps it within 2 %).
+// Accuracy: with the first-order delay interpolation (delay_order 1) the multiplier error is O(dt^2),
+// dt = T/m, about (omega_c dt)^2 / 12: with m = 40 it moves b_lim by up to ~30 % at low speeds
+// (Insperger benchmark, slot, 5000-12000 rpm, omega_c dt ~ 0.8). The default is the cubic delay
+// interpolation (error ~ (omega_c dt)^4) with the steps chosen per speed (autoSdmSteps): within 1 % of
+// the converged b_lim on that benchmark away from cusps (docs/performance.md).
 #include <complex>
 #include <vector>
 
@@ -18,15 +19,29 @@
 
 namespace mx {
 
+// steps_per_period = kAutoSdmSteps: m is chosen per speed by autoSdmSteps.
+inline constexpr int kAutoSdmSteps = 0;
+
 struct SdmOptions {
-  int steps_per_period = 40;      // m: time steps per tooth period (delay)
-  double delta_per_s = 0.0;       // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
-  double max_depth_m = 0.02;      // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
-  double depth_tolerance = 1e-3;  // relative tolerance on b_lim
+  int steps_per_period = kAutoSdmSteps;  // m: time steps per tooth period (delay), or kAutoSdmSteps
+  int delay_order = 3;                   // p: degree of the delayed-state interpolation (sdm_model.h), 1..3
+  double delta_per_s = 0.0;              // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
+  double max_depth_m = 0.02;             // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
+  double depth_tolerance = 1e-3;         // relative tolerance on b_lim
 };
 
+// Steps per tooth period at one speed for the cubic delay interpolation, the largest of:
+//   60 (the angular resolution of the coefficient H_i over the pitch);
+//   omega_max T / 0.3: the delayed state is interpolated over at most 0.3 rad of the fastest mode's
+//     oscillation (cubic error ~ 0.3^4 / 43, 2e-4 of the amplitude);
+//   20 pitch / cut angle: at least 20 steps inside the cut of each tooth (the averaged coefficient H_i
+//     resolves the immersion; a/D = 0.05 with 2 teeth needs 140);
+// rounded up to a multiple of 10 (models are shared between speeds) and capped at 1000.
+int autoSdmSteps(const MillingSetup& setup, double spindle_rev_per_s);
+
 // Dominant Floquet multiplier modulus of the tooth-period monodromy map at (speed, depth).
-double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period);
+double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period,
+                         int delay_order = 1);
 
 // Dominant multiplier (largest modulus; of a conjugate pair the one with Im >= 0) and the chatter
 // frequency of its Floquet mode (SdmMonodromy::chatterFrequencyHz). A flip (period-doubling)
@@ -36,7 +51,7 @@ struct SdmMultiplier {
   double chatter_hz = 0.0;
 };
 SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_rev_per_s, double depth_m,
-                                    int steps_per_period);
+                                    int steps_per_period, int delay_order = 1);
 
 // b_lim at each speed (the lower envelope: the smallest depth whose dominant multiplier reaches
 // exp(-delta T)), the chatter frequency of that multiplier's Floquet mode, i.e. the principal value

@@ -134,6 +134,9 @@ class TestCliCommands : public QObject {
                                << "--to";
     QTest::newRow("steps too few") << QStringList{"lobes", kRubio, "--tool", "R1", "--method", "sdm", "--steps", "2"}
                                    << "--steps";
+    QTest::newRow("delay order 4") << QStringList{"lobes",    kRubio, "--tool",        "R1",
+                                                  "--method", "sdm",  "--delay-order", "4"}
+                                   << "--delay-order";
     QTest::newRow("nan speed") << QStringList{"simulate", kRubio,    "--tool", "R1",     "--speed",
                                               "nan",      "--depth", "1",      "--feed", "0.1"}
                                << "--speed";
@@ -154,11 +157,37 @@ class TestCliCommands : public QObject {
     QVERIFY2(r.err.contains(names), qPrintable(r.err));
   }
 
+  // The default SDM: cubic delay interpolation, 140 steps per tooth period at a/D = 0.05 (20 in the cut).
   void inspergerLowImmersionSdmRuns() {
     const Run r = cli(
         {"lobes", kInsperger, "--tool", "LOW", "--method", "sdm", "--from", "9000", "--to", "12000", "--step", "500"});
     QCOMPARE(r.code, 0);
     for (const auto& v : r.json["blim_mm"].toArray()) QVERIFY(v.isNull() || v.toDouble() > 0.0);
+    QCOMPARE(r.json["sdm_delay_order"].toInt(), 3);
+    for (const auto& v : r.json["sdm_steps"].toArray()) QCOMPARE(v.toInt(), 140);
+  }
+
+  // Automatic steps follow the speed in the slot (omega T / 0.3: 120 at 5000 rpm, the minimum 60 at
+  // 25000 rpm); --steps and --delay-order fix the first-order SDM of earlier versions.
+  void sdmStepsAndDelayOrder() {
+    const QStringList base{"lobes", kInsperger, "--tool", "FULL", "--method", "sdm", "--step", "20000"};
+    const Run automatic = cli(base + QStringList{"--from", "5000", "--to", "25000"});
+    QCOMPARE(automatic.code, 0);
+    const QJsonArray steps = automatic.json["sdm_steps"].toArray();
+    QCOMPARE(steps.size(), 2);
+    QCOMPARE(steps[0].toInt(), 120);
+    QCOMPARE(steps[1].toInt(), 60);
+    // At 5600 rpm the first-order SDM at m = 40 (omega dt = 0.78) lies about 29 % from the default.
+    const QStringList at5600{"--from", "5600", "--to", "5600"};
+    const Run fixed = cli(base + at5600 + QStringList{"--steps", "40", "--delay-order", "1"});
+    QCOMPARE(fixed.code, 0);
+    QCOMPARE(fixed.json["sdm_delay_order"].toInt(), 1);
+    QCOMPARE(fixed.json["sdm_steps"].toArray()[0].toInt(), 40);
+    const Run fine = cli(base + at5600);
+    QCOMPARE(fine.json["sdm_steps"].toArray()[0].toInt(), 110);  // 2 pi 922 T / 0.3 = 103.4
+    const double a = fine.json["blim_mm"].toArray()[0].toDouble(), b = fixed.json["blim_mm"].toArray()[0].toDouble();
+    QVERIFY(a > 0.0 && b > 0.0);
+    QCOMPARE_GE(std::abs(b / a - 1.0), 0.2);
   }
 };
 
