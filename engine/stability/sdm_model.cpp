@@ -97,7 +97,8 @@ class StepIntegrals {
     column_ = b;  // X^j B
     for (auto& fk : f_) fk.setZero(n_, 2);
     for (int j = 0; j < kTaylorTerms; ++j) {
-      for (int k = 0; k <= p_; ++k) f_[static_cast<size_t>(k)] += inverse_factorial_[static_cast<size_t>(j + k + 1)] * column_;
+      for (int k = 0; k <= p_; ++k)
+        f_[static_cast<size_t>(k)] += inverse_factorial_[static_cast<size_t>(j + k + 1)] * column_;
       column_ = x * column_;
       term_ = x * term_ * (1.0 / (j + 1));
       phi_ += term_;
