@@ -189,6 +189,7 @@ Refinement ExpertSession::refine(std::size_t tool, const CostWeights& weights) {
   const std::vector<ToolChoice> best_by_cost = bestPoints(tool, weights.c, static_cast<std::size_t>(k));
   if (best_by_cost.empty()) throw InvalidInput("Rule 5: the tool has no admissible point");
   std::vector<ExpertPoint> seeds;
+  seeds.reserve(best_by_cost.size());
   for (const ToolChoice& p : best_by_cost) seeds.push_back(p.q);
   const AdmissibleGrid& grid = grids_.at(tool);
   Rule5Problem problem;

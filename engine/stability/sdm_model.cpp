@@ -65,7 +65,7 @@ constexpr int kTaylorTerms = 20;
 class StepIntegrals {
  public:
   StepIntegrals(Eigen::Index n, int p) : n_(n), p_(p), f_(static_cast<size_t>(p + 1)) {
-    inverse_factorial_.resize(static_cast<size_t>(kTaylorTerms + p + 2));
+    inverse_factorial_.resize(static_cast<size_t>(kTaylorTerms) + static_cast<size_t>(p) + 2);
     double f = 1.0;
     for (size_t j = 0; j < inverse_factorial_.size(); ++j) {
       if (j > 0) f *= static_cast<double>(j);
@@ -98,7 +98,7 @@ class StepIntegrals {
     for (auto& fk : f_) fk.setZero(n_, 2);
     for (int j = 0; j < kTaylorTerms; ++j) {
       for (int k = 0; k <= p_; ++k)
-        f_[static_cast<size_t>(k)] += inverse_factorial_[static_cast<size_t>(j + k + 1)] * column_;
+        f_[static_cast<size_t>(k)] += inverse_factorial_[static_cast<size_t>(j) + static_cast<size_t>(k) + 1] * column_;
       column_ = x * column_;
       term_ = x * term_ * (1.0 / (j + 1));
       phi_ += term_;
