@@ -30,7 +30,7 @@ struct LobesRequest {
   double delta_per_s = 0.0;
   double alpha = 1.0;
   int steps = kAutoSdmSteps;
-  int delay_order = 3;
+  int delay_order = kDefaultSdmDelayOrder;
   double max_depth_m = 0.02;
   std::optional<DynamicsSource> dynamics;
 };
@@ -54,7 +54,7 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.delta_per_s = numberOption(parser, "delta", 0.0, 1e6).value_or(inputs.delta_per_s);
   r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(inputs.alpha);
   r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
-  r.delay_order = integerOption(parser, "delay-order", 1, 3).value_or(r.delay_order);
+  r.delay_order = integerOption(parser, "delay-order", 1, kMaxSdmDelayOrder).value_or(r.delay_order);
   r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
   r.dynamics = dynamicsOption(parser);
   return r;

@@ -48,7 +48,7 @@ int runPointCommand(const QStringList& arguments) {
   delta = numberOption(parser, "delta", 0.0, 1e6).value_or(delta);
   alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(alpha);
   const int steps = integerOption(parser, "steps", 4, 2000).value_or(kAutoSdmSteps);
-  const int delay_order = integerOption(parser, "delay-order", 1, 3).value_or(3);
+  const int delay_order = integerOption(parser, "delay-order", 1, kMaxSdmDelayOrder).value_or(kDefaultSdmDelayOrder);
   const StabilityMethod stability_method =
       method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
   const DynamicsChoice dynamics = chooseDynamics(requireTool(project, tool), requested, delta, stability_method);

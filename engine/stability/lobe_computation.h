@@ -19,7 +19,8 @@ struct LobeSettings {
   int sdm_steps_per_period = kAutoSdmSteps;  // semi-discretization only; kAutoSdmSteps: autoSdmSteps per speed
   // ZOA only: Measured takes each axis's measured FRF where present (delta must be 0).
   DynamicsSource dynamics = DynamicsSource::Modal;
-  int sdm_delay_order = 3;  // semi-discretization: degree of the delayed-state interpolation (sdm_model.h)
+  int sdm_delay_order =
+      kDefaultSdmDelayOrder;  // semi-discretization: degree of the delayed-state interpolation (sdm_model.h)
 };
 
 // Throws InvalidInput for semi-discretization with DynamicsSource::Measured (it needs a state-space

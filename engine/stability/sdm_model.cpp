@@ -115,11 +115,16 @@ class StepIntegrals {
 
 }  // namespace
 
+void SdmModel::requireDelayOrder(int delay_order, int steps_per_period) {
+  const int highest = std::min(kMaxSdmDelayOrder, steps_per_period);
+  if (delay_order < 1 || delay_order > highest)
+    throw InvalidInput("delay_order = " + std::to_string(delay_order) + " is outside the allowed range [1, " +
+                       std::to_string(highest) + "]");
+}
+
 SdmModel::SdmModel(const MillingSetup& setup, int steps_per_period, int delay_order)
     : steps_(steps_per_period), order_(delay_order), teeth_(setup.teeth) {
-  if (order_ < 1 || order_ > kMaxDelayOrder || order_ > steps_)
-    throw InvalidInput("delay interpolation order = " + std::to_string(order_) + " is outside the allowed range [1, " +
-                       std::to_string(std::min(kMaxDelayOrder, steps_)) + "]");
+  requireDelayOrder(order_, steps_);
   lagrange_ = lagrangeMonomials(order_, historyBack());
   struct Dof {
     const Mode* mode;

@@ -24,14 +24,16 @@
 
 #include "model/milling_setup.h"
 #include "stability/sdm_monodromy.h"
+#include "stability/semi_discretization.h"
 
 namespace mx {
 
 class SdmModel {
  public:
-  // delay_order p in [1, kMaxDelayOrder], at most steps_per_period.
+  // delay_order p in [1, kMaxSdmDelayOrder], at most steps_per_period (requireDelayOrder).
   SdmModel(const MillingSetup& setup, int steps_per_period, int delay_order = 1);
-  static constexpr int kMaxDelayOrder = 3;
+  // Throws InvalidInput naming the order and its allowed range for `steps` steps per period.
+  static void requireDelayOrder(int delay_order, int steps_per_period);
 
   int steps() const { return steps_; }
   int delayOrder() const { return order_; }

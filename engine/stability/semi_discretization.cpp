@@ -22,12 +22,6 @@ void requireSteps(int steps) {
   }
 }
 
-void requireDelayOrder(int order) {
-  if (order < 1 || order > SdmModel::kMaxDelayOrder)
-    throw InvalidInput("delay_order = " + std::to_string(order) + " is outside the allowed range [1, " +
-                       std::to_string(SdmModel::kMaxDelayOrder) + "]");
-}
-
 constexpr int kMinAutoSteps = 60;
 constexpr int kMaxAutoSteps = 1000;
 constexpr double kAutoPhasePerStep = 0.3;  // rad of the fastest mode per step
@@ -62,7 +56,7 @@ void requireTeeth(const MillingSetup& setup) {
 void validate(const MillingSetup& setup, const std::vector<double>& speeds, const SdmOptions& o) {
   requireTeeth(setup);
   if (o.steps_per_period != kAutoSdmSteps) requireSteps(o.steps_per_period);
-  requireDelayOrder(o.delay_order);
+  SdmModel::requireDelayOrder(o.delay_order, o.steps_per_period == kAutoSdmSteps ? kMinAutoSteps : o.steps_per_period);
   for (double n : speeds) requireSpeed(n);
   const double limit = smallestDecayRate(setup.modes_x, setup.modes_y);
   if (!(o.delta_per_s >= 0.0 && o.delta_per_s < limit)) {

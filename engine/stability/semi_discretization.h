@@ -21,13 +21,16 @@ namespace mx {
 
 // steps_per_period = kAutoSdmSteps: m is chosen per speed by autoSdmSteps.
 inline constexpr int kAutoSdmSteps = 0;
+// Degrees of the delayed-state interpolation (sdm_model.h): 1 .. kMaxSdmDelayOrder.
+inline constexpr int kMaxSdmDelayOrder = 3;
+inline constexpr int kDefaultSdmDelayOrder = 3;
 
 struct SdmOptions {
-  int steps_per_period = kAutoSdmSteps;  // m: time steps per tooth period (delay), or kAutoSdmSteps
-  int delay_order = 3;                   // p: degree of the delayed-state interpolation (sdm_model.h), 1..3
-  double delta_per_s = 0.0;              // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
-  double max_depth_m = 0.02;             // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
-  double depth_tolerance = 1e-3;         // relative tolerance on b_lim
+  int steps_per_period = kAutoSdmSteps;     // m: time steps per tooth period (delay), or kAutoSdmSteps
+  int delay_order = kDefaultSdmDelayOrder;  // p: degree of the delayed-state interpolation (sdm_model.h)
+  double delta_per_s = 0.0;       // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
+  double max_depth_m = 0.02;      // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
+  double depth_tolerance = 1e-3;  // relative tolerance on b_lim
 };
 
 // Steps per tooth period at one speed for the cubic delay interpolation, the largest of:
