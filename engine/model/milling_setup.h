@@ -2,8 +2,10 @@
 // One tool in one cut: geometry, structural modes, cutting-force coefficients and immersion.
 // Conventions (Rubio et al. 2006, eq. 4-7; Altintas 2000): feed along +x, the tooth angle phi is
 // measured clockwise from +y, h_static = s_t sin(phi). SI units throughout.
+#include <numbers>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "model/measured_receptance.h"
 #include "model/modal_model.h"
@@ -29,7 +31,13 @@ struct MillingSetup {
   std::string tool_id;
   int teeth = 1;
   double diameter_m = 0.0;
-  double helix_rad = 0.0;                  // carried, not modelled (straight-tooth model, docs/fidelity.md)
+  // Cutter geometry (docs/fidelity.md, "Real cutters"). Tooth j sits at toothAngleRad(j) from tooth 0 in
+  // the direction of rotation; tooth j + 1 is pitchRad(j) ahead of tooth j, so tooth j cuts the surface
+  // tooth j + 1 left pitchRad(j) / Omega earlier (its delay). At height z above the tool tip an edge lags
+  // its tip by helixLagRad(z) = z tan(helix) / R. A runout offset moves one edge radially outwards.
+  double helix_rad = 0.0;
+  std::vector<double> pitch_rad;           // one per tooth, summing to 2 pi; empty: uniform 2 pi / teeth
+  std::vector<double> runout_m;            // one per tooth; empty: none
   double tangential_coefficient_pa = 0.0;  // K_t [N/m^2] (eq. 2)
   double radial_ratio = 0.0;               // K_r = F_r / F_t (eq. 3)
   ModalAxis modes_x;
@@ -41,8 +49,22 @@ struct MillingSetup {
   double radial_depth_m = 0.0;
   Immersion immersion;  // derived from radial depth and diameter
 
-  double toothPitchRad() const;
+  double toothPitchRad() const;           // the mean pitch, 2 pi / teeth
+  double pitchRad(int tooth) const;       // pitch_rad[tooth], or the mean when uniform
+  double toothAngleRad(int tooth) const;  // sum of pitchRad(k) for k < tooth
+  double runoutM(int tooth) const;        // runout_m[tooth], or 0
+  bool uniformPitch() const;              // no pitch list, or every pitch equal to the mean within 1e-9 rad
+  bool hasRunout() const;                 // some runout offset differs from 0
+  double helixLagRad(double height_m) const;
+  // The period after which the cut repeats: one tooth period when the pitch is uniform, else one revolution.
+  int teethPerPrincipalPeriod() const { return uniformPitch() ? 1 : teeth; }
+  // Throws InvalidInput naming the field, value and rule: teeth >= 1, |helix| < 90 deg, pitch and runout of
+  // length teeth, pitches > 0 summing to 360 deg within 1e-6 deg, runout finite and below D / 4.
+  void validateGeometry() const;
 };
+
+// Tolerance on the sum of the pitch angles: the fixed interface's 1e-6 degree.
+inline constexpr double kPitchSumToleranceRad = 1e-6 * std::numbers::pi / 180.0;
 
 // A point in the cutting-parameter space Q = (N, b, s_t).
 struct OperatingPoint {
