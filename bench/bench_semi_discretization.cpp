@@ -1,5 +1,7 @@
 #include <benchmark/benchmark.h>
 
+#include <numbers>
+
 #include "bench_fixtures.h"
 #include "stability/semi_discretization.h"
 
@@ -52,6 +54,28 @@ BENCHMARK(BM_SdmLobes_Insperger)
     ->Args({1, 100, 5})
     ->Args({3, 0, 5})
     ->Unit(benchmark::kMillisecond);
+
+// Real cutters at the default accuracy (docs/performance.md): a 4-tooth 70/110/70/110 deg cutter on
+// Insperger's slot (one revolution of 4 m steps per principal period, two delays) over 200 speeds, and
+// a 3-tooth 30 deg helix cutter at a/D = 0.1 (exact helix average, recomputed at every depth tried).
+static void BM_SdmLobes_VariablePitch4_200speeds(benchmark::State& state) {
+  mx::MillingSetup setup = mx::bench::insperger(1.0);
+  setup.teeth = 4;
+  const double deg = std::numbers::pi / 180.0;
+  setup.pitch_rad = {70 * deg, 110 * deg, 70 * deg, 110 * deg};
+  const auto grid = mx::SpeedGrid{5000.0 / 60, 24900.0 / 60, 100.0 / 60}.values();
+  for (auto _ : state) benchmark::DoNotOptimize(mx::computeSdmLobes(setup, grid, {}));
+}
+BENCHMARK(BM_SdmLobes_VariablePitch4_200speeds)->Unit(benchmark::kMillisecond);
+
+static void BM_SdmLobes_Helix30_3teeth_aD10_200speeds(benchmark::State& state) {
+  mx::MillingSetup setup = mx::bench::insperger(0.1);
+  setup.teeth = 3;
+  setup.helix_rad = 30.0 * std::numbers::pi / 180.0;
+  const auto grid = mx::SpeedGrid{5000.0 / 60, 24900.0 / 60, 100.0 / 60}.values();
+  for (auto _ : state) benchmark::DoNotOptimize(mx::computeSdmLobes(setup, grid, {}));
+}
+BENCHMARK(BM_SdmLobes_Helix30_3teeth_aD10_200speeds)->Unit(benchmark::kMillisecond);
 
 // One dominant-multiplier evaluation (cold Arnoldi start, including the step exponentials).
 static void BM_SdmSpectralRadius_R1_40steps(benchmark::State& state) {

@@ -1,8 +1,8 @@
 // millexpert-cli lobes PROJECT --tool ID [--method zoa|sdm] [--from RPM --to RPM --step RPM]
-//                  [--delta V] [--alpha V] [--steps M] [--delay-order P] [--max-depth MM]
-//                  [--dynamics modal|measured]
-// Prints {"tool","method","dynamics_used","speed_rpm":[...],"blim_mm":[...]} (with sdm also
-// "sdm_delay_order" and "sdm_steps", per speed): alpha times the
+//                  [--delta V] [--alpha V] [--steps M] [--delay-order P] [--helix-slices N]
+//                  [--max-depth MM] [--dynamics modal|measured]
+// Prints {"tool","method","dynamics_used","cutter","speed_rpm":[...],"blim_mm":[...]} (with sdm also
+// "sdm_delay_order", "sdm_helix_slices" and "sdm_steps", per speed): alpha times the
 // delta-margined lower envelope (Rule 1), null where no instability lies below --max-depth. With
 // measured dynamics the ZOA runs on the tap-test FRF; delta > 0 or sdm use the fitted modes
 // (services/measured_dynamics.h), and stderr says so.
@@ -15,6 +15,7 @@
 #include "cli/cli_support.h"
 #include "document/lobe_inputs.h"
 #include "document/project.h"
+#include "services/cutter_json.h"
 #include "stability/lobe_computation.h"
 
 namespace mx::app {
@@ -31,6 +32,7 @@ struct LobesRequest {
   double alpha = 1.0;
   int steps = kAutoSdmSteps;
   int delay_order = kDefaultSdmDelayOrder;
+  int helix_slices = kExactHelixSlices;
   double max_depth_m = 0.02;
   std::optional<DynamicsSource> dynamics;
 };
@@ -55,6 +57,7 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.alpha = numberOption(parser, "alpha", 1e-9, 1.0).value_or(inputs.alpha);
   r.steps = integerOption(parser, "steps", 4, 2000).value_or(r.steps);
   r.delay_order = integerOption(parser, "delay-order", 1, kMaxSdmDelayOrder).value_or(r.delay_order);
+  r.helix_slices = integerOption(parser, "helix-slices", 0, kMaxHelixSlices).value_or(r.helix_slices);
   r.max_depth_m = numberOption(parser, "max-depth", 1e-6, 1e4).value_or(20.0) * 1e-3;
   r.dynamics = dynamicsOption(parser);
   return r;
@@ -77,6 +80,10 @@ int runLobesCommand(const QStringList& arguments) {
       {"steps", "Semi-discretization steps per tooth period, 4-2000 (default: chosen per speed).", "M"},
       {"max-depth", "Depth cap [mm]: null where no instability below it (default 20).", "MM"},
       {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
+      {"helix-slices",
+       "Semi-discretization: axial slices of a helical edge, 1-1000; 0 (default) integrates the helix lag "
+       "exactly.",
+       "N"},
       dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
@@ -94,9 +101,9 @@ int runLobesCommand(const QStringList& arguments) {
   for (size_t i = 0; i < speeds.size(); ++i)
     rpm_values.push_back(request.from_rpm + static_cast<double>(i) * request.step_rpm);
 
-  const LobeDiagram diagram = computeLobes(
-      setup, speeds,
-      {method, request.delta_per_s, request.max_depth_m, request.steps, dynamics.used, request.delay_order});
+  const LobeDiagram diagram = computeLobes(setup, speeds,
+                                           {method, request.delta_per_s, request.max_depth_m, request.steps,
+                                            dynamics.used, request.delay_order, request.helix_slices});
 
   QJsonArray speed_rpm, blim_mm, chatter_hz, minima;
   for (size_t i = 0; i < speeds.size(); ++i) {
@@ -114,12 +121,14 @@ int runLobesCommand(const QStringList& arguments) {
                   {"dynamics_used", dynamicsName(dynamics.used)},
                   {"delta_per_s", request.delta_per_s},
                   {"alpha", request.alpha},
+                  {"cutter", cutterJson(setup)},
                   {"speed_rpm", speed_rpm},
                   {"blim_mm", blim_mm},
                   {"chatter_frequency_Hz", chatter_hz},
                   {"minima", minima}};
   if (method == StabilityMethod::SemiDiscretization) {
     out.insert("sdm_delay_order", request.delay_order);
+    out.insert("sdm_helix_slices", request.helix_slices);
     QJsonArray steps;  // per speed: the steps per tooth period used
     for (double n : speeds) steps.append(request.steps == kAutoSdmSteps ? autoSdmSteps(setup, n) : request.steps);
     out.insert("sdm_steps", steps);

@@ -15,6 +15,7 @@
 #include "cli/cli_support.h"
 #include "document/project.h"
 #include "model/cutting_force.h"
+#include "services/cutter_json.h"
 #include "stability/lobe_computation.h"
 #include "stability/stability_boundary.h"
 
@@ -78,6 +79,7 @@ int runPointCommand(const QStringList& arguments) {
   QJsonObject out{{"tool", tool},
                   {"method", method},
                   {"dynamics_used", dynamicsName(dynamics.used)},
+                  {"cutter", cutterJson(setup)},
                   {"speed_rpm", speed_rpm},
                   {"depth_mm", depth_mm},
                   {"feed_per_tooth_mm", feed_mm},

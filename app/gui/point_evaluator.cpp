@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
+#include <vector>
 
 #include "model/cutting_force.h"
 
@@ -14,8 +17,6 @@ PointEvaluator::PointEvaluator(std::shared_ptr<const LobeSnapshot> snapshot, Spi
   for (const ToolLobes& t : snapshot_->tools) {
     if (t.margined.speed_rev_per_s.size() < 2) return;
     boundaries_.emplace_back(t.margined, snapshot_->alpha);
-    // Peak power is proportional to N b s_t at fixed immersion (Pareto eq. 8).
-    power_per_depth_feed_speed_.push_back(peakPowerPerDepthFeed(t.setup, 1.0));
   }
 }
 
@@ -62,15 +63,61 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   return r;
 }
 
+namespace {
+
+// b at which b k(b) reaches `target` [W / (rev/s m)], by log-log interpolation in a table of b k(b) over
+// [1 um, max_depth]; +inf beyond the table.
+class PowerDepthTable {
+ public:
+  PowerDepthTable(const MillingSetup& setup, double feed_m, double max_depth_m) {
+    constexpr int kRows = 24;
+    const double lo = std::log(1e-6), hi = std::log(std::max(max_depth_m, 2e-6));
+    for (int i = 0; i < kRows; ++i) {
+      const double b = std::exp(lo + (hi - lo) * i / (kRows - 1));
+      log_b_.push_back(std::log(b));
+      log_g_.push_back(std::log(b * peakPerDepthFeed(setup, b, feed_m).power_w_per_rev_per_s));
+    }
+  }
+  double depthFor(double target) const {
+    const double g = std::log(target);
+    if (g <= log_g_.front()) return std::exp(log_b_.front() + g - log_g_.front());  // linear below 1 um
+    for (std::size_t i = 1; i < log_g_.size(); ++i) {
+      if (g <= log_g_[i]) {
+        const double f = (g - log_g_[i - 1]) / (log_g_[i] - log_g_[i - 1]);
+        return std::exp(log_b_[i - 1] + f * (log_b_[i] - log_b_[i - 1]));
+      }
+    }
+    return std::numeric_limits<double>::infinity();
+  }
+
+ private:
+  std::vector<double> log_b_, log_g_;
+};
+
+}  // namespace
+
 QVector<double> PointEvaluator::powerLimitMm(int tool, double feed) const {
   QVector<double> out;
   if (!ready() || tool < 0 || tool >= toolCount() || feed <= 0.0) return out;
   const ToolLobes& t = snapshot_->tools[static_cast<size_t>(tool)];
-  const double k = power_per_depth_feed_speed_[static_cast<size_t>(tool)] * feed * 1e-3;
+  const double s = feed * 1e-3;
+  const bool linear = t.setup.helix_rad == 0.0 && !t.setup.hasRunout();
+  double max_depth = 0.0;
+  for (double b : t.margined.envelope_depth_m)
+    if (std::isfinite(b)) max_depth = std::max(max_depth, b);
+  std::function<double(double)> depth_for;  // b [m] at which b k(b) reaches the target
+  if (linear) {
+    const double k = peakPerDepthFeed(t.setup, 1e-3, s).power_w_per_rev_per_s;
+    depth_for = [k](double target) { return target / k; };
+  } else {
+    auto table = std::make_shared<const PowerDepthTable>(t.setup, s, 4.0 * std::max(max_depth, 1e-3));
+    depth_for = [table](double target) { return table->depthFor(target); };
+  }
   for (double n : t.margined.speed_rev_per_s) {
     const double available = spindle_power_.available(n);
     if (!std::isfinite(available)) return {};
-    out.push_back(available / (k * n) * 1e3);
+    const double target = available / (n * s);
+    out.push_back(depth_for(target) * 1e3);
   }
   return out;
 }

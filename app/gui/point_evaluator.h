@@ -24,8 +24,9 @@ class PointEvaluator {
   widgets::PointReadout evaluate(int tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) const;
 
   // Depth [mm] at which the peak power reaches the available power P_av(N), per speed of the snapshot:
-  // P_av(N) / (k N) with k N b s_t = pi D N K_t b s_t S_max, S_max = max_theta sum_j sin(phi_j) over the
-  // immersion. Empty without a power limit.
+  // the peak power is N b s_t k(b, s_t) (peakPerDepthFeed), so b k(b, s_t) = P_av(N) / (N s_t). k is one
+  // number for straight teeth without runout; else b k(b) is tabulated over the chart's depths and
+  // interpolated (it grows with b). Empty without a power limit.
   QVector<double> powerLimitMm(int tool, double feed_mm_per_tooth) const;
 
   // Each snapshot tool's allowable force F_allow [N] (Rule 3), aligned with the snapshot's tools;
@@ -35,7 +36,6 @@ class PointEvaluator {
  private:
   std::shared_ptr<const LobeSnapshot> snapshot_;
   std::vector<StabilityBoundary> boundaries_;
-  std::vector<double> power_per_depth_feed_speed_;  // peak power / (b s_t N) [W s / m^2]
   SpindlePowerCurve spindle_power_;
   std::vector<double> force_limits_n_;
 };

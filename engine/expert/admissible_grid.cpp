@@ -126,11 +126,34 @@ void AdmissibleGrid::build() {
   funnel_ = {};
   funnel_.speeds = static_cast<std::int64_t>(speeds_.size());
   funnel_.feeds = grid_feeds >= kUnbounded ? -1 : grid_feeds;
-  // The peak power per (b s_t) is proportional to N (v = pi D N; the force pattern over a tooth period
-  // does not depend on N), so one evaluation per tool serves every speed.
-  const double power_per_depth_feed_per_speed = peakPowerPerDepthFeed(setup_, 1.0);
-  // The same holds for the peak resultant force, which does not depend on N at all.
-  const double force_per_depth_feed = peakForcePerDepthFeed(setup_);
+  // The peak power per (b s_t) is proportional to N (v = pi D N; the force pattern over a period does not
+  // depend on N) and the peak force independent of it, so one evaluation per depth serves every speed.
+  // With straight teeth and no runout one serves every depth too; runout makes them depend on s_t, so
+  // they are taken at the largest feed and each cell's largest feed is then checked exactly.
+  const bool straight = setup_.helix_rad == 0.0;
+  const bool runout = setup_.hasRunout();
+  const double reference_feed =
+      std::isfinite(lim.max_feed_per_tooth_m) && lim.max_feed_per_tooth_m > 0.0 ? lim.max_feed_per_tooth_m : feed_step_;
+  std::vector<PeakPerDepthFeed> peaks;  // by depth index j - 1
+  auto peakAt = [&](std::int64_t j) -> const PeakPerDepthFeed& {
+    const auto index = static_cast<std::size_t>(straight ? 0 : j - 1);
+    while (peaks.size() <= index)
+      peaks.push_back(peakPerDepthFeed(setup_, static_cast<double>(peaks.size() + 1) * depth_step_, reference_feed));
+    return peaks[index];
+  };
+  // With runout the peak is not proportional to s_t, so the linear estimate can miss either way: it is
+  // moved to the largest count <= most whose exact peak stays within `limit` (the peak grows with s_t).
+  auto exactFeeds = [&](std::int64_t estimate, std::int64_t most, double n, double b, bool power, double limit) {
+    if (!runout || !std::isfinite(limit)) return estimate;
+    auto fits = [&](std::int64_t count) {
+      const CutPerformance perf = evaluateCut(setup_, {n, b, static_cast<double>(count) * feed_step_});
+      return (power ? perf.peak_power_w : perf.peak_force_n) <= limit * (1.0 + 1e-6);
+    };
+    std::int64_t count = std::min(estimate, most);
+    while (count > 0 && !fits(count)) --count;
+    while (count < most && count < kMaxFeedsPerCell && fits(count + 1)) ++count;
+    return count;
+  };
   if (!(lim.max_tool_force_n > 0.0))
     throw InvalidInput("expert grid: the tool force limit must be > 0 N (+inf: no limit)");
   cells_.clear();
@@ -156,15 +179,18 @@ void AdmissibleGrid::build() {
     funnel_.feed_drive_points =
         drive_feeds >= kUnbounded ? kUnbounded : std::min(kUnbounded, funnel_.feed_drive_points + depths * drive_feeds);
     if (drive_feeds == 0) continue;
-    const double power_per_depth_feed = power_per_depth_feed_per_speed * n;
     for (std::int64_t j = 1; j <= depths; ++j) {
       const double b = static_cast<double>(j) * depth_step_;
-      const double power_per_feed = power_per_depth_feed * b;
-      const std::int64_t power_feeds = std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_));
+      const PeakPerDepthFeed& peak = peakAt(j);
+      const double power_per_feed = peak.power_w_per_rev_per_s * n * b;
+      const std::int64_t power_feeds =
+          exactFeeds(std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_)), drive_feeds, n, b,
+                     true, available_power);
       if (power_feeds == 0) break;  // the power grows with b: no deeper cell fits either
       funnel_.power_points = std::min(kUnbounded, funnel_.power_points + power_feeds);
       const std::int64_t feeds =
-          std::min(power_feeds, countUpTo(lim.max_tool_force_n / (force_per_depth_feed * b), feed_step_));
+          exactFeeds(std::min(power_feeds, countUpTo(lim.max_tool_force_n / (peak.force_n * b), feed_step_)),
+                     power_feeds, n, b, false, lim.max_tool_force_n);
       if (feeds == 0) break;  // so does the force
       if (feeds > kMaxFeedsPerCell)
         throw InvalidInput("expert grid: more than 1e6 admissible feeds per cell; raise the feed step");

@@ -95,8 +95,7 @@ ExpertPoint expertPointAt(const AdmissibleGrid& grid, double n, double b, double
   p.speed_rev_per_s = n;
   p.depth_m = b;
   p.feed_per_tooth_m = s;
-  // As the grid: the peak power per (b s_t) is proportional to N.
-  p.power_w = peakPowerPerDepthFeed(setup, 1.0) * n * b * s;
+  p.power_w = evaluateCut(setup, {n, b, s}).peak_power_w;
   p.mrr_m3_per_s = setup.radial_depth_m * b * setup.teeth * n * s;
   p.speed_security = grid.boundary().covers(n) && b > 0.0 ? grid.boundary().speedSecurity(n, b) : 0.0;
   return p;

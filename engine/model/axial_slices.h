@@ -15,7 +15,7 @@ struct AxialSlice {
 };
 
 // The slice count for which the lag across one slice is at most kMaxSliceLagRad: the static forces'
-// peak then differs from the continuous edge's by well under 1 % (tests/model/test_axial_slices.cpp).
+// peak then differs from four times as many slices by about 0.2 % (model.cutting_force).
 inline constexpr double kMaxSliceLagRad = std::numbers::pi / 180.0;
 inline constexpr int kMaxAxialSlices = 720;
 int defaultAxialSlices(const MillingSetup& setup, double depth_m);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace mx {
@@ -37,17 +38,42 @@ double StaticForce::resultant() const {
   return std::hypot(fx_n, fy_n);
 }
 
-StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad) {
+StaticCut::StaticCut(const MillingSetup& setup, const OperatingPoint& point, int slices)
+    : setup_(setup), feed_m_(point.feed_per_tooth_m), slices_(axialSlices(setup, point.axial_depth_m, slices)) {
+  const int n = setup.teeth;
+  // Without runout the nearest tooth ahead always leaves the thinnest chip (sin phi >= 0 in the cut).
+  const int passes = setup.hasRunout() ? n : 1;
+  for (int j = 0; j < n; ++j) {
+    tooth_angle_.push_back(setup.toothAngleRad(j));
+    std::vector<Pass> tooth;
+    double pitch = 0.0;
+    for (int k = 1; k <= passes; ++k) {
+      pitch += setup.pitchRad((j + k - 1) % n);
+      tooth.push_back({pitch * n / (2.0 * std::numbers::pi), setup.runoutM(j) - setup.runoutM((j + k) % n)});
+    }
+    passes_.push_back(std::move(tooth));
+  }
+}
+
+StaticForce StaticCut::at(double theta_rad) const {
   StaticForce total;
-  const double pitch = setup.toothPitchRad();
-  for (int j = 0; j < setup.teeth; ++j) {
-    const double phi = theta_rad + j * pitch;
-    const ToothForce f = toothForce(setup, point.axial_depth_m, phi, point.feed_per_tooth_m * std::sin(phi));
-    total.tangential_sum_n += f.tangential_n;
-    total.fx_n += f.fx_n;
-    total.fy_n += f.fy_n;
+  for (std::size_t j = 0; j < tooth_angle_.size(); ++j) {
+    for (const AxialSlice& slice : slices_) {
+      const double phi = theta_rad + tooth_angle_[j] - slice.lag_rad;
+      const double s = std::sin(phi);
+      double chip = std::numeric_limits<double>::infinity();
+      for (const Pass& pass : passes_[j]) chip = std::min(chip, feed_m_ * pass.feed_factor * s + pass.runout_m);
+      const ToothForce f = toothForce(setup_, slice.depth_m, phi, chip);
+      total.tangential_sum_n += f.tangential_n;
+      total.fx_n += f.fx_n;
+      total.fy_n += f.fy_n;
+    }
   }
   return total;
+}
+
+StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad) {
+  return StaticCut(setup, point).at(theta_rad);
 }
 
 CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& point) {
@@ -55,29 +81,29 @@ CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& poin
   out.cutting_speed_m_per_s = std::numbers::pi * setup.diameter_m * point.spindle_rev_per_s;
   double peak_tangential = 0.0;
   double sum_tangential = 0.0;
-  const double pitch = setup.toothPitchRad();
-  for (int i = 0; i < kSamplesPerToothPeriod; ++i) {
-    const StaticForce f = staticForce(setup, point, pitch * i / kSamplesPerToothPeriod);
+  const StaticCut cut(setup, point);
+  // Unequal teeth (pitch or runout) repeat the force once per revolution, equal teeth once per pitch.
+  const int period_teeth = setup.uniformPitch() && !setup.hasRunout() ? 1 : setup.teeth;
+  const int samples = kSamplesPerToothPeriod * period_teeth;
+  const double period = setup.toothPitchRad() * period_teeth;
+  for (int i = 0; i < samples; ++i) {
+    const StaticForce f = cut.at(period * i / samples);
     peak_tangential = std::max(peak_tangential, f.tangential_sum_n);
     sum_tangential += f.tangential_sum_n;
     out.peak_force_n = std::max(out.peak_force_n, f.resultant());
   }
   out.peak_power_w = out.cutting_speed_m_per_s * peak_tangential;
-  out.mean_power_w = out.cutting_speed_m_per_s * sum_tangential / kSamplesPerToothPeriod;
+  out.mean_power_w = out.cutting_speed_m_per_s * sum_tangential / samples;
   out.peak_torque_nm = 0.5 * setup.diameter_m * peak_tangential;
   out.mrr_m3_per_s =
       setup.radial_depth_m * point.axial_depth_m * point.feed_per_tooth_m * setup.teeth * point.spindle_rev_per_s;
   return out;
 }
 
-double peakPowerPerDepthFeed(const MillingSetup& setup, double spindle_rev_per_s) {
-  const OperatingPoint unit{spindle_rev_per_s, 1.0, 1.0};
-  return evaluateCut(setup, unit).peak_power_w;
-}
-
-double peakForcePerDepthFeed(const MillingSetup& setup) {
-  const OperatingPoint unit{1.0, 1.0, 1.0};
-  return evaluateCut(setup, unit).peak_force_n;
+PeakPerDepthFeed peakPerDepthFeed(const MillingSetup& setup, double depth_m, double feed_m) {
+  const CutPerformance perf = evaluateCut(setup, {1.0, depth_m, feed_m});
+  const double area = depth_m * feed_m;
+  return {perf.peak_power_w / area, perf.peak_force_n / area};
 }
 
 }  // namespace mx

@@ -1,6 +1,9 @@
 #pragma once
 // Static (rigid-tool) cutting forces, power, torque and MRR (Rubio et al. 2006, eq. 2-5;
 // Pareto paper eq. 8: P = v * sum_j F_tj with v = pi D N / 60).
+#include <vector>
+
+#include "model/axial_slices.h"
 #include "model/milling_setup.h"
 
 namespace mx {
@@ -22,17 +25,41 @@ struct ToothForce {
 };
 ToothForce toothForce(const MillingSetup& setup, double depth_m, double phi_rad, double chip_m);
 
-// Sum over the teeth at cutter rotation angle theta (tooth j at theta + j * pitch), rigid tool.
+// Sum over the teeth at cutter rotation angle theta (tooth j at theta + toothAngleRad(j)), rigid tool.
 struct StaticForce {
   double tangential_sum_n = 0.0;  // sum_j F_tj
   double fx_n = 0.0;
   double fy_n = 0.0;
   double resultant() const;
 };
+
+// The rigid-tool cut of a real cutter (docs/fidelity.md, "Real cutters"): each tooth's slices at their
+// helix lag, each tooth's feed proportional to its pitch, and each chip changed by the runout. The chip
+// of tooth j is the least over the k = 1 .. n_t teeth ahead of it that last passed (Kline & DeVor 1983):
+//   h_j = max(0, min_k [ s_t (n_t / 2 pi) (pitch_j + .. + pitch_{j+k-1}) sin phi + rho_j - rho_{j+k} ]).
+// With uniform pitch and no runout, h_j = s_t sin phi (Rubio et al. 2006, eq. 7 for a rigid tool).
+class StaticCut {
+ public:
+  // `slices` as axialSlices (0: the default for the depth).
+  StaticCut(const MillingSetup& setup, const OperatingPoint& point, int slices = 0);
+  StaticForce at(double theta_rad) const;
+
+ private:
+  struct Pass {
+    double feed_factor = 1.0;  // (n_t / 2 pi) times the pitches from tooth j to tooth j + k
+    double runout_m = 0.0;     // rho_j - rho_{j+k}
+  };
+  const MillingSetup& setup_;
+  double feed_m_ = 0.0;
+  std::vector<AxialSlice> slices_;
+  std::vector<double> tooth_angle_;
+  std::vector<std::vector<Pass>> passes_;  // per tooth
+};
+
 StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad);
 
 struct CutPerformance {
-  double peak_power_w = 0.0;  // max over a tooth period of v * sum F_t
+  double peak_power_w = 0.0;  // max over the principal period (a tooth period; a revolution for variable pitch)
   double mean_power_w = 0.0;
   double peak_torque_nm = 0.0;  // max of (D/2) sum F_t
   double peak_force_n = 0.0;    // max resultant |F|
@@ -41,10 +68,14 @@ struct CutPerformance {
 };
 CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& point);
 
-// Peak power per unit (b * s_t): P = b s_t * powerPerDepthFeed; used for power-limit curves.
-double peakPowerPerDepthFeed(const MillingSetup& setup, double spindle_rev_per_s);
-// Peak resultant force per unit (b * s_t): |F|_max = b s_t * peakForcePerDepthFeed (independent of N);
-// bounds the Rule 3 tool-force limit (Pareto paper, Module II).
-double peakForcePerDepthFeed(const MillingSetup& setup);
+// Peak power and peak resultant force per unit (b s_t) at depth b and feed s_t: the power is
+// proportional to N (v = pi D N) and the force independent of it. Without runout both are independent of
+// s_t, and with straight teeth of b too; the helix lowers them as b grows, the runout raises them at small
+// s_t. Used for the power- and force-limit curves (Pareto paper eq. 8 and Module II).
+struct PeakPerDepthFeed {
+  double power_w_per_rev_per_s = 0.0;  // P / (N b s_t) [W / (rev/s m^2)]
+  double force_n = 0.0;                // |F|_max / (b s_t) [N / m^2]
+};
+PeakPerDepthFeed peakPerDepthFeed(const MillingSetup& setup, double depth_m, double feed_m);
 
 }  // namespace mx

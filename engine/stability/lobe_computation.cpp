@@ -22,6 +22,7 @@ LobeDiagram computeLobes(const MillingSetup& setup, const std::vector<double>& s
   o.max_depth_m = settings.max_depth_m;
   o.steps_per_period = settings.sdm_steps_per_period;
   o.delay_order = settings.sdm_delay_order;
+  o.helix_slices = settings.sdm_helix_slices;
   return computeSdmLobes(setup, speeds_rev_per_s, o, control);
 }
 

@@ -21,6 +21,7 @@ struct LobeSettings {
   DynamicsSource dynamics = DynamicsSource::Modal;
   int sdm_delay_order =
       kDefaultSdmDelayOrder;  // semi-discretization: degree of the delayed-state interpolation (sdm_model.h)
+  int sdm_helix_slices = kExactHelixSlices;  // semi-discretization: SdmOptions::helix_slices
 };
 
 // Throws InvalidInput for semi-discretization with DynamicsSource::Measured (it needs a state-space

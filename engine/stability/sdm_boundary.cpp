@@ -42,6 +42,7 @@ double SdmBoundarySearch::coldGuess(const MillingSetup& setup, double max_depth_
 SdmBoundarySearch::Sample SdmBoundarySearch::evaluate(double depth_m) {
   ++evaluations_;
   model_.build(speed_, depth_m, free_step_, map_);
+  built_depth_m_ = depth_m;
   Sample s;
   s.depth = depth_m;
   s.pair = arnoldi_.dominant(map_, warm_.size() > 0 ? &warm_ : nullptr);
@@ -50,7 +51,12 @@ SdmBoundarySearch::Sample SdmBoundarySearch::evaluate(double depth_m) {
   return s;
 }
 
-SdmBoundaryPoint SdmBoundarySearch::finish(const Sample& s) const {
+SdmBoundaryPoint SdmBoundarySearch::finish(const Sample& s) {
+  // The frequency may run the map over a period (SdmMonodromy::chatterFrequencyHz): it must be s's map.
+  if (built_depth_m_ != s.depth) {
+    model_.build(speed_, s.depth, free_step_, map_);
+    built_depth_m_ = s.depth;
+  }
   SdmBoundaryPoint out;
   out.depth_m = s.depth;
   out.multiplier = s.pair.value;
@@ -73,7 +79,7 @@ SdmBoundaryPoint SdmBoundarySearch::finish(const Sample& s) const {
 //    threshold can still be missed.
 SdmBoundaryPoint SdmBoundarySearch::solve(double spindle_rev_per_s, double guess_depth_m, double lowest_known_m) {
   speed_ = spindle_rev_per_s;
-  period_ = model_.toothPeriodS(speed_);
+  period_ = model_.principalPeriodS(speed_);
   free_step_ = model_.freeStep(speed_);
   evaluations_ = 0;
   const double b_max = options_.max_depth_m;

@@ -42,12 +42,13 @@ class SdmBoundarySearch {
   Sample brent(Sample lo, Sample hi);
   bool scanBelow(const Sample& top, double floor_depth_m, Sample& lo, Sample& hi);
   bool maximiseNear(const Sample& below, const Sample& peak, const Sample& above, Sample& hi);
-  SdmBoundaryPoint finish(const Sample& s) const;
+  SdmBoundaryPoint finish(const Sample& s);
 
   const SdmModel& model_;
   SdmOptions options_;
   SdmArnoldi arnoldi_;
   SdmMonodromy map_;
+  double built_depth_m_ = -1.0;  // the depth map_ holds
   Eigen::MatrixXd free_step_;
   Eigen::VectorXd warm_;
   double speed_ = 0.0;

@@ -5,46 +5,43 @@
 
 namespace mx {
 
-void SdmMonodromy::reset(const Eigen::MatrixXd& output_c, int steps, int back, int stencil) {
+void SdmMonodromy::reset(const Eigen::MatrixXd& output_c, int steps, int depth) {
   c_ = output_c;
   steps_ = steps;
-  back_ = back;
-  stencil_ = stencil;
+  depth_ = depth;
   cut_index_.assign(static_cast<size_t>(steps), -1);
   phi_.clear();
-  g_.clear();
-  history_.resize(2, 2 * steps + back);
+  terms_.clear();
+  history_.resize(2, steps + depth);
   z_.resize(c_.cols());
   z_next_.resize(c_.cols());
 }
 
-void SdmMonodromy::setCutStep(int i, const Eigen::MatrixXd& phi, const std::vector<StepInput>& g) {
+void SdmMonodromy::setCutStep(int i, const Eigen::MatrixXd& phi, std::vector<DelayedTerm> terms) {
   cut_index_[static_cast<size_t>(i)] = static_cast<int>(phi_.size());
   phi_.push_back(phi);
-  g_.push_back(g);
+  terms_.push_back(std::move(terms));
 }
 
 void SdmMonodromy::apply(const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::Ref<Eigen::VectorXd> out) const {
   const Eigen::Index n = c_.cols();
-  const int m = steps_, past = steps_ + back_;
   z_ = in.head(n);
-  // history_.col(j) = r_{j-m-back}: columns 0..m+back-1 from the input, the rest produced here.
-  history_.leftCols(past) = Eigen::Map<const Eigen::Matrix<double, 2, Eigen::Dynamic>>(in.data() + n, 2, past);
-  for (int k = 0; k < m; ++k) {
-    history_.col(past + k).noalias() = c_ * z_;
+  // history_.col(k + D) = r_k: columns 0 .. D-1 from the input, the rest produced here.
+  history_.leftCols(depth_) = Eigen::Map<const Eigen::Matrix<double, 2, Eigen::Dynamic>>(in.data() + n, 2, depth_);
+  for (int k = 0; k < steps_; ++k) {
+    history_.col(depth_ + k).noalias() = c_ * z_;
     const int idx = cut_index_[static_cast<size_t>(k)];
     if (idx < 0) {
       z_next_.noalias() = free_phi_ * z_;
     } else {
       const auto u = static_cast<size_t>(idx);
       z_next_.noalias() = phi_[u] * z_;
-      // r_{k-m+j-back} = col(k + j); the last, col(k + stencil - 1), is at most r_k (stencil <= past + 1).
-      for (int j = 0; j < stencil_; ++j) z_next_.noalias() += g_[u][static_cast<size_t>(j)] * history_.col(k + j);
+      for (const DelayedTerm& t : terms_[u]) z_next_.noalias() += t.g * history_.col(depth_ + k - t.offset);
     }
     z_.swap(z_next_);
   }
   out.head(n) = z_;
-  out.tail(2 * past) = Eigen::Map<const Eigen::VectorXd>(history_.data() + 2 * m, 2 * past);
+  out.tail(2 * depth_) = Eigen::Map<const Eigen::VectorXd>(history_.data() + 2 * steps_, 2 * depth_);
 }
 
 Eigen::MatrixXd SdmMonodromy::dense() const {
@@ -59,20 +56,39 @@ Eigen::MatrixXd SdmMonodromy::dense() const {
   return m;
 }
 
-double SdmMonodromy::chatterFrequencyHz(std::complex<double> mu, const Eigen::VectorXcd& v, double period_s) const {
+Eigen::Matrix<std::complex<double>, 2, Eigen::Dynamic> SdmMonodromy::periodSamples(const Eigen::VectorXcd& v) const {
   const int m = steps_;
   const Eigen::Index n = c_.cols();
-  if (std::abs(mu) == 0.0 || v.size() != dimension() || v.tail(2 * m).norm() == 0.0) return 0.0;
-  const Eigen::Index first = n + 2 * back_;  // r_{-m}
+  Eigen::Matrix<std::complex<double>, 2, Eigen::Dynamic> r =
+      Eigen::Matrix<std::complex<double>, 2, Eigen::Dynamic>::Zero(2, m);
+  if (depth_ >= m) {  // r_{-m} .. r_{-1} are stored: p_j below uses t_j = (j - m) T/m
+    for (int j = 0; j < m; ++j) {
+      r(0, j) = v[n + 2 * (depth_ - m + j)];
+      r(1, j) = v[n + 2 * (depth_ - m + j) + 1];
+    }
+    return r;
+  }
+  Eigen::VectorXd image(dimension());
+  for (const bool imaginary : {false, true}) {
+    const Eigen::VectorXd part = imaginary ? Eigen::VectorXd(v.imag()) : Eigen::VectorXd(v.real());
+    apply(part, image);  // fills history_ with r_0 .. r_{m-1}
+    for (int j = 0; j < m; ++j)
+      for (int a = 0; a < 2; ++a)
+        r(a, j) += imaginary ? std::complex<double>(0.0, history_(a, depth_ + j))
+                             : std::complex<double>(history_(a, depth_ + j), 0.0);
+  }
+  return r;
+}
+
+double SdmMonodromy::chatterFrequencyHz(std::complex<double> mu, const Eigen::VectorXcd& v, double period_s) const {
+  const int m = steps_;
+  if (std::abs(mu) == 0.0 || v.size() != dimension() || v.tail(2 * depth_).norm() == 0.0) return 0.0;
   const std::complex<double> log_mu = std::log(mu);
   const double two_pi = 2.0 * std::numbers::pi;
-  // p_j = r_j mu^{-(j-m)/m}: the periodic factor of the Floquet mode at the sample times.
-  Eigen::Matrix<std::complex<double>, 2, Eigen::Dynamic> p(2, m);
-  for (int j = 0; j < m; ++j) {
-    const std::complex<double> scale = std::exp(-log_mu * (static_cast<double>(j - m) / m));
-    p(0, j) = v[first + 2 * j] * scale;
-    p(1, j) = v[first + 2 * j + 1] * scale;
-  }
+  const double first = depth_ >= m ? -m : 0;  // time index of the first sample
+  // p_j = r_j mu^{-t_j/T}: the periodic factor of the Floquet mode at the sample times.
+  Eigen::Matrix<std::complex<double>, 2, Eigen::Dynamic> p = periodSamples(v);
+  for (int j = 0; j < m; ++j) p.col(j) *= std::exp(-log_mu * ((first + j) / m));
   // Dominant harmonic k in [-m/2, m/2) of p (DFT over the m samples).
   int best_k = 0;
   double best_power = -1.0;

@@ -55,6 +55,7 @@ void requireTeeth(const MillingSetup& setup) {
 
 void validate(const MillingSetup& setup, const std::vector<double>& speeds, const SdmOptions& o) {
   requireTeeth(setup);
+  setup.validateGeometry();
   if (o.steps_per_period != kAutoSdmSteps) requireSteps(o.steps_per_period);
   SdmModel::requireDelayOrder(o.delay_order, o.steps_per_period == kAutoSdmSteps ? kMinAutoSteps : o.steps_per_period);
   for (double n : speeds) requireSpeed(n);
@@ -106,7 +107,7 @@ SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_re
   SdmMonodromy map;
   model.build(spindle_rev_per_s, depth_m, model.freeStep(spindle_rev_per_s), map);
   const SdmEigenpair pair = SdmArnoldi().dominant(map);
-  return {pair.value, map.chatterFrequencyHz(pair.value, pair.vector, model.toothPeriodS(spindle_rev_per_s))};
+  return {pair.value, map.chatterFrequencyHz(pair.value, pair.vector, model.principalPeriodS(spindle_rev_per_s))};
 }
 
 double sdmSpectralRadius(const MillingSetup& setup, double spindle_rev_per_s, double depth_m, int steps_per_period,
@@ -135,7 +136,7 @@ LobeDiagram computeSdmLobes(const MillingSetup& setup, const std::vector<double>
     const int m = options.steps_per_period == kAutoSdmSteps ? autoSdmSteps(setup, speed) : options.steps_per_period;
     SdmSolvers& s = solvers[m];
     if (!s.model) {
-      s.model = std::make_unique<SdmModel>(setup, m, options.delay_order);
+      s.model = std::make_unique<SdmModel>(setup, m, options.delay_order, options.helix_slices);
       s.search = std::make_unique<SdmBoundarySearch>(*s.model, options);
       s.search->setColdGuess(cold);
     }

@@ -24,10 +24,16 @@ inline constexpr int kAutoSdmSteps = 0;
 // Degrees of the delayed-state interpolation (sdm_model.h): 1 .. kMaxSdmDelayOrder.
 inline constexpr int kMaxSdmDelayOrder = 3;
 inline constexpr int kDefaultSdmDelayOrder = 3;
+// helix_slices = kExactHelixSlices: the helix lag is integrated over the depth in closed form.
+inline constexpr int kExactHelixSlices = 0;
+inline constexpr int kMaxHelixSlices = 1000;
 
 struct SdmOptions {
-  int steps_per_period = kAutoSdmSteps;     // m: time steps per tooth period (delay), or kAutoSdmSteps
+  int steps_per_period = kAutoSdmSteps;     // m: time steps per (mean) tooth period, or kAutoSdmSteps
   int delay_order = kDefaultSdmDelayOrder;  // p: degree of the delayed-state interpolation (sdm_model.h)
+  // Helical edges: kExactHelixSlices integrates the lag over the depth exactly; n in [1, kMaxHelixSlices]
+  // uses n midpoint slices (their error falls as 1/n^2; tests/stability/test_sdm_cutter_geometry.cpp).
+  int helix_slices = kExactHelixSlices;
   double delta_per_s = 0.0;       // Rule 1.1 margin: stable iff every Floquet multiplier |mu| <= exp(-delta*T)
   double max_depth_m = 0.02;      // envelope entry = +inf (LobeDiagram::kNone) if no instability below this
   double depth_tolerance = 1e-3;  // relative tolerance on b_lim

@@ -39,7 +39,7 @@ class TestAdmissibleGrid : public QObject {
     QCOMPARE(points, g.pointCount());
     QCOMPARE(g.funnel().emptiedBy(), QConstraint::None);
     // at 5800 rpm the power limit b s_t <= 0.1364 mm^2 bounds the feeds
-    const double bs_limit = 745.3 / peakPowerPerDepthFeed(g.setup(), 5800.0 / 60.0);
+    const double bs_limit = 745.3 / (5800.0 / 60.0 * peakPerDepthFeed(g.setup(), 1e-3, 1e-4).power_w_per_rev_per_s);
     QCOMPARE_LE(std::abs(bs_limit * 1e6 - 0.13635), 0.0005);
   }
 
@@ -153,7 +153,7 @@ class TestAdmissibleGrid : public QObject {
     const AdmissibleGrid unlimited(test::rubioR1(), s);
     s.limits.max_tool_force_n = 150.0;
     const AdmissibleGrid g(test::rubioR1(), s);
-    const double k_force = peakForcePerDepthFeed(g.setup());
+    const double k_force = peakPerDepthFeed(g.setup(), 1e-3, 1e-4).force_n;
     int force_bound = 0;
     for (std::size_t i = 0; i < g.cells().size(); ++i) {
       const GridCell& c = g.cells()[i];
@@ -178,6 +178,37 @@ class TestAdmissibleGrid : public QObject {
     QCOMPARE_GE(g.funnel().force_points, g.funnel().admissible_points);
     s.limits.max_tool_force_n = 0.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, AdmissibleGrid(test::rubioR1(), s));
+  }
+
+  // A real cutter (R1 with a 30 deg helix and 6/-4 um runout): each cell's largest feed keeps the exact
+  // peak power and force (evaluateCut) within the limits, and the next feed step breaks one of them or
+  // another limit of Q (violation), so the per-depth coefficients and the runout check lose no point.
+  void realCutterFeedsMeetTheExactLimits() {
+    ExpertSettings s = test::rubioExpertSettings();
+    s.limits.max_tool_force_n = 150.0;
+    MillingSetup tool = test::rubioR1();
+    tool.helix_rad = 30.0 * std::numbers::pi / 180.0;
+    tool.runout_m = {0.0, 6e-6, -4e-6};
+    const AdmissibleGrid g(tool, s);
+    QVERIFY(!g.cells().empty());
+    for (std::size_t i = 0; i < g.cells().size(); ++i) {
+      const GridCell& c = g.cells()[i];
+      const ExpertPoint last = g.point(i, c.feed_count);
+      const CutPerformance perf = evaluateCut(tool, {last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m});
+      QVERIFY(perf.peak_power_w <= c.available_power_w * (1 + 1e-6));
+      QVERIFY(perf.peak_force_n <= 150.0 * (1 + 1e-6));
+      QCOMPARE(g.violation(last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m), QConstraint::None);
+      const double next = last.feed_per_tooth_m + g.feedStep();
+      const CutPerformance np = evaluateCut(tool, {last.speed_rev_per_s, last.depth_m, next});
+      QVERIFY2(g.violation(last.speed_rev_per_s, last.depth_m, next) != QConstraint::None,
+               qPrintable(QString("n %1 b %2 count %3 P %4/%5 F %6")
+                              .arg(last.speed_rev_per_s)
+                              .arg(last.depth_m)
+                              .arg(c.feed_count)
+                              .arg(np.peak_power_w)
+                              .arg(c.available_power_w)
+                              .arg(np.peak_force_n)));
+    }
   }
 
   void invalidCurveIsRefused() {

@@ -40,7 +40,7 @@ class TestPointEvaluator : public QObject {
     const PointEvaluator e(rubioSnapshot(speeds), spindle);
     const QVector<double> line = e.powerLimitMm(0, 0.1);
     QCOMPARE(line.size(), 3);
-    const double k = peakPowerPerDepthFeed(test::rubioR1(), 1.0);
+    const double k = peakPerDepthFeed(test::rubioR1(), 1e-3, 1e-4).power_w_per_rev_per_s;
     QCOMPARE_LE(std::abs(k / 5.655e7 - 1.0), 1e-3);
     QCOMPARE_LE(std::abs(line[0] - 2.0 * std::numbers::pi / (k * 1e-4) * 1e3), 1e-9);
     QCOMPARE_LE(std::abs(line[0] - 1.111), 0.002);
