@@ -6,12 +6,12 @@
 #include <complex>
 #include <numbers>
 #include <optional>
-#include <sstream>
-#include <string_view>
 
 #include "model/cutting_force.h"
 #include "model/vector_state.h"
 #include "stability/lobe_envelope.h"
+#include "stability/zoa_dynamics.h"
+#include "stability/zoa_variable_pitch.h"
 
 namespace mx {
 
@@ -19,97 +19,6 @@ namespace {
 
 using cplx = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
-
-// The dynamics the ZOA sees on one axis: the measured FRF (DynamicsSource::Measured and one present),
-// else the modes (none: rigid).
-struct AxisDynamics {
-  const ModalAxis* modes = nullptr;
-  const MeasuredAxis* measured = nullptr;
-
-  bool rigid() const { return measured == nullptr && modes->empty(); }
-  // A measured FRF is known on the imaginary axis only (delta = 0 is enforced with it).
-  cplx at(cplx s) const { return measured != nullptr ? measured->at(s.imag()) : receptance(*modes, s); }
-  const ModalAxis& usedModes() const {
-    static const ModalAxis kNoModes;
-    return measured != nullptr ? kNoModes : *modes;
-  }
-};
-
-AxisDynamics axisDynamics(const ModalAxis& modes, const std::optional<MeasuredAxis>& measured, DynamicsSource source,
-                          std::string_view name) {
-  if (source != DynamicsSource::Measured || !measured) return {&modes, nullptr};
-  measured->validate(name);
-  return {&modes, &*measured};
-}
-
-// Modal part of the chatter-frequency grid [rad/s]: uniform over [0.3 f_min, 3 f_max] plus a dense band
-// of +-12 zeta around every mode, where the lobe minima lie.
-void appendModalGrid(const std::vector<Mode>& modes, int samples, std::vector<double>& grid) {
-  if (modes.empty()) return;
-  double lo = modes.front().angularFrequency(), hi = lo;
-  for (const Mode& m : modes) {
-    lo = std::min(lo, m.angularFrequency());
-    hi = std::max(hi, m.angularFrequency());
-  }
-  lo *= 0.3;
-  hi *= 3.0;
-  grid.reserve(grid.size() + static_cast<size_t>(samples) + modes.size() * 241);
-  for (int i = 0; i < samples; ++i) grid.push_back(lo + (hi - lo) * i / (samples - 1));
-  for (const Mode& m : modes) {
-    const double band = 12.0 * std::max(m.damping_ratio, 1e-4) * m.angularFrequency();
-    for (int i = -120; i <= 120; ++i) {
-      const double w = m.angularFrequency() + band * i / 120.0;
-      if (w > lo && w < hi) grid.push_back(w);
-    }
-  }
-}
-
-// Measured part [rad/s]: every line above 0 Hz, and where |H_{i+1} - H_i| > 1 % of max|H| (sharp peaks)
-// n = min(subdivisions, ceil(|dH| / (1 % max|H|)) - 1) equally spaced frequencies inside the interval, so
-// that the lobe curves through the interpolated FRF are resolved in speed.
-void appendMeasuredGrid(const MeasuredAxis& axis, int subdivisions, std::vector<double>& grid) {
-  const std::vector<double>& f = axis.frequency_hz;
-  const std::vector<cplx>& h = axis.h_m_per_n;
-  double h_max = 0.0;
-  for (const cplx& v : h) h_max = std::max(h_max, std::abs(v));
-  const double threshold = 0.01 * h_max;
-  for (size_t i = 0; i < f.size(); ++i) {
-    if (f[i] > 0.0) grid.push_back(2.0 * kPi * f[i]);
-    if (i + 1 == f.size() || subdivisions <= 0 || !(threshold > 0.0)) continue;
-    const double ratio = std::abs(h[i + 1] - h[i]) / threshold;
-    if (!(ratio > 1.0)) continue;
-    const int n = static_cast<int>(std::min<double>(subdivisions, std::ceil(ratio) - 1.0));
-    for (int j = 1; j <= n; ++j) grid.push_back(2.0 * kPi * (f[i] + (f[i + 1] - f[i]) * j / (n + 1)));
-  }
-}
-
-std::vector<double> chatterFrequencyGrid(const AxisDynamics& x, const AxisDynamics& y, const ZoaOptions& options) {
-  std::vector<double> grid;
-  std::vector<Mode> modes = x.usedModes();
-  modes.insert(modes.end(), y.usedModes().begin(), y.usedModes().end());
-  appendModalGrid(modes, std::max(options.frequency_samples, 16), grid);
-  for (const AxisDynamics* axis : {&x, &y})
-    if (axis->measured != nullptr) appendMeasuredGrid(*axis->measured, options.measured_subdivisions, grid);
-  std::sort(grid.begin(), grid.end());
-  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
-  return grid;
-}
-
-// Eigenvalues Lambda of det(I + Lambda [alpha][G]) = 0 (Budak & Altintas 1998):
-// a0 Lambda^2 + a1 Lambda + 1 = 0, a0 = Gxx Gyy (axx ayy - axy ayx), a1 = axx Gxx + ayy Gyy.
-int characteristicRoots(const DirectionalFactors& a, cplx gxx, cplx gyy, cplx roots[2]) {
-  const cplx a0 = gxx * gyy * (a.xx * a.yy - a.xy * a.yx);
-  const cplx a1 = a.xx * gxx + a.yy * gyy;
-  if (std::abs(a0) < 1e-12 * std::norm(a1)) {
-    if (std::abs(a1) == 0.0) return 0;
-    roots[0] = -1.0 / a1;
-    return 1;
-  }
-  const cplx disc = std::sqrt(a1 * a1 - 4.0 * a0);
-  roots[0] = -(a1 + disc) / (2.0 * a0);
-  roots[1] = -(a1 - disc) / (2.0 * a0);
-  return 2;
-}
 
 // Boundary point for one eigenvalue and lobe k. With c = -4 pi Lambda / (n_t K_t), the
 // characteristic equation at s = -delta + i w reads e^{delta T} e^{-i w T} = 1 - c u, u = 1/b.
@@ -225,42 +134,21 @@ bool boundaryPoint(cplx c, double w, int k, double delta, double u_floor, double
   return std::isfinite(depth) && period > 0.0;
 }
 
-void validate(const AxisDynamics& x, const AxisDynamics& y, const std::vector<double>& speeds, double delta) {
-  const double limit = smallestDecayRate(x.usedModes(), y.usedModes());
-  if (!(delta >= 0.0) || delta >= limit) {
-    std::ostringstream msg;
-    msg << "delta = " << delta << " 1/s: must be in [0, " << limit
-        << ") (below the smallest modal decay rate zeta*omega_n)";
-    throw InvalidInput(msg.str());
-  }
-  for (double n : speeds)
-    if (!(n > 0.0) || !std::isfinite(n)) throw InvalidInput("spindle speed must be > 0");
-}
-
 }  // namespace
 
 LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>& speeds, const ZoaOptions& options,
                             const JobControl& control) {
+  if (!setup.uniformPitch()) return computeZoaLobesAnyPitch(setup, speeds, options, control);
   clearUpperVectorState();
-  LobeDiagram out;
-  out.delta_per_s = options.delta_per_s;
-  out.speed_rev_per_s = speeds;
-  out.envelope_depth_m.assign(speeds.size(), LobeDiagram::kNone);
-  out.envelope_chatter_hz.assign(speeds.size(), 0.0);
-  if (options.dynamics == DynamicsSource::Measured && options.delta_per_s != 0.0) {
-    std::ostringstream msg;
-    msg << "delta = " << options.delta_per_s
-        << " 1/s: a measured FRF gives G(i omega) only, not G(-delta + i omega), so delta must be 0 with "
-           "measured dynamics (use fitted modes for a margin)";
-    throw InvalidInput(msg.str());
-  }
-  const AxisDynamics x = axisDynamics(setup.modes_x, setup.measured_x, options.dynamics, "measured_x");
-  const AxisDynamics y = axisDynamics(setup.modes_y, setup.measured_y, options.dynamics, "measured_y");
-  if (x.rigid() && y.rigid()) return out;  // rigid tool: no chatter
-  validate(x, y, speeds, options.delta_per_s);
+  setup.validateGeometry();
+  const ZoaDynamics dynamics = zoaDynamics(setup, speeds, options);
+  LobeDiagram out = emptyZoaDiagram(speeds, options.delta_per_s);
+  if (dynamics.rigid()) return out;  // rigid tool: no chatter
+  const ZoaAxisDynamics& x = dynamics.x;
+  const ZoaAxisDynamics& y = dynamics.y;
 
   const DirectionalFactors alpha = averageDirectionalFactors(setup.immersion, setup.radial_ratio);
-  const std::vector<double> omegas = chatterFrequencyGrid(x, y, options);
+  const std::vector<double> omegas = zoaChatterFrequencyGrid(dynamics, options);
   if (omegas.empty()) return out;
   const double min_speed = speeds.empty() ? 1.0 : *std::min_element(speeds.begin(), speeds.end());
   const double max_speed = speeds.empty() ? 1.0 : *std::max_element(speeds.begin(), speeds.end());
@@ -283,7 +171,7 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
   for (size_t i = 0; i < omegas.size(); ++i) {
     const cplx s = shift + cplx{0.0, omegas[i]};
     cplx roots[2];
-    counts[i] = characteristicRoots(alpha, x.at(s), y.at(s), roots);
+    counts[i] = zoaCharacteristicRoots(alpha, x.at(s), y.at(s), roots);
     for (int r = 0; r < counts[i]; ++r) cs[i][static_cast<size_t>(r)] = scale * roots[r];
   }
 
