@@ -27,7 +27,9 @@ struct SimulationChunk {
 struct SimulationOptions {
   int revolutions = 60;            // simulated spindle revolutions (from rest, rigid pre-history)
   int evaluated_revolutions = 20;  // the indicators use the last ones
-  int steps_per_tooth_period = 0;  // m, dt = T/m; 0 = automatic (automaticStepsPerToothPeriod)
+  int steps_per_tooth_period =
+      0;                 // m, dt = T/m (T the mean tooth period); 0 = automatic (automaticStepsPerToothPeriod)
+  int axial_slices = 0;  // slices of a helical cutter; 0 = automatic (simulationAxialSlices)
   SpindleSpeedVariation ssv;
   int record_every = 1;                                  // keep every k-th integration step in the trace
   std::function<void(const SimulationChunk&)> on_chunk;  // optional, called once per revolution
@@ -37,10 +39,12 @@ struct SimulationOptions {
   double initial_x_m = 0.0;
   double initial_y_m = 0.0;
 
-  // Surface memory: h_j = min_{k=1..K} [k s_t sin phi + (x(t) - x(t - kT)) sin phi + (y(t) - y(t - kT)) cos phi].
+  // Surface memory: h_j = min_{k=1..K} [k s_t sin phi + (x(t) - x(t - kT)) sin phi + (y(t) - y(t - kT)) cos phi]
+  // (with variable pitch and runout the delays, feeds and runout terms of cutter_edges.h).
   // K = 1 is eq. 7 as printed; K > 1 also remembers passes where the tooth left the cut (h <= 0), which
   // usually makes chatter saturate at a finite amplitude (not guaranteed for finite K). Identical to
-  // K = 1 while every tooth stays in the cut.
+  // K = 1 while every tooth stays in the cut. With runout larger than the feed a tooth can leave no
+  // chip at all: K >= n_t then gives the surface the next cutting tooth really left.
   int regenerative_passes = 1;
 
   // Eq. 7 is positively homogeneous in (s_t, x, y), so beyond the stability limit the vibration can grow
