@@ -64,11 +64,14 @@ struct SimulationTrace {
 };
 
 struct ChatterIndicators {
-  double eta = 0.0;                    // max|F_dyn| / max|F_static| over the evaluated window (eq. 11); 1 when b = 0
-  double chip_ratio = 0.0;             // max h_dyn / max h_static (Rule 15)
-  bool chatter_by_eta = false;         // eta >= eta_threshold
-  bool chatter_by_chip_ratio = false;  // chip_ratio >= chip_ratio_threshold
-  bool chatter = false;                // either criterion
+  // max|F_dyn| / max|F_static| over the evaluated window (eq. 11); 1 when b = 0. For unequal teeth
+  // (variable pitch, runout) at constant speed the reference is the revolution-synchronous average of
+  // |F_dyn| (WindowRecorder), as is the chip ratio's.
+  double eta = 0.0;
+  double chip_ratio = 0.0;                     // max h_dyn / max h_static (Rule 15)
+  bool chatter_by_eta = false;                 // eta >= eta_threshold
+  bool chatter_by_chip_ratio = false;          // chip_ratio >= chip_ratio_threshold
+  bool chatter = false;                        // either criterion
   std::optional<double> chatter_frequency_hz;  // present only when chatter is detected
   double tooth_passing_hz = 0.0;               // n_t N0
   double peak_force_n = 0.0;                   // max resultant |F| over the window

@@ -184,7 +184,10 @@ void TimeDomainSimulator::integrate(Plans& plans, Delays& delays, const JobContr
 
   const StepSampler sampler(setup_, point_, kinematics, cut, dt_);
   TraceRecorder trace(trace_, options_, total_steps_);
-  WindowRecorder window(options_.revolutions, options_.evaluated_revolutions, steps_per_rev_, dt_);
+  // Unequal teeth repeat the cut once a revolution: eta's reference is then the synchronous average.
+  const bool synchronous_reference = cut.passes.sets > 1 && kinematics.constantSpeed();
+  WindowRecorder window(options_.revolutions, options_.evaluated_revolutions, steps_per_rev_, dt_,
+                        synchronous_reference);
   StepRecorders recorders{sampler, trace, window, control, options_.revolutions};
   const std::int64_t n = stepAll(dynamics, plans, stepper, recorders, control);
 
