@@ -2,6 +2,8 @@
 // (benchmark::Counter::kIsRate), for the 2-mode, 3-tooth tool R1 at the 2006 operating point q*.
 #include <benchmark/benchmark.h>
 
+#include <numbers>
+
 #include "bench_fixtures.h"
 #include "simulation/simulation.h"
 #include "simulation/time_domain_simulator.h"
@@ -60,6 +62,37 @@ void BM_TimeDomainSimulateMilling(benchmark::State& state) {
   reportSteps(state, steps);
 }
 BENCHMARK(BM_TimeDomainSimulateMilling)->Unit(benchmark::kMillisecond);
+
+// A real cutter at a stable point: 4-flute 12 mm end mill (modes 1000 / 1100 Hz), half immersion
+// down-milling, variable pitch (80/100 deg), 30 deg helix, b = 3 mm (lag 16.5 deg: 9 slices by default;
+// the argument overrides the slice count), 10000 rpm.
+void BM_TimeDomainVariablePitchHelix(benchmark::State& state) {
+  mx::MillingSetup setup;
+  setup.teeth = 4;
+  setup.diameter_m = 0.012;
+  setup.tangential_coefficient_pa = 6e8;
+  setup.radial_ratio = 0.3;
+  setup.modes_x = {{1000.0, 0.03, 2.0e7}};
+  setup.modes_y = {{1100.0, 0.03, 2.2e7}};
+  setup.direction = mx::MillingDirection::Down;
+  setup.radial_depth_m = 0.006;
+  setup.immersion = mx::Immersion::fromRadialDepth(setup.radial_depth_m, setup.diameter_m, setup.direction);
+  const double deg = std::numbers::pi / 180.0;
+  setup.pitch_rad = {80 * deg, 100 * deg, 80 * deg, 100 * deg};
+  setup.helix_rad = 30 * deg;
+  const mx::OperatingPoint point{10000.0 / 60.0, 3e-3, 0.05e-3};
+  mx::SimulationOptions options;
+  options.axial_slices = static_cast<int>(state.range(0));
+  double steps = 0.0;
+  for (auto _ : state) {
+    mx::TimeDomainSimulator simulator(setup, point, options);
+    simulator.run();
+    benchmark::DoNotOptimize(simulator.window().max_force_n);
+    steps = static_cast<double>(simulator.totalSteps());
+  }
+  reportSteps(state, steps);
+}
+BENCHMARK(BM_TimeDomainVariablePitchHelix)->Arg(0)->Arg(1)->Arg(32)->Unit(benchmark::kMillisecond);
 
 // The CVODE reference over 20 revolutions (rtol 1e-8), for scale.
 void BM_TimeDomainCvodeReference(benchmark::State& state) {

@@ -8,11 +8,10 @@
 
 namespace mx {
 
-double harmonicBandHz(int harmonic, double tooth_passing_hz, double bin_hz, const SpindleSpeedVariation& ssv) {
-  const double base = std::min(std::max(3.0 * bin_hz, 0.01 * tooth_passing_hz), 0.25 * tooth_passing_hz);
+double harmonicBandHz(int harmonic, double fundamental_hz, double bin_hz, const SpindleSpeedVariation& ssv) {
+  const double base = std::min(std::max(3.0 * bin_hz, 0.01 * fundamental_hz), 0.25 * fundamental_hz);
   const bool modulated = ssv.amplitude_ratio != 0.0 && ssv.frequency_hz > 0.0;
-  return base +
-         (modulated ? std::abs(ssv.amplitude_ratio) * harmonic * tooth_passing_hz + 2.0 * ssv.frequency_hz : 0.0);
+  return base + (modulated ? std::abs(ssv.amplitude_ratio) * harmonic * fundamental_hz + 2.0 * ssv.frequency_hz : 0.0);
 }
 
 ChatterIndicators detectChatter(const WindowSignals& window, const ChatterCriteria& criteria) {
@@ -31,11 +30,12 @@ ChatterIndicators detectChatter(const WindowSignals& window, const ChatterCriter
   const AmplitudeSpectrum force(window.force_n, window.sample_rate_hz);
   const double ftp = out.tooth_passing_hz;
   out.a_toothpass = force.amplitudeNear(ftp);
-  // A peak belongs to the forced response when it lies within the band of its nearest harmonic h f_tp
+  // A peak belongs to the forced response when it lies within the band of its nearest harmonic h f_0
   // (h = 0 is the mean); everything else is self-excited (chatter) content.
+  const double f0 = criteria.forced_at_spindle_harmonics ? criteria.nominal_rev_per_s : ftp;
   auto nearHarmonic = [&](double f) {
-    const int h = static_cast<int>(std::lround(f / ftp));
-    return std::abs(f - h * ftp) <= harmonicBandHz(h, ftp, force.binHz(), criteria.ssv);
+    const int h = static_cast<int>(std::lround(f / f0));
+    return std::abs(f - h * f0) <= harmonicBandHz(h, f0, force.binHz(), criteria.ssv);
   };
   std::optional<AmplitudeSpectrum::Peak> peak;
   if (window.x_m.size() == window.force_n.size() && window.y_m.size() == window.force_n.size()) {

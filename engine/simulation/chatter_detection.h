@@ -3,7 +3,8 @@
 //   eta = max|F_dyn| / max|F_static|            (2006, eq. 11; chatter when eta >= 1.3)
 //   chip_ratio = max h_dyn / max h_static       (Pareto paper, Rule 15; chatter when >= 1.25)
 // and spectra: the resultant force gives A_toothpass and A_chatter; the chatter frequency is the largest
-// peak of the vibration spectrum sqrt(|X(f)|^2 + |Y(f)|^2) outside the tooth-passing harmonic bands.
+// peak of the vibration spectrum sqrt(|X(f)|^2 + |Y(f)|^2) outside the bands of the forced harmonics
+// (of the tooth-passing frequency, or of the spindle frequency for a cutter with unequal teeth).
 // (With teeth leaving the cut, the largest non-harmonic peak of |F| can be an alias f_c +- k f_tp; the
 // structure filters those out of the displacement, so the vibration spectrum picks the physical f_c.)
 #include <vector>
@@ -31,12 +32,15 @@ struct ChatterCriteria {
   int teeth = 1;
   double nominal_rev_per_s = 0.0;
   SpindleSpeedVariation ssv;  // widens the tooth-passing bands by the frequency modulation
+  // Variable pitch or runout: the cut repeats only every revolution, so the forced response has every
+  // spindle harmonic k N; those are forced, not chatter.
+  bool forced_at_spindle_harmonics = false;
 };
 
-// Half-width of the band around the h-th tooth-passing harmonic that is not counted as chatter:
-// min(max(3 bins, 1 % of f_tp), f_tp / 4), plus |a| h f_tp + 2 f_ss under SSV (the swing of a
-// frequency-modulated harmonic).
-double harmonicBandHz(int harmonic, double tooth_passing_hz, double bin_hz, const SpindleSpeedVariation& ssv);
+// Half-width of the band around the h-th harmonic of the forced fundamental f_0 (tooth-passing or
+// spindle frequency) that is not counted as chatter: min(max(3 bins, 1 % of f_0), f_0 / 4), plus
+// |a| h f_0 + 2 f_ss under SSV (the swing of a frequency-modulated harmonic).
+double harmonicBandHz(int harmonic, double fundamental_hz, double bin_hz, const SpindleSpeedVariation& ssv);
 
 ChatterIndicators detectChatter(const WindowSignals& window, const ChatterCriteria& criteria);
 

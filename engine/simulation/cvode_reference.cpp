@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "core/invalid_input.h"
+#include "model/axial_slices.h"
 #include "model/cutting_force.h"
+#include "simulation/cutter_edges.h"
 #include "simulation/cvode_integrator.h"
 #include "simulation/time_domain_simulator.h"
 
@@ -30,8 +32,15 @@ struct ModeCoefficients {
 // The model of eq. 1-7 for CVODE: modal equations, delayed state from the output history.
 class ReferenceModel {
  public:
-  ReferenceModel(const MillingSetup& setup, const OperatingPoint& point, double sample_dt, int passes)
-      : setup_(setup), point_(point), h_(sample_dt), delay_(point.toothPeriodS(setup.teeth)), passes_(passes) {
+  ReferenceModel(const MillingSetup& setup, const OperatingPoint& point, double sample_dt, int passes, int slices)
+      : setup_(setup),
+        point_(point),
+        h_(sample_dt),
+        delay_(point.toothPeriodS(setup.teeth)),
+        edges_(cutterEdges(setup, point.axial_depth_m, slices)),
+        passes_(toothPasses(setup, point.feed_per_tooth_m, passes)),
+        xd_(passes_.feed_m.size()),
+        yd_(passes_.feed_m.size()) {
     for (const Mode& mode : setup.modes_x) add(mode, true);
     for (const Mode& mode : setup.modes_y) add(mode, false);
   }
@@ -55,9 +64,10 @@ class ReferenceModel {
     hvy_.push_back(vy);
   }
 
-  // r(t - kT) by cubic Hermite interpolation of the stored output (zero before t = 0: rigid pre-history).
-  void delayed(double t, int k, double& x, double& y) const {
-    const double td = t - k * delay_;
+  // r(t - p T) (p tooth periods) by cubic Hermite interpolation of the stored output (zero before t = 0:
+  // rigid pre-history).
+  void delayed(double t, double periods, double& x, double& y) const {
+    const double td = t - periods * delay_;
     x = y = 0.0;
     if (td <= 0.0 || hx_.empty()) return;
     const auto last = static_cast<long>(hx_.size()) - 1;
@@ -71,22 +81,24 @@ class ReferenceModel {
     y = h00 * hy_[a] + h10 * h_ * hvy_[a] + h01 * hy_[b] + h11 * h_ * hvy_[b];
   }
 
-  // Summed tooth forces at time t (eq. 2-3, 7; the chip is the minimum over the remembered passes),
-  // straight from mx::toothForce.
+  // Summed edge forces at time t (eq. 2-3, 7 with each tooth's delays, feeds and runout terms of
+  // cutter_edges.h; the chip is the minimum over the remembered passes), straight from mx::toothForce.
   StaticForce force(double t, const double* s) const {
     double x, y, vx, vy;
     axes(s, x, y, vx, vy);
-    double xd[8], yd[8];
-    for (int k = 0; k < passes_; ++k) delayed(t, k + 1, xd[k], yd[k]);
+    for (std::size_t i = 0; i < xd_.size(); ++i) delayed(t, passes_.delay_tooth_periods[i], xd_[i], yd_[i]);
     const double theta = 2.0 * std::numbers::pi * point_.spindle_rev_per_s * t;
     StaticForce total;
-    for (int j = 0; j < setup_.teeth; ++j) {
-      const double phi = theta + j * setup_.toothPitchRad();
+    for (const CutterEdge& edge : edges_) {
+      const double phi = theta + edge.angle_rad;
       const double sn = std::sin(phi), cs = std::cos(phi);
-      double chip = point_.feed_per_tooth_m * sn + (x - xd[0]) * sn + (y - yd[0]) * cs;
-      for (int k = 1; k < passes_; ++k)
-        chip = std::min(chip, (k + 1) * point_.feed_per_tooth_m * sn + (x - xd[k]) * sn + (y - yd[k]) * cs);
-      const ToothForce f = toothForce(setup_, point_.axial_depth_m, phi, chip);
+      const std::size_t first = passes_.index(edge.pass_set, 0);
+      auto chipOfPass = [&](std::size_t i) {
+        return passes_.feed_m[i] * sn + (x - xd_[i]) * sn + (y - yd_[i]) * cs + passes_.runout_m[i];
+      };
+      double chip = chipOfPass(first);
+      for (int k = 1; k < passes_.passes; ++k) chip = std::min(chip, chipOfPass(first + static_cast<std::size_t>(k)));
+      const ToothForce f = toothForce(setup_, point_.axial_depth_m * edge.depth_fraction, phi, chip);
       total.tangential_sum_n += f.tangential_n;
       total.fx_n += f.fx_n;
       total.fy_n += f.fy_n;
@@ -114,7 +126,9 @@ class ReferenceModel {
   OperatingPoint point_;
   double h_;
   double delay_;
-  int passes_;
+  std::vector<CutterEdge> edges_;
+  ToothPasses passes_;
+  mutable std::vector<double> xd_, yd_;  // the delayed positions of each pass (scratch of force())
   std::vector<ModeCoefficients> modes_;
   std::vector<double> hx_, hy_, hvx_, hvy_;
 };
@@ -122,7 +136,8 @@ class ReferenceModel {
 }  // namespace
 
 SimulationTrace simulateMillingCvode(const MillingSetup& setup, const OperatingPoint& point, int revolutions,
-                                     double rtol, int samples_per_tooth_period, int regenerative_passes) {
+                                     double rtol, int samples_per_tooth_period, int regenerative_passes,
+                                     int axial_slices) {
   require(std::isfinite(point.spindle_rev_per_s) && point.spindle_rev_per_s > 0.0, "spindle speed [rev/s]",
           point.spindle_rev_per_s, "(0, inf)");
   require(std::isfinite(point.axial_depth_m) && point.axial_depth_m >= 0.0, "axial depth [m]", point.axial_depth_m,
@@ -134,6 +149,13 @@ SimulationTrace simulateMillingCvode(const MillingSetup& setup, const OperatingP
   require(samples_per_tooth_period == 0 || samples_per_tooth_period >= 4, "samples per tooth period",
           samples_per_tooth_period, "0 (automatic) or [4, inf)");
   require(setup.teeth >= 1, "teeth", setup.teeth, "[1, inf)");
+  setup.validateGeometry();
+  require(axial_slices >= 0 && axial_slices <= kMaxAxialSlices, "axial slices", axial_slices,
+          "0 (automatic) or [1, 720]");
+  // The shortest delay spans >= 4 output samples, so every delayed instant is already stored.
+  require(samples_per_tooth_period == 0 || samples_per_tooth_period >= minimumStepsPerToothPeriod(setup),
+          "samples per tooth period (smallest pitch)", samples_per_tooth_period,
+          "0 (automatic) or >= 4 (2 pi / n_t) / smallest pitch");
   require(regenerative_passes >= 1 && regenerative_passes <= kMaxRegenerativePasses, "regenerative passes",
           regenerative_passes, "[1, 8]");
 
@@ -141,7 +163,8 @@ SimulationTrace simulateMillingCvode(const MillingSetup& setup, const OperatingP
                                              : automaticStepsPerToothPeriod(setup, point.spindle_rev_per_s);
   const double h = point.toothPeriodS(setup.teeth) / m;
   const long samples = static_cast<long>(m) * setup.teeth * revolutions;
-  ReferenceModel model(setup, point, h, regenerative_passes);
+  ReferenceModel model(setup, point, h, regenerative_passes,
+                       simulationAxialSlices(setup, point.axial_depth_m, axial_slices));
   const int n = model.size();
 
   // Absolute tolerances scaled to the static deflection K_t b s_t / k_r (and w_r times it for velocities).

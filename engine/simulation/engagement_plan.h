@@ -1,6 +1,7 @@
 #pragma once
 // Which teeth cut during one integration step, with their per-unit force directions from mx::toothForce
-// (b = 1 m, h = 1 m): F_t = K_t b h, F_x = b h fx_unit, F_y = b h fy_unit (2006, eq. 2-3).
+// (b = 1 m, h = 1 m): F_t = K_t b h, F_x = b h fx_unit, F_y = b h fy_unit (2006, eq. 2-3). A "tooth"
+// here is a CutterEdge: a straight tooth, or one axial slice of a helical one (its share of b).
 //
 // A tooth entering or leaving the immersion switches the force discontinuously (partial immersion has
 // h = s_t sin(phi_st) > 0 at entry), which would cut RK4 down to first order. So every step is split at
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "model/milling_setup.h"
+#include "simulation/cutter_edges.h"
 
 namespace mx {
 
@@ -20,6 +22,8 @@ struct ActiveTooth {
   double cos_phi = 0.0;
   double fx_unit = 0.0;  // [N / m^2]: F_x per unit b h
   double fy_unit = 0.0;
+  double depth_fraction = 1.0;  // the edge's share of b
+  std::size_t pass_set = 0;     // its tooth's passes (ToothPasses)
 };
 
 // One RK4 sub-step [begin, begin + length] (fractions of dt); its three stage points are begin,
@@ -42,7 +46,8 @@ struct StepPlanView {
 // Builds the plan of a step over which the cutter angle rises monotonically from theta(0) to theta(1).
 class EngagementPlanner {
  public:
-  explicit EngagementPlanner(const MillingSetup& setup);
+  explicit EngagementPlanner(const MillingSetup& setup);  // the straight teeth
+  EngagementPlanner(const MillingSetup& setup, std::vector<CutterEdge> edges);
 
   // theta(f): cutter angle at fraction f of the step; fraction(angle): its inverse on [0, 1].
   // Appends the sub-steps to `steps` and their teeth to `pool` (offsets index into pool).
@@ -55,16 +60,19 @@ class EngagementPlanner {
                   std::vector<SubStep>& steps, std::vector<ActiveTooth>& pool);
 
   const MillingSetup& setup_;
-  double pitch_;
+  std::vector<CutterEdge> edges_;
   std::vector<double> angles_;
   std::vector<double> cuts_;
 };
 
-// Constant speed: the plan of step s repeats every tooth period (m steps), so it is tabulated once.
-// Step s covers theta from s dtheta to (s + 1) dtheta with dtheta = pitch / m.
+// Constant speed: the plan of step s repeats every `period_teeth` mean tooth periods (m steps each: one
+// for uniform teeth sharing their passes, n_t otherwise), so it is tabulated once. Step s covers theta
+// from s dtheta to (s + 1) dtheta with dtheta = (2 pi / n_t) / m.
 class EngagementTable {
  public:
-  EngagementTable(const MillingSetup& setup, int steps_per_tooth_period);
+  EngagementTable(const MillingSetup& setup, int steps_per_tooth_period);  // straight teeth, one tooth period
+  EngagementTable(const MillingSetup& setup, std::vector<CutterEdge> edges, int steps_per_tooth_period,
+                  int period_teeth);
   int steps() const { return steps_; }
   StepPlanView step(std::int64_t n) const {
     const auto s = static_cast<std::size_t>(n % steps_);

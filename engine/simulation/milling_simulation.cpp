@@ -4,8 +4,10 @@
 #include <sstream>
 #include <string>
 
+#include "model/axial_slices.h"
 #include "model/vector_state.h"
 #include "simulation/chatter_detection.h"
+#include "simulation/cutter_edges.h"
 #include "simulation/time_domain_simulator.h"
 
 namespace mx {
@@ -67,6 +69,14 @@ void validateSimulationInputs(const MillingSetup& setup, const OperatingPoint& p
           "initial y displacement [m] (y axis rigid if no modes)", options.initial_y_m, "finite; 0 on a rigid axis");
   require(setup.teeth >= 1, "teeth", setup.teeth, "[1, inf)");
   require(std::isfinite(setup.diameter_m) && setup.diameter_m > 0.0, "diameter [m]", setup.diameter_m, "(0, inf)");
+  setup.validateGeometry();
+  require(options.axial_slices >= 0 && options.axial_slices <= kMaxAxialSlices, "axial slices", options.axial_slices,
+          "0 (automatic) or [1, 720]");
+  if (options.steps_per_tooth_period > 0) {
+    const int least = minimumStepsPerToothPeriod(setup);  // the smallest pitch spans >= 4 steps
+    require(options.steps_per_tooth_period >= least, "steps per tooth period (smallest pitch)",
+            options.steps_per_tooth_period, ("0 (automatic) or [" + std::to_string(least) + ", inf)").c_str());
+  }
   require(std::isfinite(setup.tangential_coefficient_pa) && setup.tangential_coefficient_pa >= 0.0,
           "tangential coefficient K_t [Pa]", setup.tangential_coefficient_pa, "[0, inf)");
   require(std::isfinite(setup.radial_ratio), "radial ratio K_r", setup.radial_ratio, "finite");
@@ -94,6 +104,7 @@ SimulationResult simulateMilling(const MillingSetup& setup, const OperatingPoint
   criteria.teeth = setup.teeth;
   criteria.nominal_rev_per_s = point.spindle_rev_per_s;
   criteria.ssv = options.ssv;
+  criteria.forced_at_spindle_harmonics = !teethSharePasses(setup);
 
   SimulationResult result;
   result.indicators = detectChatter(simulator.window(), criteria);

@@ -11,8 +11,9 @@ namespace mx {
 
 // Throws InvalidInput naming the quantity, its value and the allowed range: speed > 0, depth >= 0,
 // feed > 0, revolutions > evaluated_revolutions >= 1, |a| < 1, f_ss >= 0, steps_per_tooth_period = 0 or
-// >= 4, record_every >= 1, teeth >= 1, D > 0, K_t >= 0, modes with f > 0, k > 0, 0 <= zeta < 1,
-// at most 2e9 steps and 2e7 recorded samples.
+// >= 4 (and >= minimumStepsPerToothPeriod), axial_slices in [0, 720], record_every >= 1, teeth >= 1,
+// the cutter geometry (MillingSetup::validateGeometry), D > 0, K_t >= 0, modes with f > 0, k > 0,
+// 0 <= zeta < 1, at most 2e9 steps and 2e7 recorded samples.
 void validateSimulationInputs(const MillingSetup& setup, const OperatingPoint& point, const SimulationOptions& options);
 
 // Polls control.cancelled() once per revolution (throws Cancelled) and reports the fraction done.

@@ -1,41 +1,73 @@
 #pragma once
 // The regenerative chip thickness and the cutting force it produces (2006, eq. 2 and 7), summed over
-// the teeth engaged at one instant. With K remembered passes, for pass k (1-based)
-//   h_k = (k s_t + x(t) - x(t - kT)) sin phi + (y(t) - y(t - kT)) cos phi,  h = min_k h_k  (eq. 7 for K = 1).
+// the edges engaged at one instant. With K remembered passes, for pass k (1-based) of tooth j
+//   h_jk = (s_t n_t A_jk / 2 pi + x(t) - x(t - tau_jk)) sin phi + (y(t) - y(t - tau_jk)) cos phi + rho_j - rho_{j+k},
+//   h = min_k h_jk  (eq. 7 for K = 1, uniform pitch, no runout: A_1 = 2 pi / n_t; see cutter_edges.h).
 #include <algorithm>
-#include <array>
+#include <cstddef>
 #include <span>
+#include <vector>
 
+#include "simulation/cutter_edges.h"
 #include "simulation/engagement_plan.h"
 
 namespace mx {
 
 inline constexpr int kMaxRegenerativePasses = 8;
 
-// The coefficients of sin phi (ax) and cos phi (ay) in h_k, for each remembered pass.
+// The coefficients of sin phi (ax) and cos phi (ay) and the constant (runout) term of h_jk, for each
+// pass set and remembered pass (index ToothPasses::index). `plain`: straight teeth sharing one set of
+// passes without runout, whose chip needs neither the runout term nor the edge's depth share.
 struct Regeneration {
   int passes = 1;
-  std::array<double, kMaxRegenerativePasses> ax{}, ay{};
+  bool plain = true;
+  std::vector<double> ax, ay, offset;
+
+  Regeneration() = default;
+  Regeneration(const ToothPasses& p, bool sliced)
+      : passes(p.passes),
+        plain(p.sets == 1 && !sliced &&
+              std::all_of(p.runout_m.begin(), p.runout_m.end(), [](double r) { return r == 0.0; })),
+        ax(p.feed_m.size()),
+        ay(p.feed_m.size()),
+        offset(p.runout_m) {}
 };
 
-// Summed cutting force of the engaged teeth: F_tj = K_t b h_j for h_j > 0 (eq. 2), else 0.
+// Summed cutting force of the engaged edges: F_tj = K_t b_e h_j for h_j > 0 (eq. 2), else 0.
 struct CutForce {
   double fx = 0.0, fy = 0.0, tangential = 0.0, max_chip = 0.0;
 };
 
-inline CutForce cutForce(std::span<const ActiveTooth> teeth, const Regeneration& r, double depth, double kt) {
+// Inlined into the RK4 stage, the hot loop of the simulation.
+template <bool kPlain>
+[[gnu::always_inline]] inline CutForce cutForceOf(std::span<const ActiveTooth> teeth, const Regeneration& r,
+                                                  double depth, double kt) {
   double sum_h = 0.0, sum_x = 0.0, sum_y = 0.0, max_h = 0.0;
+  const auto passes = static_cast<std::size_t>(r.passes);
+  const double* ax = r.ax.data();
+  const double* ay = r.ay.data();
+  const double* offset = r.offset.data();
   for (const ActiveTooth& tooth : teeth) {
-    double h = r.ax[0] * tooth.sin_phi + r.ay[0] * tooth.cos_phi;
-    for (int k = 1; k < r.passes; ++k) h = std::min(h, r.ax[k] * tooth.sin_phi + r.ay[k] * tooth.cos_phi);
+    const std::size_t first = kPlain ? 0 : tooth.pass_set * passes;
+    auto chip = [&](std::size_t k) {
+      const double h = ax[k] * tooth.sin_phi + ay[k] * tooth.cos_phi;
+      return kPlain ? h : h + offset[k];
+    };
+    double h = chip(first);
+    for (std::size_t k = first + 1; k < first + passes; ++k) h = std::min(h, chip(k));
     if (h > 0.0) {
-      sum_h += h;
-      sum_x += h * tooth.fx_unit;
-      sum_y += h * tooth.fy_unit;
+      const double hb = kPlain ? h : h * tooth.depth_fraction;
+      sum_h += hb;
+      sum_x += hb * tooth.fx_unit;
+      sum_y += hb * tooth.fy_unit;
       max_h = std::max(max_h, h);
     }
   }
   return {depth * sum_x, depth * sum_y, kt * depth * sum_h, max_h};
+}
+
+inline CutForce cutForce(std::span<const ActiveTooth> teeth, const Regeneration& r, double depth, double kt) {
+  return r.plain ? cutForceOf<true>(teeth, r, depth, kt) : cutForceOf<false>(teeth, r, depth, kt);
 }
 
 }  // namespace mx

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "simulation/cutter_edges.h"
 #include "simulation/delay_history.h"
 #include "simulation/delayed_positions.h"
 #include "simulation/engagement_plan.h"
@@ -15,12 +16,14 @@
 
 namespace mx {
 
-// The cut's constants: axial depth b, feed per tooth s_t, K_t (F_t per unit b h), remembered passes K.
+// The cut's constants: axial depth b, feed per tooth s_t, K_t (F_t per unit b h), and each tooth's
+// remembered passes (delays, static feed and runout terms).
 struct CutParameters {
   double depth_m = 0.0;
   double feed_per_tooth_m = 0.0;
   double kt = 0.0;
-  int passes = 1;
+  ToothPasses passes;
+  bool sliced = false;  // helical teeth as axial slices (each edge carries its share of b)
 };
 
 template <class Delays>
@@ -33,9 +36,8 @@ class Rk4Stepper {
         cut_(cut),
         dt_(dt),
         size_(dynamics.stateSize()),
-        scratch_(static_cast<std::size_t>(5 * size_ + 1), 0.0) {
-    regeneration_.passes = cut.passes;
-  }
+        scratch_(static_cast<std::size_t>(5 * size_ + 1), 0.0),
+        regeneration_(cut.passes, cut.sliced) {}
 
   // Appends the positions and velocities of state s to the history (the delayed term's source).
   void pushHistory(const double* s) {
@@ -80,10 +82,10 @@ class Rk4Stepper {
     double x, y;
     dynamics_.axes(s, x, y);
     const PastPositions& past = delays_.at(history_, n, fraction);
-    for (int p = 0; p < cut_.passes; ++p) {
-      const auto P = static_cast<std::size_t>(p);
-      regeneration_.ax[P] = (p + 1) * cut_.feed_per_tooth_m + x - past[P].x;
-      regeneration_.ay[P] = y - past[P].y;
+    const std::vector<double>& feed = cut_.passes.feed_m;
+    for (std::size_t i = 0; i < past.size(); ++i) {
+      regeneration_.ax[i] = feed[i] + x - past[i].x;
+      regeneration_.ay[i] = y - past[i].y;
     }
     const CutForce f = cutForce(teeth, regeneration_, cut_.depth_m, cut_.kt);
     dynamics_.derivative(s, f.fx, f.fy, out);

@@ -42,7 +42,8 @@ void TraceRecorder::finishRevolution(int revolution) {
   chunk_begin_ = trace_.size();
 }
 
-WindowRecorder::WindowRecorder(int revolutions, int evaluated_revolutions, std::int64_t steps_per_revolution, double dt)
+WindowRecorder::WindowRecorder(int revolutions, int evaluated_revolutions, std::int64_t steps_per_revolution, double dt,
+                               bool synchronous_reference)
     : evaluated_revolutions_(evaluated_revolutions),
       steps_per_rev_(steps_per_revolution),
       dt_(dt),
@@ -50,7 +51,9 @@ WindowRecorder::WindowRecorder(int revolutions, int evaluated_revolutions, std::
       ring_size_(steps_per_revolution * evaluated_revolutions),
       ring_force_(static_cast<std::size_t>(ring_size_)),
       ring_x_(ring_force_.size()),
-      ring_y_(ring_force_.size()) {}
+      ring_y_(ring_force_.size()),
+      synchronous_reference_(synchronous_reference),
+      ring_chip_(synchronous_reference ? ring_force_.size() : 0) {}
 
 void WindowRecorder::record(const StepSample& s) {
   RevolutionStats& r = stats_[static_cast<std::size_t>(s.n / steps_per_rev_)];
@@ -63,7 +66,25 @@ void WindowRecorder::record(const StepSample& s) {
   ring_force_[slot] = s.force_n;
   ring_x_[slot] = s.x_m;
   ring_y_[slot] = s.y_m;
+  if (synchronous_reference_) ring_chip_[slot] = s.chip_m;
 }
+
+namespace {
+// The largest value of the average over `revolutions` consecutive revolutions at each step of the
+// revolution, for the samples from step `first` on (ring slots modulo the ring size).
+double largestSynchronousAverage(const std::vector<double>& ring, std::int64_t first, std::int64_t steps_per_rev,
+                                 std::int64_t revolutions) {
+  const auto ring_size = static_cast<std::int64_t>(ring.size());
+  double largest = 0.0;
+  for (std::int64_t p = 0; p < steps_per_rev; ++p) {
+    double sum = 0.0;
+    for (std::int64_t r = 0; r < revolutions; ++r)
+      sum += ring[static_cast<std::size_t>((first + r * steps_per_rev + p) % ring_size)];
+    largest = std::max(largest, sum / static_cast<double>(revolutions));
+  }
+  return largest;
+}
+}  // namespace
 
 WindowSignals WindowRecorder::window(std::int64_t steps, int touched) const {
   const int first_revolution = std::max(0, touched - evaluated_revolutions_);
@@ -84,6 +105,12 @@ WindowSignals WindowRecorder::window(std::int64_t steps, int touched) const {
     w.force_n.push_back(ring_force_[slot]);
     w.x_m.push_back(ring_x_[slot]);
     w.y_m.push_back(ring_y_[slot]);
+  }
+  const std::int64_t first = first_revolution * steps_per_rev_;
+  const std::int64_t complete = (steps - first) / steps_per_rev_;
+  if (synchronous_reference_ && complete >= 2) {
+    w.max_static_force_n = largestSynchronousAverage(ring_force_, first, steps_per_rev_, complete);
+    w.max_static_chip_m = largestSynchronousAverage(ring_chip_, first, steps_per_rev_, complete);
   }
   return w;
 }

@@ -46,9 +46,18 @@ class TraceRecorder {
 
 // Indicator inputs per revolution, and the signals of the last E revolutions in rings, so that a run
 // stopped by divergence is evaluated over the last E revolutions it simulated.
+//
+// `synchronous_reference` (a cutter with unequal teeth at constant speed): the forced vibration of a
+// stable cut repeats only once a revolution and its delays are not that period, so it changes the chip
+// and the rigid tool's force is no longer what a stable cut produces. The reference of eta and of the
+// chip ratio is then the revolution-synchronous average of the simulated |F| and chip over the complete
+// evaluated revolutions (their forced part; non-synchronous chatter averages out), when there are two
+// or more. For uniform teeth at a stable point that average is the rigid tool's force (eq. 7), so the
+// reference stays the rigid tool's there.
 class WindowRecorder {
  public:
-  WindowRecorder(int revolutions, int evaluated_revolutions, std::int64_t steps_per_revolution, double dt);
+  WindowRecorder(int revolutions, int evaluated_revolutions, std::int64_t steps_per_revolution, double dt,
+                 bool synchronous_reference = false);
 
   void record(const StepSample& s);
   // The last E of the `touched` revolutions (those with a sample) after `steps` steps.
@@ -65,6 +74,8 @@ class WindowRecorder {
   std::vector<RevolutionStats> stats_;
   std::int64_t ring_size_;
   std::vector<double> ring_force_, ring_x_, ring_y_;
+  bool synchronous_reference_;
+  std::vector<double> ring_chip_;  // only with the synchronous reference
 };
 
 }  // namespace mx

@@ -27,7 +27,9 @@ struct SimulationChunk {
 struct SimulationOptions {
   int revolutions = 60;            // simulated spindle revolutions (from rest, rigid pre-history)
   int evaluated_revolutions = 20;  // the indicators use the last ones
-  int steps_per_tooth_period = 0;  // m, dt = T/m; 0 = automatic (automaticStepsPerToothPeriod)
+  int steps_per_tooth_period =
+      0;                 // m, dt = T/m (T the mean tooth period); 0 = automatic (automaticStepsPerToothPeriod)
+  int axial_slices = 0;  // slices of a helical cutter; 0 = automatic (simulationAxialSlices)
   SpindleSpeedVariation ssv;
   int record_every = 1;                                  // keep every k-th integration step in the trace
   std::function<void(const SimulationChunk&)> on_chunk;  // optional, called once per revolution
@@ -37,10 +39,12 @@ struct SimulationOptions {
   double initial_x_m = 0.0;
   double initial_y_m = 0.0;
 
-  // Surface memory: h_j = min_{k=1..K} [k s_t sin phi + (x(t) - x(t - kT)) sin phi + (y(t) - y(t - kT)) cos phi].
+  // Surface memory: h_j = min_{k=1..K} [k s_t sin phi + (x(t) - x(t - kT)) sin phi + (y(t) - y(t - kT)) cos phi]
+  // (with variable pitch and runout the delays, feeds and runout terms of cutter_edges.h).
   // K = 1 is eq. 7 as printed; K > 1 also remembers passes where the tooth left the cut (h <= 0), which
   // usually makes chatter saturate at a finite amplitude (not guaranteed for finite K). Identical to
-  // K = 1 while every tooth stays in the cut.
+  // K = 1 while every tooth stays in the cut. With runout larger than the feed a tooth can leave no
+  // chip at all: K >= n_t then gives the surface the next cutting tooth really left.
   int regenerative_passes = 1;
 
   // Eq. 7 is positively homogeneous in (s_t, x, y), so beyond the stability limit the vibration can grow
@@ -60,11 +64,14 @@ struct SimulationTrace {
 };
 
 struct ChatterIndicators {
-  double eta = 0.0;                    // max|F_dyn| / max|F_static| over the evaluated window (eq. 11); 1 when b = 0
-  double chip_ratio = 0.0;             // max h_dyn / max h_static (Rule 15)
-  bool chatter_by_eta = false;         // eta >= eta_threshold
-  bool chatter_by_chip_ratio = false;  // chip_ratio >= chip_ratio_threshold
-  bool chatter = false;                // either criterion
+  // max|F_dyn| / max|F_static| over the evaluated window (eq. 11); 1 when b = 0. For unequal teeth
+  // (variable pitch, runout) at constant speed the reference is the revolution-synchronous average of
+  // |F_dyn| (WindowRecorder), as is the chip ratio's.
+  double eta = 0.0;
+  double chip_ratio = 0.0;                     // max h_dyn / max h_static (Rule 15)
+  bool chatter_by_eta = false;                 // eta >= eta_threshold
+  bool chatter_by_chip_ratio = false;          // chip_ratio >= chip_ratio_threshold
+  bool chatter = false;                        // either criterion
   std::optional<double> chatter_frequency_hz;  // present only when chatter is detected
   double tooth_passing_hz = 0.0;               // n_t N0
   double peak_force_n = 0.0;                   // max resultant |F| over the window

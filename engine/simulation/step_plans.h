@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "model/milling_setup.h"
@@ -12,10 +13,11 @@
 
 namespace mx {
 
-// Constant speed: step n uses the tabulated plan of step n mod m.
+// Constant speed: step n uses the tabulated plan of step n mod (m period_teeth).
 class TabulatedPlans {
  public:
-  TabulatedPlans(const MillingSetup& setup, int steps_per_tooth) : table_(setup, steps_per_tooth) {}
+  TabulatedPlans(const MillingSetup& setup, std::vector<CutterEdge> edges, int steps_per_tooth, int period_teeth)
+      : table_(setup, std::move(edges), steps_per_tooth, period_teeth) {}
   StepPlanView at(std::int64_t n) { return table_.step(n); }
 
  private:
@@ -25,8 +27,9 @@ class TabulatedPlans {
 // Any speed law: the plan of step n from theta(t), event instants by safeguarded Newton on theta(t) = angle.
 class KinematicPlans {
  public:
-  KinematicPlans(const MillingSetup& setup, const SpindleKinematics& kinematics, double dt)
-      : planner_(setup), kinematics_(kinematics), dt_(dt) {}
+  KinematicPlans(const MillingSetup& setup, std::vector<CutterEdge> edges, const SpindleKinematics& kinematics,
+                 double dt)
+      : planner_(setup, std::move(edges)), kinematics_(kinematics), dt_(dt) {}
   StepPlanView at(std::int64_t n) {
     const double t0 = static_cast<double>(n) * dt_;
     auto theta = [&](double f) { return kinematics_.angleRad(t0 + f * dt_); };

@@ -25,17 +25,26 @@ constexpr double kStepsPerVibrationPeriod = 40.0;
 constexpr int kMaxTabulatedSteps = 1 << 18;
 
 // K_t via the force model: F_t per unit b h, at mid-immersion.
-CutParameters cutParameters(const MillingSetup& setup, const OperatingPoint& point, int passes) {
+CutParameters cutParameters(const MillingSetup& setup, const OperatingPoint& point, int passes, int slices) {
   CutParameters cut;
   cut.depth_m = point.axial_depth_m;
   cut.feed_per_tooth_m = point.feed_per_tooth_m;
   cut.kt = toothForce(setup, 1.0, 0.5 * (setup.immersion.entry_rad + setup.immersion.exit_rad), 1.0).tangential_n;
-  cut.passes = passes;
+  cut.passes = toothPasses(setup, point.feed_per_tooth_m, passes);
+  cut.sliced = slices > 1;
   return cut;
 }
 
+// The rigid tool's chip coefficients: the static feed and runout terms alone (cutter_edges.h).
+Regeneration rigidTool(const MillingSetup& setup, const CutParameters& cut) {
+  const ToothPasses passes = rigidToolPasses(setup, cut.feed_per_tooth_m);
+  Regeneration rigid(passes, cut.sliced);
+  rigid.ax = passes.feed_m;
+  return rigid;
+}
+
 // Turns the state at t_n and its stage-1 force into the sample the recorders keep, adding the power
-// and the rigid tool's force over the same teeth (h = s_t sin phi: the static reference).
+// and the rigid tool's force over the same edges (the static reference; h = s_t sin phi for uniform teeth).
 class StepSampler {
  public:
   StepSampler(const MillingSetup& setup, const OperatingPoint& point, const SpindleKinematics& kinematics,
@@ -46,9 +55,8 @@ class StepSampler {
         circumference_(std::numbers::pi * setup.diameter_m),  // v = pi D N
         depth_(cut.depth_m),
         kt_(cut.kt),
-        dt_(dt) {
-    rigid_.ax[0] = cut.feed_per_tooth_m;
-  }
+        dt_(dt),
+        rigid_(rigidTool(setup, cut)) {}
 
   StepSample at(std::int64_t n, double x, double y, const CutForce& c, std::span<const ActiveTooth> teeth) const {
     StepSample s;
@@ -74,7 +82,7 @@ class StepSampler {
   bool constant_speed_;
   double circumference_;
   double depth_, kt_, dt_;
-  Regeneration rigid_;  // the rigid tool: h = s_t sin phi
+  Regeneration rigid_;
 };
 
 // The recorders of one run; a finished revolution also reports the progress.
@@ -104,7 +112,22 @@ int automaticStepsPerToothPeriod(const MillingSetup& setup, double spindle_rev_p
   for (const Mode& mode : setup.modes_y) highest_hz = std::max(highest_hz, mode.natural_frequency_hz);
   const double tooth_period = 1.0 / (spindle_rev_per_s * setup.teeth);
   const double needed = std::ceil(kStepsPerVibrationPeriod * highest_hz * tooth_period - 1e-9);
-  return std::max(kMinStepsPerToothPeriod, static_cast<int>(std::min(needed, 1e9)));
+  return std::max(
+      {kMinStepsPerToothPeriod, static_cast<int>(std::min(needed, 1e9)), minimumStepsPerToothPeriod(setup)});
+}
+
+int minimumStepsPerToothPeriod(const MillingSetup& setup) {
+  double smallest = setup.toothPitchRad();
+  for (int j = 0; j < setup.teeth; ++j) smallest = std::min(smallest, setup.pitchRad(j));
+  return static_cast<int>(std::ceil(kMinDelaySteps * setup.toothPitchRad() / smallest - 1e-9));
+}
+
+int simulationAxialSlices(const MillingSetup& setup, double depth_m, int requested) {
+  if (requested > 0) return requested;
+  const double lag = std::abs(setup.helixLagRad(depth_m));
+  if (!(lag > 0.0)) return 1;
+  return static_cast<int>(
+      std::clamp(std::ceil(lag / kSimulationSliceLagRad - 1e-9), 1.0, double(kMaxSimulationSlices)));
 }
 
 TimeDomainSimulator::TimeDomainSimulator(const MillingSetup& setup, const OperatingPoint& point,
@@ -115,24 +138,31 @@ TimeDomainSimulator::TimeDomainSimulator(const MillingSetup& setup, const Operat
   dt_ = point.toothPeriodS(setup.teeth) / steps_per_tooth_;
   steps_per_rev_ = static_cast<std::int64_t>(steps_per_tooth_) * setup.teeth;
   total_steps_ = steps_per_rev_ * options.revolutions;
+  axial_slices_ = simulationAxialSlices(setup, point.axial_depth_m, options.axial_slices);
+  edges_ = cutterEdges(setup, point.axial_depth_m, axial_slices_);
 }
 
 void TimeDomainSimulator::run(const JobControl& control, Kernel kernel) {
   const SpindleKinematics kinematics(point_.spindle_rev_per_s, options_.ssv, setup_.teeth);
-  // The tabulated plans cost memory per step of a tooth period: beyond kMaxTabulatedSteps (very low
-  // speeds) the general kernel, identical at a = 0 up to roundoff, plans each step on the fly.
+  const ToothPasses passes = toothPasses(setup_, point_.feed_per_tooth_m, options_.regenerative_passes);
+  // The plan repeats every tooth period when the teeth share their passes, else every revolution.
+  const int period_teeth = passes.sets == 1 ? 1 : setup_.teeth;
+  // The tabulated plans cost memory per step of their period and per slice: beyond kMaxTabulatedSteps
+  // step-slices per tooth (very low speeds) the general kernel, identical at a = 0 up to roundoff, plans
+  // each step on the fly.
+  const double tabulated = double(steps_per_tooth_) * period_teeth * axial_slices_;
   if (kernel == Kernel::Automatic)
-    kernel = kinematics.constantSpeed() && steps_per_tooth_ <= kMaxTabulatedSteps ? Kernel::ConstantSpeed
-                                                                                  : Kernel::VariableSpeed;
+    kernel =
+        kinematics.constantSpeed() && tabulated <= kMaxTabulatedSteps ? Kernel::ConstantSpeed : Kernel::VariableSpeed;
   if (kernel == Kernel::ConstantSpeed) {
     if (!kinematics.constantSpeed())
       throw std::logic_error("TimeDomainSimulator: the constant-speed kernel needs a = 0 or f = 0");
-    TabulatedPlans plans(setup_, steps_per_tooth_);
-    FixedDelay delays(steps_per_tooth_, options_.regenerative_passes);
+    TabulatedPlans plans(setup_, edges_, steps_per_tooth_, period_teeth);
+    FixedDelay delays(passes, steps_per_tooth_);
     integrate(plans, delays, control);
   } else {
-    KinematicPlans plans(setup_, kinematics, dt_);
-    VariableDelay delays(kinematics, dt_, options_.regenerative_passes);
+    KinematicPlans plans(setup_, edges_, kinematics, dt_);
+    VariableDelay delays(kinematics, dt_, passes);
     integrate(plans, delays, control);
   }
 }
@@ -145,15 +175,19 @@ template <class Plans, class Delays>
 void TimeDomainSimulator::integrate(Plans& plans, Delays& delays, const JobControl& control) {
   const ModalDynamics dynamics(setup_);
   const SpindleKinematics kinematics(point_.spindle_rev_per_s, options_.ssv, setup_.teeth);
-  const CutParameters cut = cutParameters(setup_, point_, options_.regenerative_passes);
-  const auto lookback = static_cast<std::int64_t>(std::ceil(cut.passes * kinematics.maxToothDelayS() / dt_)) + 2;
+  const CutParameters cut = cutParameters(setup_, point_, options_.regenerative_passes, axial_slices_);
+  const auto lookback =
+      static_cast<std::int64_t>(std::ceil(cut.passes.maxDelayToothPeriods() * kinematics.maxToothDelayS() / dt_)) + 2;
   DelayHistory history(dt_, lookback);
   state_ = dynamics.initialState(options_.initial_x_m, options_.initial_y_m);
   Rk4Stepper<Delays> stepper(dynamics, history, delays, cut, dt_);
 
   const StepSampler sampler(setup_, point_, kinematics, cut, dt_);
   TraceRecorder trace(trace_, options_, total_steps_);
-  WindowRecorder window(options_.revolutions, options_.evaluated_revolutions, steps_per_rev_, dt_);
+  // Unequal teeth repeat the cut once a revolution: eta's reference is then the synchronous average.
+  const bool synchronous_reference = cut.passes.sets > 1 && kinematics.constantSpeed();
+  WindowRecorder window(options_.revolutions, options_.evaluated_revolutions, steps_per_rev_, dt_,
+                        synchronous_reference);
   StepRecorders recorders{sampler, trace, window, control, options_.revolutions};
   const std::int64_t n = stepAll(dynamics, plans, stepper, recorders, control);
 

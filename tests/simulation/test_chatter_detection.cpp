@@ -167,6 +167,21 @@ class TestChatterDetection : public QObject {
     QCOMPARE(harmonicBandHz(2, 300.0, 1.0, {0.1, 5.0}), 3.0 + 60.0 + 10.0);  // SSV swing
     QCOMPARE(harmonicBandHz(2, 300.0, 1.0, {0.1, 0.0}), 3.0);                // f = 0: no modulation
   }
+
+  // Variable pitch or runout: the cut repeats once a revolution, so a spindle harmonic (500 Hz = 5 N,
+  // not a tooth-passing multiple) is forced vibration; the chatter is the 650 Hz peak between them.
+  void spindleHarmonicsForcedForUnequalTeeth() {
+    WindowSignals w = syntheticWindow(1.0);
+    for (std::size_t i = 0; i < w.x_m.size(); ++i)
+      w.x_m[i] += 3e-5 * std::sin(2.0 * std::numbers::pi * 500.0 * static_cast<double>(i) / w.sample_rate_hz);
+    ChatterCriteria c = criteria300();
+    QVERIFY(std::abs(detectChatter(w, c).largest_nonharmonic_hz - 500.0) < 1e-3);
+    c.forced_at_spindle_harmonics = true;
+    const ChatterIndicators ind = detectChatter(w, c);
+    QVERIFY(std::abs(ind.largest_nonharmonic_hz - 650.0) < 1e-3);
+    QCOMPARE(ind.tooth_passing_hz, 300.0);
+    QCOMPARE(harmonicBandHz(5, 100.0, 1.0, {}), 3.0);  // 3 bins around 5 N
+  }
 };
 
 MX_REGISTER_TEST(TestChatterDetection)

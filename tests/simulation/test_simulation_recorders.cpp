@@ -104,6 +104,21 @@ class TestSimulationRecorders : public QObject {
     QCOMPARE(w.max_force_n, 13.0);
     QCOMPARE(w.peak_power_w, 92.0);
   }
+
+  // Unequal teeth: the reference is the revolution-synchronous average over the complete evaluated
+  // revolutions. Revolutions 3 and 4 (steps 12 .. 19): force 12 .. 15 and 16 .. 19 average to 14 .. 17;
+  // chips n / 8 to 14 / 8 .. 17 / 8. A window of one complete revolution keeps the rigid reference.
+  void synchronousReference() {
+    WindowRecorder recorder(5, 2, 4, 0.5, true);
+    for (std::int64_t n = 0; n < 20; ++n) recorder.record(sampleAt(n));
+    const WindowSignals w = recorder.window(20, 5);
+    QCOMPARE(w.max_force_n, 19.0);
+    QCOMPARE(w.max_static_force_n, 17.0);
+    QCOMPARE(w.max_static_chip_m, 17.0 / 8.0);
+    WindowRecorder short_run(5, 1, 4, 0.5, true);
+    for (std::int64_t n = 0; n < 20; ++n) short_run.record(sampleAt(n));
+    QCOMPARE(short_run.window(20, 5).max_static_force_n, 1.0);
+  }
 };
 
 MX_REGISTER_TEST(TestSimulationRecorders)
