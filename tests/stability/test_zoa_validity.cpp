@@ -101,6 +101,10 @@ class TestZoaValidity : public QObject {
     v.pitch_rad = {70 * kDeg, 110 * kDeg, 70 * kDeg, 110 * kDeg};
     QCOMPARE_LE(std::abs(zoaValidity(v).min_radial_immersion - 0.5 * (1.0 - std::cos(110 * kDeg))), 1e-12);
     QVERIFY(!zoaValidity(v).accurate);  // 0.6 < 0.671
+    v = r1(4, 1.0, MillingDirection::Up);
+    v.pitch_rad = {70 * kDeg, 110 * kDeg, 70 * kDeg, 110 * kDeg};
+    QVERIFY(!zoaValidity(v).accurate);  // continuous, but the pitch's lobes need the SDM
+    QVERIFY(zoaValidity(v).reason.find("variable pitch") != std::string::npos);
     v = r1(2, 1.0, MillingDirection::Up);
     v.pitch_rad = {170 * kDeg, 190 * kDeg};
     QVERIFY(!zoaValidity(v).accurate);
