@@ -1,5 +1,6 @@
 // millexpert-cli simulate PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH
 //                     [--revolutions N] [--csv FILE] [--ssv-amplitude A --ssv-frequency HZ]
+//                     [--passes K] [--axial-slices N]
 // Time-domain simulation (Rubio et al. 2006 eq. 1-7, RK4) with the chatter indicators (eq. 11,
 // Pareto Rule 15) and the Smith-Tlusty suggested speed (Rule 16).
 #include <QSaveFile>
@@ -11,6 +12,8 @@
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
+#include "model/axial_slices.h"
+#include "services/cutter_json.h"
 #include "simulation/simulation.h"
 #include "simulation/time_domain_simulator.h"
 
@@ -40,6 +43,8 @@ int runSimulateCommand(const QStringList& arguments) {
       {"ssv-amplitude", "Spindle speed variation amplitude ratio a (eq. 12), default 0.", "A"},
       {"ssv-frequency", "Spindle speed variation frequency [Hz] (eq. 12).", "HZ"},
       {"passes", "Regenerative passes remembered by the chip model (1 = seed eq. 7, default).", "K"},
+      {"axial-slices", "Axial slices of a helical cutter, 1-720 (default: 2 deg of helix lag per slice, at most 90).",
+       "N"},
   });
   const QString path = parseSubcommand(parser, arguments);
   const CutPointFlags cut = readCutPoint(parser);
@@ -50,6 +55,7 @@ int runSimulateCommand(const QStringList& arguments) {
   options.ssv.amplitude_ratio = numberOption(parser, "ssv-amplitude", 0.0, 0.9).value_or(0.0);
   options.ssv.frequency_hz = numberOption(parser, "ssv-frequency", 0.0, 1e5).value_or(0.0);
   options.regenerative_passes = integerOption(parser, "passes", 1, kMaxRegenerativePasses).value_or(1);
+  options.axial_slices = integerOption(parser, "axial-slices", 1, kMaxAxialSlices).value_or(0);
 
   const Project project = loadProject(path);
   requireFittedModes(requireTool(project, tool), "the time-domain simulation");
@@ -83,7 +89,9 @@ int runSimulateCommand(const QStringList& arguments) {
       {"chip_ratio_chatter", ind.chatter_by_chip_ratio},
       {"steps_per_tooth_period", result.steps_per_tooth_period},
       {"diverged", result.diverged},
-      {"simulated_revolutions", result.simulated_revolutions}};
+      {"simulated_revolutions", result.simulated_revolutions},
+      {"axial_slices", simulationAxialSlices(setup, point.axial_depth_m, options.axial_slices)},
+      {"cutter", cutterJson(setup)}};
   if (project.machine)  // of P_av at the speed (torque-limited below the base speed)
     out.insert("power_fraction", ind.peak_power_w / availablePowerW(project.machine, speed_rpm));
   printJson(out);
