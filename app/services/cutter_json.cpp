@@ -8,7 +8,9 @@ namespace mx::app {
 QJsonObject cutterJson(const MillingSetup& setup) {
   constexpr double kDegPerRad = 180.0 / std::numbers::pi;
   QJsonArray pitch;
-  for (int j = 0; j < setup.teeth; ++j) pitch.append(setup.pitchRad(j) * kDegPerRad);
+  for (int j = 0; j < setup.teeth; ++j)  // the uniform pitch exactly, not through radians
+    pitch.append(setup.pitch_rad.empty() ? 360.0 / setup.teeth
+                                         : setup.pitch_rad[static_cast<std::size_t>(j)] * kDegPerRad);
   const bool uniform = setup.uniformPitch();
   QJsonObject out{{"teeth", setup.teeth},
                   {"pitch", uniform ? "uniform" : "variable"},
