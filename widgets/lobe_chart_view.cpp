@@ -126,7 +126,7 @@ void LobeChartView::clear() {
   costs_->clear();
   plot_->clearGraphs();
   unstable_top_ = unstable_fill_ = admissible_fill_ = power_graph_ = nullptr;
-  plot_->replot(QCustomPlot::rpQueuedReplot);
+  setModelLabel({});  // replots
 }
 
 QVector<double> LobeChartView::scaled(const QVector<double>& mm) const {
