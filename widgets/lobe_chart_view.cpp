@@ -42,6 +42,7 @@ LobeChartView::LobeChartView(QWidget* parent)
   plot_->setFocusPolicy(Qt::NoFocus);
   plot_->xAxis->setLabel("Spindle speed N [rpm]");
   plot_->yAxis->setLabel("Axial depth of cut b [mm]");
+  title_ = new QCPTextElement(plot_, QString(), QFont(font().family(), 10, QFont::Bold));
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setBrush(QColor(255, 255, 255, 220));
@@ -101,6 +102,23 @@ QWidget* LobeChartView::plotWidget() const {
   return plot_;
 }
 
+void LobeChartView::setModelLabel(const QString& text) {
+  const bool shown = plot_->plotLayout()->hasElement(0, 0) && plot_->plotLayout()->element(0, 0) == title_;
+  if (text.isEmpty() && shown) {
+    plot_->plotLayout()->take(title_);
+    plot_->plotLayout()->simplify();
+  } else if (!text.isEmpty() && !shown) {
+    plot_->plotLayout()->insertRow(0);
+    plot_->plotLayout()->addElement(0, 0, title_);
+  }
+  title_->setText(text);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString LobeChartView::modelLabel() const {
+  return title_->text();
+}
+
 void LobeChartView::clear() {
   series_.clear();
   tool_graphs_.clear();
@@ -108,7 +126,7 @@ void LobeChartView::clear() {
   costs_->clear();
   plot_->clearGraphs();
   unstable_top_ = unstable_fill_ = admissible_fill_ = power_graph_ = nullptr;
-  plot_->replot(QCustomPlot::rpQueuedReplot);
+  setModelLabel({});  // replots
 }
 
 QVector<double> LobeChartView::scaled(const QVector<double>& mm) const {

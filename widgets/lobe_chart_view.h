@@ -17,6 +17,7 @@ class QCustomPlot;
 class QCPGraph;
 class QCPItemTracer;
 class QCPItemText;
+class QCPTextElement;
 class QCPAbstractItem;
 class QMouseEvent;
 
@@ -44,7 +45,10 @@ class LobeChartView : public QWidget {
   ~LobeChartView() override;
 
   void setSeries(const QVector<ToolLobeSeries>& series, double delta_per_s, double alpha);
-  void setActiveTool(int index);                              // whose unstable region is shaded; -1 = none
+  void setActiveTool(int index);  // whose unstable region is shaded; -1 = none
+  // The title above the plot: the stability model of the active tool (modelLabel); "" hides it.
+  void setModelLabel(const QString& text);
+  QString modelLabel() const;
   void setToolVisible(const QString& tool_id, bool visible);  // hide or show a tool's lobes
   bool isToolVisible(const QString& tool_id) const { return !hidden_.contains(tool_id); }
   // Depth [mm] where peak power reaches the spindle limit, on the active tool's speeds; empty = none.
@@ -102,6 +106,7 @@ class LobeChartView : public QWidget {
   QCPGraph* power_graph_ = nullptr;
   QCPItemTracer* marker_ = nullptr;
   QCPItemText* marker_label_ = nullptr;
+  QCPTextElement* title_ = nullptr;
   QVector<std::pair<QString, QCPAbstractItem*>> extra_markers_;  // (group, tracer or label) of q*, q**
   QVector<ToolLobeSeries> series_;
   QVector<QVector<QCPGraph*>> tool_graphs_;  // nominal, margined (, measured FRF) per series

@@ -6,10 +6,13 @@
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <QSet>
+#include <algorithm>
 
 #include "document/json_format.h"
 #include "document/project_rules.h"
 #include "document/project_validation.h"
+#include "document/tool_geometry.h"
+#include "tooth_list_text.h"
 
 namespace mx::widgets {
 
@@ -22,6 +25,8 @@ enum Col {
   kTeeth,
   kDiameter,
   kHelix,
+  kPitch,
+  kRunout,
   kKt,
   kKr,
   kRadial,
@@ -35,7 +40,7 @@ enum Col {
 
 // Columns a header may leave out (a library written before they existed); their cells read as blank.
 bool optionalColumn(int col) {
-  return col == kMaxForce;
+  return col == kMaxForce || col == kPitch || col == kRunout;
 }
 
 // Splits one CSV line (RFC 4180 quoting, no line breaks inside a field). Cells are trimmed unless quoted.
@@ -131,6 +136,7 @@ class CsvReader {
           !optional(kMaxForce, rules::kToolForceN, tool.max_force_N))
         return false;
       tool.teeth = static_cast<int>(teeth);
+      if (!toothList(kPitch, tool.pitch_deg) || !toothList(kRunout, tool.runout_um) || !geometry(tool)) return false;
       firstLine_.insert(id, line);
       out.tools.push_back(tool);
       out.lines.push_back(line);
@@ -171,8 +177,39 @@ class CsvReader {
     value = v;
     return true;
   }
+  // A ';'-separated list of numbers; a blank cell is no list (uniform pitch, no runout).
+  bool toothList(int col, std::optional<std::vector<double>>& values) {
+    if (cell(col).isEmpty()) return true;
+    const ToothListParse parsed = parseToothList(cell(col));
+    if (!parsed.ok())
+      return bad(col, QString("value %1 ('%2') is not a number (numbers separated by ';', one per tooth)")
+                          .arg(parsed.bad_item + 1)
+                          .arg(parsed.bad_text));
+    values = parsed.values;
+    return true;
+  }
+  // The per-tooth lists against the tool's teeth and diameter; values are counted from 1.
+  bool geometry(const app::ToolSpec& t) {
+    const auto check = [&](int col, const app::ToothListIssue& issue, const std::vector<double>& values) {
+      if (issue.ok()) return true;
+      if (issue.index < 0) return bad(col, issue.rule);
+      return bad(col, QString("value %1 (%2) %3")
+                          .arg(issue.index + 1)
+                          .arg(app::formatNumber(values[std::size_t(issue.index)]), issue.rule));
+    };
+    return (!t.pitch_deg || check(kPitch, app::pitchIssue(*t.pitch_deg, t.teeth), *t.pitch_deg)) &&
+           (!t.runout_um || check(kRunout, app::runoutIssue(*t.runout_um, t.teeth, t.diameter_mm), *t.runout_um));
+  }
   // A continuation row leaves the tool fields blank or repeats them exactly.
   bool sameAsFirst(const app::ToolSpec& t) {
+    for (const auto& [col, first] : {std::pair{kPitch, t.pitch_deg}, {kRunout, t.runout_um}}) {
+      if (cell(col).isEmpty()) continue;
+      const ToothListParse parsed = parseToothList(cell(col));
+      if (!parsed.ok() || !first || parsed.values != *first)
+        return bad(col, QString("differs from the tool's first row (line %1, '%2'); leave it blank or repeat it")
+                            .arg(firstLine_.value(t.id))
+                            .arg(first ? toothListText(*first) : QString()));
+    }
     const std::pair<int, std::optional<double>> fields[] = {
         {kTeeth, double(t.teeth)},    {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg}, {kKt, t.Kt_N_mm2}, {kKr, t.Kr},
         {kRadial, t.radial_depth_mm}, {kMaxForce, t.max_force_N}};
@@ -215,25 +252,29 @@ class CsvReader {
 }  // namespace
 
 const QStringList& ToolLibraryCsv::columns() {
-  static const QStringList kColumns{"tool_id",  "teeth",   "diameter_mm",     "helix_deg",
-                                    "Kt_N_mm2", "Kr",      "radial_depth_mm", "max_force_N",
-                                    "axis",     "freq_Hz", "damping_pct",     "stiffness_N_per_um"};
+  static const QStringList kColumns{"tool_id",   "teeth",    "diameter_mm", "helix_deg",         "pitch_deg",
+                                    "runout_um", "Kt_N_mm2", "Kr",          "radial_depth_mm",   "max_force_N",
+                                    "axis",      "freq_Hz",  "damping_pct", "stiffness_N_per_um"};
   return kColumns;
 }
 
+// The pitch and runout columns are written when some tool has that list.
 QByteArray ToolLibraryCsv::toCsv(const std::vector<app::ToolSpec>& tools) {
   const auto opt = [](const std::optional<double>& v) { return v ? app::formatNumber(*v) : QString(); };
-  QStringList lines{columns().join(',')};
+  const auto list = [](const std::optional<std::vector<double>>& v) { return v ? toothListText(*v) : QString(); };
+  const bool pitch = std::any_of(tools.begin(), tools.end(), [](const app::ToolSpec& t) { return t.pitch_deg; });
+  const bool runout = std::any_of(tools.begin(), tools.end(), [](const app::ToolSpec& t) { return t.runout_um; });
+  QStringList header = columns();
+  if (!runout) header.removeAt(kRunout);
+  if (!pitch) header.removeAt(kPitch);
+  QStringList lines{header.join(',')};
   for (const app::ToolSpec& t : tools) {
-    const QString head = QStringList{quoteCsv(t.id),
-                                     QString::number(t.teeth),
-                                     app::formatNumber(t.diameter_mm),
-                                     app::formatNumber(t.helix_deg),
-                                     opt(t.Kt_N_mm2),
-                                     opt(t.Kr),
-                                     opt(t.radial_depth_mm),
-                                     opt(t.max_force_N)}
-                             .join(',');
+    QStringList fields{quoteCsv(t.id), QString::number(t.teeth), app::formatNumber(t.diameter_mm),
+                       app::formatNumber(t.helix_deg)};
+    if (pitch) fields << list(t.pitch_deg);
+    if (runout) fields << list(t.runout_um);
+    fields << opt(t.Kt_N_mm2) << opt(t.Kr) << opt(t.radial_depth_mm) << opt(t.max_force_N);
+    const QString head = fields.join(',');
     const auto mode = [&](const char* axis, const app::ModeSpec& m) {
       lines << QStringList{head, axis, app::formatNumber(m.freq_Hz), app::formatNumber(m.damping_pct),
                            app::formatNumber(m.stiffness_N_per_um)}

@@ -8,6 +8,7 @@
 #include <QItemSelectionModel>
 #include <QJsonArray>
 #include <QMessageBox>
+#include <QScrollBar>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -47,6 +48,7 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
       modesX_(new ModeTableModel(Axis::X, this)),
       modesY_(new ModeTableModel(Axis::Y, this)),
       toolView_(new QTableView(this)),
+      picture_(new ToolPictureWidget(this)),
       toolError_(errorLabel(this)),
       modeError_(errorLabel(this)),
       modeBox_(new QGroupBox(tr("Modes"), this)) {
@@ -79,6 +81,10 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
                              QAbstractItemView::AnyKeyPressed);
   toolView_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   toolView_->verticalHeader()->hide();
+  // Three rows stay visible in a short dock (the editor scrolls instead).
+  toolView_->setMinimumHeight(3 * toolView_->verticalHeader()->defaultSectionSize() +
+                              toolView_->horizontalHeader()->sizeHint().height() +
+                              toolView_->horizontalScrollBar()->sizeHint().height() + 2 * toolView_->frameWidth());
   toolView_->setToolTip(
       tr("The tool library; double-click a cell to edit it (empty K_t / K_r / radial depth: "
          "the material's / operation's value applies)"));
@@ -111,6 +117,7 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
   layout->addLayout(buttons);
   layout->addWidget(toolView_, 2);
   layout->addWidget(toolError_);
+  layout->addWidget(picture_);  // under the table: the tools dock is narrow
   layout->addWidget(modeBox_, 1);
   layout->addWidget(modeError_);
   onSelectionChanged();
@@ -200,6 +207,11 @@ void ToolLibraryEditor::onSelectionChanged() {
   modeBox_->setTitle(id.isEmpty() ? tr("Modes (no tool selected)") : tr("Modes of tool %1").arg(id));
   modeBox_->setEnabled(!id.isEmpty());
   showTapTests(project().findTool(id));
+  if (const app::ToolSpec* tool = project().findTool(id)) {
+    picture_->setTool(*tool);
+  } else {
+    picture_->clear();
+  }
   duplicate_->setEnabled(!id.isEmpty());
   remove_->setEnabled(!id.isEmpty());
   if (id != selected_) {

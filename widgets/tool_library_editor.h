@@ -1,8 +1,8 @@
 #pragma once
 // The tool-library editor: a table of the project's tools (edited in place), add / duplicate /
-// remove, and for the selected tool its x and y modes. It shows the project given by setProject()
-// and never changes it: every edit is validated (validateProject) and requested with editRequested();
-// an invalid edit is refused in place (no signal, the old value stays, the reason is shown in red
+// remove, and for the selected tool its end view (teeth at their pitch angles) and its x and y modes. It shows the
+// project given by setProject() and never changes it: every edit is validated (validateProject) and requested with
+// editRequested(); an invalid edit is refused in place (no signal, the old value stays, the reason is shown in red
 // under the table). CSV and JSON import/export of the library are all-or-nothing.
 #include <QLabel>
 #include <QPointer>
@@ -13,6 +13,7 @@
 #include "display_units.h"
 #include "document/project.h"
 #include "mode_table_model.h"
+#include "tool_picture_widget.h"
 #include "tool_table_model.h"
 
 class QGroupBox;
@@ -44,6 +45,7 @@ class ToolLibraryEditor : public QWidget {
   ToolTableModel* toolModel() const { return tools_; }
   ModeTableModel* modeModel(Axis axis) const { return axis == Axis::X ? modesX_ : modesY_; }
   QTableView* toolView() const { return toolView_; }
+  ToolPictureWidget* toolPicture() const { return picture_; }
   QTableView* modeView(Axis axis) const { return axis == Axis::X ? modeViewX_ : modeViewY_; }
 
  public slots:
@@ -70,6 +72,7 @@ class ToolLibraryEditor : public QWidget {
   ModeTableModel* modesX_;
   ModeTableModel* modesY_;
   QTableView* toolView_;
+  ToolPictureWidget* picture_;  // the end view of the selected tool
   QTableView* modeViewX_ = nullptr;
   QTableView* modeViewY_ = nullptr;
   QLabel* titleX_ = nullptr;  // "x direction", with its tap test when the tool has one

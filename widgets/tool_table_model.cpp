@@ -5,6 +5,7 @@
 #include "document/project_rules.h"
 #include "range_delegate.h"
 #include "tool_library_csv.h"
+#include "tooth_list_text.h"
 
 namespace mx::widgets {
 
@@ -15,8 +16,8 @@ QString number(double value) {
 }
 
 const char* fieldName(int column) {
-  static const char* kNames[] = {"id", "teeth",           "diameter_mm", "helix_deg", "Kt_N_mm2",
-                                 "Kr", "radial_depth_mm", "max_force_N", "modes_x",   "modes_y"};
+  static const char* kNames[] = {"id",       "teeth", "diameter_mm",     "helix_deg",   "pitch_deg", "runout_um",
+                                 "Kt_N_mm2", "Kr",    "radial_depth_mm", "max_force_N", "modes_x",   "modes_y"};
   return kNames[column];
 }
 
@@ -77,6 +78,10 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
       return toDisplay(t.diameter_mm);
     case Helix:
       return t.helix_deg;
+    case Pitch:
+      return t.pitch_deg ? toothListText(*t.pitch_deg, "; ") : uniformPitchText();
+    case Runout:
+      return t.runout_um ? toothListText(*t.runout_um, "; ") : noRunoutText();
     case Kt:
       return opt(t.Kt_N_mm2);
     case Kr:
@@ -160,7 +165,16 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
     case Diameter:
       return tr("Tool diameter D [%1] (> 0)").arg(lengthUnit());
     case Helix:
-      return tr("Helix angle [deg] in (-90, 90); carried, the force model is straight-tooth");
+      return tr("Helix angle [deg] in (-90, 90); the SDM models the helix lag, the ZOA ignores it");
+    case Pitch:
+      return tr("Pitch angles [deg] from each tooth to the next in the direction of rotation: one per tooth, "
+                "separated by ';', each in (0, 360), summing to 360 (e.g. 70; 110; 70; 110); "
+                "empty or '%1' = uniform 360/teeth")
+          .arg(uniformPitchText());
+    case Runout:
+      return tr("Radial runout [µm] of each cutting edge: one per tooth, separated by ';', each |value| < D/4 "
+                "(e.g. 0; 8; 0; -5); empty or '%1' = no runout")
+          .arg(noRunoutText());
     case Kt:
       return project_.material ? tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's %1")
                                      .arg(app::formatNumber(project_.material->Kt_N_mm2))
@@ -222,6 +236,10 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
         return tr("diameter [%1]").arg(unit);
       case Helix:
         return tr("helix [deg]");
+      case Pitch:
+        return tr("pitch [deg]");
+      case Runout:
+        return tr("runout [µm]");
       case Kt:
         return tr("K_t [N/mm²]");
       case Kr:
@@ -263,6 +281,8 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
                 : std::nullopt;
   };
   bool ok = true, integral = true;
+  const QString path = QString("tools[%1].%2").arg(index.row()).arg(fieldName(column));
+  QString listError;
   switch (column) {
     case Id:
       t.id = value.toString().trimmed();
@@ -279,6 +299,12 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
     case Helix:
       t.helix_deg = value.toDouble(&ok);
       break;
+    case Pitch:
+      listError = readToothList(value, path, uniformPitchText(), t.pitch_deg);
+      break;
+    case Runout:
+      listError = readToothList(value, path, noRunoutText(), t.runout_um);
+      break;
     case Kt:
       optional(t.Kt_N_mm2, false);
       break;
@@ -294,16 +320,35 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
     default:
       return false;
   }
-  const QString path = QString("tools[%1].%2").arg(index.row()).arg(fieldName(column));
-  QString error = !ok         ? QString("%1 = '%2': not a number").arg(path, value.toString())
-                  : !integral ? QString("%1 = %2: must be an integer >= 1").arg(path, value.toString())
-                              : ToolLibraryCsv::validationError(edited);
+  QString error = !listError.isEmpty() ? listError
+                  : !ok                ? QString("%1 = '%2': not a number").arg(path, value.toString())
+                  : !integral          ? QString("%1 = %2: must be an integer >= 1").arg(path, value.toString())
+                                       : ToolLibraryCsv::validationError(edited);
   if (!error.isEmpty()) {
     emit editRefused(error);
     return false;
   }
+  if (t == project_.tools[std::size_t(index.row())]) return true;  // "" for "uniform": nothing to undo
   emit editRequested(edited, tr("Edit %1 of tool %2").arg(fieldName(column), oldId));
   return true;
+}
+
+QString ToolTableModel::readToothList(const QVariant& value, const QString& path, const QString& absentWord,
+                                      std::optional<std::vector<double>>& list) {
+  const QString text = value.isValid() ? value.toString().trimmed() : QString();
+  if (text.isEmpty() || text.compare(absentWord, Qt::CaseInsensitive) == 0) {
+    list.reset();
+    return {};
+  }
+  const ToothListParse parsed = parseToothList(text);
+  if (!parsed.ok())
+    return tr("%1 = '%2': value %3 ('%4') is not a number (one number per tooth, separated by ';'; empty or '%5' "
+              "for none)")
+        .arg(path, text)
+        .arg(parsed.bad_item + 1)
+        .arg(parsed.bad_text, absentWord);
+  list = parsed.values;
+  return {};
 }
 
 }  // namespace mx::widgets

@@ -14,7 +14,11 @@ namespace mx::widgets {
 class ToolTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Id, Teeth, Diameter, Helix, Kt, Kr, RadialDepth, MaxForce, ModesX, ModesY, ColumnCount };
+  enum Column { Id, Teeth, Diameter, Helix, Pitch, Runout, Kt, Kr, RadialDepth, MaxForce, ModesX, ModesY, ColumnCount };
+  // The text of a pitch cell for uniform pitch, and of a runout cell without runout; an empty cell
+  // means the same.
+  static QString uniformPitchText() { return QStringLiteral("uniform"); }
+  static QString noRunoutText() { return QStringLiteral("none"); }
   explicit ToolTableModel(QObject* parent = nullptr);
 
   // Keeps the row structure when the number of tools is unchanged (the view keeps its selection).
@@ -30,7 +34,8 @@ class ToolTableModel : public QAbstractTableModel {
   QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
   Qt::ItemFlags flags(const QModelIndex& index) const override;
   // Validates and requests the edit; returns false (and emits editRefused) when it is refused.
-  // An invalid QVariant clears an optional column (K_t, K_r, radial depth, maximum force).
+  // An invalid QVariant clears an optional column (K_t, K_r, radial depth, maximum force). The pitch
+  // and runout cells take a ';'-separated list (degrees, micrometres) or an empty cell / the word.
   bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
  signals:
@@ -44,6 +49,9 @@ class ToolTableModel : public QAbstractTableModel {
   QVariant editValue(const app::ToolSpec& tool, int column) const;
   QVariant rangeData(int column, int role) const;
   QString toolTip(const app::ToolSpec& tool, int column) const;
+  // Reads a pitch or runout cell into `list`; returns the refusal ("" = ok).
+  static QString readToothList(const QVariant& value, const QString& path, const QString& absentWord,
+                               std::optional<std::vector<double>>& list);
   void refreshAll();
 
   app::Project project_;

@@ -35,6 +35,8 @@ const QStringList& keyOrder() {
                                  "teeth",
                                  "diameter_mm",
                                  "helix_deg",
+                                 "pitch_deg",
+                                 "runout_um",
                                  "Kt_N_mm2",
                                  "Kr",
                                  "max_force_N",

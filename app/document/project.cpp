@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "document/project_validation.h"
+#include "document/tool_geometry.h"
 
 namespace mx::app {
 
@@ -66,11 +67,7 @@ MillingSetup Project::setupFor(const QString& toolId) const {
                            .arg(toolId));
   }
 
-  MillingSetup s;
-  s.tool_id = tool->id.toStdString();
-  s.teeth = tool->teeth;
-  s.diameter_m = tool->diameter_mm * kMPerMm;
-  s.helix_rad = tool->helix_deg * std::numbers::pi / 180.0;
+  MillingSetup s = cutterGeometryOf(*tool);
   s.tangential_coefficient_pa = tool->Kt_N_mm2.value_or(material ? material->Kt_N_mm2 : 0.0) * kPaPerNPerMm2;
   s.radial_ratio = tool->Kr.value_or(material ? material->Kr : 0.0);
   s.modes_x = toModalAxis(tool->modes_x);

@@ -46,6 +46,10 @@ struct ToolSpec {
   int teeth = 0;
   double diameter_mm = 0.0;
   double helix_deg = 0.0;
+  // Cutter geometry (tool_geometry.h): one angle between consecutive teeth per tooth, summing to 360;
+  // one radial edge offset per tooth. Absent: uniform pitch, no runout.
+  std::optional<std::vector<double>> pitch_deg;
+  std::optional<std::vector<double>> runout_um;
   std::optional<double> Kt_N_mm2;         // overrides material.Kt_N_mm2
   std::optional<double> Kr;               // overrides material.Kr
   std::optional<double> radial_depth_mm;  // overrides the operation's radial engagement

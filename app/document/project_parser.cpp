@@ -130,6 +130,8 @@ ToolSpec readTool(const ObjectReader& r) {
   t.teeth = r.integer("teeth", rules::kCountAtLeastOne);
   t.diameter_mm = r.number("diameter_mm", rules::kPositive);
   t.helix_deg = r.number("helix_deg", rules::kHelixDeg);
+  t.pitch_deg = r.optionalNumbers("pitch_deg");
+  t.runout_um = r.optionalNumbers("runout_um");
   t.Kt_N_mm2 = r.optionalNumber("Kt_N_mm2");
   t.Kr = r.optionalNumber("Kr");
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
@@ -138,8 +140,8 @@ ToolSpec readTool(const ObjectReader& r) {
   t.frf_y = readFrfRef(r, "frf_y");
   t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
   t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
-  t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "Kt_N_mm2", "Kr", "radial_depth_mm",
-                                       "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y"});
+  t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "pitch_deg", "runout_um", "Kt_N_mm2",
+                                       "Kr", "radial_depth_mm", "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y"});
   return t;
 }
 

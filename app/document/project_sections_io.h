@@ -30,6 +30,8 @@ QJsonObject unknownKeys(const QJsonObject& original, const QJsonObject& known);
 // Keeps the stored value when it is numerically equal (preserves e.g. 600 vs 600.0 in the file).
 void putNumber(QJsonObject& o, const QString& key, double value);
 void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value);
+// The array, or no key when absent.
+void putNumbers(QJsonObject& o, const QString& key, const std::optional<std::vector<double>>& values);
 // `values` as a JSON array, keeping each stored element that is numerically equal.
 QJsonArray numbersOver(const QJsonArray& old, const std::vector<double>& values);
 

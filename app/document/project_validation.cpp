@@ -6,6 +6,7 @@
 #include "document/project_reported_chatter.h"
 #include "document/project_rules.h"
 #include "document/project_sections_io.h"
+#include "document/tool_geometry.h"
 
 namespace mx::app {
 
@@ -85,6 +86,7 @@ void validateTool(const QString& path, const ToolSpec& t) {
   checkNumber(path + ".teeth", t.teeth, rules::kCountAtLeastOne);
   checkNumber(path + ".diameter_mm", t.diameter_mm, rules::kPositive);
   checkNumber(path + ".helix_deg", t.helix_deg, rules::kHelixDeg);
+  validateToolGeometry(path, t);
   checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kPositive);
   checkOptional(path + ".Kr", t.Kr, rules::kNonNegative);
   checkOptional(path + ".max_force_N", t.max_force_N, rules::kToolForceN);

@@ -59,6 +59,8 @@ QJsonObject toolJson(const ToolSpec& tool) {
   putNumber(t, "teeth", tool.teeth);
   putNumber(t, "diameter_mm", tool.diameter_mm);
   putNumber(t, "helix_deg", tool.helix_deg);
+  putNumbers(t, "pitch_deg", tool.pitch_deg);
+  putNumbers(t, "runout_um", tool.runout_um);
   putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
   putOptional(t, "Kr", tool.Kr);
   putOptional(t, "radial_depth_mm", tool.radial_depth_mm);

@@ -37,14 +37,6 @@ void putObject(QJsonObject& o, const QString& key, const std::optional<Spec>& sp
   }
 }
 
-void putNumbers(QJsonObject& o, const QString& key, const std::optional<std::vector<double>>& values) {
-  if (values) {
-    o.insert(key, numbersOver(o.value(key).toArray(), *values));
-  } else {
-    o.remove(key);
-  }
-}
-
 void putDepthSteps(QJsonObject& o, const QString& key, const std::optional<std::vector<DepthStepSpec>>& steps) {
   if (!steps) {
     o.remove(key);
@@ -243,6 +235,14 @@ void putNumber(QJsonObject& o, const QString& key, double value) {
   const QJsonValue old = o.value(key);
   if (old.isDouble() && old.toDouble() == value) return;
   o.insert(key, value);
+}
+
+void putNumbers(QJsonObject& o, const QString& key, const std::optional<std::vector<double>>& values) {
+  if (values) {
+    o.insert(key, numbersOver(o.value(key).toArray(), *values));
+  } else {
+    o.remove(key);
+  }
 }
 
 void putOptional(QJsonObject& o, const QString& key, const std::optional<double>& value) {

@@ -13,6 +13,7 @@
 #include "feature_dock.h"
 #include "services/measured_dynamics.h"
 #include "stability/lobe_diagram.h"
+#include "stability_model_text.h"
 
 namespace mx::gui {
 
@@ -24,6 +25,7 @@ LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineR
       readout_(new widgets::OperatingPointReadout(window)),
       tool_combo_(new QComboBox(window)),
       method_combo_(new QComboBox(window)),
+      method_advice_(new QLabel(window)),
       feed_spin_(new QDoubleSpinBox(window)),
       status_point_(new QLabel(window)),
       status_engine_(new QLabel(window)),
@@ -38,6 +40,7 @@ LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineR
   recompute_timer_.setSingleShot(true);
   recompute_timer_.setInterval(120);
   connectSignals();
+  showMethodAdvice();
 }
 
 // The point panel: active tool, feed per tooth, readouts.
@@ -47,9 +50,6 @@ QWidget* LobesFeature::buildPointPanel() {
   auto* form = new QFormLayout;
   tool_combo_->setToolTip(tr("The tool whose lobes, power limit and readouts are shown"));
   method_combo_->addItems({tr("Zeroth-order approximation"), tr("Semi-discretization")});
-  method_combo_->setToolTip(
-      tr("Stability method: ZOA (fast, accurate at high immersion) or first-order "
-         "semi-discretization (low immersion, few teeth)"));
   feed_spin_->setRange(0.001, 5.0);
   feed_spin_->setDecimals(4);
   feed_spin_->setSingleStep(0.01);
@@ -58,6 +58,13 @@ QWidget* LobesFeature::buildPointPanel() {
   form->addRow(tr("Tool:"), tool_combo_);
   form->addRow(tr("Feed per tooth:"), feed_spin_);
   layout->addLayout(form);
+  method_advice_->setWordWrap(true);
+  method_advice_->setStyleSheet("color: #a05a00;");
+  method_advice_->setToolTip(
+      tr("The ZOA ignores the helix and pitch differences and averages the cut; the SDM "
+         "models pitch and helix (switch the method in the toolbar)"));
+  method_advice_->hide();
+  layout->addWidget(method_advice_);
   layout->addWidget(readout_);
   panel->setMinimumWidth(300);
   return panel;
@@ -99,6 +106,7 @@ void LobesFeature::connectSignals() {
   connect(tool_combo_, &QComboBox::currentTextChanged, &context_, &FeatureContext::setActiveTool);
   connect(method_combo_, &QComboBox::currentIndexChanged, this, [this](int index) {
     method_ = index == 0 ? LobeMethod::ZeroOrder : LobeMethod::SemiDiscretization;
+    showMethodAdvice();
     recompute();
   });
   connect(feed_spin_, &QDoubleSpinBox::editingFinished, this, [this] {
@@ -153,7 +161,10 @@ void LobesFeature::setMethod(LobeMethod method) {
 
 // The tool choices follow the tool library; lobes wait for the edits to pause.
 void LobesFeature::projectChanged(const app::Project& project, Features recompute) {
-  if (recompute & Feature::Editors) refreshToolChoices(project);
+  if (recompute & Feature::Editors) {
+    refreshToolChoices(project);
+    showMethodAdvice();
+  }
   if (recompute & Feature::Lobes) recompute_timer_.start();
   if (snapshot_ && (recompute & (Feature::ExpertSession | Feature::Editors))) {  // a tool's or the breakage limit
     updateForceLimits();
@@ -246,6 +257,7 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
   const int tool = std::max(0, evaluator_.toolIndex(context_.activeTool()));
   chart_->setActiveTool(tool);
+  showModelLabel();
   setSnapGrid(tool);
   if (context_.point().speed_rpm <= 0.0)
     pickInitialPoint(tool);
@@ -330,8 +342,42 @@ void LobesFeature::showActiveTool() {
   const int index = tool_combo_->findText(id);
   if (index >= 0 && tool_combo_->currentIndex() != index) tool_combo_->setCurrentIndex(index);
   chart_->setActiveTool(evaluator_.toolIndex(id));
+  showModelLabel();
+  showMethodAdvice();
   updatePowerLimit();
   showPoint(context_.point());
+}
+
+// The model of the lobes shown, from the snapshot they were computed on.
+void LobesFeature::showModelLabel() {
+  const int tool = snapshot_ ? evaluator_.toolIndex(context_.activeTool()) : -1;
+  if (tool < 0) {
+    chart_->setModelLabel({});
+    return;
+  }
+  const MillingSetup& setup = snapshot_->tools[std::size_t(tool)].setup;
+  chart_->setModelLabel(
+      tr("Tool %1: %2").arg(QString::fromStdString(setup.tool_id), widgets::modelLabel(snapshot_->method, setup)));
+}
+
+void LobesFeature::showMethodAdvice() {
+  QString advice;
+  const app::Project& p = context_.project();
+  if (p.findTool(context_.activeTool()) != nullptr) {
+    try {
+      advice = widgets::methodAdvice(method_, p.setupFor(context_.activeTool()));
+    } catch (const app::ProjectError&) {
+      // no setup (e.g. no operation section): the lobes say why
+    }
+  }
+  const QString base =
+      tr("Stability method: ZOA (fast; averages the cut, ignores the helix and pitch differences; "
+         "accurate at high radial immersion) or semi-discretization (SDM: models pitch and helix; "
+         "low immersion, few teeth)");
+  method_combo_->setToolTip(advice.isEmpty() ? base : base + "\n\n" + advice);
+  if (!advice.isEmpty() && advice != method_advice_->text()) emit statusMessage(advice, 8000);
+  method_advice_->setText(advice);
+  method_advice_->setVisible(!advice.isEmpty());
 }
 
 void LobesFeature::onPointDragged(double speed_rpm, double depth_mm) {

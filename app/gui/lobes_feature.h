@@ -36,6 +36,7 @@ class LobesFeature : public WindowFeature {
   void setMethod(LobeMethod method);
   widgets::LobeChartView* chart() const { return chart_; }
   widgets::OperatingPointReadout* readout() const { return readout_; }
+  QString methodAdviceText() const { return method_advice_->isHidden() ? QString() : method_advice_->text(); }
   const std::shared_ptr<const LobeSnapshot>& snapshot() const { return snapshot_; }  // null before the first lobes
 
  signals:
@@ -55,6 +56,8 @@ class LobesFeature : public WindowFeature {
   void updateForceLimits();
   void showPoint(const app::PickedPoint& point);
   void showActiveTool();
+  void showModelLabel();    // the chart's title: the active tool's stability model
+  void showMethodAdvice();  // where the ZOA is approximate for the active tool
   void onPointDragged(double speed_rpm, double depth_mm);
 
   FeatureContext& context_;
@@ -63,6 +66,7 @@ class LobesFeature : public WindowFeature {
   widgets::OperatingPointReadout* readout_;
   QComboBox* tool_combo_;
   QComboBox* method_combo_;
+  QLabel* method_advice_;  // "ZOA: approximate for this tool (...)"; hidden when the method fits
   QDoubleSpinBox* feed_spin_;
   QLabel* status_point_;
   QLabel* status_engine_;

@@ -301,6 +301,36 @@ class TestProjectFile : public QObject {
     row("diameter missing", {"-tools/1/diameter_mm"}, {"tools[1].diameter_mm: missing (required number > 0)"});
     row("helix missing", {"-tools/0/helix_deg"}, {"tools[0].helix_deg: missing (required number in (-90, 90))"});
     row("helix 90", {"tools/0/helix_deg=90"}, {"tools[0].helix_deg = 90: must be in (-90, 90)"});
+    // cutter geometry: T1 has 4 teeth and D = 16 mm (runout below 4000 um), T2 has 2 teeth and D = 10 mm
+    row("pitch object", {"tools/0/pitch_deg={}"}, {"tools[0].pitch_deg: expected an array, got object"});
+    row("pitch string", {"tools/1/pitch_deg=[\"180\", 180]"}, {"tools[1].pitch_deg[0]: expected a number, got string"});
+    row("pitch too short", {"tools/0/pitch_deg=[90, 90, 180]"},
+        {"tools[0].pitch_deg = [90, 90, 180]: must have one value per tooth (teeth = 4), got 3"});
+    row("pitch too long", {"tools/1/pitch_deg=[120, 120, 120]"},
+        {"tools[1].pitch_deg = [120, 120, 120]: must have one value per tooth (teeth = 2), got 3"});
+    row("pitch empty", {"tools/1/pitch_deg=[]"},
+        {"tools[1].pitch_deg = []: must have one value per tooth (teeth = 2)"});
+    row("teeth without their pitch", {"tools/0/pitch_deg=[70, 110, 70, 110]", "tools/0/teeth=3"},
+        {"tools[0].pitch_deg = [70, 110, 70, 110]: must have one value per tooth (teeth = 3), got 4"});
+    row("pitch zero", {"tools/0/pitch_deg=[0, 180, 90, 90]"}, {"tools[0].pitch_deg[0] = 0: must be in (0, 360)"});
+    row("pitch negative", {"tools/0/pitch_deg=[90, -10, 190, 90]"},
+        {"tools[0].pitch_deg[1] = -10: must be in (0, 360)"});
+    row("pitch 360", {"tools/1/pitch_deg=[0.5, 360]"}, {"tools[1].pitch_deg[1] = 360: must be in (0, 360)"});
+    row("pitch nan", {"tools/1/pitch_deg=[180, 180]", "tools/1/pitch_deg/1=nan"},
+        {"tools[1].pitch_deg[1] = nan: must be a finite number in (0, 360)"});
+    row("pitch sum 1e-5 high", {"tools/0/pitch_deg=[70, 110, 70, 110.00001]"},
+        {"tools[0].pitch_deg = [70, 110, 70, 110.00001]: must sum to 360 within 1e-06, sums to 360.00001"});
+    row("pitch sum 1e-5 low", {"tools/1/pitch_deg=[180, 179.99999]"},
+        {"tools[1].pitch_deg = [180, 179.99999]: must sum to 360 within 1e-06, sums to 359.99999"});
+    row("runout string", {"tools/1/runout_um=[0, \"8\"]"}, {"tools[1].runout_um[1]: expected a number, got string"});
+    row("runout too short", {"tools/0/runout_um=[0, 8]"},
+        {"tools[0].runout_um = [0, 8]: must have one value per tooth (teeth = 4), got 2"});
+    row("runout D/4", {"tools/0/runout_um=[0, 4000, 0, 0]"},
+        {"tools[0].runout_um[1] = 4000: must be in (-4000, 4000) (|runout| < D/4 = 250 * diameter_mm, diameter_mm = "
+         "16)"});
+    row("runout -D/4", {"tools/1/runout_um=[-2500, 0]"}, {"tools[1].runout_um[0] = -2500: must be in (-2500, 2500)"});
+    row("runout infinite", {"tools/1/runout_um=[0, 0]", "tools/1/runout_um/1=inf"},
+        {"tools[1].runout_um[1] = inf: must be a finite number in (-2500, 2500)"});
     row("tool Kt zero", {"tools/1/Kt_N_mm2=0"}, {"tools[1].Kt_N_mm2 = 0: must be > 0"});
     row("tool Kr negative", {"tools/1/Kr=-0.2"}, {"tools[1].Kr = -0.2: must be >= 0"});
     row("tool Kr string", {"tools/1/Kr=\"low\""}, {"tools[1].Kr: expected a number, got string"});
@@ -403,6 +433,58 @@ class TestProjectFile : public QObject {
     const Project depth = projectFromJson(
         mutated(base, {"-operation/radial_immersion", "operation/radial_depth_mm=16", "tools/1/radial_depth_mm=10"}));
     QCOMPARE(depth.setupFor("T1").immersion.exit_rad, std::numbers::pi);  // a = D: full immersion
+  }
+
+  // The edges of the cutter-geometry rules that pass, and the SI conversion of setupFor.
+  void cutterGeometryToSi() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    const Project p = projectFromJson(
+        mutated(base, {"tools/0/pitch_deg=[70, 110, 70, 110.0000009]", "tools/0/runout_um=[0, 3999.9, 0, -5]",
+                       "tools/1/pitch_deg=[1e-9, 359.999999999]", "tools/1/runout_um=[-2499.99, 0]"}));
+    const MillingSetup t1 = p.setupFor("T1");
+    QCOMPARE(t1.pitch_rad.size(), std::size_t(4));
+    QCOMPARE(t1.pitch_rad[1], 110.0 * std::numbers::pi / 180.0);
+    QCOMPARE(t1.runout_m[1], 3999.9e-6);
+    QCOMPARE(t1.runout_m[3], -5e-6);
+    QCOMPARE(t1.helix_rad, std::numbers::pi / 6.0);
+    QVERIFY(!t1.uniformPitch());
+    t1.validateGeometry();  // the engine agrees with the document's rules
+    QCOMPARE(t1.toothAngleRad(2), std::numbers::pi);
+    p.setupFor("T2").validateGeometry();
+    const MillingSetup uniform = loadProject(fixturePath("valid-full.mxproj")).setupFor("T1");
+    QVERIFY(uniform.pitch_rad.empty() && uniform.runout_m.empty());
+  }
+
+  void cutterGeometryRoundTrip_data() {
+    QTest::addColumn<QStringList>("mutations");
+    QTest::newRow("variable pitch") << QStringList{"tools/0/pitch_deg=[70, 110, 70, 110]"};
+    QTest::newRow("runout only") << QStringList{"tools/1/runout_um=[0, -12.5]"};
+    QTest::newRow("both") << QStringList{"tools/0/pitch_deg=[85, 95, 85, 95]", "tools/0/runout_um=[0, 8, 0, -5]"};
+    QTest::newRow("sum within 1e-6") << QStringList{"tools/1/pitch_deg=[179.9999995, 180]"};
+    QTest::newRow("shortest text") << QStringList{"tools/1/pitch_deg=[0.1, 359.9]", "tools/1/runout_um=[0.3, 1e-3]"};
+  }
+
+  void cutterGeometryRoundTrip() {
+    QFETCH(QStringList, mutations);
+    const QJsonObject root = mutated(readJson(fixturePath("valid-full.mxproj")), mutations);
+    const Project p = projectFromJson(root);
+    QTemporaryDir dir;
+    const QString out = dir.filePath("geometry.mxproj");
+    saveProject(p, out);
+    QCOMPARE(readJson(out), root);
+    QCOMPARE(loadProject(out).tools, p.tools);
+    QFile text(out);
+    QVERIFY(text.open(QIODevice::ReadOnly));
+    const QByteArray saved = text.readAll();
+    const qsizetype helix = saved.indexOf("\"helix_deg\"");
+    for (const char* key : {"\"pitch_deg\"", "\"runout_um\""}) {
+      const qsizetype at = saved.indexOf(key);
+      if (at >= 0) QVERIFY2(at > helix && at < saved.indexOf("\"Kt_N_mm2\"", helix), key);  // documented order
+    }
+    Project cleared = p;
+    for (ToolSpec& t : cleared.tools) t.pitch_deg.reset(), t.runout_um.reset();
+    for (const QJsonValue& t : projectToJson(cleared)["tools"].toArray())
+      QVERIFY(!t.toObject().contains("pitch_deg") && !t.toObject().contains("runout_um"));
   }
 
   void frfReferencesReplaceModes() {

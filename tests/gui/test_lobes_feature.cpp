@@ -117,6 +117,26 @@ class TestLobesFeature : public QObject {
     QTRY_VERIFY(lobes->readout()->text("verdict").startsWith("STABLE"));
   }
 
+  // The chart names the model of the active tool's lobes; the method advice follows the tool and the method.
+  void modelLabelAndMethodAdvice() {
+    gui::MainWindow window;
+    QVERIFY(openAndShow(window, kRubio));
+    gui::LobesFeature* lobes = test::lobesOf(window);
+    QCOMPARE(lobes->chart()->modelLabel(), QString("Tool R1: ZOA, 3 teeth, uniform pitch"));
+    QCOMPARE(lobes->methodAdviceText(), QString());  // R1: a/D = 1, straight teeth, uniform pitch
+    app::Project edited = *window.project();
+    edited.tools[0].pitch_deg = std::vector<double>{100, 130, 130};
+    QSignalSpy shown(lobes, &gui::LobesFeature::lobesShown);
+    QCOMPARE(window.document()->applyEdit(edited, "pitch"), QString());
+    QCOMPARE(lobes->methodAdviceText(),
+             QString("ZOA: approximate for this tool (variable pitch); SDM models pitch and helix"));
+    QVERIFY(shown.wait(20000));
+    QCOMPARE(lobes->chart()->modelLabel(), QString("Tool R1: ZOA, 3 teeth, variable pitch"));
+    lobes->setMethod(gui::LobeMethod::SemiDiscretization);
+    QCOMPARE(lobes->methodAdviceText(), QString());
+    test::engineOf(window)->cancelAll();
+  }
+
   // Inch display: the chart and readouts convert; the document stays in mm.
   void inchUnitsOnChartAndReadouts() {
     gui::MainWindow window;

@@ -1,5 +1,7 @@
 // The lobe chart's markers: each group (the expert's q* and q**, the Pareto choice) is cleared and
-// redrawn on its own; clearing every group empties the chart; a change of length unit keeps them.
+// redrawn on its own; clearing every group empties the chart; a change of length unit keeps them. The
+// model title above the plot.
+#include <QImage>
 #include <QStringList>
 
 #include "lobe_chart_view.h"
@@ -32,6 +34,24 @@ class TestLobeChartView : public QObject {
     chart.setMarker("q*", 9000.0, 2.0, Qt::blue, "expert");
     chart.setLengthUnit(1.0 / 25.4, "in");
     QCOMPARE(chart.markerNames(), QStringList{"q*"});
+  }
+
+  // The model title: shown above the plot, replaced, hidden by "" and by clear().
+  void modelLabelIsATitleRow() {
+    LobeChartView chart;
+    chart.resize(800, 500);
+    chart.clear();
+    QTest::qWait(20);  // the queued replot of the empty chart
+    const QImage without = chart.grab().toImage();
+    chart.setModelLabel("Tool R1: SDM, 3 teeth, variable pitch");
+    chart.setModelLabel("Tool R1: ZOA, 3 teeth, variable pitch");
+    QCOMPARE(chart.modelLabel(), QString("Tool R1: ZOA, 3 teeth, variable pitch"));
+    QTRY_VERIFY(chart.grab().toImage() != without);  // the replot is queued
+    chart.setModelLabel({});
+    QCOMPARE(chart.modelLabel(), QString());
+    chart.setModelLabel("Tool R2: ZOA, 2 teeth, uniform pitch");
+    chart.clear();
+    QCOMPARE(chart.modelLabel(), QString());
   }
 };
 

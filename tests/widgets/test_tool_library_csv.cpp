@@ -38,6 +38,11 @@ QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArra
 const QByteArray kHeader =
     "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,stiffness_N_per_um\n";
 
+// With the optional cutter-geometry columns: pitch_deg is column 5, runout_um column 6.
+const QByteArray kGeometryHeader =
+    "tool_id,teeth,diameter_mm,helix_deg,pitch_deg,runout_um,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,"
+    "stiffness_N_per_um\n";
+
 }  // namespace
 
 class TestToolLibraryCsv : public QObject {
@@ -73,8 +78,16 @@ class TestToolLibraryCsv : public QObject {
     ToolLibraryCsv::readFile(MX_TEST_DATA_DIR "/library/tools.csv", text);
     std::vector<ToolSpec> tools = rubio().tools;
     for (const ToolSpec& t : ToolLibraryCsv::fromCsv(text).tools) tools.push_back(t);
-    tools.push_back(ToolSpec{
-        "Rigid", 1, 0.1 + 0.2, -12.5, 1e-3, 0.0, 0.3, 250.5, {}, {}, std::nullopt, std::nullopt, {}});  // no modes
+    ToolSpec rigid;  // no modes
+    rigid.id = "Rigid";
+    rigid.teeth = 1;
+    rigid.diameter_mm = 0.1 + 0.2;
+    rigid.helix_deg = -12.5;
+    rigid.Kt_N_mm2 = 1e-3;
+    rigid.Kr = 0.0;
+    rigid.radial_depth_mm = 0.3;
+    rigid.max_force_N = 250.5;
+    tools.push_back(rigid);
     const auto back = ToolLibraryCsv::fromCsv(ToolLibraryCsv::toCsv(tools));
     QVERIFY2(back.ok(), qPrintable(back.error));
     QCOMPARE(toolsJson(back.tools), toolsJson(tools));
@@ -99,6 +112,34 @@ class TestToolLibraryCsv : public QObject {
     const auto bad = ToolLibraryCsv::fromCsv(header + "A,2,10,0,,,,0,x,1000,2,10\n");
     QVERIFY(!bad.ok());
     QVERIFY2(bad.error.startsWith("line 2, column 8 (max_force_N): '0' must be in (0, 1e+07]"), qPrintable(bad.error));
+  }
+
+  // pitch_deg and runout_um: ';'-separated lists, blank = uniform / none; the export writes a column only
+  // when some tool has that list, and export -> import is exact.
+  void geometryColumns() {
+    const auto file = ToolLibraryCsv::fromCsv(kGeometryHeader +
+                                              "A,4,16,30,70; 110 ;70;110,0;8;0;-5,,,,x,1000,2,10\n"
+                                              "A,,,,70;110;70;110,,,,,y,1000,2,10\n"
+                                              "B,2,10,0,,,,,,x,1000,2,10\n");
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    QCOMPARE(*file.tools[0].pitch_deg, (std::vector<double>{70, 110, 70, 110}));
+    QCOMPARE(*file.tools[0].runout_um, (std::vector<double>{0, 8, 0, -5}));
+    QCOMPARE(file.tools[0].modes_y.size(), std::size_t{1});
+    QVERIFY(!file.tools[1].pitch_deg && !file.tools[1].runout_um);
+
+    QVERIFY(!ToolLibraryCsv::toCsv(rubio().tools).contains("pitch_deg"));
+    std::vector<ToolSpec> tools = rubio().tools;
+    tools[0].pitch_deg = std::vector<double>{100.1, 119.9, 140};
+    QByteArray csv = ToolLibraryCsv::toCsv(tools);
+    QVERIFY(csv.startsWith("tool_id,teeth,diameter_mm,helix_deg,pitch_deg,Kt_N_mm2,"));
+    QVERIFY2(csv.contains(",100.1;119.9;140,"), csv.constData());
+    tools[1].runout_um = std::vector<double>{0.1 + 0.2, -12};
+    csv = ToolLibraryCsv::toCsv(tools);
+    QVERIFY(csv.startsWith("tool_id,teeth,diameter_mm,helix_deg,pitch_deg,runout_um,Kt_N_mm2,"));
+    const auto back = ToolLibraryCsv::fromCsv(csv);
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(toolsJson(back.tools), toolsJson(tools));
+    QCOMPARE(back.tools[1].runout_um->at(0), 0.1 + 0.2);
   }
 
   void editorExportImportRoundTrip() {
@@ -161,6 +202,35 @@ class TestToolLibraryCsv : public QObject {
         << true << "line 3, column 2 (teeth): '3' differs from the tool's first row (line 2";
     QTest::newRow("missing id") << kHeader + good + ",2,10,0,,,,x,1000,2,10\n"
                                 << true << "line 3, column 1 (tool_id): '' must be a non-empty tool id";
+    const QByteArray geometry = kGeometryHeader;
+    QTest::newRow("pitch wrong length")
+        << geometry + "A,2,10,0,90;90;180,,,,,x,1000,2,10\n"
+        << true << "line 2, column 5 (pitch_deg): '90;90;180' must have one value per tooth (teeth = 2), got 3";
+    QTest::newRow("pitch zero") << geometry + "A,2,10,0,0;360,,,,,x,1000,2,10\n"
+                                << true << "line 2, column 5 (pitch_deg): '0;360' value 1 (0) must be in (0, 360)";
+    QTest::newRow("pitch negative") << geometry + "A,2,10,0,380;-20,,,,,x,1000,2,10\n"
+                                    << true
+                                    << "line 2, column 5 (pitch_deg): '380;-20' value 1 (380) must be in (0, 360)";
+    QTest::newRow("pitch sum 1e-5 off")
+        << geometry + "A,2,10,0,180;180.00001,,,,,x,1000,2,10\n"
+        << true << "line 2, column 5 (pitch_deg): '180;180.00001' must sum to 360 within 1e-06, sums to 360.00001";
+    QTest::newRow("pitch not a number")
+        << geometry + "A,2,10,0,180; abc,,,,,x,1000,2,10\n"
+        << true << "line 2, column 5 (pitch_deg): '180; abc' value 2 ('abc') is not a number (numbers separated by ';'";
+    QTest::newRow("pitch comma-separated")
+        << geometry + "A,2,10,0,\"180,180\",,,,,x,1000,2,10\n"
+        << true << "line 2, column 5 (pitch_deg): '180,180' value 1 ('180,180') is not a number";
+    QTest::newRow("runout too large")
+        << geometry + "A,2,10,0,,0;2500,,,,x,1000,2,10\n"
+        << true
+        << "line 2, column 6 (runout_um): '0;2500' value 2 (2500) must be in (-2500, 2500) (|runout| < D/4 = 250 * "
+           "diameter_mm, diameter_mm = 10)";
+    QTest::newRow("runout wrong length")
+        << geometry + "A,2,10,0,,8,,,,x,1000,2,10\n"
+        << true << "line 2, column 6 (runout_um): '8' must have one value per tooth (teeth = 2), got 1";
+    QTest::newRow("pitch continuation differs")
+        << geometry + "A,2,10,0,170;190,,,,,x,1000,2,10\nA,,,,190;170,,,,,y,1000,2,10\n"
+        << true << "line 3, column 5 (pitch_deg): '190;170' differs from the tool's first row (line 2, '170;190')";
     QTest::newRow("unknown header") << QByteArray("tool_id,teeth,diam\n") << true
                                     << "line 1, column 3: unknown column 'diam'";
     QTest::newRow("reordered header") << QByteArray(

@@ -5,6 +5,8 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QUndoStack>
+#include <numbers>
 
 #include "display_units.h"
 #include "document/project_document.h"
@@ -224,6 +226,27 @@ class TestToolLibraryEditor : public QObject {
                                       << "tools[0].radial_depth_mm = 31: must be in (0, 30]";
     QTest::newRow("max force zero") << int(ToolTableModel::MaxForce) << QVariant(0.0)
                                     << "tools[0].max_force_N = 0: must be in (0, 1e+07]";
+    // R1: 3 teeth, D = 30 mm (|runout| < 7500 um)
+    QTest::newRow("pitch wrong length")
+        << int(ToolTableModel::Pitch) << QVariant("170; 190")
+        << "tools[0].pitch_deg = [170, 190]: must have one value per tooth (teeth = 3), got 2";
+    QTest::newRow("pitch zero") << int(ToolTableModel::Pitch) << QVariant("0; 180; 180")
+                                << "tools[0].pitch_deg[0] = 0: must be in (0, 360)";
+    QTest::newRow("pitch negative") << int(ToolTableModel::Pitch) << QVariant("200; -20; 180")
+                                    << "tools[0].pitch_deg[1] = -20: must be in (0, 360)";
+    QTest::newRow("pitch sum 1e-5 off")
+        << int(ToolTableModel::Pitch) << QVariant("120; 120; 120.00001")
+        << "tools[0].pitch_deg = [120, 120, 120.00001]: must sum to 360 within 1e-06, sums to 360.00001";
+    QTest::newRow("pitch not a number")
+        << int(ToolTableModel::Pitch) << QVariant("120; x; 120")
+        << "tools[0].pitch_deg = '120; x; 120': value 2 ('x') is not a number (one number per tooth, separated by ';'";
+    QTest::newRow("pitch comma-separated")
+        << int(ToolTableModel::Pitch) << QVariant("120,120,120")
+        << "tools[0].pitch_deg = '120,120,120': value 1 ('120,120,120') is not a number";
+    QTest::newRow("runout too large") << int(ToolTableModel::Runout) << QVariant("0; 7500; 0")
+                                      << "tools[0].runout_um[1] = 7500: must be in (-7500, 7500)";
+    QTest::newRow("runout wrong length") << int(ToolTableModel::Runout) << QVariant("5")
+                                         << "tools[0].runout_um = [5]: must have one value per tooth (teeth = 3)";
   }
   void invalidToolEditsAreRefused() {
     QFETCH(int, column);
@@ -239,6 +262,50 @@ class TestToolLibraryEditor : public QObject {
     QCOMPARE(cell.data(Qt::EditRole), before);
     QVERIFY2(editor.errorText().startsWith(message), qPrintable(editor.errorText()));
     QVERIFY(labelShows(editor, message));
+  }
+
+  // Pitch and runout: ';'-separated lists in deg and um, "uniform" / "none" (or an empty cell) for
+  // none; each edit is one undo step; teeth cannot change under a pitch list of another length.
+  void pitchAndRunoutAreUndoableEdits() {
+    mx::app::ProjectDocument doc;
+    doc.load(kRubio);
+    ToolLibraryEditor editor;
+    wire(editor, doc);
+    ToolTableModel* m = editor.toolModel();
+    QCOMPARE(m->headerData(ToolTableModel::Pitch, Qt::Horizontal).toString(), QString("pitch [deg]"));
+    QCOMPARE(m->headerData(ToolTableModel::Runout, Qt::Horizontal).toString(), QString("runout [µm]"));
+    const QModelIndex pitch = m->index(0, ToolTableModel::Pitch);
+    const QModelIndex runout = m->index(0, ToolTableModel::Runout);
+    QCOMPARE(pitch.data().toString(), QString("uniform"));
+    QCOMPARE(runout.data().toString(), QString("none"));
+    QVERIFY(m->setData(pitch, "100;130 ; 130"));
+    QCOMPARE(*doc.project().tools[0].pitch_deg, (std::vector<double>{100, 130, 130}));
+    QCOMPARE(pitch.data().toString(), QString("100; 130; 130"));
+    QCOMPARE(editor.toolPicture()->cutter()->toothAngleRad(1), 100.0 * std::numbers::pi / 180.0);
+    QVERIFY(m->setData(runout, "0; 8; -5"));
+    QCOMPARE(*doc.project().tools[0].runout_um, (std::vector<double>{0, 8, -5}));
+
+    QVERIFY(!m->setData(m->index(0, ToolTableModel::Teeth), 4));
+    QVERIFY2(editor.errorText().startsWith("tools[0].pitch_deg = [100, 130, 130]: must have one value per tooth "
+                                           "(teeth = 4), got 3"),
+             qPrintable(editor.errorText()));
+    QCOMPARE(doc.project().tools[0].teeth, 3);
+
+    const int steps = doc.undoStack()->index();
+    QVERIFY(m->setData(pitch, ""));  // "" is "uniform" as well
+    QVERIFY(!doc.project().tools[0].pitch_deg);
+    QVERIFY(m->setData(runout, "None"));
+    QVERIFY(!doc.project().tools[0].runout_um);
+    QVERIFY(m->setData(pitch, "uniform"));  // no change: no undo step
+    QCOMPARE(doc.undoStack()->index(), steps + 2);
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(*doc.project().tools[0].pitch_deg, (std::vector<double>{100, 130, 130}));
+    QCOMPARE(m->index(0, ToolTableModel::Runout).data().toString(), QString("0; 8; -5"));
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QVERIFY(!doc.project().tools[0].pitch_deg && !doc.project().tools[0].runout_um);
+    QCOMPARE(m->index(0, ToolTableModel::Pitch).data().toString(), QString("uniform"));
   }
 
   void optionalOverridesAreSetAndCleared() {

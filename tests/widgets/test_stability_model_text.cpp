@@ -1,0 +1,79 @@
+// The stability chart's model label and the ZOA/SDM advice for a tool.
+#include <numbers>
+
+#include "stability_model_text.h"
+#include "test_registry.h"
+
+using mx::MillingSetup;
+using mx::StabilityMethod;
+
+namespace {
+
+constexpr double kRad = std::numbers::pi / 180.0;
+
+MillingSetup setup(int teeth, double helix_deg, std::vector<double> pitch_deg, double immersion) {
+  MillingSetup s;
+  s.teeth = teeth;
+  s.diameter_m = 0.016;
+  s.helix_rad = helix_deg * kRad;
+  for (double p : pitch_deg) s.pitch_rad.push_back(p * kRad);
+  s.radial_depth_m = immersion * s.diameter_m;
+  return s;
+}
+
+}  // namespace
+
+Q_DECLARE_METATYPE(MillingSetup)
+Q_DECLARE_METATYPE(StabilityMethod)
+
+class TestStabilityModelText : public QObject {
+  Q_OBJECT
+ private slots:
+  void modelLabel_data() {
+    QTest::addColumn<StabilityMethod>("method");
+    QTest::addColumn<MillingSetup>("tool");
+    QTest::addColumn<QString>("label");
+    const auto sdm = StabilityMethod::SemiDiscretization, zoa = StabilityMethod::ZeroOrder;
+    QTest::newRow("SDM variable helix") << sdm << setup(4, 30, {70, 110, 70, 110}, 0.5)
+                                        << "SDM, 4 teeth, variable pitch, 30\u00b0 helix";
+    QTest::newRow("ZOA uniform") << zoa << setup(3, 0, {}, 1.0) << "ZOA, 3 teeth, uniform pitch";
+    QTest::newRow("equal list is uniform") << zoa << setup(2, 0, {180, 180}, 1.0) << "ZOA, 2 teeth, uniform pitch";
+    QTest::newRow("one tooth, left helix")
+        << sdm << setup(1, -12.5, {}, 1.0) << "SDM, 1 tooth, uniform pitch, -12.5\u00b0 helix";
+  }
+  void modelLabel() {
+    QFETCH(StabilityMethod, method);
+    QFETCH(MillingSetup, tool);
+    QFETCH(QString, label);
+    QCOMPARE(mx::widgets::modelLabel(method, tool), label);
+  }
+
+  void methodAdvice_data() {
+    QTest::addColumn<StabilityMethod>("method");
+    QTest::addColumn<MillingSetup>("tool");
+    QTest::addColumn<QString>("advice");
+    const auto sdm = StabilityMethod::SemiDiscretization, zoa = StabilityMethod::ZeroOrder;
+    const QString tail = "; SDM models pitch and helix";
+    QTest::newRow("ZOA fits") << zoa << setup(3, 0, {}, 1.0) << QString();
+    QTest::newRow("ZOA at a/D = 0.3") << zoa << setup(3, 0, {}, 0.3) << QString();
+    QTest::newRow("ZOA variable pitch") << zoa << setup(4, 0, {70, 110, 70, 110}, 1.0)
+                                        << "ZOA: approximate for this tool (variable pitch)" + tail;
+    QTest::newRow("ZOA helix") << zoa << setup(3, 30, {}, 0.5)
+                               << "ZOA: approximate for this tool (30\u00b0 helix)" + tail;
+    QTest::newRow("ZOA low immersion") << zoa << setup(3, 0, {}, 0.1)
+                                       << "ZOA: approximate for this tool (a/D = 0.1 < 0.3)" + tail;
+    QTest::newRow("ZOA all three")
+        << zoa << setup(4, 30, {85, 95, 85, 95}, 0.05)
+        << "ZOA: approximate for this tool (variable pitch, 30\u00b0 helix, a/D = 0.05 < 0.3)" + tail;
+    QTest::newRow("SDM variable helix") << sdm << setup(4, 30, {70, 110, 70, 110}, 0.05) << QString();
+  }
+  void methodAdvice() {
+    QFETCH(StabilityMethod, method);
+    QFETCH(MillingSetup, tool);
+    QFETCH(QString, advice);
+    QCOMPARE(mx::widgets::methodAdvice(method, tool), advice);
+  }
+};
+
+MX_REGISTER_TEST(TestStabilityModelText)
+#include "test_stability_model_text.moc"
