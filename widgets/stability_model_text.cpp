@@ -4,6 +4,8 @@
 #include <QStringList>
 #include <numbers>
 
+#include "stability/zoa_validity.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -27,9 +29,11 @@ QString methodAdvice(StabilityMethod method, const MillingSetup& setup) {
   QStringList reasons;
   if (!setup.uniformPitch()) reasons << QObject::tr("variable pitch");
   if (setup.helix_rad != 0.0) reasons << helixText(setup);
-  const double immersion = setup.diameter_m > 0.0 ? setup.radial_depth_m / setup.diameter_m : 1.0;
-  if (immersion < kZoaMinRadialImmersion)
-    reasons << QObject::tr("a/D = %1 < %2").arg(immersion, 0, 'g', 3).arg(kZoaMinRadialImmersion);
+  const ZoaValidity validity = zoaValidity(setup);
+  if (setup.uniformPitch() && !validity.accurate)
+    reasons << QObject::tr("intermittent cut: a/D = %1 < %2")
+                   .arg(validity.radial_immersion, 0, 'g', 3)
+                   .arg(validity.min_radial_immersion, 0, 'g', 3);
   if (reasons.isEmpty()) return {};
   return QObject::tr("ZOA: approximate for this tool (%1); SDM models pitch and helix").arg(reasons.join(", "));
 }

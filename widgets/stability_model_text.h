@@ -7,13 +7,11 @@
 
 namespace mx::widgets {
 
-// Below this radial immersion a/D the ZOA's averaged directional factors lose accuracy.
-inline constexpr double kZoaMinRadialImmersion = 0.3;
-
 // "SDM, 4 teeth, variable pitch, 30° helix" or "ZOA, 3 teeth, uniform pitch".
 QString modelLabel(StabilityMethod method, const MillingSetup& setup);
 
-// With the ZOA and a tool it approximates (variable pitch, helix, a/D < 0.3):
+// With the ZOA and a tool it approximates (variable pitch, helix, or an intermittent cut: zoaValidity,
+// engine/stability/zoa_validity.h):
 // "ZOA: approximate for this tool (variable pitch, 30° helix); SDM models pitch and helix".
 // "" with the SDM or when the ZOA fits.
 QString methodAdvice(StabilityMethod method, const MillingSetup& setup);

@@ -18,6 +18,7 @@ MillingSetup setup(int teeth, double helix_deg, std::vector<double> pitch_deg, d
   s.helix_rad = helix_deg * kRad;
   for (double p : pitch_deg) s.pitch_rad.push_back(p * kRad);
   s.radial_depth_m = immersion * s.diameter_m;
+  s.immersion = mx::Immersion::fromRadialDepth(s.radial_depth_m, s.diameter_m, mx::MillingDirection::Up);
   return s;
 }
 
@@ -55,16 +56,15 @@ class TestStabilityModelText : public QObject {
     const auto sdm = StabilityMethod::SemiDiscretization, zoa = StabilityMethod::ZeroOrder;
     const QString tail = "; SDM models pitch and helix";
     QTest::newRow("ZOA fits") << zoa << setup(3, 0, {}, 1.0) << QString();
-    QTest::newRow("ZOA at a/D = 0.3") << zoa << setup(3, 0, {}, 0.3) << QString();
+    QTest::newRow("ZOA at 4 teeth, a/D = 0.5") << zoa << setup(4, 0, {}, 0.5) << QString();  // always a tooth in cut
     QTest::newRow("ZOA variable pitch") << zoa << setup(4, 0, {70, 110, 70, 110}, 1.0)
                                         << "ZOA: approximate for this tool (variable pitch)" + tail;
-    QTest::newRow("ZOA helix") << zoa << setup(3, 30, {}, 0.5)
+    QTest::newRow("ZOA helix") << zoa << setup(3, 30, {}, 1.0)
                                << "ZOA: approximate for this tool (30\u00b0 helix)" + tail;
-    QTest::newRow("ZOA low immersion") << zoa << setup(3, 0, {}, 0.1)
-                                       << "ZOA: approximate for this tool (a/D = 0.1 < 0.3)" + tail;
-    QTest::newRow("ZOA all three")
-        << zoa << setup(4, 30, {85, 95, 85, 95}, 0.05)
-        << "ZOA: approximate for this tool (variable pitch, 30\u00b0 helix, a/D = 0.05 < 0.3)" + tail;
+    QTest::newRow("ZOA intermittent") << zoa << setup(3, 0, {}, 0.5)
+                                      << "ZOA: approximate for this tool (intermittent cut: a/D = 0.5 < 0.75)" + tail;
+    QTest::newRow("ZOA all three") << zoa << setup(4, 30, {85, 95, 85, 95}, 0.05)
+                                   << "ZOA: approximate for this tool (variable pitch, 30\u00b0 helix)" + tail;
     QTest::newRow("SDM variable helix") << sdm << setup(4, 30, {70, 110, 70, 110}, 0.05) << QString();
   }
   void methodAdvice() {
