@@ -19,6 +19,14 @@ QString esc(const QString& s) {
   return s.toHtmlEscaped();
 }
 
+// A per-tooth list ("70/110/70/110"), or `absent` when the tool has none.
+QString perTooth(const std::optional<std::vector<double>>& values, const QString& absent) {
+  if (!values) return absent;
+  QStringList items;
+  for (double v : *values) items << ReportBuilder::formatNumber(v, 1);
+  return items.join('/');
+}
+
 QString rpm(double rev_per_s) {
   return ReportBuilder::formatNumber(revPerSToRpm(rev_per_s), 0);
 }
@@ -150,10 +158,12 @@ QString ReportBuilder::projectSection() const {
       for (std::size_t m = 0; m < modes.size(); ++m) {
         QStringList row;
         if (first)
-          row << esc(t.id) << QString::number(t.teeth) << formatNumber(t.diameter_mm, 2)
-              << formatNumber(t.helix_deg, 1);
+          row << esc(t.id) << QString::number(t.teeth) << formatNumber(t.diameter_mm, 2) << formatNumber(t.helix_deg, 1)
+              << perTooth(t.pitch_deg, "uniform") << perTooth(t.runout_um, "\u2013");
         else
           row << ""
+              << ""
+              << ""
               << ""
               << ""
               << "";
@@ -167,7 +177,9 @@ QString ReportBuilder::projectSection() const {
     addModes("y", t.modes_y);
   }
   out += table("Candidate tools and their modes (per axis)",
-               {"Tool", "Teeth", "D [mm]", "Helix [deg]", "Mode", "f [Hz]", "\u03b6 [%]", "k [N/\u00b5m]"}, tools);
+               {"Tool", "Teeth", "D [mm]", "Helix [deg]", "Pitch [deg]", "Runout [\u00b5m]", "Mode", "f [Hz]",
+                "\u03b6 [%]", "k [N/\u00b5m]"},
+               tools);
 
   const CostWeights& w = d_.weights;
   const CostWeights& after = d_.result.weights;

@@ -1,5 +1,6 @@
 // millexpert-cli lobes / simulate / point: the fixed JSON interface, flag handling and exit codes
 // (0 ok, 1 computation failed, 2 bad input), driven through the real executable.
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -188,6 +189,66 @@ class TestCliCommands : public QObject {
     const double a = fine.json["blim_mm"].toArray()[0].toDouble(), b = fixed.json["blim_mm"].toArray()[0].toDouble();
     QVERIFY(a > 0.0 && b > 0.0);
     QCOMPARE_GE(std::abs(b / a - 1.0), 0.2);
+  }
+
+  // A real cutter from the project file: tools[].pitch_deg, helix_deg, runout_um reach every command's
+  // model. Insperger's FULL tool made a 4-tooth 70/110 deg cutter: the SDM (revolution map) differs from
+  // the uniform tool's at 19000 rpm by more than half, the JSON names the cutter, --helix-slices is
+  // echoed, and a pitch list that does not sum to 360 is refused with exit code 2.
+  void realCutterFromTheProjectFile() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QFile in(kInsperger);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QJsonObject project = QJsonDocument::fromJson(in.readAll()).object();
+    QJsonArray tools = project["tools"].toArray();
+    QJsonObject tool = tools[0].toObject();
+    tool["teeth"] = 4;
+    QJsonObject uniform = tool;
+    uniform["id"] = "U4";
+    tool["id"] = "VP4";
+    tool["pitch_deg"] = QJsonArray{70, 110, 70, 110};
+    tool["helix_deg"] = 30;
+    tool["runout_um"] = QJsonArray{0, 5, 0, -3};
+    tools.append(uniform);
+    tools.append(tool);
+    project["tools"] = tools;
+    const QString path = dir.filePath("real-cutter.mxproj");
+    QFile out(path);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(project).toJson());
+    out.close();
+
+    const QStringList at19000{"--method", "sdm", "--from", "19000", "--to", "19000", "--step", "100"};
+    const Run vp = cli(QStringList{"lobes", path, "--tool", "VP4"} + at19000);
+    const Run u = cli(QStringList{"lobes", path, "--tool", "U4"} + at19000);
+    QCOMPARE(vp.code, 0);
+    QCOMPARE(u.code, 0);
+    const QJsonObject cutter = vp.json["cutter"].toObject();
+    QCOMPARE(cutter["pitch"].toString(), QString("variable"));
+    QCOMPARE(cutter["principal_period"].toString(), QString("revolution"));
+    QCOMPARE(cutter["helix_deg"].toDouble(), 30.0);
+    QCOMPARE(cutter["pitch_deg"].toArray()[1].toDouble(), 110.0);
+    QCOMPARE(cutter["runout_um"].toArray()[3].toDouble(), -3.0);
+    QCOMPARE(u.json["cutter"].toObject()["pitch"].toString(), QString("uniform"));
+    QCOMPARE(vp.json["sdm_helix_slices"].toInt(), 0);
+    const double b_vp = vp.json["blim_mm"].toArray()[0].toDouble(), b_u = u.json["blim_mm"].toArray()[0].toDouble();
+    QCOMPARE_GE(b_vp / b_u, 1.5);
+
+    const Run sim = cli({"simulate", path, "--tool", "VP4", "--speed", "19000", "--depth", "0.1", "--feed", "0.05"});
+    QCOMPARE(sim.code, 0);
+    QCOMPARE(sim.json["chatter"].toBool(), false);
+    QCOMPARE_GE(sim.json["axial_slices"].toInt(), 1);
+
+    tool["pitch_deg"] = QJsonArray{70, 110, 70, 111};
+    tools[2] = tool;
+    project["tools"] = tools;
+    QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    out.write(QJsonDocument(project).toJson());
+    out.close();
+    const Run bad = cli(QStringList{"lobes", path, "--tool", "VP4"} + at19000);
+    QCOMPARE(bad.code, 2);
+    QVERIFY2(bad.err.contains("pitch_deg"), qPrintable(bad.err));
   }
 };
 

@@ -66,6 +66,7 @@ class TestReportExport : public QObject {
     QVERIFY(html.contains("<caption>Table 4. Ranking"));
     QVERIFY(html.contains("[rpm]") && html.contains("[mm/tooth]") && html.contains("[W]"));
     QVERIFY(html.contains("MillExpert " + data_->version));
+    QVERIFY(html.contains("Pitch [deg]") && html.contains("Runout [\u00b5m]") && html.contains(">uniform<"));
     const QRegularExpression img("<img src=\"([^\"]+)\"");
     QStringList sources;
     for (auto it = img.globalMatch(html); it.hasNext();) sources << it.next().captured(1);
