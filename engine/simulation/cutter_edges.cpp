@@ -34,6 +34,7 @@ std::vector<CutterEdge> cutterEdges(const MillingSetup& setup, double depth_m, i
 std::vector<CutterEdge> straightTeeth(const MillingSetup& setup) {
   const bool shared = teethSharePasses(setup);
   std::vector<CutterEdge> edges;
+  edges.reserve(static_cast<std::size_t>(setup.teeth));
   for (int j = 0; j < setup.teeth; ++j) edges.push_back({toothAngle(setup, j), 1.0, shared ? 0 : j});
   return edges;
 }

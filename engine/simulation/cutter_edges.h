@@ -39,7 +39,9 @@ struct ToothPasses {
   std::vector<double> delay_tooth_periods;
   std::vector<double> feed_m;
   std::vector<double> runout_m;
-  std::size_t index(int set, int pass) const { return static_cast<std::size_t>(set * passes + pass); }
+  std::size_t index(int set, int pass) const {
+    return static_cast<std::size_t>(set) * static_cast<std::size_t>(passes) + static_cast<std::size_t>(pass);
+  }
   double maxDelayToothPeriods() const;
 };
 

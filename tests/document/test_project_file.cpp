@@ -483,7 +483,7 @@ class TestProjectFile : public QObject {
     }
     Project cleared = p;
     for (ToolSpec& t : cleared.tools) t.pitch_deg.reset(), t.runout_um.reset();
-    for (const QJsonValue& t : projectToJson(cleared)["tools"].toArray())
+    for (const auto& t : projectToJson(cleared)["tools"].toArray())
       QVERIFY(!t.toObject().contains("pitch_deg") && !t.toObject().contains("runout_um"));
   }
 

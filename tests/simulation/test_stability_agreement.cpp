@@ -118,6 +118,7 @@ class TestStabilityAgreement : public QObject {
       rpm = {6000, 8000, 12000, 12500, 18000, 21000, 22500, 24000};
     }
     std::vector<double> speeds;
+    speeds.reserve(rpm.size());
     for (double n : rpm) speeds.push_back(n / 60.0);
     const LobeDiagram sdm = computeSdmLobes(s, speeds, {});
     int agreeing = 0;

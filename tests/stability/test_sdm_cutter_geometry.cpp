@@ -24,6 +24,7 @@ MillingSetup inspergerTool(double a_over_d, int teeth) {
 
 std::vector<double> rpmGrid(double from_rpm, double to_rpm, int count) {
   std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) out.push_back(rpmToRevPerS(from_rpm + (to_rpm - from_rpm) * i / (count - 1)));
   return out;
 }

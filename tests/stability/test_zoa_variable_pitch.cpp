@@ -28,7 +28,7 @@ double minFinite(const std::vector<double>& v) {
   for (double b : v) m = std::min(m, b);
   return m;
 }
-MillingSetup withPitchDeg(MillingSetup s, std::vector<double> pitch_deg) {
+MillingSetup withPitchDeg(MillingSetup s, const std::vector<double>& pitch_deg) {
   s.teeth = static_cast<int>(pitch_deg.size());
   s.pitch_rad.clear();
   for (double p : pitch_deg) s.pitch_rad.push_back(p * kDeg);

@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kRad = std::numbers::pi / 180.0;
 
-MillingSetup setup(int teeth, double helix_deg, std::vector<double> pitch_deg, double immersion) {
+MillingSetup setup(int teeth, double helix_deg, const std::vector<double>& pitch_deg, double immersion) {
   MillingSetup s;
   s.teeth = teeth;
   s.diameter_m = 0.016;
