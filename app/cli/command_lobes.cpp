@@ -77,7 +77,10 @@ int runLobesCommand(const QStringList& arguments) {
       {"step", "Speed step [rpm]; default: the project's expert grid, else 100.", "RPM"},
       {"delta", "Stability margin delta [1/s] (Rule 1.1); default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1] (Rule 1.2); default: the project's.", "V"},
-      {"steps", "Semi-discretization steps per tooth period, 4-2000 (default: chosen per speed).", "M"},
+      {"steps",
+       "Semi-discretization steps per (mean) tooth period, 4-2000; a variable pitch runs teeth x M per "
+       "revolution (default: chosen per speed).",
+       "M"},
       {"max-depth", "Depth cap [mm]: null where no instability below it (default 20).", "MM"},
       {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
       {"helix-slices",

@@ -30,7 +30,10 @@ int runPointCommand(const QStringList& arguments) {
       {"method", "zoa or sdm (default zoa).", "METHOD", "zoa"},
       {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
-      {"steps", "Semi-discretization steps per tooth period, 4-2000 (default: chosen per speed).", "M"},
+      {"steps",
+       "Semi-discretization steps per (mean) tooth period, 4-2000; a variable pitch runs teeth x M per "
+       "revolution (default: chosen per speed).",
+       "M"},
       {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
       dynamicsCommandOption(),
   });
