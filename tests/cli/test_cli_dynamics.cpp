@@ -32,7 +32,7 @@ QString tapProject(const QTemporaryDir& dir, bool keep_modes, double delta_per_s
   r1.frf_y = FrfRefSpec{"taps/R1.uff", 1, QString("accelerance"), {}};
   if (!keep_modes) r1.modes_x.clear(), r1.modes_y.clear();
   p.expert->delta_per_s = delta_per_s;
-  const QString path = dir.filePath("tap.mxproj");
+  QString path = dir.filePath("tap.mxproj");
   saveProject(p, path);
   return path;
 }

@@ -33,15 +33,15 @@ QString errorOf(const QJsonObject& root) {
 // The tools' FRF files as absolute paths: a save to another folder names the same files differently.
 QJsonObject withAbsoluteFrfFiles(QJsonObject root, const QString& folder) {
   QJsonArray tools = root.value("tools").toArray();
-  for (qsizetype i = 0; i < tools.size(); ++i) {
-    QJsonObject tool = tools[i].toObject();
+  for (auto&& entry : tools) {
+    QJsonObject tool = entry.toObject();
     for (const char* key : {"frf_x", "frf_y"}) {
       if (!tool.contains(key)) continue;
       QJsonObject ref = tool.value(key).toObject();
       ref["file"] = QDir::cleanPath(QDir(folder).absoluteFilePath(ref.value("file").toString()));
       tool[key] = ref;
     }
-    tools[i] = tool;
+    entry = tool;
   }
   if (!tools.isEmpty()) root["tools"] = tools;
   return root;
