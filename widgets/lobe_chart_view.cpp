@@ -22,6 +22,8 @@ QColor verdictColor(PointVerdict v) {
   switch (v) {
     case PointVerdict::Stable:
       return QColor(30, 150, 30);
+    case PointVerdict::Marginal:
+      return QColor(200, 150, 0);
     case PointVerdict::Unstable:
       return QColor(200, 20, 20);
     case PointVerdict::LimitExceeded:

@@ -35,8 +35,9 @@ struct ToolLobeSeries {
   bool margin_needs_modes = false;  // measured lobes only: delta > 0 could not be applied
 };
 
-// LimitExceeded: stable, but over the spindle power or the tool force limit.
-enum class PointVerdict { Unknown, Stable, Unstable, LimitExceeded };
+// LimitExceeded: stable, but over the spindle power or the tool force limit. Marginal: within the
+// marginal band of the lobe (StabilityBoundary::verdict), where the lobes and a simulation may disagree.
+enum class PointVerdict { Unknown, Stable, Marginal, Unstable, LimitExceeded };
 
 class LobeChartView : public QWidget {
   Q_OBJECT

@@ -6,13 +6,23 @@
 
 namespace mx::widgets {
 
-OperatingPointReadout::OperatingPointReadout(QWidget* parent) : QWidget(parent), verdict_(new QLabel(this)) {
+OperatingPointReadout::OperatingPointReadout(QWidget* parent)
+    : QWidget(parent), verdict_(new QLabel(this)), agreement_(new QLabel(this)) {
   auto* outer = new QVBoxLayout(this);
+  verdict_->setObjectName("readout_verdict");
   verdict_->setAlignment(Qt::AlignCenter);
   verdict_->setMinimumHeight(32);
-  verdict_->setToolTip(tr("Stable when the depth is below alpha times the delta-margined lobe (Rule 1)"));
+  verdict_->setToolTip(
+      tr("The lobes' verdict: stable below alpha times the delta-margined lobe (Rule 1), marginal up to 5 % above "
+         "the lobe, unstable beyond"));
   outer->addWidget(verdict_);
+  agreement_->setObjectName("readout_agreement");
+  agreement_->setWordWrap(true);
+  agreement_->setStyleSheet("color: #8a5a00;");
+  agreement_->hide();
+  outer->addWidget(agreement_);
   auto* form = new QFormLayout;
+  form->setObjectName("readout_form");
   form->setLabelAlignment(Qt::AlignRight);
   outer->addLayout(form);
   outer->addStretch(1);
@@ -38,13 +48,15 @@ OperatingPointReadout::OperatingPointReadout(QWidget* parent) : QWidget(parent),
       {"ros", "ROS",
        "Robustness: the smallest relative change of speed and depth that reaches the margined stability boundary (1 = "
        "the depth could double; negative when unstable)"},
+      {"simulation", "Simulation",
+       "The time-domain simulation of this point (Live simulation dock): eta = 1 means no growth of the vibration"},
   };
   for (const auto& r : rows) values_.insert(r.key, addRow(r.key, tr(r.label), tr(r.tip)));
   refresh();
 }
 
 QLabel* OperatingPointReadout::addRow(const QString& key, const QString& label, const QString& tooltip) {
-  auto* form = static_cast<QFormLayout*>(static_cast<QVBoxLayout*>(layout())->itemAt(1)->layout());
+  auto* form = findChild<QFormLayout*>("readout_form");
   auto* name = new QLabel(label + ":", this);
   auto* value = new QLabel(this);
   value->setObjectName("readout_" + key);
@@ -64,6 +76,44 @@ void OperatingPointReadout::setUnits(DisplayUnits* units) {
 void OperatingPointReadout::setReadout(const PointReadout& readout) {
   readout_ = readout;
   refresh();
+}
+
+void OperatingPointReadout::setSimulation(const SimulationCheck& check) {
+  simulation_ = check;
+  refreshSimulation();
+}
+
+QString OperatingPointReadout::agreementNote() const {
+  return agreement_->isHidden() ? QString() : agreement_->text();
+}
+
+void OperatingPointReadout::refreshSimulation() {
+  const SimulationCheck& s = simulation_;
+  QString text;
+  switch (s.state) {
+    case SimulationCheck::State::None:
+      text = tr("not run for this point");
+      break;
+    case SimulationCheck::State::Running:
+      text = tr("running...");
+      break;
+    case SimulationCheck::State::Done:
+      text = (s.chatter ? tr("CHATTER (\u03b7 = %1)") : tr("STABLE (\u03b7 = %1)")).arg(s.eta, 0, 'f', 3);
+      break;
+  }
+  values_["simulation"]->setText(text);
+  // Marginal points are where the two may differ: no note. A definite verdict the run contradicts gets one.
+  const PointReadout& r = readout_;
+  const bool done = s.state == SimulationCheck::State::Done && r.valid && !r.marginal;
+  const bool disagree = done && r.stable == s.chatter;
+  agreement_->setVisible(disagree);
+  if (!disagree) return;
+  agreement_->setText(
+      tr("The lobes say %1, the simulation says %2 (\u03b7 = %3). The verdict follows the lobes: they are the "
+         "limit of the linear model, while a 60-revolution run from one start can miss slow growth or stop at "
+         "contact loss.")
+          .arg(r.stable ? tr("STABLE") : tr("UNSTABLE"), s.chatter ? tr("CHATTER") : tr("STABLE"))
+          .arg(s.eta, 0, 'f', 3));
 }
 
 QString OperatingPointReadout::text(const QString& field) const {
@@ -99,6 +149,9 @@ void OperatingPointReadout::refresh() {
   if (!valid) {
     verdict = r.message.isEmpty() ? tr("No operating point") : r.message;
     color = "#777777";
+  } else if (r.marginal) {
+    verdict = tr("MARGINAL \u2014 within 5 % of the stability limit");
+    color = "#b08000";
   } else if (!r.stable) {
     verdict = tr("UNSTABLE \u2014 chatter expected");
     color = "#c81414";
@@ -116,6 +169,7 @@ void OperatingPointReadout::refresh() {
   verdict_->setStyleSheet(QString("QLabel { color: white; background: %1; font-weight: bold; padding: 6px; "
                                   "border-radius: 4px; }")
                               .arg(color));
+  refreshSimulation();
 }
 
 }  // namespace mx::widgets

@@ -1,6 +1,8 @@
 #pragma once
 // Live readouts of the operating point: speed, depth, feed per tooth, peak power and its fraction of
-// the spindle limit, MRR, b_lim at that speed, Delta N_s, ROS and the stable / unstable verdict.
+// the spindle limit, MRR, b_lim at that speed, Delta N_s, ROS, the stable / marginal / unstable verdict
+// of the lobes, and the time-domain simulation of the same point. When the lobes and the simulation
+// disagree, a note under the verdict shows both and says that the verdict follows the lobes.
 #include <QLabel>
 #include <QWidget>
 
@@ -17,16 +19,22 @@ class OperatingPointReadout : public QWidget {
   void setUnits(DisplayUnits* units);
   void setReadout(const PointReadout& readout);
   const PointReadout& readout() const { return readout_; }
-  QString text(const QString& field) const;  // the shown text of a field (tests): "speed", "blim", ...
+  void setSimulation(const SimulationCheck& check);  // of the shown point only
+  QString agreementNote() const;                     // "" unless the lobes and the simulation disagree
+  QString text(const QString& field) const;          // the shown text of a field (tests): "speed", "blim", ...
 
  private:
   void refresh();
   QLabel* addRow(const QString& key, const QString& label, const QString& tooltip);
 
   DisplayUnits* units_ = nullptr;
+  void refreshSimulation();
+
   PointReadout readout_;
+  SimulationCheck simulation_;
   QHash<QString, QLabel*> values_;
   QLabel* verdict_;
+  QLabel* agreement_;
 };
 
 }  // namespace mx::widgets

@@ -18,14 +18,23 @@ struct PointReadout {
   double blim_mm = 0.0;        // alpha * delta-lobe at this speed; +inf: none below the cap
   double delta_ns_rpm = 0.0;   // spindle speed security change (2006, section 3.B)
   double ros = 0.0;            // StabilityBoundary::robustness (negative when unstable)
-  bool stable = false;
-  bool valid = false;  // false: no lobes yet, or the speed is outside the computed range
-  QString message;     // why not valid
+  bool stable = false;         // below alpha * b_lim
+  bool marginal = false;       // not stable, but within StabilityBoundary's marginal band of the lobe
+  bool valid = false;          // false: no lobes yet, or the speed is outside the computed range
+  QString message;             // why not valid
 
   double powerFraction() const { return power_limit_w > 0.0 ? peak_power_w / power_limit_w : 0.0; }
   bool powerOk() const { return power_limit_w <= 0.0 || peak_power_w <= power_limit_w; }
   double forceFraction() const { return force_limit_n > 0.0 ? peak_force_n / force_limit_n : 0.0; }
   bool forceOk() const { return force_limit_n <= 0.0 || peak_force_n <= force_limit_n; }
+};
+
+// The time-domain simulation of the same point (tool, speed, depth, feed), shown beside the lobes.
+struct SimulationCheck {
+  enum class State { None, Running, Done };
+  State state = State::None;
+  bool chatter = false;
+  double eta = 0.0;  // chatter indicator eta (1 = no growth)
 };
 
 }  // namespace mx::widgets

@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <QGraphicsOpacityEffect>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -151,6 +152,8 @@ QWidget* SimulationView::buildIndicatorPanel() {
 
 void SimulationView::clear() {
   replot_timer_->stop();
+  stale_ = false;
+  setPlotsGreyed(false);
   for (RingBuffer<double>* b : {&time_, &x_um_, &y_um_, &force_n_, &power_w_}) b->clear();
   running_ = false;
   summary_shown_ = false;
@@ -267,6 +270,35 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
 void SimulationView::setStatus(const QString& message) {
   running_ = false;
   status_label_->setText(message);
+}
+
+void SimulationView::setStale(const QString& reason) {
+  stale_ = true;
+  running_ = false;
+  setPlotsGreyed(true);
+  status_label_->setText(tr("Stale: %1").arg(reason));
+  verdict_label_->setText(tr("Verdict: \u2013 (stale)"));
+  verdict_label_->setStyleSheet(verdictStyle(palette().color(QPalette::Mid)));
+  suggested_rpm_ = 0.0;
+  move_button_->setText(tr("Move to suggested speed"));
+  move_button_->setEnabled(false);
+}
+
+QString SimulationView::statusText() const {
+  return status_label_->text();
+}
+
+void SimulationView::setPlotsGreyed(bool greyed) {
+  for (QWidget* plot :
+       {static_cast<QWidget*>(motion_plot_), static_cast<QWidget*>(power_plot_), static_cast<QWidget*>(spectrum_)}) {
+    if (!greyed) {
+      plot->setGraphicsEffect(nullptr);
+      continue;
+    }
+    auto* effect = new QGraphicsOpacityEffect(plot);
+    effect->setOpacity(0.35);
+    plot->setGraphicsEffect(effect);
+  }
 }
 
 int SimulationView::plottedSampleCount() const {

@@ -40,6 +40,11 @@ class SimulationView : public QWidget {
   void setSummary(const mx::gui::SimulationSummary& summary);
   // A failed or cancelled run: keeps the traces, shows the message.
   void setStatus(const QString& message);
+  // The shown run no longer matches the operating point, the tool or the project: the traces stay,
+  // greyed, the status says why, and the verdict and the suggested speed are withdrawn until a new run.
+  void setStale(const QString& reason);
+  bool isStale() const { return stale_; }
+  QString statusText() const;
   void clear();
 
   // Test accessors.
@@ -86,7 +91,10 @@ class SimulationView : public QWidget {
   double power_limit_w_ = 0.0;
   double tooth_passing_hz_ = 0.0;
   int teeth_ = 0;
+  void setPlotsGreyed(bool greyed);
+
   bool running_ = false;
+  bool stale_ = false;
   bool summary_shown_ = false;
   bool chatter_shown_ = false;
   double suggested_rpm_ = 0.0;

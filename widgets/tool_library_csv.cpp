@@ -128,8 +128,7 @@ class CsvReader {
       app::ToolSpec tool;
       tool.id = id;
       double teeth = 0.0;
-      if (!required(kTeeth, rules::kCountAtLeastOne, teeth) ||
-          !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
+      if (!required(kTeeth, rules::kTeeth, teeth) || !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
           !required(kHelix, rules::kHelixDeg, tool.helix_deg) || !optional(kKt, rules::kPositive, tool.Kt_N_mm2) ||
           !optional(kKr, rules::kNonNegative, tool.Kr) ||
           !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm) ||

@@ -114,7 +114,7 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
   Range r{};
   switch (column) {
     case Teeth:
-      r = {0, 99, 0, 1, ""};
+      r = {0, app::rules::kTeeth.hi, 0, 1, ""};
       break;
     case Diameter:
       r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, ""};
@@ -161,7 +161,7 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
     case Id:
       return tr("Tool id (unique, non-empty)");
     case Teeth:
-      return tr("Number of teeth (integer >= 1)");
+      return tr("Number of teeth (integer in [1, 100])");
     case Diameter:
       return tr("Tool diameter D [%1] (> 0)").arg(lengthUnit());
     case Helix:
@@ -320,10 +320,11 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
     default:
       return false;
   }
-  QString error = !listError.isEmpty() ? listError
-                  : !ok                ? QString("%1 = '%2': not a number").arg(path, value.toString())
-                  : !integral          ? QString("%1 = %2: must be an integer >= 1").arg(path, value.toString())
-                                       : ToolLibraryCsv::validationError(edited);
+  QString error =
+      !listError.isEmpty() ? listError
+      : !ok                ? QString("%1 = '%2': not a number").arg(path, value.toString())
+      : !integral ? QString("%1 = %2: must be an integer %3").arg(path, value.toString(), app::rules::kTeeth.range())
+                  : ToolLibraryCsv::validationError(edited);
   if (!error.isEmpty()) {
     emit editRefused(error);
     return false;

@@ -1,7 +1,8 @@
 // millexpert-cli point PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH [--method zoa|sdm]
 //                   [--delta V] [--alpha V] [--steps M] [--dynamics modal|measured]
 // Everything the lobe chart shows for one operating point: b_lim at the speed (alpha * delta-lobes,
-// Rule 1), the stability verdict, Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
+// Rule 1), the stability verdict ("stable": below alpha * b_lim; "verdict": stable, marginal up to 1.05 b_lim, or
+// unstable), Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
 // torque and MRR (Pareto eq. 8), the available spindle power at the speed and the power's fraction of
 // it (machine.spindle_power_W, max_torque_Nm, spindle_curve); "dynamics_used" says whether the lobes ran on the
 // tap-test FRF (services/measured_dynamics.h).
@@ -88,6 +89,7 @@ int runPointCommand(const QStringList& arguments) {
                   {"feed_per_tooth_mm", feed_mm},
                   {"blim_mm", jsonNumberOrNull(blim * 1e3)},
                   {"stable", stable},
+                  {"verdict", verdictKey(boundary.verdict(n, b))},
                   {"delta_Ns_rpm", revPerSToRpm(boundary.speedSecurity(n, b))},
                   {"ROS", jsonNumberOrNull(boundary.robustness(n, b))},
                   {"peak_power_W", perf.peak_power_w},

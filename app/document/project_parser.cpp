@@ -127,7 +127,7 @@ std::optional<FrfRefSpec> readFrfRef(const ObjectReader& tool, const QString& ke
 ToolSpec readTool(const ObjectReader& r) {
   ToolSpec t;
   t.id = r.string("id");
-  t.teeth = r.integer("teeth", rules::kCountAtLeastOne);
+  t.teeth = r.integer("teeth", rules::kTeeth);
   t.diameter_mm = r.number("diameter_mm", rules::kPositive);
   t.helix_deg = r.number("helix_deg", rules::kHelixDeg);
   t.pitch_deg = r.optionalNumbers("pitch_deg");

@@ -1,7 +1,7 @@
 #pragma once
 // The numeric rules of the project document and the wording of its messages. Every message names
 // the field path, the offending value and the allowed range, e.g.
-//   "tools[0].teeth = 0: must be an integer >= 1", "material.Kt_N_mm2: missing (required number > 0)".
+//   "tools[0].teeth = 0: must be an integer in [1, 100]", "material.Kt_N_mm2: missing (required number > 0)".
 #include <QJsonValue>
 #include <QString>
 #include <optional>
@@ -29,9 +29,11 @@ inline constexpr NumberRule kNonNegative{B::Closed, 0.0, B::None, 0.0, false};
 inline constexpr NumberRule kPercent{B::Open, 0.0, B::Open, 100.0, false};   // damping_pct
 inline constexpr NumberRule kFraction{B::Open, 0.0, B::Closed, 1.0, false};  // alpha, a/D
 inline constexpr NumberRule kHelixDeg{B::Open, -90.0, B::Open, 90.0, false};
-inline constexpr NumberRule kTorqueNm{B::Open, 0.0, B::Closed, 1e5, false};         // machine.max_torque_Nm
-inline constexpr NumberRule kToolForceN{B::Open, 0.0, B::Closed, 1e7, false};       // tools[].max_force_N
-inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true};   // teeth, divisions
+inline constexpr NumberRule kTorqueNm{B::Open, 0.0, B::Closed, 1e5, false};        // machine.max_torque_Nm
+inline constexpr NumberRule kToolForceN{B::Open, 0.0, B::Closed, 1e7, false};      // tools[].max_force_N
+inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true};  // divisions
+// Teeth per cutter: every model's cost grows with the teeth, and no milling cutter has more than 100.
+inline constexpr NumberRule kTeeth{B::Closed, 1.0, B::Closed, 100.0, true};
 inline constexpr NumberRule kCountAtLeastZero{B::Closed, 0.0, B::None, 0.0, true};  // indices
 // Radial depth of a tool of diameter D: (0, D].
 inline constexpr NumberRule radialDepth(double diameter_mm) {

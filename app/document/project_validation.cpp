@@ -83,7 +83,7 @@ void validateFrfRef(const QString& path, const std::optional<FrfRefSpec>& ref) {
 void validateTool(const QString& path, const ToolSpec& t) {
   if (t.id.trimmed().isEmpty())
     throw ProjectError(QString("%1.id = %2: must be a non-empty string").arg(path, formatValue(t.id)));
-  checkNumber(path + ".teeth", t.teeth, rules::kCountAtLeastOne);
+  checkNumber(path + ".teeth", t.teeth, rules::kTeeth);
   checkNumber(path + ".diameter_mm", t.diameter_mm, rules::kPositive);
   checkNumber(path + ".helix_deg", t.helix_deg, rules::kHelixDeg);
   validateToolGeometry(path, t);

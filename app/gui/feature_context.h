@@ -6,6 +6,7 @@
 #include <QObject>
 #include <QString>
 #include <QThreadPool>
+#include <optional>
 
 #include "display_units.h"
 #include "document/project_document.h"
@@ -33,12 +34,21 @@ class FeatureContext : public QObject {
   const widgets::PointReadout& readout() const { return readout_; }
   void setReadout(const widgets::PointReadout& readout);
 
+  // The time-domain simulation: what runs or last ran, for which tool and point. A result counts only
+  // for the active tool at the current point; a new run or a project edit replaces it.
+  void setSimulationRunning(const QString& tool, const app::PickedPoint& point);
+  void setSimulationResult(const SimulationSummary& summary);  // of the running tool and point
+  void clearSimulation();                                      // none runs, none is current
+  widgets::SimulationCheck simulationCheck() const;            // for the active tool and current point
+  const SimulationSummary* currentSimulation() const;          // null unless Done for the current point
+
  signals:
   void activeToolChanged(const QString& id);
   void readoutChanged(const mx::widgets::PointReadout& readout);
   void lobesShown();           // the chart was rebuilt (its markers and overlays are gone)
   void simulationRequested();  // simulate the operating point of the active tool
   void simulationFinished(const mx::gui::SimulationSummary& summary);
+  void simulationStateChanged();  // started, finished or cleared
   // Chatter reported at the operating point while the 2006 ranking is the active study (Rule 6).
   void rankingChatterReported(double chatter_hz);
 
@@ -46,8 +56,14 @@ class FeatureContext : public QObject {
   const app::ProjectDocument& document_;
   widgets::DisplayUnits& units_;
   QThreadPool* engine_pool_;
+  bool simulatesCurrentPoint() const;
+
   QString active_tool_;
   widgets::PointReadout readout_;
+  QString simulated_tool_;
+  app::PickedPoint simulated_point_;
+  bool simulation_running_ = false;
+  std::optional<SimulationSummary> simulation_;
 };
 
 }  // namespace mx::gui

@@ -30,7 +30,9 @@ LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineR
       status_point_(new QLabel(window)),
       status_engine_(new QLabel(window)),
       progress_(new QProgressBar(window)),
-      cancel_button_(new QToolButton(window)) {
+      cancel_button_(new QToolButton(window)),
+      evaluator_(std::make_shared<PointEvaluator>()),
+      point_runner_(new PointRunner(this)) {
   setObjectName("lobesFeature");
   window->setCentralWidget(chart_);
   readout_->setUnits(context_.units());
@@ -87,6 +89,9 @@ void LobesFeature::buildStatusBar(QMainWindow* window) {
 void LobesFeature::connectSignals() {
   connect(&recompute_timer_, &QTimer::timeout, this, &LobesFeature::recompute);
   connect(engine_, &EngineRunner::lobesReady, this, &LobesFeature::onLobesReady);
+  connect(point_runner_, &PointRunner::evaluated, this, &LobesFeature::onPointEvaluated);
+  connect(&context_, &FeatureContext::simulationStateChanged, this,
+          [this] { readout_->setSimulation(context_.simulationCheck()); });
   connect(engine_, &EngineRunner::lobeProgress, this, [this](double f) { progress_->setValue(qRound(100 * f)); });
   connect(engine_, &EngineRunner::busyChanged, this, [this](bool busy) {
     progress_->setVisible(busy);
@@ -113,7 +118,6 @@ void LobesFeature::connectSignals() {
     app::PickedPoint p = context_.point();
     p.feed_mm_per_tooth = context_.units()->toMm(feed_spin_->value());
     emit pointRequested(p, 0);
-    updatePowerLimit();
   });
   connect(this, &LobesFeature::lobesShown, &context_, &FeatureContext::lobesShown);
   connect(context_.units(), &widgets::DisplayUnits::changed, this, [this] {
@@ -180,7 +184,9 @@ void LobesFeature::updateForceLimits() {
     const app::ToolSpec* spec = p.findTool(QString::fromStdString(t.setup.tool_id));
     limits.push_back(spec ? p.toolForceLimitN(*spec) : std::numeric_limits<double>::infinity());
   }
-  evaluator_.setForceLimits(std::move(limits));
+  auto evaluator = std::make_shared<PointEvaluator>(*evaluator_);
+  evaluator->setForceLimits(std::move(limits));
+  evaluator_ = std::move(evaluator);
 }
 
 // The toolbar's tool choice and View > Tools on the chart; the active tool stays when it still exists.
@@ -230,7 +236,7 @@ void LobesFeature::recompute() {
   } catch (const app::ProjectError& e) {
     chart_->clear();
     snapshot_.reset();
-    evaluator_ = PointEvaluator();
+    evaluator_ = std::make_shared<PointEvaluator>();
     status_engine_->setText(tr("Lobes unavailable: %1").arg(QString::fromStdString(e.what())));
     return;
   }
@@ -252,10 +258,11 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   }
   snapshot_ = result.snapshot;
   const app::Project& p = context_.project();
-  evaluator_ = PointEvaluator(snapshot_, p.machine ? app::spindlePowerOf(*p.machine) : SpindlePowerCurve{});
+  evaluator_ =
+      std::make_shared<PointEvaluator>(snapshot_, p.machine ? app::spindlePowerOf(*p.machine) : SpindlePowerCurve{});
   updateForceLimits();
   chart_->setSeries(snapshot_->series(), snapshot_->delta_per_s, snapshot_->alpha);
-  const int tool = std::max(0, evaluator_.toolIndex(context_.activeTool()));
+  const int tool = std::max(0, evaluator_->toolIndex(context_.activeTool()));
   chart_->setActiveTool(tool);
   showModelLabel();
   setSnapGrid(tool);
@@ -263,7 +270,6 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
     pickInitialPoint(tool);
   else
     showPoint(context_.point());
-  updatePowerLimit();
   if (!snapshot_->warnings.isEmpty())
     emit statusMessage(tr("Measured-FRF lobes left out: %1").arg(snapshot_->warnings.join("; ")), 15000);
   status_engine_->setText(
@@ -289,8 +295,8 @@ void LobesFeature::pickInitialPoint(int tool) {
   const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
   app::PickedPoint start;
   start.speed_rpm = std::round(revPerSToRpm(0.5 * (speeds.front() + speeds.back())) / 100.0) * 100.0;
-  const widgets::PointReadout r = evaluator_.evaluate(tool, start.speed_rpm, 0.0, 0.1);
-  start.depth_mm = std::isfinite(r.blim_mm) ? 0.5 * r.blim_mm : 1.0;
+  const double blim_mm = evaluator_->depthLimitMm(tool, start.speed_rpm);
+  start.depth_mm = std::isfinite(blim_mm) ? 0.5 * blim_mm : 1.0;
   start.feed_mm_per_tooth = p.operation ? 0.5 * p.operation->max_feed_per_tooth_mm : 0.1;
   emit initialPointRequested(start);
   emit context_.simulationRequested();
@@ -306,51 +312,74 @@ QString powerLimitLabel(const app::MachineSpec& m, double feed_mm_per_tooth) {
 }
 }  // namespace
 
-void LobesFeature::updatePowerLimit() {
-  const int tool = evaluator_.toolIndex(context_.activeTool());
-  const double feed = context_.point().feed_mm_per_tooth;
-  power_limit_feed_ = feed;
-  const app::Project& p = context_.project();
-  const QVector<double> limit = evaluator_.powerLimitMm(tool, feed);
-  chart_->setPowerLimit(limit, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
-}
-
 void LobesFeature::showPoint(const app::PickedPoint& point) {
-  if (point.feed_mm_per_tooth != power_limit_feed_) updatePowerLimit();  // the curve depends on s_t
-  const int tool = evaluator_.toolIndex(context_.activeTool());
-  const widgets::PointReadout r = evaluator_.evaluate(tool, point.speed_rpm, point.depth_mm, point.feed_mm_per_tooth);
-  readout_->setReadout(r);
-  widgets::PointVerdict verdict = widgets::PointVerdict::Unknown;
-  if (r.valid)
-    verdict = !r.stable                      ? widgets::PointVerdict::Unstable
-              : !r.powerOk() || !r.forceOk() ? widgets::PointVerdict::LimitExceeded
-                                             : widgets::PointVerdict::Stable;
-  chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict);
+  chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict_);  // recoloured when evaluated
   feed_spin_->blockSignals(true);
   feed_spin_->setValue(context_.units()->fromMm(point.feed_mm_per_tooth));
   feed_spin_->blockSignals(false);
+  requestReadout(point);
+}
+
+// The power-limit curve depends on the evaluator, the tool and s_t: it is recomputed with the readout
+// only when one of them changed.
+void LobesFeature::requestReadout(const app::PickedPoint& point) {
+  PointJob job{evaluator_, evaluator_->toolIndex(context_.activeTool()), point, false};
+  job.with_power_limit = evaluator_ != power_limit_evaluator_ || job.tool != power_limit_tool_ ||
+                         point.feed_mm_per_tooth != power_limit_feed_;
+  if (job.with_power_limit) {
+    power_limit_evaluator_ = evaluator_;
+    power_limit_tool_ = job.tool;
+    power_limit_feed_ = point.feed_mm_per_tooth;
+  }
+  point_runner_->submit(std::move(job));
+}
+
+// Every answer updates the panel (a drag shows its progress); only the latest request's answer
+// colours the marker and becomes the readout the other features read.
+void LobesFeature::onPointEvaluated(const PointJobResult& result) {
+  if (result.power_limit_mm && result.evaluator == evaluator_) {
+    const app::Project& p = context_.project();
+    const double feed = result.point.feed_mm_per_tooth;
+    chart_->setPowerLimit(*result.power_limit_mm, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
+  }
+  readout_->setReadout(result.readout);
+  if (result.generation != point_runner_->latestGeneration()) return;
+  shown_generation_ = result.generation;
+  showVerdict(result.readout);
+}
+
+void LobesFeature::showVerdict(const widgets::PointReadout& r) {
+  verdict_ = widgets::PointVerdict::Unknown;
+  if (r.valid)
+    verdict_ = r.marginal                     ? widgets::PointVerdict::Marginal
+               : !r.stable                    ? widgets::PointVerdict::Unstable
+               : !r.powerOk() || !r.forceOk() ? widgets::PointVerdict::LimitExceeded
+                                              : widgets::PointVerdict::Stable;
+  const app::PickedPoint& point = context_.point();
+  chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict_);
+  readout_->setSimulation(context_.simulationCheck());
   status_point_->setText(tr("Point: %1 rpm, b = %2 mm, s_t = %3 mm/tooth \u2014 %4")
                              .arg(point.speed_rpm, 0, 'f', 0)
                              .arg(point.depth_mm, 0, 'f', 3)
                              .arg(point.feed_mm_per_tooth, 0, 'f', 3)
                              .arg(readout_->text("verdict")));
   context_.setReadout(r);
+  emit readoutShown();
 }
 
 void LobesFeature::showActiveTool() {
   const QString& id = context_.activeTool();
   const int index = tool_combo_->findText(id);
   if (index >= 0 && tool_combo_->currentIndex() != index) tool_combo_->setCurrentIndex(index);
-  chart_->setActiveTool(evaluator_.toolIndex(id));
+  chart_->setActiveTool(evaluator_->toolIndex(id));
   showModelLabel();
   showMethodAdvice();
-  updatePowerLimit();
   showPoint(context_.point());
 }
 
 // The model of the lobes shown, from the snapshot they were computed on.
 void LobesFeature::showModelLabel() {
-  const int tool = snapshot_ ? evaluator_.toolIndex(context_.activeTool()) : -1;
+  const int tool = snapshot_ ? evaluator_->toolIndex(context_.activeTool()) : -1;
   if (tool < 0) {
     chart_->setModelLabel({});
     return;

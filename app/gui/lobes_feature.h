@@ -18,6 +18,7 @@
 #include "lobe_job.h"
 #include "operating_point_readout.h"
 #include "point_evaluator.h"
+#include "point_runner.h"
 #include "window_feature.h"
 
 namespace mx::gui {
@@ -38,9 +39,12 @@ class LobesFeature : public WindowFeature {
   widgets::OperatingPointReadout* readout() const { return readout_; }
   QString methodAdviceText() const { return method_advice_->isHidden() ? QString() : method_advice_->text(); }
   const std::shared_ptr<const LobeSnapshot>& snapshot() const { return snapshot_; }  // null before the first lobes
+  // The readouts show the answer to the latest request (the current point, tool and lobes).
+  bool readoutIsCurrent() const { return shown_generation_ == point_runner_->latestGeneration(); }
 
  signals:
   void lobesShown();       // new lobes are on the chart
+  void readoutShown();     // the readouts and the verdict of the current point are shown
   void cancelRequested();  // the Cancel button: every feature stops its engine-thread work
 
  private:
@@ -52,9 +56,11 @@ class LobesFeature : public WindowFeature {
   void onLobesReady(const LobeJobResult& result);
   void setSnapGrid(int tool);
   void pickInitialPoint(int tool);
-  void updatePowerLimit();
   void updateForceLimits();
-  void showPoint(const app::PickedPoint& point);
+  void showPoint(const app::PickedPoint& point);  // the marker at once; the readouts from the readout thread
+  void requestReadout(const app::PickedPoint& point);
+  void onPointEvaluated(const PointJobResult& result);
+  void showVerdict(const widgets::PointReadout& r);
   void showActiveTool();
   void showModelLabel();    // the chart's title: the active tool's stability model
   void showMethodAdvice();  // where the ZOA is approximate for the active tool
@@ -75,10 +81,16 @@ class LobesFeature : public WindowFeature {
   QMenu* tools_menu_ = nullptr;  // View > Tools on the chart (checkable)
   QTimer recompute_timer_;       // one lobe computation per burst of edits
   std::shared_ptr<const LobeSnapshot> snapshot_;
-  PointEvaluator evaluator_;
+  std::shared_ptr<const PointEvaluator> evaluator_;  // immutable: replaced when the lobes or the limits change
+  PointRunner* point_runner_;
   LobeMethod method_ = LobeMethod::ZeroOrder;
   int drag_id_ = 1;
-  double power_limit_feed_ = -1.0;  // feed per tooth the power-limit curve was drawn for
+  quint64 shown_generation_ = 0;  // of the readout request whose answer the verdict shows
+  widgets::PointVerdict verdict_ = widgets::PointVerdict::Unknown;  // of the last evaluated point
+  // What the power-limit curve was last requested for (evaluator, tool, feed per tooth).
+  std::shared_ptr<const PointEvaluator> power_limit_evaluator_;
+  int power_limit_tool_ = -1;
+  double power_limit_feed_ = -1.0;
 };
 
 }  // namespace mx::gui

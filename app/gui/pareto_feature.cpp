@@ -182,8 +182,7 @@ void ParetoFeature::connectSignals() {
     updateFiredRules();
     updateMonitoring();
   });
-  connect(&context_, &FeatureContext::simulationFinished, this,
-          [this](const SimulationSummary& summary) { updateMonitoring(&summary); });
+  connect(&context_, &FeatureContext::simulationStateChanged, this, &ParetoFeature::updateMonitoring);
 }
 
 // A new study waits for the edits to pause; new weights alone re-select from the current one.

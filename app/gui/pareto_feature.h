@@ -86,7 +86,8 @@ class ParetoFeature : public WindowFeature {
   void refreshHistory();
   void onRulesEdited(const QStringList& rules);
   void updateFiredRules();
-  void updateMonitoring(const SimulationSummary* summary = nullptr);
+  // Rule 17: the readouts of the current point, and its simulation only when it is of this very point.
+  void updateMonitoring();
 
   FeatureContext& context_;
   widgets::LobeChartView* chart_;
@@ -103,7 +104,6 @@ class ParetoFeature : public WindowFeature {
   QDoubleSpinBox* chatter_hz_;
   QTimer rebuild_timer_;  // one study per burst of edits
   std::optional<app::ParetoChoice> choice_;
-  std::optional<double> last_summary_eta_;
   QString learning_db_path_;
 };
 

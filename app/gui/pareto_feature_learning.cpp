@@ -95,7 +95,8 @@ void ParetoFeature::recordOperatingPoint() {
   const bool automatic = choice_ && samePoint(choice_->point(), *q);
   try {
     app::LearningDatabase db(learningDatabasePath());
-    const double eta = last_summary_eta_.value_or(std::numeric_limits<double>::quiet_NaN());
+    const SimulationSummary* simulation = context_.currentSimulation();  // of this point, or none
+    const double eta = simulation ? simulation->eta : std::numeric_limits<double>::quiet_NaN();
     const qint64 id =
         db.insert(study->learningRecord(weights_panel_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
                                         automatic ? app::LearningSource::Automatic : app::LearningSource::Operator));
@@ -205,8 +206,9 @@ void ParetoFeature::updateFiredRules() {
   rules_editor_->setNotes(notes);
 }
 
-// Rule 17: the signals of the current point (Pareto objectives, readouts) and of its last simulation.
-void ParetoFeature::updateMonitoring(const SimulationSummary* summary) {
+// Rule 17: the signals of the current point (Pareto objectives, readouts) and of its simulation.
+void ParetoFeature::updateMonitoring() {
+  const SimulationSummary* summary = context_.currentSimulation();
   widgets::MonitoringValues v;
   const widgets::PointReadout& r = context_.readout();
   const app::Project& project = context_.project();
@@ -232,7 +234,8 @@ void ParetoFeature::updateMonitoring(const SimulationSummary* summary) {
     v.chatter = summary->chatter;
     v.chatter_frequency_hz = summary->chatter_frequency_hz;
     monitoring_->setPeaks(spectrumPeaks(*summary));
-    last_summary_eta_ = summary->eta;
+  } else {
+    monitoring_->setPeaks({});  // the last run's peaks are of another point
   }
   monitoring_->setValues(v);
 }

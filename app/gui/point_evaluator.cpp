@@ -56,11 +56,20 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
     return r;
   }
   r.blim_mm = boundary.depthLimit(n) * 1e3;
-  r.stable = boundary.isStable(n, b);
+  const StabilityVerdict verdict = boundary.verdict(n, b);
+  r.stable = verdict == StabilityVerdict::Stable;
+  r.marginal = verdict == StabilityVerdict::Marginal;
   r.delta_ns_rpm = revPerSToRpm(boundary.speedSecurity(n, b));
   r.ros = b > 0.0 ? boundary.robustness(n, b) : std::numeric_limits<double>::quiet_NaN();
   r.valid = true;
   return r;
+}
+
+double PointEvaluator::depthLimitMm(int tool, double speed_rpm) const {
+  if (!ready() || tool < 0 || tool >= toolCount()) return std::numeric_limits<double>::quiet_NaN();
+  const StabilityBoundary& boundary = boundaries_[static_cast<size_t>(tool)];
+  const double n = rpmToRevPerS(speed_rpm);
+  return boundary.covers(n) ? boundary.depthLimit(n) * 1e3 : std::numeric_limits<double>::quiet_NaN();
 }
 
 namespace {

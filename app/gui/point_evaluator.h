@@ -1,7 +1,8 @@
 #pragma once
 // Readouts for an operating point, from the immutable lobe snapshot computed on the engine thread:
 // geometry queries on the margined boundary (b_lim, Delta N_s, ROS) and the static cut (power, MRR).
-// Each evaluation costs microseconds, so dragging updates the readouts live on the GUI thread.
+// The static cut grows with the teeth, the helix slices and, for unequal teeth, a whole revolution, so
+// evaluate() and powerLimitMm() run on the readout thread (PointRunner), never on the GUI thread.
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,8 @@ class PointEvaluator {
   int toolCount() const { return static_cast<int>(boundaries_.size()); }
   int toolIndex(const QString& id) const;
   widgets::PointReadout evaluate(int tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) const;
+  // alpha * b_lim [mm] at the speed (a lookup on the boundary: cheap); NaN outside the lobes or without them.
+  double depthLimitMm(int tool, double speed_rpm) const;
 
   // Depth [mm] at which the peak power reaches the available power P_av(N), per speed of the snapshot:
   // the peak power is N b s_t k(b, s_t) (peakPerDepthFeed), so b k(b, s_t) = P_av(N) / (N s_t). k is one

@@ -23,7 +23,9 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
   });
   connect(runner_, &SimulationRunner::finished, this, &SimulationFeature::onFinished);
   connect(runner_, &SimulationRunner::failed, this, [this](quint64 g, const QString& message) {
-    if (g == generation_) view_->setStatus(tr("Simulation failed: %1").arg(message));
+    if (g != generation_) return;
+    view_->setStatus(tr("Simulation failed: %1").arg(message));
+    context_.clearSimulation();
   });
   connect(view_, &widgets::SimulationView::moveToSpeedRequested, this, [this](double rpm) {
     app::PickedPoint p = context_.point();
@@ -32,6 +34,35 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
     start();
   });
   connect(&context_, &FeatureContext::simulationRequested, this, &SimulationFeature::start);
+  rerun_timer_.setSingleShot(true);
+  rerun_timer_.setInterval(400);
+  connect(&rerun_timer_, &QTimer::timeout, this, &SimulationFeature::start);
+  connect(&context_.document(), &app::ProjectDocument::pointChanged, this, &SimulationFeature::onPointOrToolChanged);
+  connect(&context_, &FeatureContext::activeToolChanged, this, &SimulationFeature::onPointOrToolChanged);
+}
+
+void SimulationFeature::onPointOrToolChanged() {
+  const app::PickedPoint& p = context_.point();
+  if (context_.activeTool() == shown_tool_ && p == shown_point_) return;
+  if (!view_->isStale() && !shown_tool_.isEmpty()) {
+    view_->setStale(context_.activeTool() != shown_tool_
+                        ? tr("the run is of tool %1; the active tool is %2").arg(shown_tool_, context_.activeTool())
+                        : tr("the run is of %1 rpm, %2 mm, %3 mm/tooth; the point moved")
+                              .arg(shown_point_.speed_rpm, 0, 'f', 0)
+                              .arg(shown_point_.depth_mm, 0, 'f', 3)
+                              .arg(shown_point_.feed_mm_per_tooth, 0, 'f', 3));
+  }
+  rerun_timer_.start();
+}
+
+void SimulationFeature::showCannotSimulate(const QString& reason) {
+  runner_->cancel();
+  ++generation_;  // a late chunk of the cancelled run is dropped
+  view_->clear();
+  view_->setStatus(tr("Cannot simulate: %1").arg(reason));
+  shown_tool_ = context_.activeTool();
+  shown_point_ = context_.point();
+  context_.clearSimulation();
 }
 
 void SimulationFeature::addViewActions(QMenu* view, QToolBar* toolbar) {
@@ -47,14 +78,25 @@ void SimulationFeature::projectChanged(const app::Project& /*project*/, Features
   if (recompute & Feature::Simulation) start();
 }
 
+void SimulationFeature::projectReplaced() {
+  runner_->cancel();
+  ++generation_;
+  view_->clear();
+  shown_tool_.clear();
+  shown_point_ = {};
+  context_.clearSimulation();
+}
+
 void SimulationFeature::stop() {
   runner_->cancel();
 }
 
 void SimulationFeature::start() {
+  rerun_timer_.stop();
   const app::Project& p = context_.project();
   const app::PickedPoint& pt = context_.point();
   if (context_.activeTool().isEmpty() || pt.speed_rpm <= 0.0 || pt.feed_mm_per_tooth <= 0.0) return;
+  if (!p.findTool(context_.activeTool())) return;  // the tool list is being refreshed; its change re-runs
   try {
     const MillingSetup setup = p.setupFor(context_.activeTool());
     app::requireFittedModes(*p.findTool(context_.activeTool()), tr("the time-domain simulation"));
@@ -66,14 +108,18 @@ void SimulationFeature::start() {
     const OperatingPoint op{rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3};
     generation_ = runner_->submit(setup, op, options, power, max_speed);
     view_->beginRun(power, setup.teeth, op.spindle_rev_per_s * setup.teeth);
+    shown_tool_ = context_.activeTool();
+    shown_point_ = pt;
+    context_.setSimulationRunning(shown_tool_, shown_point_);
   } catch (const std::exception& e) {
-    view_->setStatus(tr("Cannot simulate: %1").arg(e.what()));
+    showCannotSimulate(QString::fromUtf8(e.what()));
   }
 }
 
 void SimulationFeature::onFinished(quint64 generation, const SimulationSummary& summary) {
   if (generation != generation_) return;
   view_->setSummary(summary);
+  context_.setSimulationResult(summary);
   emit context_.simulationFinished(summary);
   emit simulationShown();
 }

@@ -72,7 +72,8 @@ void requireLength(const char* field, std::size_t length, int teeth) {
 
 void MillingSetup::validateGeometry() const {
   constexpr double kDeg = 180.0 / std::numbers::pi;
-  if (teeth < 1) throw InvalidInput("teeth = " + std::to_string(teeth) + " is outside [1, inf)");
+  if (teeth < 1 || teeth > kMaxTeeth)
+    throw InvalidInput("teeth = " + std::to_string(teeth) + " is outside [1, " + std::to_string(kMaxTeeth) + "]");
   if (!(std::abs(helix_rad) < 0.5 * std::numbers::pi))
     throw InvalidInput("helix = " + number(helix_rad * kDeg) + " deg is outside (-90, 90) deg");
   requireLength("pitch", pitch_rad.size(), teeth);

@@ -29,6 +29,8 @@ struct Immersion {
 
 struct MillingSetup {
   std::string tool_id;
+  // Every model's cost grows with the teeth; no milling cutter has more.
+  static constexpr int kMaxTeeth = 100;
   int teeth = 1;
   double diameter_m = 0.0;
   // Cutter geometry (docs/fidelity.md, "Real cutters"). Tooth j sits at toothAngleRad(j) from tooth 0 in
@@ -58,8 +60,8 @@ struct MillingSetup {
   double helixLagRad(double height_m) const;
   // The period after which the cut repeats: one tooth period when the pitch is uniform, else one revolution.
   int teethPerPrincipalPeriod() const { return uniformPitch() ? 1 : teeth; }
-  // Throws InvalidInput naming the field, value and rule: teeth >= 1, |helix| < 90 deg, pitch and runout of
-  // length teeth, pitches > 0 summing to 360 deg within 1e-6 deg, runout finite and below D / 4.
+  // Throws InvalidInput naming the field, value and rule: 1 <= teeth <= kMaxTeeth, |helix| < 90 deg, pitch and runout
+  // of length teeth, pitches > 0 summing to 360 deg within 1e-6 deg, runout finite and below D / 4.
   void validateGeometry() const;
 };
 

@@ -49,12 +49,7 @@ void requireDepth(double depth) {
   }
 }
 
-void requireTeeth(const MillingSetup& setup) {
-  if (setup.teeth < 1) throw InvalidInput("teeth = " + std::to_string(setup.teeth) + " is outside [1, inf)");
-}
-
 void validate(const MillingSetup& setup, const std::vector<double>& speeds, const SdmOptions& o) {
-  requireTeeth(setup);
   setup.validateGeometry();
   if (o.steps_per_period != kAutoSdmSteps) requireSteps(o.steps_per_period);
   SdmModel::requireDelayOrder(o.delay_order, o.steps_per_period == kAutoSdmSteps ? kMinAutoSteps : o.steps_per_period);
@@ -81,7 +76,7 @@ void validate(const MillingSetup& setup, const std::vector<double>& speeds, cons
 }  // namespace
 
 int autoSdmSteps(const MillingSetup& setup, double spindle_rev_per_s) {
-  requireTeeth(setup);
+  setup.validateGeometry();
   requireSpeed(spindle_rev_per_s);
   double omega_max = 0.0;
   for (const ModalAxis* axis : {&setup.modes_x, &setup.modes_y})
@@ -98,7 +93,7 @@ int autoSdmSteps(const MillingSetup& setup, double spindle_rev_per_s) {
 SdmMultiplier sdmDominantMultiplier(const MillingSetup& setup, double spindle_rev_per_s, double depth_m,
                                     int steps_per_period, int delay_order) {
   clearUpperVectorState();
-  requireTeeth(setup);
+  setup.validateGeometry();
   requireSteps(steps_per_period);
   requireSpeed(spindle_rev_per_s);
   requireDepth(depth_m);

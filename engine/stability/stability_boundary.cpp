@@ -24,7 +24,7 @@ double segmentDistance(double px, double py, double ax, double ay, double bx, do
 }  // namespace
 
 StabilityBoundary::StabilityBoundary(const LobeDiagram& diagram, double alpha)
-    : speed_(diagram.speed_rev_per_s), depth_(diagram.envelope_depth_m) {
+    : speed_(diagram.speed_rev_per_s), depth_(diagram.envelope_depth_m), alpha_(alpha) {
   if (speed_.size() < 2) throw InvalidInput("a stability boundary needs at least two speeds");
   if (!(alpha > 0.0 && alpha <= 1.0)) {
     std::ostringstream msg;
@@ -56,6 +56,24 @@ double StabilityBoundary::depthLimit(double speed) const {
 
 bool StabilityBoundary::isStable(double speed, double depth) const {
   return depth < depthLimit(speed);
+}
+
+StabilityVerdict StabilityBoundary::verdict(double speed, double depth) const {
+  const double limit = depthLimit(speed);
+  if (depth < limit) return StabilityVerdict::Stable;
+  return depth <= (1.0 + kMarginalBand) * limit / alpha_ ? StabilityVerdict::Marginal : StabilityVerdict::Unstable;
+}
+
+const char* verdictKey(StabilityVerdict verdict) {
+  switch (verdict) {
+    case StabilityVerdict::Stable:
+      return "stable";
+    case StabilityVerdict::Marginal:
+      return "marginal";
+    case StabilityVerdict::Unstable:
+      break;
+  }
+  return "unstable";
 }
 
 // Nearest speed left of `speed` (not beyond `stop`) where the envelope falls to `depth`.

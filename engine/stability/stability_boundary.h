@@ -8,6 +8,13 @@
 
 namespace mx {
 
+// The verdict of a depth against the lobes: stable below alpha * b_lim (Rule 1.2), unstable more than
+// kMarginalBand above b_lim itself, marginal between. The band covers what a finite lobe grid, the
+// interpolation and a finite simulation cannot tell apart near the border (docs/fidelity.md).
+enum class StabilityVerdict { Stable, Marginal, Unstable };
+inline constexpr double kMarginalBand = 0.05;
+const char* verdictKey(StabilityVerdict verdict);  // "stable", "marginal", "unstable"
+
 // Units in which a distance in the (N, b) plane is measured.
 struct NormalisationSpans {
   double speed_rev_per_s = 1.0;
@@ -27,6 +34,9 @@ class StabilityBoundary {
   // InvalidInput outside [minSpeed, maxSpeed].
   double depthLimit(double speed_rev_per_s) const;
   bool isStable(double speed_rev_per_s, double depth_m) const;  // b < b_lim(N)
+  // Stable when isStable; marginal up to (1 + kMarginalBand) times the lobe without alpha; else unstable.
+  StabilityVerdict verdict(double speed_rev_per_s, double depth_m) const;
+  double alpha() const { return alpha_; }
 
   // Delta N_s: along depth b, per side the distance to the boundary crossing (b above that side's
   // lobe minimum) or to the speed of that side's minimum (b below it); the smaller side. Only the
@@ -54,6 +64,7 @@ class StabilityBoundary {
   std::vector<double> speed_;
   std::vector<double> depth_;
   std::vector<LobeMinimum> minima_;
+  double alpha_ = 1.0;
 };
 
 }  // namespace mx

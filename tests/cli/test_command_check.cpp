@@ -68,8 +68,9 @@ class TestCliCheck : public QObject {
     row("section type", {"machine=[]"}, "machine: expected an object, got array");
     row("missing field", {"-material/Kt_N_mm2"}, "material.Kt_N_mm2: missing (required number > 0)");
     row("wrong type", {"tools/0/diameter_mm=\"16\""}, "tools[0].diameter_mm: expected a number, got string");
-    row("teeth < 1", {"tools/0/teeth=0"}, "tools[0].teeth = 0: must be an integer >= 1");
-    row("teeth non-integer", {"tools/1/teeth=1.5"}, "tools[1].teeth = 1.5: must be an integer >= 1");
+    row("teeth < 1", {"tools/0/teeth=0"}, "tools[0].teeth = 0: must be an integer in [1, 100]");
+    row("teeth a million", {"tools/0/teeth=1000000"}, "tools[0].teeth = 1e+06: must be an integer in [1, 100]");
+    row("teeth non-integer", {"tools/1/teeth=1.5"}, "tools[1].teeth = 1.5: must be an integer in [1, 100]");
     row("diameter <= 0", {"tools/1/diameter_mm=-10"}, "tools[1].diameter_mm = -10: must be > 0");
     row("tool radial depth > D", {"tools/1/radial_depth_mm=10.5"},
         "tools[1].radial_depth_mm = 10.5: must be in (0, 10]");

@@ -54,6 +54,30 @@ class TestCommandPoint : public QObject {
     QVERIFY(r.json["power_ok"].toBool());
   }
 
+  // "verdict": stable below alpha b_lim, marginal up to 1.05 b_lim / alpha (the lobe itself), unstable
+  // beyond; "stable" stays the strict test b < alpha b_lim.
+  void verdictBands_data() {
+    QTest::addColumn<double>("factor");  // of the lobe b_lim / alpha
+    QTest::addColumn<QString>("verdict");
+    QTest::newRow("half alpha b_lim") << -0.5 << "stable";
+    QTest::newRow("on the lobe") << 1.0 << "marginal";
+    QTest::newRow("4 % above the lobe") << 1.04 << "marginal";
+    QTest::newRow("6 % above the lobe") << 1.06 << "unstable";
+  }
+  void verdictBands() {
+    QFETCH(double, factor);
+    QFETCH(QString, verdict);
+    const mx::test::CliRun probe = point(kCase, "2400", "0.1", "0.05");
+    QCOMPARE(probe.code, 0);
+    const double alpha_blim = probe.json["blim_mm"].toDouble();
+    const double alpha = 0.95;  // expert.alpha of the case
+    const double depth = factor < 0.0 ? -factor * alpha_blim : factor * alpha_blim / alpha;
+    const mx::test::CliRun r = point(kCase, "2400", QString::number(depth, 'g', 10), "0.05");
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["verdict"].toString(), verdict);
+    QCOMPARE(r.json["stable"].toBool(), verdict == "stable");
+  }
+
   // Above the corner speed 2745.3 / (2 pi 9) rev/s = 2912.85 rpm, P_max binds; without the torque
   // P_av = P_max at every speed, and a cut of 4 mm at 0.3 mm/tooth, 1800 rpm (2035.8 W) passes only then.
   void torqueLineAgainstPmax() {

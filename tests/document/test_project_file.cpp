@@ -289,10 +289,12 @@ class TestProjectFile : public QObject {
     row("id number", {"tools/0/id=7"}, {"tools[0].id: expected a string, got number"});
     row("id empty", {"tools/0/id=\"\""}, {"tools[0].id = \"\": must be a non-empty string"});
     row("duplicate ids", {"tools/1/id=\"T1\""}, {"tools[1].id = \"T1\": duplicate of tools[0].id"});
-    row("teeth zero", {"tools/0/teeth=0"}, {"tools[0].teeth = 0: must be an integer >= 1"});
-    row("teeth negative", {"tools/1/teeth=-2"}, {"tools[1].teeth = -2: must be an integer >= 1"});
-    row("teeth fractional", {"tools/0/teeth=2.5"}, {"tools[0].teeth = 2.5: must be an integer >= 1"});
-    row("teeth missing", {"-tools/0/teeth"}, {"tools[0].teeth: missing (required integer >= 1)"});
+    row("teeth zero", {"tools/0/teeth=0"}, {"tools[0].teeth = 0: must be an integer in [1, 100]"});
+    row("teeth negative", {"tools/1/teeth=-2"}, {"tools[1].teeth = -2: must be an integer in [1, 100]"});
+    row("teeth fractional", {"tools/0/teeth=2.5"}, {"tools[0].teeth = 2.5: must be an integer in [1, 100]"});
+    row("teeth 101", {"tools/0/teeth=101"}, {"tools[0].teeth = 101: must be an integer in [1, 100]"});
+    row("teeth a million", {"tools/1/teeth=1000000"}, {"tools[1].teeth = 1e+06: must be an integer in [1, 100]"});
+    row("teeth missing", {"-tools/0/teeth"}, {"tools[0].teeth: missing (required integer in [1, 100])"});
     row("teeth string", {"tools/0/teeth=\"4\""}, {"tools[0].teeth: expected a number, got string"});
     row("diameter zero", {"tools/0/diameter_mm=0"}, {"tools[0].diameter_mm = 0: must be > 0"});
     row("diameter negative", {"tools/1/diameter_mm=-10"}, {"tools[1].diameter_mm = -10: must be > 0"});
@@ -524,7 +526,7 @@ class TestProjectFile : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(QJsonDocument(mutated(readJson(fixturePath("valid-full.mxproj")), {"tools/0/teeth=0"})).toJson());
     f.close();
-    QCOMPARE(errorOf([&] { loadProject(bad); }), bad + ": tools[0].teeth = 0: must be an integer >= 1");
+    QCOMPARE(errorOf([&] { loadProject(bad); }), bad + ": tools[0].teeth = 0: must be an integer in [1, 100]");
     QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
     f.write("[1, 2]");
     f.close();
@@ -541,7 +543,7 @@ class TestProjectFile : public QObject {
     QTest::newRow("object") << R"({"name": "lib", "tools": [)" + tool + "]}" << QString();
     QTest::newRow("teeth") << QByteArray(R"([{"id": "A", "teeth": 0, "diameter_mm": 16, "helix_deg": 0,
         "modes_x": [], "modes_y": []}])")
-                           << "tools[0].teeth = 0: must be an integer >= 1";
+                           << "tools[0].teeth = 0: must be an integer in [1, 100]";
     QTest::newRow("duplicate id") << "[" + tool + ", " + tool + "]"
                                   << R"(tools[1].id = "E": duplicate of tools[0].id (tool ids must be unique))";
     QTest::newRow("no tools") << QByteArray(R"({"name": "x"})") << "tools: missing (required array of tools)";

@@ -67,6 +67,7 @@ class TestLobesFeature : public QObject {
     const app::PickedPoint p = window.document()->point();
     QVERIFY2(std::abs(p.speed_rpm - 4200.0) < 30.0, qPrintable(QString::number(p.speed_rpm)));
     QVERIFY2(std::abs(p.depth_mm - 0.45) < 0.01, qPrintable(QString::number(p.depth_mm)));
+    QVERIFY(test::waitForReadout(window));
 
     const app::Project& project = *window.project();
     const MillingSetup setup = project.setupFor("R1");
@@ -101,6 +102,7 @@ class TestLobesFeature : public QObject {
     p.depth_mm = 0.2;
     p.feed_mm_per_tooth = 0.1;
     window.document()->setPoint(p);
+    QVERIFY(test::waitForReadout(window));
     const MillingSetup setup = window.project()->setupFor("R1");
     const double force = evaluateCut(setup, {rpmToRevPerS(3000.0), 0.2e-3, 0.1e-3}).peak_force_n;
     QCOMPARE_LE(std::abs(readoutNumber(window, "force") - force), 0.05);
@@ -147,6 +149,7 @@ class TestLobesFeature : public QObject {
     QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, at);
     QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, at);
     QVERIFY(std::abs(window.document()->point().depth_mm - 0.5) < 0.01);
+    QVERIFY(test::waitForReadout(window));
     QVERIFY(test::lobesOf(window)->readout()->text("depth").endsWith(" in"));
     QCOMPARE_LE(std::abs(readoutNumber(window, "depth") - window.document()->point().depth_mm / 25.4), 1e-5);
   }

@@ -153,6 +153,24 @@ class TestSdmCutterGeometry : public QObject {
       QVERIFY2(QString(e.what()).contains(message), e.what());
     }
   }
+
+  void teethOutsideTheCuttersRangeAreRefused_data() {
+    QTest::addColumn<int>("teeth");
+    QTest::newRow("none") << 0;
+    QTest::newRow("one above the largest cutter") << MillingSetup::kMaxTeeth + 1;
+    QTest::newRow("a million") << 1000000;
+  }
+  void teethOutsideTheCuttersRangeAreRefused() {
+    QFETCH(int, teeth);
+    MillingSetup s = inspergerTool(1.0, 4);
+    s.teeth = teeth;
+    try {
+      lobes(s, {rpmToRevPerS(10000.0)});
+      QFAIL("no error");
+    } catch (const InvalidInput& e) {
+      QCOMPARE(QString(e.what()), QString("teeth = %1 is outside [1, 100]").arg(teeth));
+    }
+  }
 };
 
 MX_REGISTER_TEST(TestSdmCutterGeometry)

@@ -44,6 +44,26 @@ class TestStabilityBoundary : public QObject {
     QVERIFY(!s.isStable(150.0, 2.6e-3));
   }
 
+  // At the minimum of lobe A (b_lim = 1 mm) with alpha = 0.8: stable below 0.8 mm, marginal up to 1.05 mm.
+  void verdictBands_data() {
+    QTest::addColumn<double>("depth_mm");
+    QTest::addColumn<QString>("verdict");
+    QTest::newRow("well below alpha b_lim") << 0.5 << "stable";
+    QTest::newRow("just below alpha b_lim") << 0.799999 << "stable";
+    QTest::newRow("at alpha b_lim") << 0.8 << "marginal";
+    QTest::newRow("on the lobe") << 1.0 << "marginal";
+    QTest::newRow("just inside the band") << 1.049999 << "marginal";
+    QTest::newRow("beyond the band") << 1.050001 << "unstable";
+    QTest::newRow("far above") << 3.0 << "unstable";
+  }
+  void verdictBands() {
+    QFETCH(double, depth_mm);
+    QFETCH(QString, verdict);
+    const StabilityBoundary s(twoLobes(), 0.8);
+    QCOMPARE(QString(verdictKey(s.verdict(100.0, depth_mm * 1e-3))), verdict);
+    QCOMPARE(s.verdict(100.0, depth_mm * 1e-3) == StabilityVerdict::Stable, s.isStable(100.0, depth_mm * 1e-3));
+  }
+
   void speedSecurity_data() {
     QTest::addColumn<double>("speed");
     QTest::addColumn<double>("depth_mm");

@@ -1,6 +1,7 @@
 #pragma once
 // Test helper: the features of a main window, found by object name as a user of the window would
 // reach them (the window has no getters for them).
+#include <QTest>
 #include <QtGlobal>
 
 #include "editors_feature.h"
@@ -41,6 +42,11 @@ inline gui::FeatureContext* contextOf(const gui::MainWindow& w) {
 }
 inline gui::EngineRunner* engineOf(const gui::MainWindow& w) {
   return windowPart<gui::EngineRunner>(w);
+}
+
+// The readouts are computed on the readout thread: waits until they show the current point.
+inline bool waitForReadout(const gui::MainWindow& w, int timeout_ms = 10000) {
+  return QTest::qWaitFor([&w] { return lobesOf(w)->readoutIsCurrent(); }, timeout_ms);
 }
 
 }  // namespace mx::test

@@ -194,7 +194,9 @@ class TestToolLibraryCsv : public QObject {
         << kHeader + "R2,2,10,0,,,,x,1000,2,10\n"
         << false << "line 2, column 1 (tool_id): 'R2' duplicate tool id (already in the library)";
     QTest::newRow("teeth not integer") << kHeader + "A,2.5,10,0,,,,x,1000,2,10\n"
-                                       << true << "line 2, column 2 (teeth): '2.5' must be an integer >= 1";
+                                       << true << "line 2, column 2 (teeth): '2.5' must be an integer in [1, 100]";
+    QTest::newRow("teeth above 100") << kHeader + "A,101,10,0,,,,x,1000,2,10\n"
+                                     << true << "line 2, column 2 (teeth): '101' must be an integer in [1, 100]";
     QTest::newRow("radial depth > D") << kHeader + "A,2,10,0,,,12,x,1000,2,10\n"
                                       << true << "line 2, column 7 (radial_depth_mm): '12' must be in (0, 10]";
     QTest::newRow("continuation differs")

@@ -217,7 +217,9 @@ class TestToolLibraryEditor : public QObject {
     QTest::newRow("diameter") << int(ToolTableModel::Diameter) << QVariant(0.0)
                               << "tools[0].diameter_mm = 0: must be > 0";
     QTest::newRow("teeth") << int(ToolTableModel::Teeth) << QVariant(0)
-                           << "tools[0].teeth = 0: must be an integer >= 1";
+                           << "tools[0].teeth = 0: must be an integer in [1, 100]";
+    QTest::newRow("teeth above 100") << int(ToolTableModel::Teeth) << QVariant(101)
+                                     << "tools[0].teeth = 101: must be an integer in [1, 100]";
     QTest::newRow("helix") << int(ToolTableModel::Helix) << QVariant(90.0)
                            << "tools[0].helix_deg = 90: must be in (-90, 90)";
     QTest::newRow("duplicate id") << int(ToolTableModel::Id) << QVariant("R2")
