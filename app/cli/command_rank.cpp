@@ -36,6 +36,7 @@
 #include "expert/expert_session.h"
 #include "model/cutting_force.h"
 #include "services/expert_request.h"
+#include "services/expert_rules.h"
 #include "services/pareto_request.h"
 #include "services/pareto_rules.h"
 #include "services/reported_chatter.h"
@@ -63,17 +64,6 @@ QJsonObject rule5Json(const Refinement& r) {
           {"converged", r.search_converged},
           {"simulations", static_cast<qint64>(r.simulations_run)},
           {"c_resultant", r.chosen().resultant}};
-}
-
-// The rules' point variables of an expert point (MRR in the objective slot).
-ParetoPoint paretoPointOf(const ExpertPoint& q) {
-  ParetoPoint p;
-  p.speed_rev_per_s = q.speed_rev_per_s;
-  p.depth_m = q.depth_m;
-  p.feed_per_tooth_m = q.feed_per_tooth_m;
-  p.power_w = q.power_w;
-  p.objectives[index(Objective::Mrr)] = q.mrr_m3_per_s;
-  return p;
 }
 
 // The --chatter-at reports, for --chatter-tool or the tool Rule 4 selects at the request's weights.
@@ -138,27 +128,15 @@ int runRankCommand(const QStringList& arguments) {
   if (c) std::copy(c->begin(), c->end(), request.weights.c.begin());
   if (cr) std::copy(cr->begin(), cr->end(), request.weights.cr.begin());
 
-  // Operator rules: one evaluation per tool (its own context).
-  const QStringList ruleTexts = operatorRulesFromProject(project);
-  std::vector<ParetoRules> toolRules;
-  if (!ruleTexts.isEmpty()) {
-    std::vector<const RuleOutcome*> outcomes;
-    for (const QString& id : request.tool_ids) {
-      toolRules.push_back(evaluateParetoRules(ruleTexts, project, *project.findTool(id)));
-    }
-    outcomes.reserve(toolRules.size());
-    for (const ParetoRules& r : toolRules) outcomes.push_back(&r.outcome);
-    const std::vector<double> bounded = applyWeightBounds(outcomes, {"weight.c1", "weight.c2", "weight.c3"},
-                                                          {request.weights.c.begin(), request.weights.c.end()});
-    std::copy(bounded.begin(), bounded.end(), request.weights.c.begin());
-  }
+  const ExpertRules rules(project, request.tool_ids);
+  request.weights.c = rules.boundWeights(request.weights.c);
 
   ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
-  if (!toolRules.empty()) {
-    session.setPointFilter([&](std::size_t tool, const ExpertPoint& q) {
-      return toolRules[tool].admits(paretoPointOf(q), request.tools[tool].teeth);
-    });
+  if (!rules.empty()) {
+    std::vector<int> teeth;
+    for (const MillingSetup& t : request.tools) teeth.push_back(t.teeth);
+    rules.filter(session, std::move(teeth));
     bool any = false;
     for (std::size_t t = 0; t < session.toolCount(); ++t)
       any = any || (!session.grid(t).empty() && !session.filteredOut(t));
@@ -207,11 +185,11 @@ int runRankCommand(const QStringList& arguments) {
       {"reported_chatter_iterations", result.reported_chatter_iterations},
       {"malfunction_limit_reached", result.malfunction_limit_reached}};
   out.insert("rule5", result.refinement ? QJsonValue(rule5Json(*result.refinement)) : QJsonValue());
-  if (!toolRules.empty()) {
-    QJsonObject rules =
-        rulesJson(toolRules[selected.tool], paretoPointOf(selected.q), request.tools[selected.tool].teeth);
-    rules.insert("tool", out.value("selected"));
-    out.insert("rules", rules);
+  if (!rules.empty()) {
+    QJsonObject fired =
+        rulesJson(rules.tool(selected.tool), paretoPointOf(selected.q), request.tools[selected.tool].teeth);
+    fired.insert("tool", out.value("selected"));
+    out.insert("rules", fired);
   }
   printJson(out);
   const QString unresolved = unresolvedChatterMessage(result, reports, request.tool_ids,

@@ -159,10 +159,17 @@ void ExpertFeature::rerank(const CostWeights& weights) {
   weights_ = weights;
   ranking_ = runner_->rank(weights.c);
   if (!ranking_) return;
+  const std::array<double, 3> effective = runner_->effectiveWeights(weights.c);
+  if (effective != weights.c)
+    emit statusMessage(tr("Operator rules (Rule 18) bound the tool-cost weights to c = (%1, %2, %3)")
+                           .arg(effective[0], 0, 'f', 3)
+                           .arg(effective[1], 0, 'f', 3)
+                           .arg(effective[2], 0, 'f', 3),
+                       8000);
   const QStringList& ids = runner_->toolIds();
   const QString selected = ids.value(static_cast<qsizetype>(ranking_->selected().tool));
   QVector<widgets::RankingRow> rows = widgets::RankingTable::rowsFromRanking(*ranking_, ids);
-  if (refinement_ && refinement_->refinement && refinement_->weights.c == weights.c) {
+  if (refinement_ && refinement_->refinement && refinement_->weights.c == effective) {
     const Refinement& r = *refinement_->refinement;
     widgets::RankingTable::applyRefinement(rows, ids.value(static_cast<qsizetype>(r.tool)), r.chosen());
   }

@@ -19,7 +19,7 @@ void ExpertRunner::stopped() {
 
 quint64 ExpertRunner::build(std::vector<MillingSetup> tools, const ExpertSettings& settings,
                             const QStringList& tool_ids) {
-  auto request = std::make_shared<Request>(Request{std::move(tools), settings, tool_ids, {}});
+  auto request = std::make_shared<Request>(Request{std::move(tools), settings, tool_ids, {}, {}});
   return startBuild([request] { return std::move(*request); });
 }
 
@@ -27,7 +27,10 @@ quint64 ExpertRunner::build(const app::Project& project) {
   return startBuild([project] {
     app::ExpertRequest request = app::expertRequestFromProject(project);
     app::applyExpertDynamics(project, request, std::nullopt, true);
-    return Request{std::move(request.tools), request.settings, request.tool_ids, request.tool_force_limits_n};
+    app::ExpertRules rules(project, request.tool_ids);
+    rules.boundWeights(request.weights.c);  // ProjectError now when the fired bounds leave no weights
+    return Request{std::move(request.tools), request.settings, request.tool_ids, request.tool_force_limits_n,
+                   std::move(rules)};
   });
 }
 
@@ -41,11 +44,20 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
     try {
       Request request = make_request();
       outcome.tool_ids = request.tool_ids;
+      std::vector<int> teeth;
+      for (const MillingSetup& t : request.tools) teeth.push_back(t.teeth);
       outcome.session =
           std::make_shared<ExpertSession>(std::move(request.tools), request.settings, request.tool_force_limits_n);
+      outcome.rules = request.rules;
       if (outcome.session->empty()) {
         outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
                                                outcome.session->emptyReason());
+      } else if (!outcome.rules.empty()) {
+        outcome.rules.filter(*outcome.session, std::move(teeth));
+        bool any = false;
+        for (std::size_t t = 0; t < outcome.session->toolCount(); ++t)
+          any = any || (!outcome.session->grid(t).empty() && !outcome.session->filteredOut(t));
+        if (!any) outcome.error = "the operator rules exclude every admissible point of every tool";
       }
     } catch (const std::exception& e) {
       outcome.session.reset();
@@ -56,6 +68,7 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
       if (outcome.generation != build_generation_) return;  // stale
       session_ = outcome.session;
       tool_ids_ = outcome.tool_ids;
+      rules_ = outcome.rules;
       emit sessionReady(outcome.error);
     });
   });
@@ -67,11 +80,13 @@ quint64 ExpertRunner::refine(const CostWeights& weights, const std::vector<Chatt
   auto session = session_;
   if (!session || session->empty()) return generation;
   started();
-  channel_.start(pool_, [this, session, weights, reported, generation](const EngineReply& reply) {
+  CostWeights bounded = weights;
+  bounded.c = effectiveWeights(weights.c);
+  channel_.start(pool_, [this, session, bounded, reported, generation](const EngineReply& reply) {
     RefinementOutcome outcome;
     outcome.generation = generation;
     try {
-      outcome.result = session->run(weights, true, reported);
+      outcome.result = session->run(bounded, true, reported);
     } catch (const std::exception& e) {
       outcome.error = QString::fromStdString(e.what());
     }
@@ -83,9 +98,13 @@ quint64 ExpertRunner::refine(const CostWeights& weights, const std::vector<Chatt
   return generation;
 }
 
+std::array<double, 3> ExpertRunner::effectiveWeights(const std::array<double, 3>& c) const {
+  return rules_.boundWeights(c);
+}
+
 std::optional<Ranking> ExpertRunner::rank(const std::array<double, 3>& c) const {
   if (!session_ || session_->empty()) return std::nullopt;
-  Ranking r = session_->rank(c);
+  Ranking r = session_->rank(effectiveWeights(c));
   if (r.tools.empty()) return std::nullopt;
   return r;
 }

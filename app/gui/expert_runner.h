@@ -14,6 +14,7 @@
 #include "document/project.h"
 #include "engine_channel.h"
 #include "expert/expert_session.h"
+#include "services/expert_rules.h"
 
 namespace mx::gui {
 
@@ -21,6 +22,7 @@ struct ExpertOutcome {
   quint64 generation = 0;
   std::shared_ptr<ExpertSession> session;  // null on error
   QStringList tool_ids;
+  app::ExpertRules rules;  // the project's operator rules, installed on the session
   QString error;
 };
 
@@ -39,7 +41,8 @@ class ExpertRunner : public QObject {
   // session build is not interruptible, but a stale result is dropped).
   quint64 build(std::vector<MillingSetup> tools, const ExpertSettings& settings, const QStringList& tool_ids);
   // The same from a project snapshot: its expert request, with the tools' tap-test FRFs (read on the
-  // engine thread; `project` names them by absolute path), is made on the engine thread.
+  // engine thread; `project` names them by absolute path), is made on the engine thread, and its
+  // operator rules (Rule 18) bound c and filter the admissible points as in `millexpert-cli rank`.
   quint64 build(const app::Project& project);
   // Rules 4-6 with simulations for the current session and weights, on the engine thread; Rule 6 also
   // acts on the chatter reported at the machine (tools by index in toolIds()).
@@ -47,8 +50,11 @@ class ExpertRunner : public QObject {
 
   const std::shared_ptr<ExpertSession>& session() const { return session_; }
   const QStringList& toolIds() const { return tool_ids_; }
-  // Rule 4 on the GUI thread from the cached session; nullopt without a session or admissible point.
+  // Rule 4 on the GUI thread from the cached session, at effectiveWeights(c); nullopt without a session
+  // or an admissible point.
   std::optional<Ranking> rank(const std::array<double, 3>& c) const;
+  // c within the bounds the operator rules fired (c itself without rules).
+  std::array<double, 3> effectiveWeights(const std::array<double, 3>& c) const;
 
  signals:
   void sessionReady(const QString& error);  // "" on success
@@ -61,6 +67,7 @@ class ExpertRunner : public QObject {
     ExpertSettings settings;
     QStringList tool_ids;
     std::vector<double> tool_force_limits_n;  // empty: settings.limits.max_tool_force_n for every tool
+    app::ExpertRules rules;
   };
   quint64 startBuild(std::function<Request()> make_request);
   void started();
@@ -70,6 +77,7 @@ class ExpertRunner : public QObject {
   EngineChannel channel_;
   std::shared_ptr<ExpertSession> session_;
   QStringList tool_ids_;
+  app::ExpertRules rules_;
   quint64 build_generation_ = 0;
   quint64 refine_generation_ = 0;
   int running_ = 0;

@@ -16,7 +16,8 @@ const std::pair<Feature, app::ProjectChanges> kInputs[] = {
     {Feature::Editors, kCut},
     {Feature::Lobes, kCut | S::Expert},  // delta, alpha and the speed grid
     {Feature::Simulation, kCut},
-    {Feature::ExpertSession, kCut | S::Expert | S::Control},  // the breakage limit bounds Q without max_force_N
+    // The breakage limit bounds Q without max_force_N; the operator rules bound c and filter Q (Rule 18).
+    {Feature::ExpertSession, kCut | S::Expert | S::Control | S::Rules},
     {Feature::ExpertRerank, S::ExpertWeights},
     {Feature::ParetoStudy, kCut | S::Expert | S::Pareto | S::Rules | S::Control},  // Rules 18 and 3 bound Q
     {Feature::ParetoChoice, S::ParetoWeights},

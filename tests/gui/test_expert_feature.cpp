@@ -11,6 +11,7 @@
 #include "expert_runner.h"
 #include "main_window.h"
 #include "ranking_table.h"
+#include "support/cli_runner.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "weights_panel.h"
@@ -103,6 +104,40 @@ class TestExpertFeature : public QObject {
   }
 
   // Re-ranking the 20-tool library after a weight change (target 100 ms; reported, not gated: docs/performance.md).
+  // Operator rules (Rule 18) bound the GUI's ranking exactly as they bound `rank`: with a speed rule on
+  // big cutters and a depth rule, q* of every tool obeys them and equals the CLI's on the same file.
+  void operatorRulesBoundTheRankingAsInTheCli() {
+    QTemporaryDir dir;
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.show();
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
+    QVERIFY(ranked.wait(60000));
+    const double unruled_speed = test::windowPart<widgets::RankingTable>(window)->rows().front().speed_rpm;
+    QVERIFY2(unruled_speed > 1200.0, qPrintable(QString::number(unruled_speed)));
+    app::Project edited = *window.project();
+    edited.operator_rules =
+        QStringList{R"(if tool.diameter_mm > 10 then speed_rpm <= 1200 because "big cutter")", "depth_mm <= 0.5"};
+    ranked.clear();
+    QCOMPARE(window.document()->applyEdit(edited, "rules"), QString());
+    QVERIFY(ranked.wait(60000));
+    const QVector<widgets::RankingRow> rows = test::windowPart<widgets::RankingTable>(window)->rows();
+    QVERIFY(!rows.isEmpty());
+    for (const widgets::RankingRow& r : rows) {
+      QVERIFY2(r.speed_rpm <= 1200.0 + 1e-9, qPrintable(QString::number(r.speed_rpm)));
+      QVERIFY2(r.depth_mm <= 0.5 + 1e-12, qPrintable(QString::number(r.depth_mm)));
+    }
+    const QString saved = dir.filePath("ruled.mxproj");
+    QVERIFY(window.saveProject(saved));
+    const test::CliRun cli = test::runCli({"rank", saved, "--no-simulation"});
+    QCOMPARE(cli.code, 0);
+    const QJsonObject q = cli.json["q_star"].toObject();
+    QCOMPARE(test::windowPart<widgets::RankingTable>(window)->selectedTool(), cli.json["selected"].toString());
+    QCOMPARE_LE(std::abs(rows.front().speed_rpm - q["speed_rpm"].toDouble()), 1e-6);
+    QCOMPARE_LE(std::abs(rows.front().depth_mm - q["depth_mm"].toDouble()), 1e-9);
+  }
+
   void reRankTwentyTools() {
     gui::MainWindow window;
     window.setQuiet(true);
