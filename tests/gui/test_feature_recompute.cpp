@@ -47,7 +47,7 @@ class TestFeatureRecompute : public QObject {
     row("force control", ProjectSection::ForceControl, Feature::PartProgram);
     row("part program", ProjectSection::PartProgram, Feature::PartProgram);
     row("supervisor", ProjectSection::Supervisor, Feature::Supervisor);
-    row("operator rules", ProjectSection::Rules, Feature::ParetoStudy | Feature::FiredRules);
+    row("operator rules", ProjectSection::Rules, Feature::ExpertSession | Feature::ParetoStudy | Feature::FiredRules);
     row("name", ProjectSection::Name, {});
     row("unknown keys", ProjectSection::Unknown, {});
     row("weights of both systems", ProjectSection::ExpertWeights | ProjectSection::ParetoWeights,
