@@ -6,6 +6,7 @@
 #include <QFileDialog>
 #include <QProcess>
 #include <QStandardPaths>
+#include <QTemporaryFile>
 
 #include "document/frf_paths.h"
 #include "expert_overlays.h"
@@ -287,36 +288,60 @@ void ExpertFeature::drawSessionOverlays(int tool) {
   chart_->setGridVisible(show_grid_);
 }
 
+QString reportProjectName(const app::ProjectDocument& document) {
+  const QString path = document.filePath();
+  if (path.isEmpty()) return QObject::tr("unsaved");
+  return document.isDirty() ? QObject::tr("%1 (with unsaved changes)").arg(path) : path;
+}
+
 // millexpert-report runs in a separate process (never blocks the GUI) on a snapshot of the current,
 // possibly unsaved, project.
 void ExpertFeature::exportReport() {
   const QString path = QFileDialog::getSaveFileName(chart_, tr("Export report"), "millexpert-report.pdf",
                                                     tr("PDF (*.pdf);;HTML (*.html)"));
-  if (path.isEmpty()) return;
-  const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
-  const QString snapshot =
-      QDir(dir).filePath(QString("millexpert-report-%1.mxproj").arg(QCoreApplication::applicationPid()));
+  if (!path.isEmpty()) exportReportTo(path);
+}
+
+void ExpertFeature::exportReportTo(const QString& path) {
+  QTemporaryFile file(QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+                          .filePath("millexpert-report-XXXXXX.mxproj"));  // one per export: several may run
+  file.setAutoRemove(false);
+  if (!file.open()) {
+    emit errorRaised(tr("Export report"), tr("Cannot create a temporary project file: %1").arg(file.errorString()));
+    return;
+  }
+  const QString snapshot = file.fileName();
+  file.close();
   try {
-    app::saveProject(context_.project(), snapshot);
+    app::saveProject(app::withAbsoluteFrfPaths(context_.project()), snapshot);  // the snapshot lives elsewhere
   } catch (const app::ProjectError& e) {
     emit errorRaised(tr("Export report"), QString::fromStdString(e.what()));
     return;
   }
   const auto& c = weights_.c;
-  QStringList args{snapshot, path.endsWith(".html", Qt::CaseInsensitive) ? "--html" : "--pdf", path, "--c",
-                   QString("%1,%2,%3").arg(c[0], 0, 'g', 17).arg(c[1], 0, 'g', 17).arg(c[2], 0, 'g', 17)};
+  QStringList args{snapshot,
+                   path.endsWith(".html", Qt::CaseInsensitive) ? "--html" : "--pdf",
+                   path,
+                   "--c",
+                   QString("%1,%2,%3").arg(c[0], 0, 'g', 17).arg(c[1], 0, 'g', 17).arg(c[2], 0, 'g', 17),
+                   "--project-name",
+                   reportProjectName(context_.document())};
   auto* process = new QProcess(this);
   connect(process, &QProcess::finished, this, [this, process, path, snapshot](int code, QProcess::ExitStatus status) {
     QFile::remove(snapshot);
     const QString err = QString::fromUtf8(process->readAllStandardError()).trimmed();
     process->deleteLater();
-    if (status == QProcess::NormalExit && code == 0)
+    if (status == QProcess::NormalExit && code == 0) {
       emit statusMessage(tr("Report written to %1").arg(path), 8000);
-    else
+      emit reportWritten(path);
+    } else {
       emit errorRaised(tr("Export report"), err.isEmpty() ? tr("millexpert-report failed (exit %1)").arg(code) : err);
+    }
   });
   emit statusMessage(tr("Writing the report (expert system, simulations, figures)..."), 0);
-  process->start(QCoreApplication::applicationDirPath() + "/millexpert-report", args);
+  process->start(
+      report_program_.isEmpty() ? QCoreApplication::applicationDirPath() + "/millexpert-report" : report_program_,
+      args);
 }
 
 }  // namespace mx::gui

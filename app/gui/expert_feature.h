@@ -26,6 +26,9 @@ struct RefinementOutcome;
 
 // The project's cost weights c, c_r, c_t, c_f (defaults where the project has none).
 CostWeights projectWeightsOf(const app::Project& project);
+// What a report names as its project file: the document's path, "unsaved", or the path "(with unsaved
+// changes)"; never the temporary snapshot the report is computed from.
+QString reportProjectName(const app::ProjectDocument& document);
 
 class ExpertFeature : public WindowFeature {
   Q_OBJECT
@@ -40,10 +43,15 @@ class ExpertFeature : public WindowFeature {
   ExpertRunner* runner() const { return runner_; }
   const CostWeights& weights() const { return weights_; }
   void reportChatter(double chatter_hz);  // Rule 6 evidence at the operating point (undoable)
+  // Writes the expert report of the open project to `path` (.html or .pdf) in a separate process;
+  // reportWritten or errorRaised follows.
+  void exportReportTo(const QString& path);
+  void setReportProgram(const QString& program) { report_program_ = program; }  // default: beside the GUI
 
  signals:
   void rankingShown();     // the ranking table was refreshed (a weight change or a new session)
   void refinementShown();  // q** (Rules 5-6) arrived
+  void reportWritten(const QString& path);
 
  private:
   void buildDocks(QMainWindow* window);
@@ -68,6 +76,7 @@ class ExpertFeature : public WindowFeature {
   std::optional<ExpertResult> refinement_;
   bool show_cost_map_ = false;
   bool show_grid_ = false;
+  QString report_program_;
 };
 
 }  // namespace mx::gui

@@ -36,6 +36,10 @@ int run(const QApplication& app) {
       {"html", "Write the report as HTML; figures in the sibling folder OUT_files/.", "OUT.html"},
       {"embed-images", "HTML: embed the figures as data: URIs instead of the sibling folder."},
       {"c", "Tool-cost weights c1,c2,c3 (power, MRR, Delta N_s); sum 1. Default: the project's.", "C1,C2,C3"},
+      {"project-name",
+       "What the header and every footer name as the project file (default: PROJECT). The GUI writes its snapshot "
+       "of the open project to a temporary file and names the project's own file here, or \"unsaved\".",
+       "NAME"},
   });
   if (!parser.parse(app.arguments())) return fail(parser.errorText(), mx::app::kExitBadInput);
   if (parser.isSet("help")) {
@@ -59,7 +63,8 @@ int run(const QApplication& app) {
   QTemporaryDir work;
   if (!work.isValid()) return fail("cannot create a temporary folder for the figures", mx::app::kExitComputationFailed);
   options.image_dir = work.path();
-  const mx::gui::ReportData data = mx::gui::collectReportData(positional.front(), options);
+  mx::gui::ReportData data = mx::gui::collectReportData(positional.front(), options);
+  if (parser.isSet("project-name")) data.project_path = parser.value("project-name");
   const mx::gui::ReportWriter writer(data);
   if (parser.isSet("html"))
     writer.writeHtml(parser.value("html"),

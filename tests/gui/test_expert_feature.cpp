@@ -3,7 +3,9 @@
 // committed weight change (one per drag) is an undoable project edit that recomputes no lobes, and the
 // heat map covers the admissible cells.
 #include <QApplication>
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
@@ -136,6 +138,38 @@ class TestExpertFeature : public QObject {
     QCOMPARE(test::windowPart<widgets::RankingTable>(window)->selectedTool(), cli.json["selected"].toString());
     QCOMPARE_LE(std::abs(rows.front().speed_rpm - q["speed_rpm"].toDouble()), 1e-6);
     QCOMPARE_LE(std::abs(rows.front().depth_mm - q["depth_mm"].toDouble()), 1e-9);
+  }
+
+  // A report exported from the window names the project's own file (never the temporary snapshot it is
+  // computed from), and says when the open project has unsaved changes.
+  void exportedReportNamesTheProjectFile() {
+    QTemporaryDir dir;
+    const QString project = dir.filePath("shop.mxproj");
+    QVERIFY(QFile::copy(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj", project));
+    QFile(project).setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+    gui::MainWindow window;
+    window.setQuiet(true);
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QVERIFY(window.openProject(project));
+    QVERIFY(ranked.wait(60000));
+    gui::ExpertFeature* expert = test::expertOf(window);
+    expert->setReportProgram(QFileInfo(MX_CLI_PATH).absoluteDir().filePath("gui/millexpert-report"));
+    auto exportHtml = [&](const QString& name) {
+      QSignalSpy written(expert, &gui::ExpertFeature::reportWritten);
+      expert->exportReportTo(dir.filePath(name));
+      if (!written.wait(120000)) return QString();
+      QFile file(dir.filePath(name));
+      return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    };
+    const QString saved = exportHtml("saved.html");
+    QVERIFY2(saved.contains("Project file: " + project + "</p>"), qPrintable(saved.left(2000)));
+    QVERIFY(!saved.contains("millexpert-report-"));
+    app::Project edited = *window.project();
+    edited.name += " (edited)";
+    QCOMPARE(window.document()->applyEdit(edited, "name"), QString());
+    const QString dirty = exportHtml("dirty.html");
+    QVERIFY2(dirty.contains("Project file: " + project + " (with unsaved changes)"), qPrintable(dirty.left(2000)));
+    QCOMPARE(gui::reportProjectName(*window.document()), project + " (with unsaved changes)");
   }
 
   void reRankTwentyTools() {
