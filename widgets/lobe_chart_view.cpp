@@ -302,7 +302,8 @@ void LobeChartView::resetView() {
   emit viewReset();
 }
 
-void LobeChartView::setSnapGrid(double speed_step_rpm, double depth_step_mm) {
+void LobeChartView::setSnapGrid(double speed_origin_rpm, double speed_step_rpm, double depth_step_mm) {
+  if (std::isfinite(speed_origin_rpm)) snap_origin_rpm_ = speed_origin_rpm;
   if (speed_step_rpm > 0.0) snap_rpm_ = speed_step_rpm;
   if (depth_step_mm > 0.0) snap_mm_ = depth_step_mm;
 }
@@ -377,11 +378,9 @@ QPoint LobeChartView::pixelFor(double speed_rpm, double depth_mm) const {
   return QPoint(qRound(plot_->xAxis->coordToPixel(speed_rpm)), qRound(plot_->yAxis->coordToPixel(depth_mm * scale_)));
 }
 
-void LobeChartView::movePointTo(double speed_rpm, double depth_mm, bool snap) {
-  if (snap) {
-    speed_rpm = std::round(speed_rpm / snap_rpm_) * snap_rpm_;
-    depth_mm = std::round(depth_mm / snap_mm_) * snap_mm_;
-  }
+void LobeChartView::movePointTo(double speed_rpm, double depth_mm, bool snap_speed, bool snap_depth) {
+  if (snap_speed) speed_rpm = snap_origin_rpm_ + std::round((speed_rpm - snap_origin_rpm_) / snap_rpm_) * snap_rpm_;
+  if (snap_depth) depth_mm = std::round(depth_mm / snap_mm_) * snap_mm_;
   speed_rpm = std::max(speed_rpm, 1.0);
   depth_mm = std::max(depth_mm, 0.0);
   point_rpm_ = speed_rpm;
@@ -400,8 +399,8 @@ void LobeChartView::onMousePress(QMouseEvent* event) {
   }
   if (event->button() != Qt::LeftButton || !plot_->axisRect()->rect().contains(p.toPoint())) return;
   dragging_ = true;
-  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_,
-              event->modifiers() & Qt::ShiftModifier);
+  const bool snap = event->modifiers() & Qt::ShiftModifier;
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_, snap, snap);
   emit pointDragged(point_rpm_, point_mm_);
 }
 
@@ -418,8 +417,8 @@ void LobeChartView::onMouseMove(QMouseEvent* event) {
     return;
   }
   if (!dragging_) return;
-  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_,
-              event->modifiers() & Qt::ShiftModifier);
+  const bool snap = event->modifiers() & Qt::ShiftModifier;
+  movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_, snap, snap);
   emit pointDragged(point_rpm_, point_mm_);
 }
 
@@ -433,24 +432,34 @@ void LobeChartView::onMouseRelease(QMouseEvent* event) {
   emit pointReleased(point_rpm_, point_mm_);
 }
 
+namespace {
+// The next line origin + k step beyond x in the direction of `sign` (+1 or -1).
+double nextGridLine(double x, double origin, double step, int sign) {
+  constexpr double kOnLine = 1e-9;  // a point on a line moves to the next one
+  const double k = (x - origin) / step;
+  return origin + step * (sign > 0 ? std::floor(k + kOnLine) + 1.0 : std::ceil(k - kOnLine) - 1.0);
+}
+}  // namespace
+
+// Arrows move the point by 1/200 of the view; with Shift, to the next grid line of that axis.
 void LobeChartView::keyPressEvent(QKeyEvent* event) {
   const bool snap = event->modifiers() & Qt::ShiftModifier;
-  const double step_rpm = snap ? snap_rpm_ : plot_->xAxis->range().size() / 200.0;
-  const double step_mm = snap ? snap_mm_ : plot_->yAxis->range().size() / scale_ / 200.0;
+  const double step_rpm = plot_->xAxis->range().size() / 200.0;
+  const double step_mm = plot_->yAxis->range().size() / scale_ / 200.0;
   double n = point_rpm_, b = point_mm_;
   switch (event->key()) {
     case Qt::Key_Left:
-      n -= step_rpm;
+    case Qt::Key_Right: {
+      const int sign = event->key() == Qt::Key_Right ? 1 : -1;
+      n = snap ? nextGridLine(n, snap_origin_rpm_, snap_rpm_, sign) : n + sign * step_rpm;
       break;
-    case Qt::Key_Right:
-      n += step_rpm;
-      break;
+    }
     case Qt::Key_Up:
-      b += step_mm;
+    case Qt::Key_Down: {
+      const int sign = event->key() == Qt::Key_Up ? 1 : -1;
+      b = snap ? nextGridLine(b, 0.0, snap_mm_, sign) : b + sign * step_mm;
       break;
-    case Qt::Key_Down:
-      b -= step_mm;
-      break;
+    }
     case Qt::Key_Home:
       resetView();
       return;
@@ -458,7 +467,7 @@ void LobeChartView::keyPressEvent(QKeyEvent* event) {
       QWidget::keyPressEvent(event);
       return;
   }
-  movePointTo(n, b, snap);
+  movePointTo(n, b, false, false);
   emit pointReleased(point_rpm_, point_mm_);
 }
 

@@ -55,7 +55,9 @@ class LobeChartView : public QWidget {
   // Depth [mm] where peak power reaches the spindle limit, on the active tool's speeds; empty = none.
   void setPowerLimit(const QVector<double>& depth_mm, const QString& label);
   void setOperatingPoint(double speed_rpm, double depth_mm, PointVerdict verdict);
-  void setSnapGrid(double speed_step_rpm, double depth_step_mm);
+  // Shift snaps to the grid speed_origin + k speed_step, depth k depth_step (a drag snaps both; the
+  // arrow keys move one axis to its next grid line and leave the other alone).
+  void setSnapGrid(double speed_origin_rpm, double speed_step_rpm, double depth_step_mm);
   // Display unit of the depth axis: value shown per mm (1 for mm, 1/25.4 for inch). Signals and
   // setters stay in mm.
   void setLengthUnit(double display_per_mm, const QString& suffix);
@@ -94,7 +96,7 @@ class LobeChartView : public QWidget {
   void onMousePress(QMouseEvent* event);
   void onMouseMove(QMouseEvent* event);
   void onMouseRelease(QMouseEvent* event);
-  void movePointTo(double speed_rpm, double depth_mm, bool snap);
+  void movePointTo(double speed_rpm, double depth_mm, bool snap_speed, bool snap_depth);
   void updateRegions();
   void replotOverlay();
 
@@ -115,7 +117,7 @@ class LobeChartView : public QWidget {
   QVector<double> power_mm_;
   int active_ = -1;
   double point_rpm_ = 0.0, point_mm_ = 0.0;
-  double snap_rpm_ = 100.0, snap_mm_ = 0.05;
+  double snap_origin_rpm_ = 0.0, snap_rpm_ = 100.0, snap_mm_ = 0.05;
   bool dragging_ = false, panning_ = false;
   QPoint pan_start_;
   double pan_x0_ = 0.0, pan_x1_ = 0.0, pan_y0_ = 0.0, pan_y1_ = 0.0;

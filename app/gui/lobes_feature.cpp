@@ -279,13 +279,15 @@ void LobesFeature::onLobesReady(const LobeJobResult& result) {
   emit lobesShown();
 }
 
-// Snap grid (Shift): the expert grid's speed step, and depth steps of b_min / depth_divisions.
+// Snap grid (Shift): the expert grid's speeds (from its first speed, in its steps), and depth steps of
+// b_min / depth_divisions.
 void LobesFeature::setSnapGrid(int tool) {
   const app::Project& p = context_.project();
   double b_min = std::numeric_limits<double>::infinity();
   for (double b : snapshot_->tools[static_cast<size_t>(tool)].margined.envelope_depth_m) b_min = std::min(b_min, b);
-  const int divisions = p.expert && p.expert->grid ? p.expert->grid->depth_divisions : 10;
-  chart_->setSnapGrid(p.expert && p.expert->grid ? p.expert->grid->speed_step_rpm : 100.0,
+  const bool grid = p.expert && p.expert->grid;
+  const int divisions = grid ? p.expert->grid->depth_divisions : 10;
+  chart_->setSnapGrid(grid ? p.expert->grid->speed_from_rpm : 0.0, grid ? p.expert->grid->speed_step_rpm : 100.0,
                       std::isfinite(b_min) ? snapshot_->alpha * b_min * 1e3 / divisions : 0.0);
 }
 

@@ -2,7 +2,9 @@
 // redrawn on its own; clearing every group empties the chart; a change of length unit keeps them. The
 // model title above the plot.
 #include <QImage>
+#include <QSignalSpy>
 #include <QStringList>
+#include <QTest>
 
 #include "lobe_chart_view.h"
 #include "test_registry.h"
@@ -27,6 +29,38 @@ class TestLobeChartView : public QObject {
     QCOMPARE(chart.markerNames().size(), 2);
     chart.clearMarkers();
     QVERIFY(chart.markerNames().isEmpty());
+  }
+
+  // Shift + arrow keys: to the next grid line of that axis, the speed's counted from the grid's first
+  // speed (800 + k 1000 rpm); the other axis stays.
+  void shiftArrowsSnapToTheGridFromItsStart_data() {
+    QTest::addColumn<int>("key");
+    QTest::addColumn<double>("speed_rpm");
+    QTest::addColumn<double>("depth_mm");
+    QTest::newRow("right from off the grid") << int(Qt::Key_Right) << 3800.0 << 1.206;
+    QTest::newRow("left from off the grid") << int(Qt::Key_Left) << 2800.0 << 1.206;
+    QTest::newRow("up") << int(Qt::Key_Up) << 3264.0 << 1.25;
+    QTest::newRow("down") << int(Qt::Key_Down) << 3264.0 << 1.2;
+  }
+  void shiftArrowsSnapToTheGridFromItsStart() {
+    QFETCH(int, key);
+    QFETCH(double, speed_rpm);
+    QFETCH(double, depth_mm);
+    LobeChartView chart;
+    chart.setSnapGrid(800.0, 1000.0, 0.05);
+    chart.setOperatingPoint(3264.0, 1.206, mx::widgets::PointVerdict::Unknown);
+    QSignalSpy released(&chart, &LobeChartView::pointReleased);
+    QTest::keyClick(&chart, Qt::Key(key), Qt::ShiftModifier);
+    QCOMPARE(released.count(), 1);
+    QCOMPARE_LE(std::abs(released.front()[0].toDouble() - speed_rpm), 1e-9);
+    QCOMPARE_LE(std::abs(released.front()[1].toDouble() - depth_mm), 1e-9);
+    // From a grid line the next press moves exactly one step.
+    chart.setOperatingPoint(speed_rpm, depth_mm, mx::widgets::PointVerdict::Unknown);
+    QTest::keyClick(&chart, Qt::Key(key), Qt::ShiftModifier);
+    const double sign = key == Qt::Key_Right || key == Qt::Key_Up ? 1.0 : -1.0;
+    const bool horizontal = key == Qt::Key_Right || key == Qt::Key_Left;
+    QCOMPARE_LE(std::abs(released.back()[0].toDouble() - (speed_rpm + (horizontal ? sign * 1000.0 : 0.0))), 1e-9);
+    QCOMPARE_LE(std::abs(released.back()[1].toDouble() - (depth_mm + (horizontal ? 0.0 : sign * 0.05))), 1e-9);
   }
 
   void markersSurviveAUnitChange() {
