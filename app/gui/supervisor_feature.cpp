@@ -137,6 +137,10 @@ void SupervisorFeature::refresh(const app::Project& p) {
     return;
   }
   view_->setEnabled(true);
+  if (shown_ == Shown::None)
+    view_->setStatus(
+        tr("Supervisor ready (controller %1): Run simulates the supervised cycle, Compare runs all controllers")
+            .arg(view_->controller()));
   const widgets::GrafcetChartData data = chartData(request_->chart);
   view_->chartView()->setChart(data);
   if (!(view_->editor()->chart() == data)) view_->editor()->setChart(data);

@@ -44,6 +44,18 @@ class TestSupervisorFeature : public QObject {
     QCoreApplication::setApplicationName("millexpert-test");
   }
 
+  // A project with a supervisor section says so from the start, before any run; one without says it has none.
+  void statusAtStartupNamesTheSection() {
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = supervisor(window)->view();
+    QVERIFY(view->isEnabled());
+    QVERIFY2(view->statusText().startsWith("Supervisor ready (controller " + view->controller() + ")"),
+             qPrintable(view->statusText()));
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QCOMPARE(view->statusText(), QString("This project has no \"supervisor\" section (docs/project-file.md)"));
+  }
+
   void liveRunWithFeedHold() {
     gui::MainWindow window;
     QVERIFY(openLanders(window));
