@@ -149,6 +149,7 @@ void ControlView::setTraces(const ControlTraces& t) {
 
 void ControlView::setMetrics(const ControlMetricsView& m) {
   metrics_->setMetrics(m);
+  jc_->setComputedJc(m.jc_n_s);
 }
 
 void ControlView::setJcCurve(const JcCurveView& c) {

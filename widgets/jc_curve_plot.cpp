@@ -129,20 +129,27 @@ void JcCurvePlot::setCurve(const JcCurveView& c) {
 }
 
 void JcCurvePlot::setCurrentBeta(double beta) {
-  current_beta_ = std::isfinite(beta) ? std::clamp(beta, kBetaMin, kBetaMax) : 0.0;
+  const double clamped = std::isfinite(beta) ? std::clamp(beta, kBetaMin, kBetaMax) : 0.0;
+  if (clamped != current_beta_) computed_jc_.reset();  // the run at the new beta is still to come
+  current_beta_ = clamped;
   updateMarker();
 }
 
+void JcCurvePlot::setComputedJc(std::optional<double> jc_n_s) {
+  computed_jc_ = jc_n_s && std::isfinite(*jc_n_s) ? jc_n_s : std::nullopt;
+  updateMarker();
+}
+
+// The marker and its legend show the J_c the closed loop computed at the current beta (the number the
+// metrics panel and `millexpert-cli control` give), never a value read off the sweep's interpolation.
 void JcCurvePlot::updateMarker() {
   current_line_->point1->setCoords(current_beta_, 0.0);
   current_line_->point2->setCoords(current_beta_, 1.0);
-  const std::optional<double> jc = currentJc();
-  // A tracer on an empty graph complains at each repaint: attached only when there is a value.
-  current_point_->setGraph(jc ? curve_ : nullptr);
-  current_point_->setGraphKey(current_beta_);
+  const std::optional<double> jc = computed_jc_;
+  current_point_->position->setCoords(current_beta_, jc.value_or(0.0));
   current_point_->setVisible(jc.has_value());
   QString name = tr("Current \u03b2 = %1").arg(betaText(current_beta_));
-  if (jc) name += tr(", J_c = %1 N\u00b7s").arg(*jc, 0, 'g', 4);
+  name += jc ? tr(", J_c = %1 N\u00b7s").arg(*jc, 0, 'g', 4) : tr(", J_c: computing");
   if (current_beta_ < threshold_) name += tr(" (unstable zero)");
   current_legend_->setName(name);
   plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -150,19 +157,6 @@ void JcCurvePlot::updateMarker() {
 
 int JcCurvePlot::pointCount() const {
   return curve_->dataCount();
-}
-
-std::optional<double> JcCurvePlot::currentJc() const {
-  const auto points = curve_->data();
-  if (points->isEmpty()) return std::nullopt;
-  const double b = current_beta_;
-  if (b < points->constBegin()->key || b > (points->constEnd() - 1)->key) return std::nullopt;
-  auto hi = points->findBegin(b, false);  // first point with key >= b
-  if (hi == points->constEnd()) return std::nullopt;
-  if (hi->key == b || hi == points->constBegin()) return hi->value;
-  auto lo = hi - 1;
-  const double w = (b - lo->key) / (hi->key - lo->key);
-  return lo->value + w * (hi->value - lo->value);
 }
 
 std::optional<double> JcCurvePlot::bestBeta() const {

@@ -25,13 +25,15 @@ class JcCurvePlot : public QWidget {
   explicit JcCurvePlot(QWidget* parent = nullptr);
 
   void setCurve(const JcCurveView& curve);
-  void setCurrentBeta(double beta);  // clamped to [-1, 1]
+  void setCurrentBeta(double beta);  // clamped to [-1, 1]; a new beta drops the computed J_c
+  // J_c of the closed-loop run at the current beta (ControlMetricsView::jc_n_s); shown on the marker.
+  void setComputedJc(std::optional<double> jc_n_s);
+  std::optional<double> computedJc() const { return computed_jc_; }
   void clear();
 
   int pointCount() const;  // finite points of the curve
   double currentBeta() const { return current_beta_; }
-  std::optional<double> currentJc() const;  // J_c at the current beta, linear between sweep points
-  std::optional<double> bestBeta() const;   // the starred beta, if any
+  std::optional<double> bestBeta() const;  // the starred beta, if any
   bool regionShaded() const;
   QPair<double, double> shadedRange() const;  // (lower, upper) beta of the shaded region
   QStringList legendNames() const;            // visible legend entries
@@ -53,6 +55,7 @@ class JcCurvePlot : public QWidget {
   QCPItemTracer* current_point_;
   double threshold_ = -1.0;
   double current_beta_ = 0.0;
+  std::optional<double> computed_jc_;
 };
 
 }  // namespace mx::widgets

@@ -19,6 +19,7 @@
 #include "control_metrics_panel.h"
 #include "control_view.h"
 #include "document/project.h"
+#include "jc_curve_plot.h"
 #include "machining_feature.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
@@ -118,6 +119,12 @@ class TestControlFeature : public QObject {
     const QString cli_jc = widgets::MonitoringPanel::formatNumber(cli.json.value("Jc").toDouble());
     QCOMPARE(metrics->valueText("jc"), cli_jc);
     QVERIFY(cli_jc != four_teeth_jc);
+    // The J_c plot's marker shows that same computed number, not the sweep's interpolation.
+    widgets::JcCurvePlot* jc = control(window)->view()->jcPlot();
+    QVERIFY(jc->computedJc());
+    QCOMPARE_LE(std::abs(*jc->computedJc() - cli.json.value("Jc").toDouble()), 1e-9 * std::abs(*jc->computedJc()));
+    QVERIFY2(jc->legendNames().last().contains(QString("J_c = %1 N").arg(*jc->computedJc(), 0, 'g', 4)),
+             qPrintable(jc->legendNames().last()));
   }
 
   void betaSliderDragIsOneUndoStep() {
