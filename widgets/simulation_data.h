@@ -3,6 +3,7 @@
 // revolution's samples while it runs, and the summary (indicators, suggested speed, spectrum) at the
 // end. Plain values, SI units; shared by widgets/ (SimulationView) and app/gui/ (SimulationRunner).
 #include <QMetaType>
+#include <QString>
 #include <QVector>
 #include <optional>
 
@@ -39,6 +40,10 @@ struct SimulationSummary {
   // Smith-Tlusty speed N = 60 f_c / (n_t k) in (0, max speed], nearest the current one; only with chatter.
   std::optional<double> suggested_rpm;
   int suggested_k = 0;
+  // Set once the suggestion is checked on the lobes: a shallower depth when no speed is stable at this
+  // one, and what the check found (shown under the button).
+  std::optional<double> suggested_depth_mm;
+  QString suggestion_note;
   // Run.
   int simulated_revolutions = 0;
   int evaluated_revolutions = 0;

@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "indicator_gauge.h"
@@ -138,14 +139,18 @@ QWidget* SimulationView::buildIndicatorPanel() {
   move_button_ = new QPushButton(panel);
   move_button_->setObjectName(QStringLiteral("moveToSpeedButton"));
   connect(move_button_, &QPushButton::clicked, this, [this] {
-    if (suggested_rpm_ > 0.0) emit moveToSpeedRequested(suggested_rpm_);
+    if (suggested_rpm_ > 0.0) emit moveToPointRequested(suggested_rpm_, suggested_depth_mm_);
   });
+  suggestion_label_ = new QLabel(panel);
+  suggestion_label_->setObjectName(QStringLiteral("suggestionNote"));
+  suggestion_label_->setWordWrap(true);
   layout->addWidget(status_label_);
   layout->addWidget(verdict_label_);
   layout->addWidget(eta_gauge_);
   layout->addWidget(chip_gauge_);
   layout->addWidget(details_label_);
   layout->addWidget(move_button_);
+  layout->addWidget(suggestion_label_);
   layout->addStretch(1);
   return panel;
 }
@@ -168,6 +173,7 @@ void SimulationView::clear() {
   move_button_->setText(tr("Move to suggested speed"));
   move_button_->setEnabled(false);
   move_button_->setToolTip(tr("Shown when chatter is detected: the Smith-Tlusty speed N = 60 f_c / (n_t k)."));
+  suggestion_label_->clear();
   spectrum_->clear();
   spectrum_->setToothPassingHz(tooth_passing_hz_);
   flushPlots();
@@ -250,13 +256,20 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
           .arg(power_limit));
 
   suggested_rpm_ = s.suggested_rpm.value_or(0.0);
+  suggested_depth_mm_ = s.suggested_depth_mm.value_or(std::numeric_limits<double>::quiet_NaN());
   move_button_->setEnabled(suggested_rpm_ > 0.0);
-  if (suggested_rpm_ > 0.0) {
+  suggestion_label_->setText(s.suggestion_note);
+  if (suggested_rpm_ > 0.0 && s.suggested_depth_mm) {
+    move_button_->setText(
+        tr("Move to %1 rpm, b = %2 mm").arg(suggested_rpm_, 0, 'f', 0).arg(*s.suggested_depth_mm, 0, 'f', 3));
+    move_button_->setToolTip(s.suggestion_note);
+  } else if (suggested_rpm_ > 0.0) {
     move_button_->setText(tr("Move to %1 rpm").arg(suggested_rpm_, 0, 'f', 0));
     move_button_->setToolTip(
-        tr("Smith-Tlusty: tooth-passing frequency = f_c / %1, i.e. N = 60 f_c / (%2 \u00d7 %1) rpm")
-            .arg(s.suggested_k)
-            .arg(s.teeth));
+        s.suggested_k > 0 ? tr("Smith-Tlusty: tooth-passing frequency = f_c / %1, i.e. N = 60 f_c / (%2 \u00d7 %1) rpm")
+                                .arg(s.suggested_k)
+                                .arg(s.teeth)
+                          : s.suggestion_note);
   } else {
     move_button_->setText(s.chatter ? tr("No chatter-free speed in range") : tr("Move to suggested speed"));
   }
@@ -282,6 +295,11 @@ void SimulationView::setStale(const QString& reason) {
   suggested_rpm_ = 0.0;
   move_button_->setText(tr("Move to suggested speed"));
   move_button_->setEnabled(false);
+  suggestion_label_->clear();
+}
+
+QString SimulationView::suggestionNote() const {
+  return suggestion_label_->text();
 }
 
 QString SimulationView::statusText() const {

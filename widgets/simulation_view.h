@@ -57,11 +57,13 @@ class SimulationView : public QWidget {
   QString verdictText() const;
   QString suggestedSpeedText() const;  // empty when no speed is suggested
   double suggestedSpeedRpm() const { return suggested_rpm_; }
+  QString suggestionNote() const;
   bool replotPending() const;
   int flushCount() const { return flush_count_; }  // plot updates so far (coalesced chunks)
 
  signals:
-  void moveToSpeedRequested(double speed_rpm);
+  // The suggested point: depth_mm is NaN when the depth stays.
+  void moveToPointRequested(double speed_rpm, double depth_mm);
 
  private:
   void scheduleReplot();
@@ -85,6 +87,7 @@ class SimulationView : public QWidget {
   QLabel* verdict_label_ = nullptr;
   QLabel* details_label_ = nullptr;
   QPushButton* move_button_ = nullptr;
+  QLabel* suggestion_label_ = nullptr;
   QTimer* replot_timer_;
   QElapsedTimer spectrum_clock_;
 
@@ -98,6 +101,7 @@ class SimulationView : public QWidget {
   bool summary_shown_ = false;
   bool chatter_shown_ = false;
   double suggested_rpm_ = 0.0;
+  double suggested_depth_mm_ = 0.0;  // NaN: the depth stays
   int flush_count_ = 0;
 };
 

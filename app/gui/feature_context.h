@@ -6,10 +6,12 @@
 #include <QObject>
 #include <QString>
 #include <QThreadPool>
+#include <memory>
 #include <optional>
 
 #include "display_units.h"
 #include "document/project_document.h"
+#include "point_evaluator.h"
 #include "point_readout.h"
 #include "simulation_data.h"
 
@@ -42,6 +44,10 @@ class FeatureContext : public QObject {
   widgets::SimulationCheck simulationCheck() const;            // for the active tool and current point
   const SimulationSummary* currentSimulation() const;          // null unless Done for the current point
 
+  // The lobes' evaluator of the chart (never null; not ready before the first lobes).
+  const std::shared_ptr<const PointEvaluator>& evaluator() const { return evaluator_; }
+  void setEvaluator(std::shared_ptr<const PointEvaluator> evaluator) { evaluator_ = std::move(evaluator); }
+
  signals:
   void activeToolChanged(const QString& id);
   void readoutChanged(const mx::widgets::PointReadout& readout);
@@ -64,6 +70,7 @@ class FeatureContext : public QObject {
   app::PickedPoint simulated_point_;
   bool simulation_running_ = false;
   std::optional<SimulationSummary> simulation_;
+  std::shared_ptr<const PointEvaluator> evaluator_ = std::make_shared<PointEvaluator>();
 };
 
 }  // namespace mx::gui

@@ -187,6 +187,7 @@ void LobesFeature::updateForceLimits() {
   auto evaluator = std::make_shared<PointEvaluator>(*evaluator_);
   evaluator->setForceLimits(std::move(limits));
   evaluator_ = std::move(evaluator);
+  context_.setEvaluator(evaluator_);
 }
 
 // The toolbar's tool choice and View > Tools on the chart; the active tool stays when it still exists.
@@ -237,6 +238,7 @@ void LobesFeature::recompute() {
     chart_->clear();
     snapshot_.reset();
     evaluator_ = std::make_shared<PointEvaluator>();
+    context_.setEvaluator(evaluator_);
     status_engine_->setText(tr("Lobes unavailable: %1").arg(QString::fromStdString(e.what())));
     return;
   }

@@ -72,6 +72,21 @@ double PointEvaluator::depthLimitMm(int tool, double speed_rpm) const {
   return boundary.covers(n) ? boundary.depthLimit(n) * 1e3 : std::numeric_limits<double>::quiet_NaN();
 }
 
+std::pair<double, double> PointEvaluator::speedRangeRpm(int tool) const {
+  if (!ready() || tool < 0 || tool >= toolCount()) return {0.0, 0.0};
+  const StabilityBoundary& b = boundaries_[static_cast<size_t>(tool)];
+  return {revPerSToRpm(b.minSpeed()), revPerSToRpm(b.maxSpeed())};
+}
+
+std::optional<StablePointSuggestion> PointEvaluator::suggestStablePoint(int tool, double speed_rpm, double depth_mm,
+                                                                        std::optional<double> chatter_hz,
+                                                                        double max_speed_rpm) const {
+  if (!ready() || tool < 0 || tool >= toolCount()) return std::nullopt;
+  const int teeth = snapshot_->tools[static_cast<size_t>(tool)].setup.teeth;
+  return mx::suggestStablePoint(boundaries_[static_cast<size_t>(tool)], rpmToRevPerS(speed_rpm), depth_mm * 1e-3,
+                                chatter_hz, teeth, 0.0, rpmToRevPerS(max_speed_rpm));
+}
+
 namespace {
 
 // b at which b k(b) reaches `target` [W / (rev/s m)], by log-log interpolation in a table of b k(b) over

@@ -4,12 +4,15 @@
 // The static cut grows with the teeth, the helix slices and, for unequal teeth, a whole revolution, so
 // evaluate() and powerLimitMm() run on the readout thread (PointRunner), never on the GUI thread.
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "lobe_job.h"
 #include "model/spindle_power.h"
 #include "point_readout.h"
 #include "stability/stability_boundary.h"
+#include "stability/stable_point_suggestion.h"
 
 namespace mx::gui {
 
@@ -25,6 +28,12 @@ class PointEvaluator {
   widgets::PointReadout evaluate(int tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) const;
   // alpha * b_lim [mm] at the speed (a lookup on the boundary: cheap); NaN outside the lobes or without them.
   double depthLimitMm(int tool, double speed_rpm) const;
+  // [lowest, highest] computed speed [rpm] of the tool's lobes ({0, 0} without them).
+  std::pair<double, double> speedRangeRpm(int tool) const;
+  // A chatter-free point near (speed, depth), checked on the tool's lobes (stable_point_suggestion.h);
+  // nullopt without lobes for the tool or computed speeds in [0, max_speed_rpm].
+  std::optional<StablePointSuggestion> suggestStablePoint(int tool, double speed_rpm, double depth_mm,
+                                                          std::optional<double> chatter_hz, double max_speed_rpm) const;
 
   // Depth [mm] at which the peak power reaches the available power P_av(N), per speed of the snapshot:
   // the peak power is N b s_t k(b, s_t) (peakPerDepthFeed), so b k(b, s_t) = P_av(N) / (N s_t). k is one

@@ -1,6 +1,7 @@
 #include "simulation_feature.h"
 
 #include <QDockWidget>
+#include <cmath>
 #include <limits>
 
 #include "feature_dock.h"
@@ -27,9 +28,10 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
     view_->setStatus(tr("Simulation failed: %1").arg(message));
     context_.clearSimulation();
   });
-  connect(view_, &widgets::SimulationView::moveToSpeedRequested, this, [this](double rpm) {
+  connect(view_, &widgets::SimulationView::moveToPointRequested, this, [this](double rpm, double depth_mm) {
     app::PickedPoint p = context_.point();
     p.speed_rpm = rpm;
+    if (std::isfinite(depth_mm)) p.depth_mm = depth_mm;
     emit pointRequested(p, 0);
     start();
   });
@@ -116,12 +118,61 @@ void SimulationFeature::start() {
   }
 }
 
-void SimulationFeature::onFinished(quint64 generation, const SimulationSummary& summary) {
+void SimulationFeature::onFinished(quint64 generation, const SimulationSummary& result) {
   if (generation != generation_) return;
+  SimulationSummary summary = result;
+  if (summary.chatter) checkSuggestion(summary);
   view_->setSummary(summary);
   context_.setSimulationResult(summary);
   emit context_.simulationFinished(summary);
   emit simulationShown();
+}
+
+void SimulationFeature::checkSuggestion(SimulationSummary& s) const {
+  s.suggested_rpm.reset();
+  s.suggested_k = 0;
+  const PointEvaluator& lobes = *context_.evaluator();
+  const int tool = lobes.toolIndex(shown_tool_);
+  const app::Project& p = context_.project();
+  const double max_rpm =
+      p.machine && p.machine->max_spindle_rpm ? *p.machine->max_spindle_rpm : std::numeric_limits<double>::infinity();
+  const app::PickedPoint& at = shown_point_;
+  const auto q = lobes.suggestStablePoint(tool, at.speed_rpm, at.depth_mm, s.chatter_frequency_hz, max_rpm);
+  if (!q) {
+    s.suggestion_note = tr("No lobes of tool %1 in the machine's speed range to check a speed on").arg(shown_tool_);
+    return;
+  }
+  const double rpm = revPerSToRpm(q->speed_rev_per_s);
+  const double blim = lobes.depthLimitMm(tool, rpm);
+  s.suggested_rpm = rpm;
+  switch (q->kind) {
+    case StablePointSuggestion::Kind::SmithTlusty:
+      s.suggested_k = q->k;
+      s.suggestion_note = tr("Smith-Tlusty speed (k = %1), stable on the lobes: b_lim = %2 mm at %3 rpm")
+                              .arg(q->k)
+                              .arg(blim, 0, 'f', 3)
+                              .arg(rpm, 0, 'f', 0);
+      break;
+    case StablePointSuggestion::Kind::NearestStableSpeed:
+      s.suggestion_note = tr("No Smith-Tlusty speed is stable at %1 mm; %2 rpm is the peak of the nearest stable "
+                             "pocket (b_lim = %3 mm)")
+                              .arg(at.depth_mm, 0, 'f', 3)
+                              .arg(rpm, 0, 'f', 0)
+                              .arg(blim, 0, 'f', 3);
+      break;
+    case StablePointSuggestion::Kind::ShallowerDepth: {
+      const auto [lo, hi] = lobes.speedRangeRpm(tool);
+      s.suggested_depth_mm = q->depth_m * 1e3;
+      s.suggestion_note = tr("No speed in %1-%2 rpm is stable at %3 mm: the deepest stable depth at the nearest "
+                             "pocket (%4 rpm) is %5 mm")
+                              .arg(lo, 0, 'f', 0)
+                              .arg(std::min(hi, max_rpm), 0, 'f', 0)
+                              .arg(at.depth_mm, 0, 'f', 3)
+                              .arg(rpm, 0, 'f', 0)
+                              .arg(*s.suggested_depth_mm, 0, 'f', 3);
+      break;
+    }
+  }
 }
 
 }  // namespace mx::gui

@@ -41,6 +41,8 @@ class SimulationFeature : public WindowFeature {
   void onFinished(quint64 generation, const SimulationSummary& summary);
   void onPointOrToolChanged();
   void showCannotSimulate(const QString& reason);
+  // Replaces the run's raw Smith-Tlusty speed by a point checked on the shown tool's lobes.
+  void checkSuggestion(SimulationSummary& summary) const;
 
   FeatureContext& context_;
   SimulationRunner* runner_;

@@ -54,6 +54,10 @@ class StabilityBoundary {
   // the Pareto objective and the reports agree. Needs depth_m > 0.
   double robustness(double speed_rev_per_s, double depth_m) const;
 
+  // The samples: speeds and alpha * envelope depths (+inf: no lobe below the cap).
+  const std::vector<double>& speeds() const { return speed_; }
+  const std::vector<double>& depths() const { return depth_; }
+
   // Local minima of alpha * envelope (speed, depth), ascending in speed.
   const std::vector<LobeMinimum>& minima() const { return minima_; }
 

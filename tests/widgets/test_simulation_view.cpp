@@ -107,12 +107,25 @@ class TestSimulationView : public QObject {
     QVERIFY(view.verdictText().contains("641.4"));
     QCOMPARE(view.suggestedSpeedText(), QString("Move to 6414 rpm"));
     QCOMPARE(view.spectrumPointCount(), 301);
-    QSignalSpy move(&view, &SimulationView::moveToSpeedRequested);
+    QSignalSpy move(&view, &SimulationView::moveToPointRequested);
     auto* button = view.findChild<QPushButton*>("moveToSpeedButton");
     QVERIFY(button && button->isEnabled());
     QTest::mouseClick(button, Qt::LeftButton);
     QCOMPARE(move.size(), 1);
     QCOMPARE(move.first().at(0).toDouble(), 6414.0);
+    QVERIFY(std::isnan(move.first().at(1).toDouble()));  // the depth stays
+
+    // No stable speed at this depth: the button moves to the pocket's speed and its deepest stable depth.
+    SimulationSummary shallower = chatterSummary();
+    shallower.suggested_rpm = 3400.0;
+    shallower.suggested_depth_mm = 0.912;
+    shallower.suggestion_note = "No speed in 800-5800 rpm is stable at 1.206 mm";
+    view.setSummary(shallower);
+    QCOMPARE(view.suggestedSpeedText(), QString("Move to 3400 rpm, b = 0.912 mm"));
+    QCOMPARE(view.suggestionNote(), shallower.suggestion_note);
+    QTest::mouseClick(button, Qt::LeftButton);
+    QCOMPARE(move.size(), 2);
+    QCOMPARE(move.last().at(1).toDouble(), 0.912);
 
     // A stable run: no suggestion, the button does nothing.
     SimulationSummary stable = chatterSummary();
@@ -128,7 +141,7 @@ class TestSimulationView : public QObject {
     QVERIFY(view.suggestedSpeedText().isEmpty());
     QVERIFY(!button->isEnabled());
     QTest::mouseClick(button, Qt::LeftButton);
-    QCOMPARE(move.size(), 1);
+    QCOMPARE(move.size(), 2);  // no new move
   }
 
   void clearEmptiesTheView() {
