@@ -1,0 +1,228 @@
+// Scenario "screenshots": the pictures of the README and docs/, each from a fresh window at 1920x1080
+// on the X screen with a bundled project, once what the picture is about has arrived (the lobes, the
+// point's simulation, a Pareto choice, a supervised run, a tap-test fit...). A shot that never gets
+// there fails, naming what it waited for; packaging/screenshots.sh runs this scenario.
+#include "e2e_screenshots.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QImage>
+#include <QTest>
+#include <QTimer>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "e2e_driver.h"
+#include "e2e_report.h"
+#include "e2e_window.h"
+#include "machining_feature.h"
+#include "pareto_feature.h"
+#include "supervisor_feature.h"
+#include "supervisor_view.h"
+#include "support/window_features.h"
+#include "tap_test_feature.h"
+#include "tap_test_panel.h"
+
+namespace mx::e2e {
+
+namespace {
+
+constexpr int kShotMs = 180000;  // the slowest shot (a supervised run, SDM lobes) with margin
+
+struct Point {
+  double speed_rpm, depth_mm, feed_mm_per_tooth;
+};
+
+struct Shot {
+  const char* file;
+  const char* project;              // in projects/
+  std::optional<Point> point = {};  // the operating point, else the window's initial one
+  const char* docks = "";           // raised, comma separated object names
+  bool pareto = false;              // move to the Pareto choice and simulate it
+  const char* supervise = "";       // run the supervisor with this controller
+  bool sdnrp = false;               // run the surface-finish loop
+  const char* program = "";         // open this part program (in projects/)
+  bool sdm = false;                 // semi-discretization lobes
+  const char* fit = "";             // fit the tap test of this direction
+};
+
+const Shot kShots[] = {
+    {.file = "main-window.png", .project = "rubio2006-tool-selection.mxproj"},
+    {.file = "chatter.png", .project = "rubio2006-tool-selection.mxproj", .point = Point{5100, 1.2, 0.1}},
+    {.file = "insperger-benchmark.png", .project = "benchmark-insperger-1dof.mxproj"},
+    {.file = "pareto-front.png",
+     .project = "rubio-pareto-case.mxproj",
+     .docks = "paretoFrontDock,paretoWeightsDock",
+     .pareto = true},
+    {.file = "pareto-choice.png", .project = "rubio-pareto-case.mxproj", .docks = "paretoWeightsDock", .pareto = true},
+    {.file = "pareto-monitoring.png",
+     .project = "rubio-pareto-case.mxproj",
+     .docks = "monitoringDock,operatorRulesDock",
+     .pareto = true},
+    {.file = "force-control.png", .project = "rubio2006-adaptive-control.mxproj", .docks = "controlDock"},
+    {.file = "force-control-programme.png", .project = "rubio-pareto-case.mxproj", .docks = "controlDock"},
+    {.file = "surface-finish.png", .project = "cus-zuperl-sdnrp.mxproj", .docks = "surfaceFinishDock", .sdnrp = true},
+    {.file = "part-program.png",
+     .project = "cus-zuperl-sdnrp.mxproj",
+     .docks = "partProgramDock",
+     .program = "programs/pocket_mm.nc"},
+    {.file = "supervisor.png",
+     .project = "landers-face-milling.mxproj",
+     .docks = "supervisorDock",
+     .supervise = "smc2"},
+    {.file = "tap-test.png", .project = "tap-test-example.mxproj", .fit = "x"},
+    {.file = "tap-test-lobes-sdm.png", .project = "tap-test-example.mxproj", .sdm = true, .fit = "y"},
+};
+
+QString projectFile(const char* relative) {
+  return QStringLiteral(MX_PROJECTS_DIR "/") + relative;
+}
+
+// The docks raised as gui_main's --docks does: a bottom dock gets 55 % of the height for its plots.
+void raiseDocks(gui::MainWindow& window, const QString& names) {
+  for (const QString& name : names.split(',', Qt::SkipEmptyParts)) {
+    auto* dock = part<QDockWidget>(window, name);
+    dock->raise();
+    if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
+      window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
+  }
+}
+
+void takeShot(Report& report, const Shot& shot, const QDir& folder) {
+  std::unique_ptr<gui::MainWindow> owner = showWindow();
+  gui::MainWindow& window = *owner;
+  gui::LobesFeature* lobes = test::lobesOf(window);
+  gui::SimulationFeature* simulation = test::simulationOf(window);
+  gui::ParetoFeature* pareto = test::paretoOf(window);
+  auto* supervisor = part<gui::SupervisorFeature>(window, "supervisorFeature");
+  auto* machining = part<gui::MachiningFeature>(window, "machiningFeature");
+  auto* tap_test = part<gui::TapTestFeature>(window, "tapTestFeature");
+  const QString fit = shot.fit;
+
+  QSignalSpy lobes_shown(lobes, &gui::LobesFeature::lobesShown);
+  QSignalSpy simulated(simulation, &gui::SimulationFeature::simulationShown);
+  QSignalSpy supervised(supervisor, &gui::SupervisorFeature::supervisionFinished);
+  QSignalSpy surface(machining, &gui::MachiningFeature::surfaceFinishShown);
+  QSignalSpy program(machining, &gui::MachiningFeature::partProgramShown);
+  QSignalSpy fitted(tap_test, &gui::TapTestFeature::fitShown);
+  // The simulation that counts is the one of the shot's final point: the count when it was started.
+  qsizetype final_simulation = shot.point || shot.pareto ? -1 : 0;
+
+  if (shot.sdm) lobes->setMethod(gui::LobeMethod::SemiDiscretization);
+  if (!fit.isEmpty())
+    QObject::connect(tap_test, &gui::TapTestFeature::measurementShown, &window, [tap_test, fit](const QString& d) {
+      if (d != fit) return;
+      tap_test->panel()->setCurrentDirection(d);
+      tap_test->panel()->requestFit();
+    });
+  if (shot.point)
+    QObject::connect(
+        lobes, &gui::LobesFeature::lobesShown, &window,
+        [&window, simulation, &simulated, &final_simulation, p = *shot.point] {
+          app::PickedPoint q = window.document()->point();
+          q.speed_rpm = p.speed_rpm;
+          q.depth_mm = p.depth_mm;
+          q.feed_mm_per_tooth = p.feed_mm_per_tooth;
+          window.document()->initPoint(q);
+          final_simulation = simulated.count();
+          simulation->start();
+        },
+        Qt::SingleShotConnection);
+  if (shot.pareto) {
+    // Needs the study and the lobes, in either order; once.
+    auto moved = std::make_shared<bool>(false);
+    auto move = [&window, pareto, simulation, &simulated, &final_simulation, moved] {
+      if (*moved || !pareto->choice() || window.document()->point().speed_rpm <= 0.0) return;
+      *moved = true;
+      QTimer::singleShot(0, &window, [pareto, simulation, &simulated, &final_simulation] {
+        pareto->moveToChoice();
+        final_simulation = simulated.count();
+        simulation->start();
+      });
+    };
+    QObject::connect(pareto, &gui::ParetoFeature::paretoShown, &window, move);
+    QObject::connect(lobes, &gui::LobesFeature::lobesShown, &window, move);
+  }
+  raiseDocks(window, shot.docks);
+
+  report.require(QString("%1.open").arg(shot.file), window.openProject(projectFile(shot.project)), shot.project);
+  if (shot.sdnrp) machining->runSurfaceFinish();
+  if (*shot.supervise) {
+    widgets::SupervisorView* view = supervisor->view();
+    view->setController(shot.supervise);
+    emit view->controllerChanged(shot.supervise);
+    view->speedCombo()->setCurrentIndex(view->speedCombo()->count() - 1);  // as fast as possible
+    supervisor->start();
+  }
+  if (*shot.program) machining->openPartProgram(projectFile(shot.program));
+
+  QStringList waits = {"lobes"};
+  std::vector<std::function<bool()>> ready = {[&] { return lobes_shown.count() > 0; }};
+  if (*shot.supervise) {
+    waits << "the supervised run";
+    ready.emplace_back([&] { return supervised.count() > 0; });
+  } else if (!fit.isEmpty()) {
+    waits << "the tap-test fit";
+    ready.emplace_back([&] {
+      for (const QList<QVariant>& args : fitted)
+        if (args.value(0).toString() == fit) return true;
+      return false;
+    });
+  } else {
+    waits << "the simulation of the point";
+    ready.emplace_back([&] { return final_simulation >= 0 && simulated.count() > final_simulation; });
+  }
+  if (shot.sdnrp) {
+    waits << "the surface-finish run";
+    ready.emplace_back([&] { return surface.count() > 0; });
+  }
+  if (*shot.program) {
+    waits << "the part-program override";
+    ready.emplace_back([&] { return program.count() > 0; });
+  }
+  waitFor(
+      [&ready] {
+        for (const auto& r : ready)
+          if (!r()) return false;
+        return true;
+      },
+      kShotMs, QString("%1: %2").arg(shot.file, waits.join(", ")));
+  QTest::qWait(300);  // the last repaints (queued replots) before the grab
+
+  const QImage image = window.grab().toImage();
+  const QString path = folder.filePath(shot.file);
+  report.check(QString("%1.saved").arg(shot.file), image.save(path), path);
+  report.check(QString("%1.size").arg(shot.file), image.size() == QSize(1920, 1080),
+               QString("%1x%2; the window's minimum size is %3x%4")
+                   .arg(image.width())
+                   .arg(image.height())
+                   .arg(window.minimumSizeHint().width())
+                   .arg(window.minimumSizeHint().height()));
+}
+
+}  // namespace
+
+QStringList screenshotNames() {
+  QStringList names;
+  for (const Shot& s : kShots) names << s.file;
+  return names;
+}
+
+void runScreenshots(Report& report, const QString& folder, const QStringList& only) {
+  const QDir dir(folder);
+  report.require("screenshots.folder", QDir().mkpath(folder), folder);
+  for (const QString& name : only)
+    report.require("screenshots.name", screenshotNames().contains(name), "'" + name + "' among the shots");
+  for (const Shot& shot : kShots) {
+    if (!only.isEmpty() && !only.contains(shot.file)) continue;
+    try {
+      takeShot(report, shot, dir);
+    } catch (const Aborted& e) {
+      report.abort(QString::fromStdString(e.what()));  // the other shots still run
+    }
+  }
+}
+
+}  // namespace mx::e2e
