@@ -346,10 +346,11 @@ void LobesFeature::onPointEvaluated(const PointJobResult& result) {
     const double feed = result.point.feed_mm_per_tooth;
     chart_->setPowerLimit(*result.power_limit_mm, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
   }
-  readout_->setReadout(result.readout);
+  if (!result.readout) return;
+  readout_->setReadout(*result.readout);
   if (result.generation != point_runner_->latestGeneration()) return;
   shown_generation_ = result.generation;
-  showVerdict(result.readout);
+  showVerdict(*result.readout);
 }
 
 void LobesFeature::showVerdict(const widgets::PointReadout& r) {

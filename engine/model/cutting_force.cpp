@@ -9,6 +9,9 @@ namespace mx {
 
 namespace {
 constexpr int kSamplesPerToothPeriod = 1440;
+// Unequal teeth repeat once per revolution: 1440 samples per mean pitch up to 16 teeth, then 23040 per
+// revolution (0.016 deg apart, over 200 per pitch of a 100-tooth face mill).
+constexpr int kMaxSamplesPerRevolution = 16 * kSamplesPerToothPeriod;
 
 // Antiderivatives of the directional factors (Altintas 2000, eq. 3.52), times 2.
 DirectionalFactors primitive(double phi, double kr) {
@@ -51,6 +54,9 @@ StaticCut::StaticCut(const MillingSetup& setup, const OperatingPoint& point, int
       pitch += setup.pitchRad((j + k - 1) % n);
       tooth.push_back({pitch * n / (2.0 * std::numbers::pi), setup.runoutM(j) - setup.runoutM((j + k) % n)});
     }
+    double least = std::numeric_limits<double>::infinity();
+    for (const Pass& p : tooth) least = std::min(least, p.runout_m);
+    least_runout_m_.push_back(least);
     passes_.push_back(std::move(tooth));
   }
 }
@@ -60,9 +66,15 @@ StaticForce StaticCut::at(double theta_rad) const {
   for (std::size_t j = 0; j < tooth_angle_.size(); ++j) {
     for (const AxialSlice& slice : slices_) {
       const double phi = theta_rad + tooth_angle_[j] - slice.lag_rad;
+      if (!setup_.immersion.contains(phi)) continue;
       const double s = std::sin(phi);
       double chip = std::numeric_limits<double>::infinity();
-      for (const Pass& pass : passes_[j]) chip = std::min(chip, feed_m_ * pass.feed_factor * s + pass.runout_m);
+      // In the cut sin phi >= 0, so a later pass (a larger feed factor) leaves at least
+      // s_t f s + the least runout: once that reaches the chip, no later pass can thin it.
+      for (const Pass& pass : passes_[j]) {
+        if (s >= 0.0 && feed_m_ * pass.feed_factor * s + least_runout_m_[j] >= chip) break;
+        chip = std::min(chip, feed_m_ * pass.feed_factor * s + pass.runout_m);
+      }
       const ToothForce f = toothForce(setup_, slice.depth_m, phi, chip);
       total.tangential_sum_n += f.tangential_n;
       total.fx_n += f.fx_n;
@@ -84,7 +96,7 @@ CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& poin
   const StaticCut cut(setup, point);
   // Unequal teeth (pitch or runout) repeat the force once per revolution, equal teeth once per pitch.
   const int period_teeth = setup.uniformPitch() && !setup.hasRunout() ? 1 : setup.teeth;
-  const int samples = kSamplesPerToothPeriod * period_teeth;
+  const int samples = std::min(kSamplesPerToothPeriod * period_teeth, kMaxSamplesPerRevolution);
   const double period = setup.toothPitchRad() * period_teeth;
   for (int i = 0; i < samples; ++i) {
     const StaticForce f = cut.at(period * i / samples);

@@ -53,7 +53,8 @@ class StaticCut {
   double feed_m_ = 0.0;
   std::vector<AxialSlice> slices_;
   std::vector<double> tooth_angle_;
-  std::vector<std::vector<Pass>> passes_;  // per tooth
+  std::vector<std::vector<Pass>> passes_;  // per tooth, in growing feed_factor
+  std::vector<double> least_runout_m_;     // per tooth: the least runout_m of its passes
 };
 
 StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, double theta_rad);

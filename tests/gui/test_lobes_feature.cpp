@@ -3,6 +3,7 @@
 // shown on the chart, and a responsive event loop while the engine thread computes.
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTimer>
 #include <QUndoStack>
 #include <cmath>
 
@@ -10,6 +11,7 @@
 #include "model/cutting_force.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
+#include "support/event_loop_probe.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
@@ -152,6 +154,51 @@ class TestLobesFeature : public QObject {
     QVERIFY(test::waitForReadout(window));
     QVERIFY(test::lobesOf(window)->readout()->text("depth").endsWith(" in"));
     QCOMPARE_LE(std::abs(readoutNumber(window, "depth") - window.document()->point().depth_mm / 25.4), 1e-5);
+  }
+
+  // The largest cutter the project allows (100 teeth, 60 deg helix, runout): its static cut spans a
+  // revolution, about 0.2 s per readout (bench BM_EvaluateCutHundredTeeth), on the readout thread.
+  // A burst of point moves keeps the GUI's event loop within 50 ms, and the readouts end on the last
+  // point with the engine's values.
+  void aHundredToothCutterKeepsTheEventLoopResponsive() {
+    gui::MainWindow window;
+    QVERIFY(openAndShow(window, kRubio));
+    app::Project edited = *window.project();
+    app::ToolSpec& t = edited.tools[0];
+    t.teeth = 100;
+    t.diameter_mm = 100.0;
+    t.helix_deg = 60.0;
+    t.runout_um = std::vector<double>(100);
+    for (int j = 0; j < 100; ++j) (*t.runout_um)[std::size_t(j)] = (j % 5) * 2.0;
+    edited.tools.resize(1);
+    edited.expert->grid->depth_divisions = 2;  // a small expert session: its Rule 5 runs are not this test's
+    QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QCOMPARE(window.document()->applyEdit(edited, "a 100-tooth face mill"), QString());
+    QVERIFY(shown.wait(60000));
+    // Twenty moves 20 ms apart, each from a timer event as a drag's are from input events.
+    app::PickedPoint p = window.document()->point();
+    int moves = 0;
+    QTimer mover;
+    mover.setInterval(20);
+    connect(&mover, &QTimer::timeout, this, [&] {
+      p.speed_rpm = 2000.0 + 50.0 * moves;
+      p.depth_mm = 1.0 + 0.05 * moves;
+      window.document()->setPoint(p);
+      if (++moves == 20) mover.stop();
+    });
+    QElapsedTimer clock;
+    clock.start();
+    test::EventLoopProbe probe;
+    mover.start();
+    QTRY_VERIFY_WITH_TIMEOUT(moves == 20 && test::lobesOf(window)->readoutIsCurrent(), 60000);
+    qInfo("100-tooth cutter: 20 moves, readouts current after %lld ms; longest event %lld ms (%s)", clock.elapsed(),
+          probe.longestMs(), qPrintable(probe.longestEvent()));
+    QCOMPARE_LE(probe.longestMs(), qint64(50 * MX_TIMING_SCALE));
+    const CutPerformance perf = evaluateCut(window.project()->setupFor("R1"),
+                                            {rpmToRevPerS(p.speed_rpm), p.depth_mm * 1e-3, p.feed_mm_per_tooth * 1e-3});
+    const widgets::PointReadout& r = test::lobesOf(window)->readout()->readout();
+    QCOMPARE(r.speed_rpm, p.speed_rpm);
+    QCOMPARE_LE(std::abs(r.peak_power_w - perf.peak_power_w), 1e-9 * perf.peak_power_w);
   }
 
   // While the engine thread computes semi-discretization lobes of 200 speeds, the GUI event loop
