@@ -48,7 +48,14 @@ LobeChartView::LobeChartView(QWidget* parent)
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setBrush(QColor(255, 255, 255, 220));
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  // The legend has a row of its own under the plot, two entries wide: it never hides a lobe, a
+  // marker or the operating point.
+  plot_->axisRect()->insetLayout()->take(plot_->legend);
+  plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, plot_->legend);
+  plot_->plotLayout()->setRowStretchFactor(plot_->plotLayout()->rowCount() - 1, 0.001);
+  plot_->legend->setFillOrder(QCPLegend::foColumnsFirst);
+  plot_->legend->setWrap(2);
+  plot_->legend->setBorderPen(Qt::NoPen);
   plot_->setInteractions(QCP::iRangeZoom);  // left drag moves the point; right drag pans (below)
   plot_->setToolTip(
       tr("Drag with the left button to pick the operating point; arrow keys nudge it "

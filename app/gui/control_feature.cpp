@@ -6,6 +6,7 @@
 #include "control_view.h"
 #include "control_view_data.h"
 #include "document/project_validation.h"
+#include "feature_dock.h"
 
 namespace mx::gui {
 
@@ -15,9 +16,7 @@ ControlFeature::ControlFeature(QMainWindow* window, const FeatureContext& contex
       runner_(new ControlRunner(context.enginePool(), this)),
       view_(new widgets::ControlView) {
   setObjectName("controlFeature");
-  auto* dock = new QDockWidget(tr("Force control"), window);
-  dock->setObjectName("controlDock");
-  dock->setWidget(view_);
+  QDockWidget* dock = makeFeatureDock(window, tr("Force control"), "controlDock", view_, DockContent::Scrolling);
   window->addDockWidget(Qt::BottomDockWidgetArea, dock);
   if (auto* history = window->findChild<QDockWidget*>("historyDock")) window->tabifyDockWidget(history, dock);
   if (auto* simulation = window->findChild<QDockWidget*>("simulationDock")) simulation->raise();

@@ -36,8 +36,8 @@ LobesFeature::LobesFeature(QMainWindow* window, FeatureContext& context, EngineR
   setObjectName("lobesFeature");
   window->setCentralWidget(chart_);
   readout_->setUnits(context_.units());
-  window->addDockWidget(Qt::RightDockWidgetArea,
-                        makeFeatureDock(window, tr("Operating point"), "pointDock", buildPointPanel()));
+  window->addDockWidget(Qt::RightDockWidgetArea, makeFeatureDock(window, tr("Operating point"), "pointDock",
+                                                                 buildPointPanel(), DockContent::Scrolling));
   buildStatusBar(window);
   recompute_timer_.setSingleShot(true);
   recompute_timer_.setInterval(120);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "engine_task.h"
+#include "feature_dock.h"
 #include "gcode/gcode_reader.h"
 #include "part_program_panel.h"
 #include "services/sdnrp_request.h"
@@ -77,12 +78,10 @@ MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& co
 }
 
 void MachiningFeature::addDocks() {
-  auto* surface = new QDockWidget(tr("Surface finish (SDNRP)"), window_);
-  surface->setObjectName("surfaceFinishDock");
-  surface->setWidget(surface_panel_);
-  auto* program = new QDockWidget(tr("Part program"), window_);
-  program->setObjectName("partProgramDock");
-  program->setWidget(program_panel_);
+  QDockWidget* surface = makeFeatureDock(window_, tr("Surface finish (SDNRP)"), "surfaceFinishDock", surface_panel_,
+                                         DockContent::Scrolling);
+  QDockWidget* program =
+      makeFeatureDock(window_, tr("Part program"), "partProgramDock", program_panel_, DockContent::Scrolling);
   window_->addDockWidget(Qt::BottomDockWidgetArea, surface);
   window_->addDockWidget(Qt::BottomDockWidgetArea, program);
   if (auto* control = window_->findChild<QDockWidget*>("controlDock")) {

@@ -3,6 +3,7 @@
 #include <QDockWidget>
 
 #include "document/project_grafcet_io.h"
+#include "feature_dock.h"
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
 #include "supervision_runner.h"
@@ -19,9 +20,7 @@ SupervisorFeature::SupervisorFeature(QMainWindow* window, const FeatureContext& 
       runner_(new SupervisionRunner(context.enginePool(), this)),
       view_(new widgets::SupervisorView) {
   setObjectName("supervisorFeature");
-  auto* dock = new QDockWidget(tr("Supervisor"), window);
-  dock->setObjectName("supervisorDock");
-  dock->setWidget(view_);
+  QDockWidget* dock = makeFeatureDock(window, tr("Supervisor"), "supervisorDock", view_, DockContent::Scrolling);
   window->addDockWidget(Qt::BottomDockWidgetArea, dock);
   if (auto* program = window->findChild<QDockWidget*>("partProgramDock")) window->tabifyDockWidget(program, dock);
   if (auto* simulation = window->findChild<QDockWidget*>("simulationDock")) simulation->raise();

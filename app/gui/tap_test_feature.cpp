@@ -54,7 +54,7 @@ TapTestFeature::TapTestFeature(QMainWindow* window, FeatureContext& context)
       runner_(new TapTestRunner(context.enginePool(), this)),
       panel_(new widgets::TapTestPanel(window)) {
   setObjectName("tapTestFeature");
-  QDockWidget* dock = makeFeatureDock(window, tr("Tap test"), "tapTestDock", panel_);
+  QDockWidget* dock = makeFeatureDock(window, tr("Tap test"), "tapTestDock", panel_, DockContent::Scrolling);
   window->addDockWidget(Qt::BottomDockWidgetArea, dock);
   if (auto* simulation = window->findChild<QDockWidget*>("simulationDock")) window->tabifyDockWidget(simulation, dock);
   connect(runner_, &TapTestRunner::loaded, this, &TapTestFeature::onLoaded);
