@@ -5,8 +5,10 @@
 #include <QFormLayout>
 #include <QStatusBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "document/frf_paths.h"
 #include "document/lobe_inputs.h"
@@ -293,7 +295,8 @@ void LobesFeature::setSnapGrid(int tool) {
                       std::isfinite(b_min) ? snapshot_->alpha * b_min * 1e3 / divisions : 0.0);
 }
 
-// The first lobes of a project: the point starts in the middle of the range at half the limit there.
+// The first lobes of a project: the point starts in the middle of the range at half the limit there;
+// when the power-limit curve arrives (readout thread) and it is lower, at 80 % of it (lowerInitialPoint).
 void LobesFeature::pickInitialPoint(int tool) {
   const app::Project& p = context_.project();
   const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
@@ -302,8 +305,25 @@ void LobesFeature::pickInitialPoint(int tool) {
   const double blim_mm = evaluator_->depthLimitMm(tool, start.speed_rpm);
   start.depth_mm = std::isfinite(blim_mm) ? 0.5 * blim_mm : 1.0;
   start.feed_mm_per_tooth = p.operation ? 0.5 * p.operation->max_feed_per_tooth_mm : 0.1;
+  initial_point_ = start;
   emit initialPointRequested(start);
   emit context_.simulationRequested();
+}
+
+void LobesFeature::lowerInitialPoint(const PointJobResult& result) {
+  if (!initial_point_ || !result.power_limit_mm || result.evaluator != evaluator_) return;
+  const std::optional<app::PickedPoint> initial = std::exchange(initial_point_, std::nullopt);
+  if (!(*initial == context_.point())) return;
+  const auto& speeds = snapshot_->tools[static_cast<size_t>(result.tool)].margined.speed_rev_per_s;
+  const QVector<double>& limit = *result.power_limit_mm;
+  const double n = rpmToRevPerS(initial->speed_rpm);
+  const auto it = std::lower_bound(speeds.begin(), speeds.end(), n);
+  if (limit.size() != static_cast<qsizetype>(speeds.size()) || it == speeds.end()) return;
+  const double power_depth = limit[it - speeds.begin()];
+  if (!(power_depth > 0.0) || 0.8 * power_depth >= initial->depth_mm) return;
+  app::PickedPoint lowered = *initial;
+  lowered.depth_mm = 0.8 * power_depth;
+  emit initialPointRequested(lowered);
 }
 
 namespace {
@@ -345,6 +365,7 @@ void LobesFeature::onPointEvaluated(const PointJobResult& result) {
     const app::Project& p = context_.project();
     const double feed = result.point.feed_mm_per_tooth;
     chart_->setPowerLimit(*result.power_limit_mm, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
+    lowerInitialPoint(result);
   }
   if (!result.readout) return;
   readout_->setReadout(*result.readout);

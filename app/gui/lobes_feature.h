@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <QToolButton>
 #include <memory>
+#include <optional>
 
 #include "engine_runner.h"
 #include "feature_context.h"
@@ -56,6 +57,7 @@ class LobesFeature : public WindowFeature {
   void onLobesReady(const LobeJobResult& result);
   void setSnapGrid(int tool);
   void pickInitialPoint(int tool);
+  void lowerInitialPoint(const PointJobResult& result);  // below the power limit, once its curve is known
   void updateForceLimits();
   void showPoint(const app::PickedPoint& point);  // the marker at once; the readouts from the readout thread
   void requestReadout(const app::PickedPoint& point);
@@ -85,7 +87,8 @@ class LobesFeature : public WindowFeature {
   PointRunner* point_runner_;
   LobeMethod method_ = LobeMethod::ZeroOrder;
   int drag_id_ = 1;
-  quint64 shown_generation_ = 0;  // of the readout request whose answer the verdict shows
+  std::optional<app::PickedPoint> initial_point_;  // picked, waiting for the power-limit curve
+  quint64 shown_generation_ = 0;                   // of the readout request whose answer the verdict shows
   widgets::PointVerdict verdict_ = widgets::PointVerdict::Unknown;  // of the last evaluated point
   // What the power-limit curve was last requested for (evaluator, tool, feed per tooth).
   std::shared_ptr<const PointEvaluator> power_limit_evaluator_;
