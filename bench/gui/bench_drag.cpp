@@ -1,5 +1,6 @@
-// GUI benchmark (QtTest QBENCHMARK, not a CTest gate): the cost of one drag step on the lobe chart,
-// from the mouse-move event to updated readouts and marker (target: 16 ms or less).
+// GUI benchmark (QtTest QBENCHMARK, not a CTest gate): the latency of one drag step on the lobe chart,
+// from the mouse-move event to the readouts of the new point, computed on the readout thread and shown
+// with the marker (target: 16 ms or less).
 // Run: QT_QPA_PLATFORM=offscreen build/release/bench/millexpert-gui-bench
 #include <QApplication>
 #include <QSignalSpy>
@@ -32,6 +33,7 @@ class BenchDrag : public QObject {
       const QPoint p = (i++ % 2) ? a : b;
       QTest::mouseMove(plot, p);
       QCoreApplication::processEvents();  // marker repaint on the overlay layer
+      while (!lobes->readoutIsCurrent()) QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
     }
     QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, a);
     QVERIFY(!lobes->readout()->text("blim").isEmpty());
