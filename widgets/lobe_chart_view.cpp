@@ -344,8 +344,10 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   auto* text = new QCPItemText(plot_);
   text->setLayer("overlay");
   text->position->setParentAnchor(tracer->position);
-  text->position->setCoords(-8, 8);  // left of the marker: q* often sits at the range's right end
-  text->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+  // The label on the side of the marker facing the middle of the view, so that no axis cuts it.
+  const bool right_half = speed_rpm > plot_->xAxis->range().center();
+  text->position->setCoords(right_half ? -8 : 8, 8);
+  text->setPositionAlignment((right_half ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
   text->setText(name);
   text->setColor(color);
   extra_markers_.push_back({group, tracer});

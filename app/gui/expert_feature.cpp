@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryFile>
+#include <cmath>
 
 #include "document/frf_paths.h"
 #include "expert_overlays.h"
@@ -261,15 +262,22 @@ void ExpertFeature::updateOverlays() {
     return;
   }
   const int index = static_cast<int>(runner_->toolIds().indexOf(tool));
-  for (const ToolChoice& t : ranking_->tools) {
-    if (static_cast<int>(t.tool) != index) continue;
-    chart_->setMarker(QString("q* (%1)").arg(tool), revPerSToRpm(t.q.speed_rev_per_s), t.q.depth_m * 1e3,
-                      QColor(20, 20, 160), kMarkers);
-  }
-  if (refinement_ && refinement_->refinement && static_cast<int>(refinement_->refinement->tool) == index) {
-    const ExpertPoint& q = refinement_->refinement->chosen().q;
-    chart_->setMarker("q**", revPerSToRpm(q.speed_rev_per_s), q.depth_m * 1e3, QColor(140, 0, 140), kMarkers);
-  }
+  const ExpertPoint* q_star = nullptr;
+  for (const ToolChoice& t : ranking_->tools)
+    if (static_cast<int>(t.tool) == index) q_star = &t.q;
+  const ExpertPoint* q_star_star = nullptr;
+  if (refinement_ && refinement_->refinement && static_cast<int>(refinement_->refinement->tool) == index)
+    q_star_star = &refinement_->refinement->chosen().q;
+  // q** within 1 % of q* in speed and depth: one marker, so that the labels do not overprint.
+  const bool together = q_star && q_star_star &&
+                        std::abs(q_star_star->speed_rev_per_s / q_star->speed_rev_per_s - 1.0) < 0.01 &&
+                        std::abs(q_star_star->depth_m / q_star->depth_m - 1.0) < 0.01;
+  if (q_star)
+    chart_->setMarker(together ? QString("q*, q** (%1)").arg(tool) : QString("q* (%1)").arg(tool),
+                      revPerSToRpm(q_star->speed_rev_per_s), q_star->depth_m * 1e3, QColor(20, 20, 160), kMarkers);
+  if (q_star_star && !together)
+    chart_->setMarker("q**", revPerSToRpm(q_star_star->speed_rev_per_s), q_star_star->depth_m * 1e3,
+                      QColor(140, 0, 140), kMarkers);
   if (index >= 0) drawSessionOverlays(index);
 }
 
