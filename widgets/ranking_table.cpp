@@ -2,6 +2,7 @@
 
 #include <QHeaderView>
 #include <QItemSelectionModel>
+#include <QLabel>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -12,7 +13,7 @@
 namespace mx::widgets {
 
 RankingTable::RankingTable(QWidget* parent)
-    : QWidget(parent), model_(new RankingTableModel(this)), view_(new QTableView(this)) {
+    : QWidget(parent), model_(new RankingTableModel(this)), view_(new QTableView(this)), stale_(new QLabel(this)) {
   view_->setObjectName("ranking_view");
   view_->setModel(model_);
   view_->setSortingEnabled(false);  // the order is the rank
@@ -27,6 +28,10 @@ RankingTable::RankingTable(QWidget* parent)
   setToolTip(view_->toolTip());
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  stale_->setObjectName("ranking_stale");
+  stale_->setStyleSheet("color: #8a5a00;");
+  stale_->hide();
+  layout->addWidget(stale_);
   layout->addWidget(view_);
   connect(view_, &QTableView::clicked, this, [this](const QModelIndex& index) { onClicked(index.row()); });
   connect(view_, &QTableView::activated, this, [this](const QModelIndex& index) { onClicked(index.row()); });
@@ -34,7 +39,15 @@ RankingTable::RankingTable(QWidget* parent)
 }
 
 void RankingTable::setRanking(const QVector<RankingRow>& rows, const QString& selected_tool) {
+  stale_->hide();
+  view_->setEnabled(true);
   model_->setRanking(rows, selected_tool);
+}
+
+void RankingTable::setStale(const QString& reason) {
+  stale_->setText(tr("Stale: %1").arg(reason));
+  stale_->show();
+  view_->setEnabled(false);
 }
 
 const QVector<RankingRow>& RankingTable::rows() const {

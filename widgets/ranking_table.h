@@ -14,6 +14,7 @@
 
 #include "display_units.h"
 
+class QLabel;
 class QTableView;
 
 namespace mx {
@@ -49,8 +50,11 @@ class RankingTable : public QWidget {
  public:
   explicit RankingTable(QWidget* parent = nullptr);
 
-  // rows best first; selected_tool is marked (empty: none).
+  // rows best first; selected_tool is marked (empty: none). Clears a stale mark.
   void setRanking(const QVector<RankingRow>& rows, const QString& selected_tool);
+  // The shown ranking is of an earlier project: greyed, with the reason above it, until the next ranking.
+  void setStale(const QString& reason);
+  bool isStale() const { return !stale_->isHidden(); }
   const QVector<RankingRow>& rows() const;
   QString selectedTool() const;
   QString currentTool() const { return current_; }  // the clicked row's tool ("" if none)
@@ -73,6 +77,7 @@ class RankingTable : public QWidget {
 
   RankingTableModel* model_;
   QTableView* view_;
+  QLabel* stale_;
   QString current_;
 };
 

@@ -123,7 +123,9 @@ class TestExpertFeature : public QObject {
         QStringList{R"(if tool.diameter_mm > 10 then speed_rpm <= 1200 because "big cutter")", "depth_mm <= 0.5"};
     ranked.clear();
     QCOMPARE(window.document()->applyEdit(edited, "rules"), QString());
+    QVERIFY(test::windowPart<widgets::RankingTable>(window)->isStale());  // at once: the rules bound it
     QVERIFY(ranked.wait(60000));
+    QVERIFY(!test::windowPart<widgets::RankingTable>(window)->isStale());
     const QVector<widgets::RankingRow> rows = test::windowPart<widgets::RankingTable>(window)->rows();
     QVERIFY(!rows.isEmpty());
     for (const widgets::RankingRow& r : rows) {
