@@ -44,6 +44,10 @@ void RankingTable::setRanking(const QVector<RankingRow>& rows, const QString& se
   model_->setRanking(rows, selected_tool);
 }
 
+bool RankingTable::isStale() const {
+  return !stale_->isHidden();
+}
+
 void RankingTable::setStale(const QString& reason) {
   stale_->setText(tr("Stale: %1").arg(reason));
   stale_->show();

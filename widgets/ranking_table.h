@@ -54,7 +54,7 @@ class RankingTable : public QWidget {
   void setRanking(const QVector<RankingRow>& rows, const QString& selected_tool);
   // The shown ranking is of an earlier project: greyed, with the reason above it, until the next ranking.
   void setStale(const QString& reason);
-  bool isStale() const { return !stale_->isHidden(); }
+  bool isStale() const;
   const QVector<RankingRow>& rows() const;
   QString selectedTool() const;
   QString currentTool() const { return current_; }  // the clicked row's tool ("" if none)
