@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "cost_map_layer.h"
+#include "plot_legend.h"
 
 namespace mx::widgets {
 
@@ -48,14 +49,7 @@ LobeChartView::LobeChartView(QWidget* parent)
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setBrush(QColor(255, 255, 255, 220));
-  // The legend has a row of its own under the plot, two entries wide: it never hides a lobe, a
-  // marker or the operating point.
-  plot_->axisRect()->insetLayout()->take(plot_->legend);
-  plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, plot_->legend);
-  plot_->plotLayout()->setRowStretchFactor(plot_->plotLayout()->rowCount() - 1, 0.001);
-  plot_->legend->setFillOrder(QCPLegend::foColumnsFirst);
-  plot_->legend->setWrap(2);
-  plot_->legend->setBorderPen(Qt::NoPen);
+  placeLegendUnderPlot(plot_, 2);           // never over a lobe, a marker or the operating point
   plot_->setInteractions(QCP::iRangeZoom);  // left drag moves the point; right drag pans (below)
   plot_->setToolTip(
       tr("Drag with the left button to pick the operating point; arrow keys nudge it "

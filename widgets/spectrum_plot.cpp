@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "plot_legend.h"
 #include "simulation/amplitude_spectrum.h"
 
 namespace mx::widgets {
@@ -60,13 +61,7 @@ SpectrumPlot::SpectrumPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setBrush(QColor(255, 255, 255, 210));
-  // The legend has a row of its own under the plot: it never hides a peak or a harmonic's label.
-  plot_->axisRect()->insetLayout()->take(plot_->legend);
-  plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, plot_->legend);
-  plot_->plotLayout()->setRowStretchFactor(plot_->plotLayout()->rowCount() - 1, 0.001);
-  plot_->legend->setFillOrder(QCPLegend::foColumnsFirst);
-  plot_->legend->setWrap(2);
-  plot_->legend->setBorderPen(Qt::NoPen);
+  placeLegendUnderPlot(plot_, 2);  // never over a peak or a harmonic's label
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->setToolTip(
       tr("Amplitude spectrum of the resultant cutting force. Peaks away from the tooth-passing "

@@ -134,13 +134,9 @@ int runRankCommand(const QStringList& arguments) {
   ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
   if (!rules.empty()) {
-    std::vector<int> teeth;
-    for (const MillingSetup& t : request.tools) teeth.push_back(t.teeth);
-    rules.filter(session, std::move(teeth));
-    bool any = false;
-    for (std::size_t t = 0; t < session.toolCount(); ++t)
-      any = any || (!session.grid(t).empty() && !session.filteredOut(t));
-    if (!any) throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
+    rules.filter(session);
+    if (ExpertRules::excludeEverything(session))
+      throw CliError("the operator rules exclude every admissible point of every tool", kExitComputationFailed);
   }
   std::vector<ChatterReportSpec> reports = project.requireExpert().reported_chatter;
   const std::vector<ChatterReportSpec> flagged = commandLineReports(parser, request, session);

@@ -44,8 +44,6 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
     try {
       Request request = make_request();
       outcome.tool_ids = request.tool_ids;
-      std::vector<int> teeth;
-      for (const MillingSetup& t : request.tools) teeth.push_back(t.teeth);
       outcome.session =
           std::make_shared<ExpertSession>(std::move(request.tools), request.settings, request.tool_force_limits_n);
       outcome.rules = request.rules;
@@ -53,11 +51,9 @@ quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
         outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +
                                                outcome.session->emptyReason());
       } else if (!outcome.rules.empty()) {
-        outcome.rules.filter(*outcome.session, std::move(teeth));
-        bool any = false;
-        for (std::size_t t = 0; t < outcome.session->toolCount(); ++t)
-          any = any || (!outcome.session->grid(t).empty() && !outcome.session->filteredOut(t));
-        if (!any) outcome.error = "the operator rules exclude every admissible point of every tool";
+        outcome.rules.filter(*outcome.session);
+        if (app::ExpertRules::excludeEverything(*outcome.session))
+          outcome.error = "the operator rules exclude every admissible point of every tool";
       }
     } catch (const std::exception& e) {
       outcome.session.reset();

@@ -24,11 +24,19 @@ std::array<double, 3> ExpertRules::boundWeights(const std::array<double, 3>& c) 
   return out;
 }
 
-void ExpertRules::filter(ExpertSession& session, std::vector<int> teeth) const {
+void ExpertRules::filter(ExpertSession& session) const {
   if (empty()) return;
+  std::vector<int> teeth;
+  for (std::size_t t = 0; t < session.toolCount(); ++t) teeth.push_back(session.grid(t).setup().teeth);
   session.setPointFilter([tools = tools_, teeth = std::move(teeth)](std::size_t tool, const ExpertPoint& q) {
     return (*tools)[tool].admits(paretoPointOf(q), teeth[tool]);
   });
+}
+
+bool ExpertRules::excludeEverything(const ExpertSession& session) {
+  for (std::size_t t = 0; t < session.toolCount(); ++t)
+    if (!session.grid(t).empty() && !session.filteredOut(t)) return false;
+  return true;
 }
 
 ParetoPoint paretoPointOf(const ExpertPoint& q) {

@@ -25,8 +25,10 @@ class ExpertRules {
   // c projected onto the simplex within the fired bounds (unchanged without rules; ProjectError when
   // the bounds leave no weights).
   std::array<double, 3> boundWeights(const std::array<double, 3>& c) const;
-  // Installs the point filter (teeth[i]: tool i's teeth); the filter shares these rules.
-  void filter(ExpertSession& session, std::vector<int> teeth) const;
+  // Installs the point filter (each tool's teeth from its grid's setup); the filter shares these rules.
+  void filter(ExpertSession& session) const;
+  // After filter(): no tool of the session keeps an admissible point.
+  static bool excludeEverything(const ExpertSession& session);
 
  private:
   std::shared_ptr<std::vector<ParetoRules>> tools_ = std::make_shared<std::vector<ParetoRules>>();
