@@ -100,12 +100,12 @@ QGroupBox* MachineOperationPanel::machineGroup() {
   groups_.insert("machine", box);
   auto* form = new QFormLayout(box);
   form->addRow(tr("Spindle power"),
-               addNumber("machine.spindle_power_W", 1e7, 1, tr("Spindle power P [W] (> 0)"),
+               addNumber("machine.spindle_power_W", 1e6, 1, tr("Spindle power P [W] (> 0)"),
                          {.suffix = " W",
                           .get = [](const app::Project& p) { return Opt(p.machine->spindle_power_W); },
                           .set = [](app::Project& p, Opt v) { machine(p).spindle_power_W = v.value_or(0.0); }}));
   form->addRow(tr("Max spindle speed"),
-               addNumber("machine.max_spindle_rpm", 1e6, 0, tr("Maximum spindle speed [rpm] (> 0); optional"),
+               addNumber("machine.max_spindle_rpm", 1e5, 0, tr("Maximum spindle speed [rpm] (> 0); optional"),
                          {.enabled = new QCheckBox(this),
                           .suffix = " rpm",
                           .fallback = 12000.0,
@@ -151,7 +151,7 @@ QGroupBox* MachineOperationPanel::operationGroup() {
                           .get = [](const app::Project& p) { return p.operation->radial_depth_mm; },
                           .set = [](app::Project& p, Opt v) { operation(p).radial_depth_mm = v; }}));
   form->addRow(tr("Max feed per tooth"),
-               addNumber("operation.max_feed_per_tooth_mm", 100.0, 4, tr("Largest admissible feed per tooth (> 0)"),
+               addNumber("operation.max_feed_per_tooth_mm", 10.0, 4, tr("Largest admissible feed per tooth (> 0)"),
                          {.length = true,
                           .suffix = " %1/tooth",
                           .get = [](const app::Project& p) { return Opt(p.operation->max_feed_per_tooth_mm); },
@@ -170,11 +170,11 @@ QGroupBox* MachineOperationPanel::materialGroup() {
   connect(materialName_, &QLineEdit::editingFinished, this, &MachineOperationPanel::commitName);
   form->addRow(tr("Name"), materialName_);
   form->addRow(tr("K_t"),
-               addNumber("material.Kt_N_mm2", 1e6, 2, tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
+               addNumber("material.Kt_N_mm2", 1e5, 2, tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
                          {.suffix = " N/mm²",
                           .get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
                           .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
-  form->addRow(tr("K_r"), addNumber("material.Kr", 100.0, 4, tr("Radial force ratio K_r = F_r / F_t (>= 0)"),
+  form->addRow(tr("K_r"), addNumber("material.Kr", 10.0, 4, tr("Radial force ratio K_r = F_r / F_t (>= 0)"),
                                     {.get = [](const app::Project& p) { return Opt(p.material->Kr); },
                                      .set = [](app::Project& p, Opt v) { material(p).Kr = v.value_or(0); }}));
   return box;

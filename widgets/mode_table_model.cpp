@@ -81,7 +81,7 @@ QVariant ModeTableModel::data(const QModelIndex& index, int role) const {
     case D::MinimumRole:
       return 0.0;
     case D::MaximumRole:
-      return c == Frequency ? 1e6 : c == Damping ? 100.0 : 1e6;
+      return c == Frequency ? 2e4 : c == Damping ? 100.0 : 1e6;
     case D::DecimalsRole:
       return c == Frequency ? 3 : 4;
     case D::StepRole:

@@ -128,9 +128,13 @@ class CsvReader {
       app::ToolSpec tool;
       tool.id = id;
       double teeth = 0.0;
-      if (!required(kTeeth, rules::kTeeth, teeth) || !required(kDiameter, rules::kPositive, tool.diameter_mm) ||
-          !required(kHelix, rules::kHelixDeg, tool.helix_deg) || !optional(kKt, rules::kPositive, tool.Kt_N_mm2) ||
-          !optional(kKr, rules::kNonNegative, tool.Kr) ||
+      if (out.tools.size() >= static_cast<std::size_t>(rules::kMaxTools))
+        return bad(
+            kId,
+            QString("is tool %1: a library holds at most %2 tools").arg(out.tools.size() + 1).arg(rules::kMaxTools));
+      if (!required(kTeeth, rules::kTeeth, teeth) || !required(kDiameter, rules::kDiameterMm, tool.diameter_mm) ||
+          !required(kHelix, rules::kHelixDeg, tool.helix_deg) ||
+          !optional(kKt, rules::kCuttingPressureNmm2, tool.Kt_N_mm2) || !optional(kKr, rules::kForceRatio, tool.Kr) ||
           !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm) ||
           !optional(kMaxForce, rules::kToolForceN, tool.max_force_N))
         return false;
@@ -234,10 +238,16 @@ class CsvReader {
     }
     if (axis != "x" && axis != "y") return bad(kAxis, "must be x or y");
     app::ModeSpec m;
-    if (!required(kFreq, rules::kPositive, m.freq_Hz) || !required(kDamping, rules::kPercent, m.damping_pct) ||
-        !required(kStiffness, rules::kPositive, m.stiffness_N_per_um))
+    std::vector<app::ModeSpec>& modes = axis == "x" ? tool.modes_x : tool.modes_y;
+    if (modes.size() >= static_cast<std::size_t>(rules::kMaxModesPerAxis))
+      return bad(kAxis, QString("is mode %1 of the axis: a tool has at most %2 modes per axis")
+                            .arg(modes.size() + 1)
+                            .arg(rules::kMaxModesPerAxis));
+    if (!required(kFreq, rules::kModeFrequencyHz, m.freq_Hz) ||
+        !required(kDamping, rules::kDampingPct, m.damping_pct) ||
+        !required(kStiffness, rules::kStiffnessNPerUm, m.stiffness_N_per_um))
       return false;
-    (axis == "x" ? tool.modes_x : tool.modes_y).push_back(m);
+    modes.push_back(m);
     return true;
   }
 

@@ -60,13 +60,29 @@ CutPointFlags readCutPoint(const QCommandLineParser& parser) {
   CutPointFlags p;
   p.tool = requiredOption(parser, "tool");
   for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
-  p.speed_rpm = *numberOption(parser, "speed", 1.0, 1e6);
+  p.speed_rpm = *numberOption(parser, "speed", 1.0, 1e5);
   p.depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
-  p.feed_mm_per_tooth = *numberOption(parser, "feed", 1e-6, 100.0);
+  p.feed_mm_per_tooth = *numberOption(parser, "feed", 1e-6, 10.0);
   return p;
 }
 
+void checkSdmWork(double speeds, int steps, const QString& range) {
+  constexpr int kAutomaticStepsCost = 60;
+  const int cost = steps > 0 ? steps : kAutomaticStepsCost;
+  const double work = speeds * cost;
+  if (work <= kMaxSdmWork) return;
+  const QString stepsText = steps > 0 ? QString("--steps %1").arg(steps) : QString("the automatic steps (about 60)");
+  throw CliError(QString("--method sdm: %1 speeds (%2) x %3 = %4 speed-steps, at most %5 (about 20 s): lower --steps "
+                         "or use fewer speeds")
+                     .arg(speeds, 0, 'f', 0)
+                     .arg(range, stepsText)
+                     .arg(work, 0, 'g', 3)
+                     .arg(kMaxSdmWork, 0, 'g', 3),
+                 kExitBadInput);
+}
+
 void printJson(const QJsonObject& object) {
+  checkJsonOutput(object);
   QTextStream out(stdout);
   out << QJsonDocument(object).toJson(QJsonDocument::Compact) << Qt::endl;
 }

@@ -44,6 +44,12 @@ struct CutPointFlags {
 QList<QCommandLineOption> cutPointOptions();
 CutPointFlags readCutPoint(const QCommandLineParser& parser);
 
+// The semi-discretization's cost grows with speeds x steps per tooth period (the automatic choice costs
+// about 60): at most kMaxSdmWork, about 20 s on a 2-core machine. Throws CliError(2) naming --steps
+// and `range` (how the speeds came about) otherwise.
+inline constexpr double kMaxSdmWork = 3e5;
+void checkSdmWork(double speeds, int steps, const QString& range);
+
 // Applies --method (zoa|sdm) when the parser has it set.
 void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& settings);
 

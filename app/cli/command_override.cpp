@@ -40,7 +40,7 @@ int runOverrideCommand(const QStringList& arguments) {
     throw CliError(QString("expected PROGRAM.nc and PROJECT, got %1 argument(s)").arg(positional.size()),
                    kExitBadInput);
   const QString out_path = requiredOption(parser, "out");
-  const std::optional<double> speed = numberOption(parser, "speed", 1e-3, 1e6);
+  const std::optional<double> speed = numberOption(parser, "speed", 1e-3, 1e5);
   const Project project = loadProject(positional[1]);
   const OverrideRequest request = overrideRequestFromProject(project, parser.value("controller"), speed);
 

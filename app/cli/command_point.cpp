@@ -21,6 +21,40 @@
 #include "stability/stability_boundary.h"
 
 namespace mx::app {
+namespace {
+
+constexpr double kPointLobeStepRpm = 10.0;
+constexpr double kPointSpeedsPerWindow = 1000.0;
+constexpr double kMaxPointSpeedRpm = 1e5;  // the --speed flag's top
+
+struct PointLobeSpeeds {
+  std::vector<double> values;  // rev/s
+  QString range;               // how they came about, for messages
+};
+
+// Inside the project's speed range: the lobe chart's own grid, 10 rpm apart, so that the readouts are
+// the chart's. Elsewhere (or without a grid): +-50 % around the point on a lattice through the point,
+// up to the flag's top, at most 1001 speeds, so that every speed of the flag's range is computed around
+// itself.
+PointLobeSpeeds pointLobeSpeeds(const Project& project, double speed_rpm) {
+  if (project.expert && project.expert->grid) {
+    const ExpertGridSpec& g = *project.expert->grid;
+    if (speed_rpm >= g.speed_from_rpm && speed_rpm <= g.speed_to_rpm) {
+      const double to =
+          g.speed_from_rpm + std::ceil((g.speed_to_rpm - g.speed_from_rpm) / kPointLobeStepRpm) * kPointLobeStepRpm;
+      return {SpeedGrid{rpmToRevPerS(g.speed_from_rpm), rpmToRevPerS(to), rpmToRevPerS(kPointLobeStepRpm)}.values(),
+              QString("expert.grid %1 to %2 rpm by 10 rpm").arg(g.speed_from_rpm).arg(g.speed_to_rpm)};
+    }
+  }
+  const double step = std::max(kPointLobeStepRpm, speed_rpm / kPointSpeedsPerWindow);
+  const double below = std::floor(0.5 * speed_rpm / step) * step;
+  const double above = std::floor(std::min(0.5 * speed_rpm, kMaxPointSpeedRpm - speed_rpm) / step) * step;
+  return {
+      SpeedGrid{rpmToRevPerS(speed_rpm - below), rpmToRevPerS(speed_rpm + above), rpmToRevPerS(step)}.values(),
+      QString("--speed %1 rpm -50 %/+50 % (at most %2 rpm) by %3 rpm").arg(speed_rpm).arg(kMaxPointSpeedRpm).arg(step)};
+}
+
+}  // namespace
 
 int runPointCommand(const QStringList& arguments) {
   QCommandLineParser parser;
@@ -60,13 +94,10 @@ int runPointCommand(const QStringList& arguments) {
   reportDynamicsNote(dynamics, tool);
   const MillingSetup setup = dynamicsSetupFor(project, tool, dynamics.used);
 
-  // The lobes over the project's speed range (or +-50 % around the point), 10 rpm apart.
-  double from = speed_rpm * 0.5, to = speed_rpm * 1.5;
-  if (project.expert && project.expert->grid) {
-    from = std::min(project.expert->grid->speed_from_rpm, speed_rpm);
-    to = std::max(project.expert->grid->speed_to_rpm, speed_rpm);
-  }
-  const std::vector<double> speeds = SpeedGrid{rpmToRevPerS(from), rpmToRevPerS(to), rpmToRevPerS(10.0)}.values();
+  const PointLobeSpeeds window = pointLobeSpeeds(project, speed_rpm);
+  const std::vector<double>& speeds = window.values;
+  if (stability_method == StabilityMethod::SemiDiscretization)
+    checkSdmWork(static_cast<double>(speeds.size()), steps, window.range);
   LobeSettings lobe_settings;
   lobe_settings.method = stability_method;
   lobe_settings.dynamics = dynamics.used;

@@ -5,6 +5,8 @@
 // Pareto Rule 15) and the Smith-Tlusty suggested speed (Rule 16).
 #include <QSaveFile>
 #include <QTextStream>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "cli/cli_application.h"
@@ -28,6 +30,23 @@ void writeCsv(const QString& path, const SimulationTrace& trace) {
       out << trace.time_s[i] << ',' << trace.x_m[i] * 1e3 << ',' << trace.y_m[i] * 1e3 << ',' << trace.fx_n[i] << ','
           << trace.fy_n[i] << ',' << trace.force_n[i] << ',' << trace.power_w[i] << '\n';
   });
+}
+
+// The run's size against the engine's limits, worded by the flags that set it.
+void checkSimulationSize(const MillingSetup& setup, const OperatingPoint& point, const SimulationOptions& options,
+                         const CutPointFlags& cut) {
+  const SimulationSize size = simulationSize(setup, point, options);
+  const QString flags = QString("--speed = %1 rpm and --revolutions = %2 (%3 teeth, %4 steps per tooth period)")
+                            .arg(cut.speed_rpm)
+                            .arg(options.revolutions)
+                            .arg(setup.teeth)
+                            .arg(size.steps_per_tooth_period);
+  if (size.steps > kMaxSimulationSteps)
+    throw CliError(QString("%1: %2 integration steps, at most %3: raise --speed or lower --revolutions")
+                       .arg(flags)
+                       .arg(size.steps, 0, 'g', 3)
+                       .arg(kMaxSimulationSteps, 0, 'g', 3),
+                   kExitBadInput);
 }
 
 }  // namespace
@@ -61,7 +80,11 @@ int runSimulateCommand(const QStringList& arguments) {
   requireFittedModes(requireTool(project, tool), "the time-domain simulation");
   const MillingSetup setup = project.setupFor(tool);
   const OperatingPoint point{rpmToRevPerS(speed_rpm), depth_mm * 1e-3, feed_mm * 1e-3};
-  if (parser.isSet("csv")) options.record_every = 1;
+  checkSimulationSize(setup, point, options, cut);
+  // Without --csv only the indicators are printed: keep a sparse trace, not every step.
+  if (!parser.isSet("csv"))
+    options.record_every =
+        static_cast<int>(std::max(1.0, std::ceil(simulationSize(setup, point, options).steps / 1e4)));
   const SimulationResult result = simulateMilling(setup, point, options);
   if (parser.isSet("csv")) writeCsv(parser.value("csv"), result.trace);
 

@@ -35,6 +35,31 @@ inline constexpr NumberRule kCountAtLeastOne{B::Closed, 1.0, B::None, 0.0, true}
 // Teeth per cutter: every model's cost grows with the teeth, and no milling cutter has more than 100.
 inline constexpr NumberRule kTeeth{B::Closed, 1.0, B::Closed, 100.0, true};
 inline constexpr NumberRule kCountAtLeastZero{B::Closed, 0.0, B::None, 0.0, true};  // indices
+// Physical ranges: wide enough for any machine tool, cutter and work material, narrow enough that no
+// model overflows or runs without bound.
+inline constexpr NumberRule kSpindlePowerW{B::Open, 0.0, B::Closed, 1e6, false};
+inline constexpr NumberRule kSpindleRpm{B::Open, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kCurveSpeedRpm{B::Closed, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kCurvePowerW{B::Closed, 0.0, B::Closed, 1e6, false};
+inline constexpr NumberRule kFeedMmS{B::Open, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kCuttingPressureNmm2{B::Open, 0.0, B::Closed, 1e5, false};  // Kt
+inline constexpr NumberRule kForceRatio{B::Closed, 0.0, B::Closed, 10.0, false};        // Kr
+inline constexpr NumberRule kFeedPerToothMm{B::Open, 0.0, B::Closed, 10.0, false};
+inline constexpr NumberRule kDiameterMm{B::Open, 0.0, B::Closed, 1000.0, false};
+// A mode's frequency, damping and stiffness: above 20 kHz no lobe of a milling speed range is
+// resolved, and under 0.001 % damping the stability limit overflows.
+inline constexpr NumberRule kModeFrequencyHz{B::Open, 0.0, B::Closed, 2e4, false};
+inline constexpr NumberRule kDampingPct{B::Closed, 1e-3, B::Open, 100.0, false};
+inline constexpr NumberRule kStiffnessNPerUm{B::Closed, 1e-3, B::Closed, 1e6, false};
+inline constexpr NumberRule kGridSpeedRpm{B::Open, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kGridDivisions{B::Closed, 1.0, B::Closed, 1000.0, true};
+inline constexpr NumberRule kGridFeedStepMm{B::Closed, 1e-4, B::Closed, 10.0, false};
+inline constexpr NumberRule kDeltaPerS{B::Closed, 0.0, B::Closed, 1e4, false};  // expert.delta_per_s
+// Counts that scale every computation linearly.
+inline constexpr qsizetype kMaxTools = 100;        // tools in one project
+inline constexpr qsizetype kMaxModesPerAxis = 50;  // modes_x, modes_y
+inline constexpr double kMaxGridCells = 1e6;       // expert grid speeds x depth divisions
+inline constexpr double kMaxGridPoints = 5e6;      // ... x feeds: the Pareto study's table
 // Radial depth of a tool of diameter D: (0, D].
 inline constexpr NumberRule radialDepth(double diameter_mm) {
   return {B::Open, 0.0, B::Closed, diameter_mm, false};

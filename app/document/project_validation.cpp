@@ -2,6 +2,8 @@
 
 #include <QHash>
 #include <QStringList>
+#include <algorithm>
+#include <cmath>
 
 #include "document/project_reported_chatter.h"
 #include "document/project_rules.h"
@@ -24,26 +26,26 @@ void validateSpindleCurve(const std::vector<SpindleCurveRowSpec>& rows) {
         QString("%1 has %2 row(s): must have at least 2 rows of speed_rpm and power_W").arg(path).arg(rows.size()));
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const QString row = indexPath(path, static_cast<qsizetype>(i));
-    checkNumber(row + ".speed_rpm", rows[i].speed_rpm, rules::kNonNegative);
+    checkNumber(row + ".speed_rpm", rows[i].speed_rpm, rules::kCurveSpeedRpm);
     if (i > 0 && !(rows[i].speed_rpm > rows[i - 1].speed_rpm))
       throwBadField(row + ".speed_rpm", formatNumber(rows[i].speed_rpm),
                     QString("> %1 (%2.speed_rpm: speeds strictly increasing)")
                         .arg(formatNumber(rows[i - 1].speed_rpm), indexPath(path, static_cast<qsizetype>(i - 1))));
-    checkNumber(row + ".power_W", rows[i].power_W, rules::kNonNegative);
+    checkNumber(row + ".power_W", rows[i].power_W, rules::kCurvePowerW);
   }
 }
 
 void validateMachine(const MachineSpec& m) {
-  checkNumber("machine.spindle_power_W", m.spindle_power_W, rules::kPositive);
-  checkOptional("machine.max_spindle_rpm", m.max_spindle_rpm, rules::kPositive);
-  checkOptional("machine.max_feed_mm_s", m.max_feed_mm_s, rules::kPositive);
+  checkNumber("machine.spindle_power_W", m.spindle_power_W, rules::kSpindlePowerW);
+  checkOptional("machine.max_spindle_rpm", m.max_spindle_rpm, rules::kSpindleRpm);
+  checkOptional("machine.max_feed_mm_s", m.max_feed_mm_s, rules::kFeedMmS);
   checkOptional("machine.max_torque_Nm", m.max_torque_Nm, rules::kTorqueNm);
   if (m.spindle_curve) validateSpindleCurve(*m.spindle_curve);
 }
 
 void validateMaterial(const MaterialSpec& m) {
-  checkNumber("material.Kt_N_mm2", m.Kt_N_mm2, rules::kPositive);
-  checkNumber("material.Kr", m.Kr, rules::kNonNegative);
+  checkNumber("material.Kt_N_mm2", m.Kt_N_mm2, rules::kCuttingPressureNmm2);
+  checkNumber("material.Kr", m.Kr, rules::kForceRatio);
 }
 
 void validateOperation(const OperationSpec& op) {
@@ -57,15 +59,21 @@ void validateOperation(const OperationSpec& op) {
   }
   checkOptional("operation.radial_immersion", op.radial_immersion, rules::kFraction);
   checkOptional("operation.radial_depth_mm", op.radial_depth_mm, rules::kPositive);
-  checkNumber("operation.max_feed_per_tooth_mm", op.max_feed_per_tooth_mm, rules::kPositive);
+  checkNumber("operation.max_feed_per_tooth_mm", op.max_feed_per_tooth_mm, rules::kFeedPerToothMm);
+}
+
+void checkCount(const QString& path, std::size_t count, qsizetype max, const QString& what) {
+  if (count > static_cast<std::size_t>(max))
+    throw ProjectError(QString("%1 has %2 %3: at most %4 are allowed").arg(path).arg(count).arg(what).arg(max));
 }
 
 void validateModes(const QString& path, const std::vector<ModeSpec>& modes) {
+  checkCount(path, modes.size(), rules::kMaxModesPerAxis, "modes");
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const QString mode = indexPath(path, static_cast<qsizetype>(i));
-    checkNumber(mode + ".freq_Hz", modes[i].freq_Hz, rules::kPositive);
-    checkNumber(mode + ".damping_pct", modes[i].damping_pct, rules::kPercent);
-    checkNumber(mode + ".stiffness_N_per_um", modes[i].stiffness_N_per_um, rules::kPositive);
+    checkNumber(mode + ".freq_Hz", modes[i].freq_Hz, rules::kModeFrequencyHz);
+    checkNumber(mode + ".damping_pct", modes[i].damping_pct, rules::kDampingPct);
+    checkNumber(mode + ".stiffness_N_per_um", modes[i].stiffness_N_per_um, rules::kStiffnessNPerUm);
   }
 }
 
@@ -84,11 +92,11 @@ void validateTool(const QString& path, const ToolSpec& t) {
   if (t.id.trimmed().isEmpty())
     throw ProjectError(QString("%1.id = %2: must be a non-empty string").arg(path, formatValue(t.id)));
   checkNumber(path + ".teeth", t.teeth, rules::kTeeth);
-  checkNumber(path + ".diameter_mm", t.diameter_mm, rules::kPositive);
+  checkNumber(path + ".diameter_mm", t.diameter_mm, rules::kDiameterMm);
   checkNumber(path + ".helix_deg", t.helix_deg, rules::kHelixDeg);
   validateToolGeometry(path, t);
-  checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kPositive);
-  checkOptional(path + ".Kr", t.Kr, rules::kNonNegative);
+  checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kCuttingPressureNmm2);
+  checkOptional(path + ".Kr", t.Kr, rules::kForceRatio);
   checkOptional(path + ".max_force_N", t.max_force_N, rules::kToolForceN);
   validateModes(path + ".modes_x", t.modes_x);
   validateModes(path + ".modes_y", t.modes_y);
@@ -138,20 +146,47 @@ void validateWeights(const QString& path, const std::vector<double>& weights, st
     checkNumber(indexPath(path, static_cast<qsizetype>(i)), weights[i], rules::kNonNegative);
 }
 
+// The grid's cells (speeds x depth divisions) and points (x feeds up to the feed per tooth limit)
+// bound the expert's and the Pareto study's time and memory.
+void validateGridSize(const ExpertGridSpec& g, const std::optional<OperationSpec>& operation) {
+  const double speeds = std::floor((g.speed_to_rpm - g.speed_from_rpm) / g.speed_step_rpm) + 1.0;
+  const double cells = speeds * g.depth_divisions;
+  const QString grid = QString(
+                           "%1 speeds (speed_from_rpm = %2 to speed_to_rpm = %3 by speed_step_rpm = %4) x "
+                           "depth_divisions = %5")
+                           .arg(formatNumber(speeds), formatNumber(g.speed_from_rpm), formatNumber(g.speed_to_rpm),
+                                formatNumber(g.speed_step_rpm))
+                           .arg(g.depth_divisions);
+  if (cells > rules::kMaxGridCells)
+    throw ProjectError(QString("expert.grid: %1 = %2 cells: at most %3; raise expert.grid.speed_step_rpm or lower "
+                               "expert.grid.depth_divisions")
+                           .arg(grid, formatNumber(cells), formatNumber(rules::kMaxGridCells)));
+  if (!operation) return;
+  const double feeds = std::max(1.0, std::floor(operation->max_feed_per_tooth_mm / g.feed_step_mm));
+  const double points = cells * feeds;
+  if (points > rules::kMaxGridPoints)
+    throw ProjectError(QString("expert.grid: %1 x %2 feeds (operation.max_feed_per_tooth_mm = %3 by feed_step_mm = "
+                               "%4) = %5 points: at most %6; raise expert.grid.feed_step_mm or "
+                               "expert.grid.speed_step_rpm, or lower expert.grid.depth_divisions")
+                           .arg(grid, formatNumber(feeds), formatNumber(operation->max_feed_per_tooth_mm),
+                                formatNumber(g.feed_step_mm), formatNumber(points),
+                                formatNumber(rules::kMaxGridPoints)));
+}
+
 void validateGrid(const ExpertGridSpec& g) {
-  checkNumber("expert.grid.speed_from_rpm", g.speed_from_rpm, rules::kPositive);
-  checkNumber("expert.grid.speed_to_rpm", g.speed_to_rpm, rules::kPositive);
+  checkNumber("expert.grid.speed_from_rpm", g.speed_from_rpm, rules::kGridSpeedRpm);
+  checkNumber("expert.grid.speed_to_rpm", g.speed_to_rpm, rules::kGridSpeedRpm);
   if (!(g.speed_from_rpm < g.speed_to_rpm)) {
     throw ProjectError(QString("expert.grid.speed_to_rpm = %1: must be > expert.grid.speed_from_rpm = %2")
                            .arg(formatNumber(g.speed_to_rpm), formatNumber(g.speed_from_rpm)));
   }
-  checkNumber("expert.grid.speed_step_rpm", g.speed_step_rpm, rules::kPositive);
-  checkNumber("expert.grid.depth_divisions", g.depth_divisions, rules::kCountAtLeastOne);
-  checkNumber("expert.grid.feed_step_mm", g.feed_step_mm, rules::kPositive);
+  checkNumber("expert.grid.speed_step_rpm", g.speed_step_rpm, rules::kGridSpeedRpm);
+  checkNumber("expert.grid.depth_divisions", g.depth_divisions, rules::kGridDivisions);
+  checkNumber("expert.grid.feed_step_mm", g.feed_step_mm, rules::kGridFeedStepMm);
 }
 
 void validateExpert(const ExpertSpec& e) {
-  checkNumber("expert.delta_per_s", e.delta_per_s, rules::kNonNegative);
+  checkNumber("expert.delta_per_s", e.delta_per_s, rules::kDeltaPerS);
   checkNumber("expert.alpha", e.alpha, rules::kFraction);
   validateWeights("expert.c", e.c, 3);
   validateWeights("expert.cr", e.cr, 3);
@@ -169,11 +204,13 @@ void validateProject(const Project& project) {
   if (project.operation) validateOperation(*project.operation);
   validateTools(project.tools, project.operation);
   if (project.expert) validateExpert(*project.expert);
+  if (project.expert && project.expert->grid) validateGridSize(*project.expert->grid, project.operation);
   if (project.expert) validateReportedChatter(*project.expert, project.tools);
   validateProcessSections(project);
 }
 
 void validateTools(const std::vector<ToolSpec>& tools, const std::optional<OperationSpec>& operation) {
+  checkCount("tools", tools.size(), rules::kMaxTools, "tools");
   for (std::size_t i = 0; i < tools.size(); ++i) validateTool(indexPath("tools", static_cast<qsizetype>(i)), tools[i]);
   validateUniqueIds(tools);
   validateRadialDepths(tools, operation);

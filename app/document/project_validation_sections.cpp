@@ -116,7 +116,7 @@ void validateForceControl(const ForceControlSection& f) {
 void validatePartProgram(const PartProgramSection& p) {
   checkField("part_program.stock_top_mm", p.stock_top_mm, {-1e5, 1e5, "in [-1e5, 1e5]"});
   validateDepthSteps("part_program.depth_profile", p.depth_profile);
-  checkField("part_program.speed_rpm", p.speed_rpm, {1e-3, 1e6, "in (0, 1e6]"});
+  checkField("part_program.speed_rpm", p.speed_rpm, {1e-3, 1e5, "in (0, 1e5]"});
   checkOneOf("part_program.controller", p.controller, {"adaptive", "model-based"}, "adaptive or model-based");
 }
 

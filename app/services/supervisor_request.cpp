@@ -1,5 +1,7 @@
 #include "services/supervisor_request.h"
 
+#include <algorithm>
+
 #include "core/invalid_input.h"
 #include "document/project_grafcet_io.h"
 #include "document/project_rules.h"
@@ -29,6 +31,8 @@ SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Projec
   sc.process.tool_radius_m = tool->diameter_mm * 0.5e-3;
   sc.process.teeth = tool->teeth;
   sc.process.spindle_speed_rpm = s.spindle_rpm.value_or(1500.0);
+  // The process model resolves a tooth period in at least 8 steps: fast spindles take a finer step.
+  sc.process.step_s = std::min(sc.process.step_s, 60.0 / sc.process.spindle_speed_rpm / sc.process.teeth / 8.0);
   sc.programmed_feed_m_per_s = s.programmed_feed_mm_s.value_or(10.0) * 1e-3;
   const SupervisorPartSpec part = s.part.value_or(SupervisorPartSpec{});
   sc.part_length_m = part.length_mm.value_or(100.0) * 1e-3;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "control/rst_controller.h"
@@ -36,6 +37,20 @@ double fastestSpindlePeriod(const AdaptiveControlSettings& s) {
   double T = spindlePeriod(s.process);
   for (const auto& step : s.workpiece.steps) T = std::min(T, spindlePeriod(stepProcess(s.process, step)));
   return T;
+}
+
+// One sample per spindle period for at most max_time_s: bounded before anything is allocated, in
+// floating point so that a huge speed cannot overflow the count.
+int sampleBudget(const AdaptiveControlSettings& s) {
+  const double periods = std::ceil(s.max_time_s / fastestSpindlePeriod(s)) + 1.0;
+  if (!(periods <= kMaxClosedLoopSamples)) {
+    std::ostringstream message;
+    message << "the closed loop would sample " << periods << " spindle periods (max_time_s = " << s.max_time_s
+            << " s at the fastest spindle speed): at most " << kMaxClosedLoopSamples
+            << "; lower the spindle speed or max_time_s";
+    throw InvalidInput(message.str());
+  }
+  return static_cast<int>(periods);
 }
 
 double lagged(const std::vector<double>& v, std::size_t k, std::size_t lag) {
@@ -99,7 +114,7 @@ ClosedLoopResult simulateAdaptiveForceControl(const AdaptiveControlSettings& s, 
   std::vector<PlantDensePoint> dense;
   dense.push_back({0.0, 0.0, 0.0, 0.0, 0.0, s.workpiece.steps.front().depth_m});
   const double length = s.workpiece.totalLength();
-  const int max_samples = static_cast<int>(std::ceil(s.max_time_s / fastestSpindlePeriod(s))) + 1;
+  const int max_samples = sampleBudget(s);
   double u_prev = 0.0, T_prev = T0;
 
   for (int k = 0; k < max_samples && plant.time() < s.max_time_s + T0; ++k) {

@@ -27,6 +27,10 @@ enum class SamplePeriodRule {
   Rule4,    // T = k 60/N while N and b stay constant, 60/N after a change (SamplingTimeSelector)
 };
 
+// The most spindle periods one closed-loop run samples (max_time_s at the fastest speed): 30 s at
+// 100 000 rpm is 50 000.
+inline constexpr double kMaxClosedLoopSamples = 2e5;
+
 struct AdaptiveControlSettings {
   CuttingProcess process;  // 715 rpm, 4 teeth, K_c = 1200 N/mm^2, full immersion
   ControlWorkpiece workpiece = rubio2006ControlWorkpiece();

@@ -79,6 +79,50 @@ std::size_t scanNumber(std::string_view s, std::size_t pos, double& value) {
   return p;
 }
 
+// "nan", "inf", "infinity" in any case, with an optional sign: what a writer of non-finite numbers emits.
+bool namesNonFinite(std::string_view token) {
+  if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);
+  std::string lower;
+  for (const char c : token.substr(0, 3)) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return lower == "nan" || lower == "inf";
+}
+
+std::string shortNumber(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// Throws InvalidInput when a known word's value is outside its letter's range.
+void checkWordRange(const GcodeBlock& b, const GcodeWord& w) {
+  double lo = 0.0, hi = 0.0;
+  const char* what = "";
+  switch (w.letter) {
+    case 'S':
+      hi = GcodeWordLimits::kMaxSpindleRpm, what = " rpm (spindle speed)";
+      break;
+    case 'F':
+      hi = GcodeWordLimits::kMaxFeed, what = " per minute (feed)";
+      break;
+    case 'P':
+      hi = GcodeWordLimits::kMaxDwellS, what = " s (dwell)";
+      break;
+    case 'X':
+    case 'Y':
+    case 'Z':
+    case 'I':
+    case 'J':
+      lo = -GcodeWordLimits::kMaxCoordinate, hi = GcodeWordLimits::kMaxCoordinate, what = " (coordinate)";
+      break;
+    default:
+      return;
+  }
+  if (w.value >= lo && w.value <= hi) return;
+  throw InvalidInput("line " + std::to_string(b.line) + ", column " + std::to_string(w.column) + ": " +
+                     b.text.substr(w.column - 1, std::min<std::size_t>(w.length, 40)) + " = " + shortNumber(w.value) +
+                     ": must be in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]" + what);
+}
+
 }  // namespace
 
 void GcodeReader::lexLine(GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
@@ -122,6 +166,10 @@ void GcodeReader::lexLine(GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
       const std::size_t end = scanNumber(s, p, value);
       if (end == p) {  // a letter without a number: unknown token
         const std::size_t tend = skipToken(pos + 1);
+        if (knownLetter(upper(c)) && namesNonFinite(s.substr(p, tend - p)))
+          throw InvalidInput("line " + std::to_string(b.line) + ", column " + std::to_string(pos + 1) + ": " +
+                             std::string(s.substr(pos, std::min<std::size_t>(tend - pos, 40))) +
+                             ": a word's value must be a finite number");
         warn(pos, tend - pos, "word without a number: kept verbatim");
         pos = tend;
         b.words_end = pos;
@@ -134,6 +182,7 @@ void GcodeReader::lexLine(GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
       w.length = end - pos;
       w.known = knownLetter(w.letter) && (w.letter != 'G' || knownG(value));
       if (!w.known) warn(pos, w.length, "unknown word: kept verbatim");
+      if (w.known) checkWordRange(b, w);
       b.words.push_back(w);
       pos = end;
       b.words_end = pos;
@@ -180,6 +229,9 @@ GcodeProgram GcodeReader::parse(std::string_view text) {
       b.text = std::string(text.substr(start, end - start));
       start = nl + 1;
     }
+    if (b.text.size() > kMaxGcodeLineLength)
+      throw InvalidInput("line " + std::to_string(b.line) + ": " + std::to_string(b.text.size()) +
+                         " characters: a block has at most " + std::to_string(kMaxGcodeLineLength));
     lexLine(b, prog.warnings);
     if (b.eol.empty())
       prog.warnings.push_back({b.line, 0, b.text, "last line has no line end (truncated?): kept as is"});

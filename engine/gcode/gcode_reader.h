@@ -6,6 +6,9 @@
 // characters) is kept verbatim in the block and listed as a warning with line, column and text.
 // Line ends: "\n" and "\r\n" (kept per line); a last line without line end is kept and warned about.
 // Comment bytes (UTF-8 or not) are kept unchanged.
+// Limits: a line is at most kMaxGcodeLineLength bytes, and a word's value lies in the range of its
+// letter (GcodeWordLimits); past them the program is refused, since no machine runs it and the models
+// would run without bound on it.
 #include <string>
 #include <string_view>
 
@@ -13,9 +16,21 @@
 
 namespace mx {
 
+inline constexpr std::size_t kMaxGcodeLineLength = 4096;  // bytes, line end excluded
+
+// Word ranges, in program units (mm or inch, per minute).
+struct GcodeWordLimits {
+  static constexpr double kMaxSpindleRpm = 1e5;  // S in [0, 1e5] rpm
+  static constexpr double kMaxFeed = 1e6;        // F in [0, 1e6] per minute
+  static constexpr double kMaxCoordinate = 1e6;  // |X|, |Y|, |Z|, |I|, |J| <= 1e6
+  static constexpr double kMaxDwellS = 1e5;      // P in [0, 1e5] s
+};
+
 class GcodeReader {
  public:
-  // Parses program text. Never throws for content; an empty text gives an empty program.
+  // Parses program text. Throws InvalidInput, with the line and column, for a line longer than
+  // kMaxGcodeLineLength or a word outside GcodeWordLimits; any other text is kept and warned about.
+  // An empty text gives an empty program.
   static GcodeProgram parse(std::string_view text);
   // Reads and parses a file; throws InvalidInput ("gcode file = <path>: cannot be read") on failure.
   static GcodeProgram readFile(const std::string& path);

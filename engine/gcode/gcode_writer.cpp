@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "core/invalid_input.h"
 
@@ -52,6 +54,11 @@ std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e)
     const std::size_t at = b.words_end;
     changes.push_back({at, 0, std::string(at > 0 ? " " : "") + letter + num, order});
   };
+  // NaN means "leave the word alone"; an infinite value is a controller's failure, never written.
+  for (const auto& [letter, value] : {std::pair{'F', e.feed}, std::pair{'S', e.speed_rpm}})
+    if (std::isinf(value))
+      throw InvalidInput("gcode edit of line " + std::to_string(b.line) + ": " + letter + " = " +
+                         (value > 0 ? "inf" : "-inf") + ": only a finite value is written");
   if (e.feed == e.feed) wordChange('F', e.feed, e.feed_decimals, 0);
   if (e.speed_rpm == e.speed_rpm) wordChange('S', e.speed_rpm, e.speed_decimals, 1);
   std::sort(changes.begin(), changes.end(),

@@ -102,6 +102,10 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
     std::string feed_reason;
     const bool plunge = settings_.keep_plunge_feed && m.end_m[2] < m.start_m[2] &&
                         std::hypot(m.end_m[0] - m.start_m[0], m.end_m[1] - m.start_m[1]) < 1e-9;
+    if (s.depth_m <= 0.0 && m.feed_missing)
+      throw InvalidInput("part program line " + std::to_string(b.line) +
+                         ": a feed move with no F word before it, above the stock where no controller sets the "
+                         "feed: add an F word to this line or an earlier one");
     if ((s.depth_m <= 0.0 || plunge) && !m.feed_missing) {  // air move or plunge: keep the programmed feed
       d.feed_m_per_s = s.programmed_feed_m_per_s;
       d.predicted_force_N = s.depth_m <= 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();

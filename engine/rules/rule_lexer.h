@@ -13,7 +13,7 @@ namespace mx {
 
 class RuleLexer {
  public:
-  RuleLexer(const std::string& text, int line) : text_(text), line_(line) {}
+  RuleLexer(const std::string& text, int line);
 
   // The tokens, always ending with an End token; or the first lexical error of the line.
   bool tokenize(std::vector<RuleToken>& tokens, RuleError& error);
@@ -27,6 +27,7 @@ class RuleLexer {
 
   const std::string& text_;
   int line_;
+  std::vector<int> columns_;  // 1-based column of each byte offset, and one past the end
 };
 
 }  // namespace mx

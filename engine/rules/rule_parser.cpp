@@ -58,8 +58,23 @@ void RuleParser::failExpected(const std::string& what, const std::string& after)
   fail(peek(), "expected " + what + (after.empty() ? "" : " after " + after) + ", got " + peek().describe());
 }
 
+RuleParser::NestingLevel::NestingLevel(RuleParser& parser, const RuleToken& at) : parser_(parser) {
+  if (++parser_.depth_ > kMaxRuleNesting) {
+    --parser_.depth_;
+    parser_.fail(at, "nested too deeply: more than " + std::to_string(kMaxRuleNesting) +
+                         " '(' and 'not' open at once; split the rule");
+  }
+}
+
 bool RuleParser::parseLine(const std::string& text, int line, Rule& rule, bool& isRule, RuleError& error) {
   isRule = false;
+  if (text.size() > kMaxRuleLineLength) {
+    error = RuleError{line, static_cast<int>(kMaxRuleLineLength) + 1,
+                      "rule is " + std::to_string(text.size()) + " characters long; at most " +
+                          std::to_string(kMaxRuleLineLength) + " are allowed"};
+    return false;
+  }
+  depth_ = 0;
   RuleLexer lexer(text, line);
   if (!lexer.tokenize(tokens_, error)) return false;
   pos_ = 0;
@@ -162,13 +177,17 @@ Condition RuleParser::parseAnd() {
 }
 
 Condition RuleParser::parseUnary() {
-  if (accept(RuleTokenKind::Not)) return makeNot(parseUnary());
+  if (peek().is(RuleTokenKind::Not)) {
+    const NestingLevel level(*this, advance());
+    return makeNot(parseUnary());
+  }
   return parsePrimary();
 }
 
 Condition RuleParser::parsePrimary() {
   if (peek().is(RuleTokenKind::LParen)) {
     const RuleToken& open = advance();
+    const NestingLevel level(*this, open);
     const int openColumn = open.column;
     if (peek().is(RuleTokenKind::RParen)) fail(peek(), "expected a condition after '(', got ')'");
     Condition inner = parseOr();
@@ -217,6 +236,12 @@ Condition RuleParser::parseComparison() {
 
 RuleParseResult parseRules(const std::vector<std::string>& lines, const RuleSchema& schema) {
   RuleParseResult result;
+  if (lines.size() > kMaxRuleLines) {
+    result.errors.push_back(RuleError{
+        static_cast<int>(kMaxRuleLines) + 1, 1,
+        std::to_string(lines.size()) + " rule lines; at most " + std::to_string(kMaxRuleLines) + " are allowed"});
+    return result;
+  }
   RuleParser parser(schema);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     Rule rule;

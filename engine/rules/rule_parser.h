@@ -12,6 +12,12 @@
 
 namespace mx {
 
+// Bounds on the rule text that keep parsing linear, evaluation cheap and the recursion shallow; an
+// operator's rule is a line of a few dozen characters.
+inline constexpr std::size_t kMaxRuleLineLength = 1000;  // bytes per rule line
+inline constexpr int kMaxRuleNesting = 32;               // '(' and 'not' open at one point
+inline constexpr std::size_t kMaxRuleLines = 1000;       // lines in one rule list
+
 struct RuleParseResult {
   RuleSet rules;                  // the lines that parsed (a line with an error contributes no rule)
   std::vector<RuleError> errors;  // the first error of each bad line, in line order
@@ -47,6 +53,18 @@ class RuleParser {
   [[noreturn]] void fail(const RuleToken& at, std::string message) const;
   [[noreturn]] void failExpected(const std::string& what, const std::string& after) const;
 
+  // Counts one level of '(' or 'not' for as long as it lives; fails past kMaxRuleNesting.
+  class NestingLevel {
+   public:
+    NestingLevel(RuleParser& parser, const RuleToken& at);
+    ~NestingLevel() { --parser_.depth_; }
+    NestingLevel(const NestingLevel&) = delete;
+    NestingLevel& operator=(const NestingLevel&) = delete;
+
+   private:
+    RuleParser& parser_;
+  };
+
   void parseConsequence(Rule& rule);
   Bound parseBound();
   Condition parseOr();
@@ -58,6 +76,7 @@ class RuleParser {
   const RuleSchema& schema_;
   std::vector<RuleToken> tokens_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace mx

@@ -1,5 +1,6 @@
 #include "simulation/milling_simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -13,9 +14,6 @@
 namespace mx {
 
 namespace {
-
-constexpr double kMaxTotalSteps = 2e9;
-constexpr double kMaxTraceSamples = 2e7;  // 7 doubles each: about 1.1 GB
 
 template <class T>
 void require(bool ok, const std::string& quantity, T value, const char* range) {
@@ -83,12 +81,19 @@ void validateSimulationInputs(const MillingSetup& setup, const OperatingPoint& p
   validateAxis(setup.modes_x, "modes_x");
   validateAxis(setup.modes_y, "modes_y");
 
-  const int m =
-      options.steps_per_tooth_period > 0 ? options.steps_per_tooth_period : automaticStepsPerToothPeriod(setup, n);
-  const double total = static_cast<double>(m) * setup.teeth * options.revolutions;
-  require(total <= kMaxTotalSteps, "total integration steps (m n_t revolutions)", total, "[1, 2e9]");
-  const double samples = std::ceil(total / options.record_every);
-  require(samples <= kMaxTraceSamples, "trace samples (steps / record_every; raise record_every)", samples, "[1, 2e7]");
+  const SimulationSize size = simulationSize(setup, point, options);
+  require(size.steps <= kMaxSimulationSteps, "total integration steps (m n_t revolutions)", size.steps, "[1, 2e7]");
+}
+
+SimulationSize simulationSize(const MillingSetup& setup, const OperatingPoint& point,
+                              const SimulationOptions& options) {
+  SimulationSize size;
+  size.steps_per_tooth_period = options.steps_per_tooth_period > 0
+                                    ? options.steps_per_tooth_period
+                                    : automaticStepsPerToothPeriod(setup, point.spindle_rev_per_s);
+  size.steps = static_cast<double>(size.steps_per_tooth_period) * setup.teeth * options.revolutions;
+  size.trace_samples = std::ceil(size.steps / std::max(1, options.record_every));
+  return size;
 }
 
 SimulationResult simulateMilling(const MillingSetup& setup, const OperatingPoint& point,

@@ -158,9 +158,9 @@ LobeDiagram computeZoaLobes(const MillingSetup& setup, const std::vector<double>
     const double per_lobe = w / (2.0 * kPi * setup.teeth);
     return per_lobe / (k + 1) <= 1.1 * max_speed && (k == 0 || per_lobe / k >= min_speed / 1.1);
   };
-  const int lobes = options.lobe_count > 0
-                        ? options.lobe_count
-                        : std::min(400, static_cast<int>(omegas.back() / (2 * kPi * setup.teeth * min_speed)) + 2);
+  // Capped in floating point first: a huge chatter frequency must not overflow the conversion to int.
+  const double needed = std::floor(omegas.back() / (2 * kPi * setup.teeth * min_speed)) + 2.0;
+  const int lobes = options.lobe_count > 0 ? options.lobe_count : static_cast<int>(std::min(400.0, needed));
   const double scale = -4.0 * kPi / (setup.teeth * setup.tangential_coefficient_pa);
   const cplx shift{-options.delta_per_s, 0.0};
   const double u_floor = 1.0 / (10.0 * options.max_depth_m);  // lobe points above 10x the cap are dropped

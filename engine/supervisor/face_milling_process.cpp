@@ -42,7 +42,7 @@ std::int64_t delaySteps(const FaceMillingParameters& p) {
 
 void validateFaceMillingParameters(const FaceMillingParameters& p) {
   require(std::isfinite(p.tool_radius_m) && p.tool_radius_m > 0.0, "tool_radius_m", p.tool_radius_m, "> 0");
-  require(p.teeth >= 1 && p.teeth <= 64, "teeth", p.teeth, "in [1, 64]");
+  require(p.teeth >= 1 && p.teeth <= 100, "teeth", p.teeth, "in [1, 100]");
   require(std::isfinite(p.spindle_speed_rpm) && p.spindle_speed_rpm > 0.0, "spindle_speed_rpm", p.spindle_speed_rpm,
           "> 0");
   require(std::isfinite(p.lead_angle_rad) && p.lead_angle_rad >= 0.0 && p.lead_angle_rad < std::numbers::pi / 2,

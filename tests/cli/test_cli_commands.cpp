@@ -149,6 +149,27 @@ class TestCliCommands : public QObject {
     QTest::newRow("unknown flag") << QStringList{"lobes", kRubio, "--tool", "R1", "--colour", "red"} << "colour";
     QTest::newRow("missing project") << QStringList{"lobes", "/nonexistent.mxproj", "--tool", "R1"} << "nonexistent";
     QTest::newRow("unknown command") << QStringList{"frobnicate", kRubio} << "frobnicate";
+    // work past its bound is refused by the flags that set it, before any computation
+    const QStringList sim{"simulate", kRubio, "--tool", "R1", "--depth", "0.1", "--feed", "0.1"};
+    QTest::newRow("simulate at 1 rpm") << sim + QStringList{"--speed", "1"}
+                                       << "--speed = 1 rpm and --revolutions = 60 (3 teeth, 532800 steps per tooth "
+                                          "period): 9.59e+07 integration steps, at most 2e+07: raise --speed or lower "
+                                          "--revolutions";
+    QTest::newRow("simulate 100000 revolutions") << sim + QStringList{"--speed", "3000", "--revolutions", "100000"}
+                                                 << "integration steps, at most 2e+07: raise --speed or lower "
+                                                    "--revolutions";
+    const QStringList lobes{"lobes", kRubio, "--tool", "R1", "--from", "1000", "--to", "100000"};
+    QTest::newRow("sdm lobes at 1 rpm steps") << lobes + QStringList{"--method", "sdm", "--step", "1"}
+                                              << "--method sdm: 99001 speeds (--from = 1000 to --to = 100000 by --step "
+                                                 "= 1 rpm) x the automatic steps (about 60) = 5.94e+06 speed-steps, at "
+                                                 "most 3e+05 (about 20 s): lower --steps or use fewer speeds";
+    QTest::newRow("zoa lobes at 0.001 rpm steps")
+        << lobes + QStringList{"--step", "0.001"} << "gives 99000001 speeds: the zoa lobes take at most 200000";
+    QTest::newRow("lobes past the top speed")
+        << QStringList{"lobes", kRubio, "--tool", "R1", "--from", "1000", "--to", "200000"} << "--to";
+    QTest::newRow("point past the top speed")
+        << QStringList{"point", kRubio, "--tool", "R1", "--speed", "1e6", "--depth", "0.1", "--feed", "0.1"}
+        << "--speed";
   }
   void badInputExitsWithTwo() {
     QFETCH(QStringList, args);

@@ -71,7 +71,7 @@ class TestCliCheck : public QObject {
     row("teeth < 1", {"tools/0/teeth=0"}, "tools[0].teeth = 0: must be an integer in [1, 100]");
     row("teeth a million", {"tools/0/teeth=1000000"}, "tools[0].teeth = 1e+06: must be an integer in [1, 100]");
     row("teeth non-integer", {"tools/1/teeth=1.5"}, "tools[1].teeth = 1.5: must be an integer in [1, 100]");
-    row("diameter <= 0", {"tools/1/diameter_mm=-10"}, "tools[1].diameter_mm = -10: must be > 0");
+    row("diameter <= 0", {"tools/1/diameter_mm=-10"}, "tools[1].diameter_mm = -10: must be in (0, 1000]");
     row("tool radial depth > D", {"tools/1/radial_depth_mm=10.5"},
         "tools[1].radial_depth_mm = 10.5: must be in (0, 10]");
     row("operation radial depth > D", {"-operation/radial_immersion", "operation/radial_depth_mm=17"},
@@ -82,21 +82,22 @@ class TestCliCheck : public QObject {
     row("no engagement", {"-operation/radial_immersion"}, "operation.radial_immersion: missing");
     row("milling", {"operation/milling=\"climb\""}, "operation.milling = \"climb\": must be \"up\" or \"down\"");
     row("damping > 100", {"tools/1/modes_x/0/damping_pct=150"},
-        "tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)");
-    row("damping 0", {"tools/0/modes_y/0/damping_pct=0"}, "tools[0].modes_y[0].damping_pct = 0: must be in (0, 100)");
+        "tools[1].modes_x[0].damping_pct = 150: must be in [0.001, 100)");
+    row("damping 0", {"tools/0/modes_y/0/damping_pct=0"},
+        "tools[0].modes_y[0].damping_pct = 0: must be in [0.001, 100)");
     row("stiffness <= 0", {"tools/0/modes_x/1/stiffness_N_per_um=0"},
-        "tools[0].modes_x[1].stiffness_N_per_um = 0: must be > 0");
-    row("frequency <= 0", {"tools/0/modes_y/0/freq_Hz=-1"}, "tools[0].modes_y[0].freq_Hz = -1: must be > 0");
+        "tools[0].modes_x[1].stiffness_N_per_um = 0: must be in [0.001, 1e+06]");
+    row("frequency <= 0", {"tools/0/modes_y/0/freq_Hz=-1"}, "tools[0].modes_y[0].freq_Hz = -1: must be in (0, 20000]");
     row("duplicate ids", {"tools/1/id=\"T1\""}, "tools[1].id = \"T1\": duplicate of tools[0].id");
-    row("power <= 0", {"machine/spindle_power_W=0"}, "machine.spindle_power_W = 0: must be > 0");
-    row("max rpm <= 0", {"machine/max_spindle_rpm=-100"}, "machine.max_spindle_rpm = -100: must be > 0");
-    row("max feed <= 0", {"machine/max_feed_mm_s=0"}, "machine.max_feed_mm_s = 0: must be > 0");
-    row("Kt <= 0", {"material/Kt_N_mm2=0"}, "material.Kt_N_mm2 = 0: must be > 0");
-    row("Kr < 0", {"material/Kr=-0.3"}, "material.Kr = -0.3: must be >= 0");
-    row("tool Kt <= 0", {"tools/1/Kt_N_mm2=-800"}, "tools[1].Kt_N_mm2 = -800: must be > 0");
+    row("power <= 0", {"machine/spindle_power_W=0"}, "machine.spindle_power_W = 0: must be in (0, 1e+06]");
+    row("max rpm <= 0", {"machine/max_spindle_rpm=-100"}, "machine.max_spindle_rpm = -100: must be in (0, 1e+05]");
+    row("max feed <= 0", {"machine/max_feed_mm_s=0"}, "machine.max_feed_mm_s = 0: must be in (0, 1e+05]");
+    row("Kt <= 0", {"material/Kt_N_mm2=0"}, "material.Kt_N_mm2 = 0: must be in (0, 1e+05]");
+    row("Kr < 0", {"material/Kr=-0.3"}, "material.Kr = -0.3: must be in [0, 10]");
+    row("tool Kt <= 0", {"tools/1/Kt_N_mm2=-800"}, "tools[1].Kt_N_mm2 = -800: must be in (0, 1e+05]");
     row("feed per tooth <= 0", {"operation/max_feed_per_tooth_mm=0"},
-        "operation.max_feed_per_tooth_mm = 0: must be > 0");
-    row("delta < 0", {"expert/delta_per_s=-1"}, "expert.delta_per_s = -1: must be >= 0");
+        "operation.max_feed_per_tooth_mm = 0: must be in (0, 10]");
+    row("delta < 0", {"expert/delta_per_s=-1"}, "expert.delta_per_s = -1: must be in [0, 10000]");
     row("alpha > 1", {"expert/alpha=1.5"}, "expert.alpha = 1.5: must be in (0, 1]");
     row("alpha 0", {"expert/alpha=0"}, "expert.alpha = 0: must be in (0, 1]");
     row("weights length", {"expert/ct=[1]"}, "expert.ct = [1]: must be an array of 2 numbers >= 0, got 1");
@@ -105,7 +106,7 @@ class TestCliCheck : public QObject {
         "expert.grid.speed_to_rpm = 20000: must be > expert.grid.speed_from_rpm = 30000");
     row("grid divisions", {"expert/grid/depth_divisions=0"},
         "expert.grid.depth_divisions = 0: must be an integer >= 1");
-    row("grid step", {"expert/grid/feed_step_mm=0"}, "expert.grid.feed_step_mm = 0: must be > 0");
+    row("grid step", {"expert/grid/feed_step_mm=0"}, "expert.grid.feed_step_mm = 0: must be in [1e-04, 10]");
   }
 
   void invalidProjects() {

@@ -1,8 +1,10 @@
 // millexpert-cli point: the available spindle power at the point's speed. Rubio et al. Pareto paper,
 // Table 4's P column (1696.5, 2273.3, 1894.4 W at 1800, 2412, 2010 rpm) is 0.3 pi N W, the 9 N·m
 // torque line of projects/rubio-pareto-case.mxproj (machine.max_torque_Nm = 9, P_max = 2745.3 W).
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -142,6 +144,49 @@ class TestCommandPoint : public QObject {
     const mx::test::CliRun b = point(breakage, "2010", "1.5124", feed);
     QCOMPARE(b.json["max_force_N"].toDouble(), 500.0);
     QVERIFY(b.json["force_ok"].toBool());
+  }
+
+  // Every speed of the flag's range is answered: outside the project's grid (1000-5000 rpm) the lobes
+  // are computed +-50 % around the point (up to 1e5 rpm) on a lattice through it (step max(10, N / 1000)
+  // rpm), and
+  // b_lim there is the `lobes` command's on the same speeds.
+  void speedsOutsideTheGrid_data() {
+    QTest::addColumn<double>("speed");
+    QTest::newRow("just above the grid, off its lattice") << 5005.0;
+    QTest::newRow("12005 rpm") << 12005.0;
+    QTest::newRow("the flag's top") << 100000.0;
+    QTest::newRow("below the grid") << 333.3;
+  }
+  void speedsOutsideTheGrid() {
+    QFETCH(double, speed);
+    const mx::test::CliRun r = point(kCase, QString::number(speed, 'g', 10), "0.1", "0.05");
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["speed_rpm"].toDouble(), speed);
+    const double step = std::max(10.0, speed / 1000.0);
+    const double half = std::floor(0.5 * speed / step) * step;
+    const double above = std::floor(std::min(0.5 * speed, 1e5 - speed) / step) * step;
+    const mx::test::CliRun lobes =
+        mx::test::runCli({"lobes", kCase, "--tool", "R1", "--from", QString::number(speed - half, 'g', 17), "--to",
+                          QString::number(speed + above, 'g', 17), "--step", QString::number(step, 'g', 17)});
+    QCOMPARE(lobes.code, 0);
+    const QJsonArray speeds = lobes.json["speed_rpm"].toArray();
+    const qsizetype at = static_cast<qsizetype>(std::llround(half / step));
+    QCOMPARE_LE(std::abs(speeds.at(at).toDouble() - speed), 1e-9 * speed);
+    const QJsonValue expected = lobes.json["blim_mm"].toArray().at(at);
+    const QJsonValue got = r.json["blim_mm"];
+    QCOMPARE(got.isNull(), expected.isNull());
+    if (!got.isNull()) QCOMPARE_LE(std::abs(got.toDouble() - expected.toDouble()), 1e-9 * expected.toDouble());
+  }
+
+  // The semi-discretization's work is bounded by speeds x steps: refused by the flag, before any work.
+  void sdmWorkIsBounded() {
+    const mx::test::CliRun r = mx::test::runCli({"point", kCase, "--tool", "R1", "--speed", "3000", "--depth", "0.1",
+                                                 "--feed", "0.05", "--method", "sdm", "--steps", "2000"});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("--method sdm: 401 speeds (expert.grid 1000 to 5000 rpm by 10 rpm) x --steps 2000 = "
+                            "8.02e+05 speed-steps, at most 3e+05 (about 20 s)"),
+             qPrintable(r.err));
+    QVERIFY(r.out.isEmpty());
   }
 };
 

@@ -247,6 +247,30 @@ class TestClosedLoop : public QObject {
     QVERIFY_THROWS_EXCEPTION(Cancelled, simulateAdaptiveForceControl(AdaptiveControlSettings{}, job));
   }
 
+  // The sample count is bounded before anything is allocated: a spindle of 1e10 rpm (a program's S
+  // word) is refused by name instead of overflowing the count; the fastest real spindle runs.
+  void sampleBudget_data() {
+    QTest::addColumn<double>("rpm");
+    QTest::addColumn<bool>("runs");
+    QTest::newRow("1e10 rpm") << 1e10 << false;
+    QTest::newRow("1e7 rpm") << 1e7 << false;
+  }
+  void sampleBudget() {
+    QFETCH(double, rpm);
+    QFETCH(bool, runs);
+    AdaptiveControlSettings s;
+    s.workpiece.steps.front().spindle_rev_s = rpm / 60.0;
+    try {
+      simulateAdaptiveForceControl(s);
+      QVERIFY(runs);
+    } catch (const InvalidInput& e) {
+      QVERIFY(!runs);
+      QVERIFY2(QString(e.what()).contains("spindle periods (max_time_s = 30") &&
+                   QString(e.what()).contains("at most 200000; lower the spindle speed or max_time_s"),
+               e.what());
+    }
+  }
+
   void progressReported() {
     double last = -1.0;
     int calls = 0;

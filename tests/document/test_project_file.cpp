@@ -34,6 +34,14 @@ QString errorOf(const std::function<void()>& f) {
 
 using mx::test::mutated;
 
+// A JSON array of n valid modes, as the text of a mutation.
+QString manyModes(int n) {
+  QStringList modes;
+  for (int i = 0; i < n; ++i)
+    modes << QString("{\"freq_Hz\": %1, \"damping_pct\": 3, \"stiffness_N_per_um\": 10}").arg(500 + 10 * i);
+  return "[" + modes.join(", ") + "]";
+}
+
 void expectContains(const QString& message, const QStringList& fragments) {
   QVERIFY2(!message.isNull(), "no ProjectError thrown");
   for (const QString& f : fragments)
@@ -217,16 +225,17 @@ class TestProjectFile : public QObject {
     row("tool number", {"tools/1=5"}, {"tools[1]: expected an object, got number"});
     // machine
     row("power missing", {"-machine/spindle_power_W"}, {"machine.spindle_power_W: missing (required number > 0)"});
-    row("power zero", {"machine/spindle_power_W=0"}, {"machine.spindle_power_W = 0: must be > 0"});
-    row("power negative", {"machine/spindle_power_W=-745.3"}, {"machine.spindle_power_W = -745.3: must be > 0"});
+    row("power zero", {"machine/spindle_power_W=0"}, {"machine.spindle_power_W = 0: must be in (0, 1e+06]"});
+    row("power negative", {"machine/spindle_power_W=-745.3"},
+        {"machine.spindle_power_W = -745.3: must be in (0, 1e+06]"});
     row("power string", {"machine/spindle_power_W=\"5kW\""},
         {"machine.spindle_power_W: expected a number, got string"});
     row("power infinite", {"machine/spindle_power_W=inf"},
-        {"machine.spindle_power_W = inf: must be a finite number > 0"});
-    row("max rpm zero", {"machine/max_spindle_rpm=0"}, {"machine.max_spindle_rpm = 0: must be > 0"});
+        {"machine.spindle_power_W = inf: must be a finite number in (0, 1e+06]"});
+    row("max rpm zero", {"machine/max_spindle_rpm=0"}, {"machine.max_spindle_rpm = 0: must be in (0, 1e+05]"});
     row("max rpm string", {"machine/max_spindle_rpm=\"fast\""},
         {"machine.max_spindle_rpm: expected a number, got string"});
-    row("max feed negative", {"machine/max_feed_mm_s=-1"}, {"machine.max_feed_mm_s = -1: must be > 0"});
+    row("max feed negative", {"machine/max_feed_mm_s=-1"}, {"machine.max_feed_mm_s = -1: must be in (0, 1e+05]"});
     row("torque zero", {"machine/max_torque_Nm=0"}, {"machine.max_torque_Nm = 0: must be in (0, 1e+05]"});
     row("torque negative", {"machine/max_torque_Nm=-9"}, {"machine.max_torque_Nm = -9: must be in (0, 1e+05]"});
     row("torque too large", {"machine/max_torque_Nm=2e5"}, {"machine.max_torque_Nm = 2e+05: must be in (0, 1e+05]"});
@@ -247,21 +256,21 @@ class TestProjectFile : public QObject {
     row("curve power string", {curve, "machine/spindle_curve/1/power_W=\"4 kW\""},
         {"machine.spindle_curve[1].power_W: expected a number, got string"});
     row("curve speed negative", {curve, "machine/spindle_curve/0/speed_rpm=-100"},
-        {"machine.spindle_curve[0].speed_rpm = -100: must be >= 0"});
+        {"machine.spindle_curve[0].speed_rpm = -100: must be in [0, 1e+05]"});
     row("curve speeds not increasing", {curve, "machine/spindle_curve/2/speed_rpm=3000"},
         {"machine.spindle_curve[2].speed_rpm = 3000: must be > 3000 (machine.spindle_curve[1].speed_rpm: speeds "
          "strictly increasing)"});
     row("curve speeds decreasing", {curve, "machine/spindle_curve/2/speed_rpm=2500"},
         {"machine.spindle_curve[2].speed_rpm = 2500: must be > 3000"});
     row("curve power negative", {curve, "machine/spindle_curve/1/power_W=-1"},
-        {"machine.spindle_curve[1].power_W = -1: must be >= 0"});
+        {"machine.spindle_curve[1].power_W = -1: must be in [0, 1e+06]"});
     row("curve power infinite", {curve, "machine/spindle_curve/2/power_W=inf"},
-        {"machine.spindle_curve[2].power_W = inf: must be a finite number >= 0"});
+        {"machine.spindle_curve[2].power_W = inf: must be a finite number in [0, 1e+06]"});
     // material
     row("Kt missing", {"-material/Kt_N_mm2"}, {"material.Kt_N_mm2: missing (required number > 0)"});
-    row("Kt zero", {"material/Kt_N_mm2=0"}, {"material.Kt_N_mm2 = 0: must be > 0"});
-    row("Kt nan", {"material/Kt_N_mm2=nan"}, {"material.Kt_N_mm2 = nan: must be a finite number > 0"});
-    row("Kr negative", {"material/Kr=-0.1"}, {"material.Kr = -0.1: must be >= 0"});
+    row("Kt zero", {"material/Kt_N_mm2=0"}, {"material.Kt_N_mm2 = 0: must be in (0, 1e+05]"});
+    row("Kt nan", {"material/Kt_N_mm2=nan"}, {"material.Kt_N_mm2 = nan: must be a finite number in (0, 1e+05]"});
+    row("Kr negative", {"material/Kr=-0.1"}, {"material.Kr = -0.1: must be in [0, 10]"});
     row("Kr missing", {"-material/Kr"}, {"material.Kr: missing (required number >= 0)"});
     row("material name missing", {"-material/name"}, {"material.name: missing (required string)"});
     // operation
@@ -281,7 +290,7 @@ class TestProjectFile : public QObject {
     row("operation depth zero", {"-operation/radial_immersion", "operation/radial_depth_mm=0"},
         {"operation.radial_depth_mm = 0: must be > 0"});
     row("max feed per tooth zero", {"operation/max_feed_per_tooth_mm=0"},
-        {"operation.max_feed_per_tooth_mm = 0: must be > 0"});
+        {"operation.max_feed_per_tooth_mm = 0: must be in (0, 10]"});
     row("max feed per tooth missing", {"-operation/max_feed_per_tooth_mm"},
         {"operation.max_feed_per_tooth_mm: missing (required number > 0)"});
     // tools
@@ -296,10 +305,11 @@ class TestProjectFile : public QObject {
     row("teeth a million", {"tools/1/teeth=1000000"}, {"tools[1].teeth = 1e+06: must be an integer in [1, 100]"});
     row("teeth missing", {"-tools/0/teeth"}, {"tools[0].teeth: missing (required integer in [1, 100])"});
     row("teeth string", {"tools/0/teeth=\"4\""}, {"tools[0].teeth: expected a number, got string"});
-    row("diameter zero", {"tools/0/diameter_mm=0"}, {"tools[0].diameter_mm = 0: must be > 0"});
-    row("diameter negative", {"tools/1/diameter_mm=-10"}, {"tools[1].diameter_mm = -10: must be > 0"});
+    row("diameter zero", {"tools/0/diameter_mm=0"}, {"tools[0].diameter_mm = 0: must be in (0, 1000]"});
+    row("diameter negative", {"tools/1/diameter_mm=-10"}, {"tools[1].diameter_mm = -10: must be in (0, 1000]"});
     row("diameter string", {"tools/0/diameter_mm=\"16\""}, {"tools[0].diameter_mm: expected a number, got string"});
-    row("diameter infinite", {"tools/0/diameter_mm=inf"}, {"tools[0].diameter_mm = inf: must be a finite number > 0"});
+    row("diameter infinite", {"tools/0/diameter_mm=inf"},
+        {"tools[0].diameter_mm = inf: must be a finite number in (0, 1000]"});
     row("diameter missing", {"-tools/1/diameter_mm"}, {"tools[1].diameter_mm: missing (required number > 0)"});
     row("helix missing", {"-tools/0/helix_deg"}, {"tools[0].helix_deg: missing (required number in (-90, 90))"});
     row("helix 90", {"tools/0/helix_deg=90"}, {"tools[0].helix_deg = 90: must be in (-90, 90)"});
@@ -333,15 +343,15 @@ class TestProjectFile : public QObject {
     row("runout -D/4", {"tools/1/runout_um=[-2500, 0]"}, {"tools[1].runout_um[0] = -2500: must be in (-2500, 2500)"});
     row("runout infinite", {"tools/1/runout_um=[0, 0]", "tools/1/runout_um/1=inf"},
         {"tools[1].runout_um[1] = inf: must be a finite number in (-2500, 2500)"});
-    row("tool Kt zero", {"tools/1/Kt_N_mm2=0"}, {"tools[1].Kt_N_mm2 = 0: must be > 0"});
-    row("tool Kr negative", {"tools/1/Kr=-0.2"}, {"tools[1].Kr = -0.2: must be >= 0"});
+    row("tool Kt zero", {"tools/1/Kt_N_mm2=0"}, {"tools[1].Kt_N_mm2 = 0: must be in (0, 1e+05]"});
+    row("tool Kr negative", {"tools/1/Kr=-0.2"}, {"tools[1].Kr = -0.2: must be in [0, 10]"});
     row("tool Kr string", {"tools/1/Kr=\"low\""}, {"tools[1].Kr: expected a number, got string"});
     row("tool depth above D", {"tools/1/radial_depth_mm=12"},
         {"tools[1].radial_depth_mm = 12: must be in (0, 10]", "tools[1].diameter_mm = 10"});
     row("tool depth zero", {"tools/1/radial_depth_mm=0"}, {"tools[1].radial_depth_mm = 0: must be in (0, 10]"});
     row("tool depth just above D", {"tools/0/radial_depth_mm=16.5"},
         {"tools[0].radial_depth_mm = 16.5: must be in (0, 16]"});
-    row("tool depth with D 0", {"tools/1/diameter_mm=0"}, {"tools[1].diameter_mm = 0: must be > 0"});
+    row("tool depth with D 0", {"tools/1/diameter_mm=0"}, {"tools[1].diameter_mm = 0: must be in (0, 1000]"});
     row("tool force zero", {"tools/0/max_force_N=0"}, {"tools[0].max_force_N = 0: must be in (0, 1e+07]"});
     row("tool force negative", {"tools/1/max_force_N=-50"}, {"tools[1].max_force_N = -50: must be in (0, 1e+07]"});
     row("tool force too large", {"tools/0/max_force_N=2e7"}, {"tools[0].max_force_N = 2e+07: must be in (0, 1e+07]"});
@@ -354,28 +364,28 @@ class TestProjectFile : public QObject {
     row("modes_y object", {"tools/0/modes_y={}"}, {"tools[0].modes_y: expected an array, got object"});
     row("mode number", {"tools/0/modes_x/1=3"}, {"tools[0].modes_x[1]: expected an object, got number"});
     row("damping 150", {"tools/1/modes_x/0/damping_pct=150"},
-        {"tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)"});
+        {"tools[1].modes_x[0].damping_pct = 150: must be in [0.001, 100)"});
     row("damping zero", {"tools/0/modes_y/0/damping_pct=0"},
-        {"tools[0].modes_y[0].damping_pct = 0: must be in (0, 100)"});
+        {"tools[0].modes_y[0].damping_pct = 0: must be in [0.001, 100)"});
     row("damping 100", {"tools/0/modes_x/1/damping_pct=100"},
-        {"tools[0].modes_x[1].damping_pct = 100: must be in (0, 100)"});
+        {"tools[0].modes_x[1].damping_pct = 100: must be in [0.001, 100)"});
     row("damping nan", {"tools/0/modes_x/0/damping_pct=nan"},
-        {"tools[0].modes_x[0].damping_pct = nan: must be a finite number in (0, 100)"});
+        {"tools[0].modes_x[0].damping_pct = nan: must be a finite number in [0.001, 100)"});
     row("damping missing", {"-tools/0/modes_y/0/damping_pct"},
         {"tools[0].modes_y[0].damping_pct: missing (required number in (0, 100))"});
     row("stiffness zero", {"tools/0/modes_x/1/stiffness_N_per_um=0"},
-        {"tools[0].modes_x[1].stiffness_N_per_um = 0: must be > 0"});
+        {"tools[0].modes_x[1].stiffness_N_per_um = 0: must be in [0.001, 1e+06]"});
     row("stiffness negative", {"tools/1/modes_x/0/stiffness_N_per_um=-2"},
-        {"tools[1].modes_x[0].stiffness_N_per_um = -2: must be > 0"});
+        {"tools[1].modes_x[0].stiffness_N_per_um = -2: must be in [0.001, 1e+06]"});
     row("stiffness string", {"tools/1/modes_x/0/stiffness_N_per_um=\"2\""},
         {"tools[1].modes_x[0].stiffness_N_per_um: expected a number, got string"});
-    row("frequency zero", {"tools/0/modes_y/0/freq_Hz=0"}, {"tools[0].modes_y[0].freq_Hz = 0: must be > 0"});
+    row("frequency zero", {"tools/0/modes_y/0/freq_Hz=0"}, {"tools[0].modes_y[0].freq_Hz = 0: must be in (0, 20000]"});
     row("frequency -inf", {"tools/0/modes_y/0/freq_Hz=-inf"},
-        {"tools[0].modes_y[0].freq_Hz = -inf: must be a finite number > 0"});
+        {"tools[0].modes_y[0].freq_Hz = -inf: must be a finite number in (0, 20000]"});
     row("frequency missing", {"-tools/0/modes_x/0/freq_Hz"},
         {"tools[0].modes_x[0].freq_Hz: missing (required number > 0)"});
     // expert
-    row("delta negative", {"expert/delta_per_s=-0.05"}, {"expert.delta_per_s = -0.05: must be >= 0"});
+    row("delta negative", {"expert/delta_per_s=-0.05"}, {"expert.delta_per_s = -0.05: must be in [0, 10000]"});
     row("delta missing", {"-expert/delta_per_s"}, {"expert.delta_per_s: missing (required number >= 0)"});
     row("alpha zero", {"expert/alpha=0"}, {"expert.alpha = 0: must be in (0, 1]"});
     row("alpha above one", {"expert/alpha=1.2"}, {"expert.alpha = 1.2: must be in (0, 1]"});
@@ -386,16 +396,16 @@ class TestProjectFile : public QObject {
     row("cf not array", {"expert/cf=0.5"}, {"expert.cf: expected an array, got number"});
     row("cf infinite", {"expert/cf/1=inf"}, {"expert.cf[1] = inf: must be a finite number >= 0"});
     row("grid array", {"expert/grid=[]"}, {"expert.grid: expected an object, got array"});
-    row("grid from zero", {"expert/grid/speed_from_rpm=0"}, {"expert.grid.speed_from_rpm = 0: must be > 0"});
+    row("grid from zero", {"expert/grid/speed_from_rpm=0"}, {"expert.grid.speed_from_rpm = 0: must be in (0, 1e+05]"});
     row("grid from equals to", {"expert/grid/speed_to_rpm=2000"},
         {"expert.grid.speed_to_rpm = 2000: must be > expert.grid.speed_from_rpm = 2000"});
-    row("grid step zero", {"expert/grid/speed_step_rpm=0"}, {"expert.grid.speed_step_rpm = 0: must be > 0"});
+    row("grid step zero", {"expert/grid/speed_step_rpm=0"}, {"expert.grid.speed_step_rpm = 0: must be in (0, 1e+05]"});
     row("grid divisions zero", {"expert/grid/depth_divisions=0"},
         {"expert.grid.depth_divisions = 0: must be an integer >= 1"});
     row("grid divisions fractional", {"expert/grid/depth_divisions=2.5"},
         {"expert.grid.depth_divisions = 2.5: must be an integer >= 1"});
     row("grid feed step negative", {"expert/grid/feed_step_mm=-0.01"},
-        {"expert.grid.feed_step_mm = -0.01: must be > 0"});
+        {"expert.grid.feed_step_mm = -0.01: must be in [1e-04, 10]"});
     row("grid field missing", {"-expert/grid/feed_step_mm"},
         {"expert.grid.feed_step_mm: missing (required number > 0)"});
     // tap-test FRF references
@@ -413,6 +423,56 @@ class TestProjectFile : public QObject {
     row("frf quantity unknown", {"tools/0/frf_y={\"file\":\"y.csv\",\"quantity\":\"force\"}"},
         {"tools[0].frf_y.quantity = \"force\": must be \"receptance\", \"mobility\" or \"accelerance\""});
     row("modes missing without frf", {"-tools/0/modes_y"}, {"tools[0].modes_y: missing"});
+    // the physical ranges that bound every model's work and keep its numbers finite
+    row("Kt 1e308", {"material/Kt_N_mm2=1e308"}, {"material.Kt_N_mm2 = 1e+308: must be in (0, 1e+05]"});
+    row("Kr 11", {"material/Kr=11"}, {"material.Kr = 11: must be in [0, 10]"});
+    row("power 2 MW", {"machine/spindle_power_W=2e6"}, {"machine.spindle_power_W = 2e+06: must be in (0, 1e+06]"});
+    row("max rpm 1e6", {"machine/max_spindle_rpm=1e6"}, {"machine.max_spindle_rpm = 1e+06: must be in (0, 1e+05]"});
+    row("feed per tooth 11", {"operation/max_feed_per_tooth_mm=11"},
+        {"operation.max_feed_per_tooth_mm = 11: must be in (0, 10]"});
+    row("diameter 1e308", {"tools/0/diameter_mm=1e308"}, {"tools[0].diameter_mm = 1e+308: must be in (0, 1000]"});
+    row("tool Kt 1e308", {"tools/1/Kt_N_mm2=1e308"}, {"tools[1].Kt_N_mm2 = 1e+308: must be in (0, 1e+05]"});
+    row("mode frequency 1.797e308", {"tools/0/modes_x/0/freq_Hz=1.797e308"},
+        {"tools[0].modes_x[0].freq_Hz = 1.797e+308: must be in (0, 20000]"});
+    row("mode frequency 1e5", {"tools/0/modes_y/0/freq_Hz=1e5"},
+        {"tools[0].modes_y[0].freq_Hz = 1e+05: must be in (0, 20000]"});
+    row("damping 1e-300", {"tools/0/modes_x/1/damping_pct=1e-300"},
+        {"tools[0].modes_x[1].damping_pct = 1e-300: must be in [0.001, 100)"});
+    row("stiffness 1e9", {"tools/0/modes_x/1/stiffness_N_per_um=1e9"},
+        {"tools[0].modes_x[1].stiffness_N_per_um = 1e+09: must be in [0.001, 1e+06]"});
+    row("51 modes", {"tools/0/modes_x=" + manyModes(51)}, {"tools[0].modes_x has 51 modes: at most 50 are allowed"});
+    row("delta 1e5", {"expert/delta_per_s=1e5"}, {"expert.delta_per_s = 1e+05: must be in [0, 10000]"});
+    row("grid to 1e308", {"expert/grid/speed_to_rpm=1e308"},
+        {"expert.grid.speed_to_rpm = 1e+308: must be in (0, 1e+05]"});
+    row("grid divisions 1e6", {"expert/grid/depth_divisions=1e6"},
+        {"expert.grid.depth_divisions = 1e+06: must be an integer in [1, 1000]"});
+    row("grid feed step 1e-5", {"expert/grid/feed_step_mm=1e-5"},
+        {"expert.grid.feed_step_mm = 1e-05: must be in [1e-04, 10]"});
+    row("grid cells", {"expert/grid/speed_step_rpm=0.06"},
+        {"expert.grid: 300001 speeds (speed_from_rpm = 2000 to speed_to_rpm = 20000 by speed_step_rpm = 0.06) x "
+         "depth_divisions = 8 = 2400008 cells: at most 1e+06; raise expert.grid.speed_step_rpm or lower "
+         "expert.grid.depth_divisions"});
+    row("grid points", {"expert/grid/depth_divisions=100", "expert/grid/feed_step_mm=0.0001"},
+        {"expert.grid: 91 speeds",
+         "x depth_divisions = 100 x 2000 feeds (operation.max_feed_per_tooth_mm = 0.2 by "
+         "feed_step_mm = 1e-04) = 18200000 points: at most 5e+06"});
+  }
+
+  // The count of tools is bounded: 100 pass, 101 are refused before any tool is looked at.
+  void toolCountLimit() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    QJsonArray tools;
+    for (int i = 0; i < 100; ++i) {
+      QJsonObject tool = base["tools"].toArray().at(0).toObject();
+      tool["id"] = QString("T%1").arg(i);
+      tools.append(tool);
+    }
+    QJsonObject project = base;
+    project["tools"] = tools;
+    QCOMPARE(projectFromJson(project).tools.size(), std::size_t(100));
+    tools.append(tools.at(0));
+    project["tools"] = tools;
+    QCOMPARE(errorOf([&] { projectFromJson(project); }), QString("tools has 101 tools: at most 100 are allowed"));
   }
 
   void validationRules() {
@@ -713,7 +773,9 @@ class TestProjectFile : public QObject {
 
   void numbersRoundTripExactly() {
     Project p = loadProject(fixturePath("valid-full.mxproj"));
-    const double awkward[] = {0.1 + 0.2, 1.3400496480507487, 1.0 / 3.0, 5e-324, 1.7976931348623157e308};
+    // Shortest round-trip texts, and the neighbours of the stiffness range's ends.
+    const double awkward[] = {0.1 + 0.2, 1.3400496480507487, 1.0 / 3.0, std::nextafter(0.001, 1.0),
+                              std::nextafter(1e6, 0.0)};
     QTemporaryDir dir;
     const QString out = dir.filePath("numbers.mxproj");
     for (double v : awkward) {

@@ -140,6 +140,44 @@ class TestGcodeReader : public QObject {
     QCOMPARE(p.blocks[0].find('X')->value, 1.0);
   }
   void unreadableFile() { QVERIFY_THROWS_EXCEPTION(InvalidInput, GcodeReader::readFile("/nonexistent/x.nc")); }
+
+  // Words past their letter's range, non-finite words and over-long lines refuse the program with the
+  // line, the column and the range; the values at the limits are read.
+  void refusedWords_data() {
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("S at the limit") << "G1 X1 F100 S100000\n" << QString();
+    QTest::newRow("S 1e10") << "G1 X1 F100\nS10000000000 G1 X2\n"
+                            << "line 2, column 1: S10000000000 = 1e+10: must be in [0, 100000] rpm (spindle speed)";
+    QTest::newRow("S negative") << "S-1\n"
+                                << "line 1, column 1: S-1 = -1: must be in [0, 100000] rpm (spindle speed)";
+    QTest::newRow("F 1e7") << "G1 X1 F10000000\n"
+                           << "line 1, column 7: F10000000 = 1e+07: must be in [0, 1e+06] per minute (feed)";
+    QTest::newRow("X beyond a kilometre") << "G0 X-2000000\n"
+                                          << "line 1, column 4: X-2000000 = -2e+06: must be in [-1e+06, 1e+06] "
+                                             "(coordinate)";
+    QTest::newRow("P a week") << "G4 P604800\n"
+                              << "line 1, column 4: P604800 = 604800: must be in [0, 100000] s (dwell)";
+    QTest::newRow("F nan") << "G1 X1 Fnan\n"
+                           << "line 1, column 7: Fnan: a word's value must be a finite number";
+    QTest::newRow("S -Infinity") << "S-Infinity\n"
+                                 << "line 1, column 1: S-Infinity: a word's value must be a finite number";
+    QTest::newRow("unknown letter with nan is kept") << "Qnan\n" << QString();
+    QTest::newRow("line at the limit") << QString("(") + QString(4094, 'x') + ")\n" << QString();
+    QTest::newRow("line past the limit") << QString("(") + QString(4095, 'x') + ")\n"
+                                         << "line 1: 4097 characters: a block has at most 4096";
+  }
+  void refusedWords() {
+    QFETCH(QString, program);
+    QFETCH(QString, message);
+    QString error;
+    try {
+      GcodeReader::parse(program.toStdString());
+    } catch (const InvalidInput& e) {
+      error = QString::fromStdString(e.what());
+    }
+    QCOMPARE(error, message);
+  }
 };
 
 MX_REGISTER_TEST(TestGcodeReader)

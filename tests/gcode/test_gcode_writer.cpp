@@ -1,5 +1,6 @@
 // G-code writer: byte-exact output without edits, F/S replace or insert, comments, header.
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "core/invalid_input.h"
@@ -101,6 +102,21 @@ class TestGcodeWriter : public QObject {
   void wrongEditCount() {
     const auto p = GcodeReader::parse("G1 X1\nG1 X2\n");
     QVERIFY_THROWS_EXCEPTION(InvalidInput, GcodeWriter::write(p, std::vector<GcodeBlockEdit>(1)));
+  }
+  // An infinite F or S is a controller's failure: refused with the line, never written.
+  void infiniteWordsAreNotWritten() {
+    const auto p = GcodeReader::parse("G1 X1 F100\n");
+    GcodeBlockEdit feed = feedEdit(std::numeric_limits<double>::infinity());
+    try {
+      GcodeWriter::applyEdit(p.blocks.at(0), feed);
+      QFAIL("expected InvalidInput");
+    } catch (const InvalidInput& e) {
+      QCOMPARE(std::string(e.what()), std::string("gcode edit of line 1: F = inf: only a finite value is written"));
+    }
+    GcodeBlockEdit speed;
+    speed.speed_rpm = -std::numeric_limits<double>::infinity();
+    QVERIFY_THROWS_EXCEPTION(InvalidInput, GcodeWriter::applyEdit(p.blocks.at(0), speed));
+    QCOMPARE(GcodeWriter::applyEdit(p.blocks.at(0), GcodeBlockEdit{}), std::string("G1 X1 F100"));  // NaN: untouched
   }
 };
 

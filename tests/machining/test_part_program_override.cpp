@@ -251,6 +251,19 @@ class TestPartProgramOverride : public QObject {
                                  .run(std::string_view("G1 X10 Z-1 F100\n")));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, PartProgramOverrider(BlockFeedController{}, stockTopZero()));
   }
+  // A feed move in the air with no F anywhere before it: no controller sets its feed, so the program is
+  // refused with the line instead of a non-finite feed.
+  void missingFeedAboveTheStock() {
+    try {
+      PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
+          .run(std::string_view("G21 G90 S1200\nG0 Z5\nG1 X10\n"));
+      QFAIL("expected InvalidInput");
+    } catch (const InvalidInput& e) {
+      QCOMPARE(std::string(e.what()), std::string("part program line 3: a feed move with no F word before it, above "
+                                                  "the stock where no controller sets the feed: add an F word to this "
+                                                  "line or an earlier one"));
+    }
+  }
   void csvTable() {
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())
                        .run(std::string_view(gcodeSample("crlf.nc")));

@@ -290,6 +290,86 @@ class TestRuleParser : public QObject {
     QVERIFY(r.rules.empty());
   }
 
+  // Nesting: kMaxRuleNesting levels of '(' or 'not' parse; one more is refused at the token that opens
+  // it. 20 000 of them, far past any stack, give the same error instead of an overflow.
+  void nestingLimit_data() {
+    QTest::addColumn<QString>("open");
+    QTest::addColumn<QString>("close");
+    QTest::addColumn<int>("levels");
+    QTest::addColumn<bool>("ok");
+    const int max = kMaxRuleNesting;
+    QTest::newRow("parentheses at the limit") << "("
+                                              << ")" << max << true;
+    QTest::newRow("parentheses past the limit") << "("
+                                                << ")" << max + 1 << false;
+    QTest::newRow("20000 parentheses") << "("
+                                       << ")" << 20000 << false;
+    QTest::newRow("nots at the limit") << "not "
+                                       << "" << max << true;
+    QTest::newRow("nots past the limit") << "not "
+                                         << "" << max + 1 << false;
+    QTest::newRow("mixed past the limit") << "not ("
+                                          << ")" << max / 2 + 1 << false;
+  }
+  void nestingLimit() {
+    QFETCH(QString, open);
+    QFETCH(QString, close);
+    QFETCH(int, levels);
+    QFETCH(bool, ok);
+    const QString condition = open.repeated(levels) + "tool.teeth >= 4" + close.repeated(levels);
+    const std::string line = ("if " + condition + " then depth_mm <= 1").toStdString();
+    RuleParser parser(RuleSchema::standard());
+    Rule rule;
+    bool isRule = false;
+    RuleError error;
+    QCOMPARE(parser.parseLine(line, 1, rule, isRule, error), ok);
+    if (ok) return;
+    if (line.size() > kMaxRuleLineLength) {  // far past any stack: the length limit refuses it first
+      QVERIFY(error.message.starts_with("rule is " + std::to_string(line.size()) + " characters long"));
+      return;
+    }
+    QCOMPARE(
+        QString::fromStdString(error.message),
+        QString("nested too deeply: more than %1 '(' and 'not' open at once; split the rule").arg(kMaxRuleNesting));
+    // The first token past the limit: the (kMaxRuleNesting + 1)-th opening token.
+    const int perLevel = static_cast<int>(open.size());
+    const int tokensPerLevel = open.count('(') + open.count("not");
+    const int overflowLevel = kMaxRuleNesting / tokensPerLevel;
+    const int expected = 4 + overflowLevel * perLevel;
+    QCOMPARE(error.column, expected);
+  }
+
+  void lineLengthLimit() {
+    const std::string head = "depth_mm <= 1 because \"";
+    const std::string filler(kMaxRuleLineLength - head.size() - 1, 'x');
+    const std::string atLimit = head + filler + "\"";
+    QCOMPARE(atLimit.size(), kMaxRuleLineLength);
+    QVERIFY(parseRules({atLimit}).ok());
+    const RuleParseResult over = parseRules({atLimit + " "});
+    QCOMPARE(over.errors.size(), std::size_t(1));
+    QCOMPARE(over.errors.front().column, static_cast<int>(kMaxRuleLineLength) + 1);
+    QCOMPARE(over.errors.front().message,
+             "rule is " + std::to_string(kMaxRuleLineLength + 1) + " characters long; at most 1000 are allowed");
+  }
+
+  void lineCountLimit() {
+    std::vector<std::string> lines(kMaxRuleLines, "depth_mm <= 1");
+    QCOMPARE(parseRules(lines).rules.size(), kMaxRuleLines);
+    lines.emplace_back("# one line too many");
+    const RuleParseResult over = parseRules(lines);
+    QCOMPARE(over.errors.size(), std::size_t(1));
+    QCOMPARE(over.errors.front().line, static_cast<int>(kMaxRuleLines) + 1);
+    QCOMPARE(over.errors.front().message, std::string("1001 rule lines; at most 1000 are allowed"));
+    QVERIFY(over.rules.empty());
+  }
+
+  // Columns count UTF-8 characters, not bytes, also after the per-line column table.
+  void columnsCountCharacters() {
+    const RuleParseResult r = parseRules({"depth_mm <= 1 because \"\u00e9\u00e9\" x"});
+    QCOMPARE(r.errors.size(), std::size_t(1));
+    QCOMPARE(r.errors.front().column, 28);
+  }
+
   void schemaCanBeExtended() {
     RuleSchema schema = RuleSchema::standard();
     schema.addPath("job.batch_size", RuleValueType::Number);

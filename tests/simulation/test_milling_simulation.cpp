@@ -236,8 +236,8 @@ class TestMillingSimulation : public QObject {
                                      << "= 1 ";
     QTest::newRow("zero modal stiffness") << 15 << 0.0 << "modes_x[0] stiffness"
                                           << "= 0 ";
-    // 3 rpm: m = 40 * 922 Hz * 10 s = 368800 steps per tooth period, 4.4e7 samples at record_every = 1.
-    QTest::newRow("trace too long at 3 rpm") << 0 << 0.05 << "trace samples"
+    // 3 rpm: m = 40 * 922 Hz * 10 s = 368800 steps per tooth period, 4.4e7 steps over 60 revolutions.
+    QTest::newRow("too many steps at 3 rpm") << 0 << 0.05 << "total integration steps"
                                              << "= 4.4256e+07 ";
   }
   void rejectsInvalidInput() {

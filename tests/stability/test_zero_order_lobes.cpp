@@ -55,6 +55,17 @@ class TestZeroOrderLobes : public QObject {
     QVERIFY2(std::abs(best / closed - 1.0) < 0.005, qPrintable(QString("%1 vs %2").arg(best).arg(closed)));
   }
 
+  // A mode at the largest double's frequency: the lobe count is capped in floating point, never
+  // converted from infinity to int; the answer is the 400-lobe cap, all finite or none.
+  void hugeModeFrequencyStaysBounded() {
+    MillingSetup s = test::insperger(1.0);
+    s.modes_x.front().natural_frequency_hz = 1.797e308;
+    const LobeDiagram d = computeZoaLobes(s, rpmGrid(1000, 2000, 100), {});
+    QVERIFY(d.lobes.size() <= 400u);
+    for (const LobeCurve& c : d.lobes)
+      for (double b : c.depth_m) QVERIFY(std::isfinite(b));
+  }
+
   // Insperger benchmark value: full immersion lobe minimum = 2 k zeta (1+zeta) * 2 / (n_t K_t K_r pi).
   void inspergerFullImmersionValue() {
     const MillingSetup s = test::insperger(1.0);

@@ -62,8 +62,8 @@ class TestMachineOperationPanel : public QObject {
     type(power, "0");
     QCOMPARE(spy.count(), 0);
     QCOMPARE(power->value(), 745.3);  // the project's value is shown again
-    QCOMPARE(panel.errorText(), QString("machine.spindle_power_W = 0: must be > 0"));
-    QVERIFY(power->toolTip().contains("Refused: machine.spindle_power_W = 0: must be > 0"));
+    QCOMPARE(panel.errorText(), QString("machine.spindle_power_W = 0: must be in (0, 1e+06]"));
+    QVERIFY(power->toolTip().contains("Refused: machine.spindle_power_W = 0: must be in (0, 1e+06]"));
     QVERIFY(power->styleSheet().contains("border"));
 
     type(power, "1500");  // a good value clears the mark

@@ -175,13 +175,13 @@ class TestToolLibraryCsv : public QObject {
     QTest::addColumn<QString>("message");
     const QByteArray good = "A,2,10,0,,,,x,1000,2,10\n";
     QTest::newRow("non-number") << kHeader + good + "A,,,,,,,y,abc,2,10\n"
-                                << true << "line 3, column 9 (freq_Hz): 'abc' is not a number (number > 0)";
+                                << true << "line 3, column 9 (freq_Hz): 'abc' is not a number (number in (0, 20000])";
     QTest::newRow("out of range") << "# comment\n" + kHeader + good + "A,,,,,,,y,-3,2,10\n"
-                                  << true << "line 4, column 9 (freq_Hz): '-3' must be > 0";
+                                  << true << "line 4, column 9 (freq_Hz): '-3' must be in (0, 20000]";
     QTest::newRow("damping") << kHeader + "A,2,10,0,,,,x,1000,150,10\n"
-                             << true << "line 2, column 10 (damping_pct): '150' must be in (0, 100)";
+                             << true << "line 2, column 10 (damping_pct): '150' must be in [0.001, 100)";
     QTest::newRow("stiffness") << kHeader + good + "\nB,2,10,0,,,,y,1000,2,0\n"
-                               << true << "line 4, column 11 (stiffness_N_per_um): '0' must be > 0";
+                               << true << "line 4, column 11 (stiffness_N_per_um): '0' must be in [0.001, 1e+06]";
     QTest::newRow("too few columns") << kHeader + good + "A,,,,,,,y,1000,2\n"
                                      << true << "line 3, column 11: the row has 10 columns, expected 11";
     QTest::newRow("too many columns") << kHeader + "A,2,10,0,,,,x,1000,2,10,7\n"
@@ -293,7 +293,7 @@ class TestToolLibraryCsv : public QObject {
     QTest::addColumn<QByteArray>("json");
     QTest::addColumn<QString>("message");
     QTest::newRow("damping") << QString(MX_TEST_DATA_DIR "/library/bad-damping.json") << QByteArray()
-                             << "tools[1].modes_x[0].damping_pct = 150: must be in (0, 100)";
+                             << "tools[1].modes_x[0].damping_pct = 150: must be in [0.001, 100)";
     QTest::newRow("type") << QString() << QByteArray(R"([{"id":"A","teeth":"two"}])") << "tools[0].teeth: expected";
     QTest::newRow("no tools") << QString() << QByteArray(R"({"name":"x"})")
                               << "tools: missing (required array of tools)";
