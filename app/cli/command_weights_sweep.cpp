@@ -17,6 +17,28 @@
 #include "services/expert_request.h"
 
 namespace mx::app {
+namespace {
+
+// Each weight vector ranks every tool (about 0.1 ms per tool): at most kMaxSweepRankings rankings, about
+// 15 s on a 2-core machine.
+constexpr double kMaxSweepRankings = 1.5e5;
+
+void checkSweepSize(const QString& flag, double step, bool line, std::size_t tools) {
+  const double n = std::floor(1.0 / step + 1e-9);
+  const double vectors = line ? n + 2.0 : (n + 1.0) * (n + 2.0) / 2.0;
+  const double rankings = vectors * static_cast<double>(tools);
+  if (rankings > kMaxSweepRankings)
+    throw CliError(QString("%1 = %2: %3 weight vectors x %4 tools = %5 rankings, at most %6 (about 15 s): raise %1")
+                       .arg(flag)
+                       .arg(step)
+                       .arg(vectors, 0, 'f', 0)
+                       .arg(tools)
+                       .arg(rankings, 0, 'g', 3)
+                       .arg(kMaxSweepRankings, 0, 'g', 3),
+                   kExitBadInput);
+}
+
+}  // namespace
 
 int runWeightsSweepCommand(const QStringList& arguments) {
   QCommandLineParser parser;
@@ -39,6 +61,8 @@ int runWeightsSweepCommand(const QStringList& arguments) {
   const Project project = loadProject(path);
   ExpertRequest request = expertRequestFromProject(project);
   applyMethodOption(parser, request.settings);
+  checkSweepSize(c3 ? QString("--step") : QString("--simplex"), c3 ? step : *simplex, c3.has_value(),
+                 request.tools.size());
   const ExpertSession session(request.tools, request.settings, request.tool_force_limits_n);
   if (session.empty()) throw CliError(QString::fromStdString(session.emptyReason()), kExitComputationFailed);
   const auto id = [&](std::size_t t) { return request.tool_ids[static_cast<qsizetype>(t)]; };

@@ -162,6 +162,8 @@ class TestCliControl : public QObject {
     QTest::newRow("beta range") << QStringList{} << QStringList{"--beta", "1.5"} << "--beta";
     QTest::newRow("sweep form") << QStringList{} << QStringList{"--sweep-beta", "0:1"} << "--sweep-beta = '0:1'";
     QTest::newRow("sweep order") << QStringList{} << QStringList{"--sweep-beta", "0.5:0:0.1"} << "FROM <= TO";
+    QTest::newRow("sweep of 10000 runs") << QStringList{} << QStringList{"--sweep-beta", "-1:1:0.0002"}
+                                         << "at most 400 steps (each a closed-loop run)";
     QTest::newRow("no section") << QStringList{"-control"} << QStringList{} << "section 'control' is missing";
     QTest::newRow("negative depth") << QStringList{"control/workpiece/1/depth_mm=-1"} << QStringList{}
                                     << "control.workpiece[1].depth_mm = -1: must be in [0, 1000]";

@@ -268,6 +268,22 @@ class TestCliRank : public QObject {
     QCOMPARE(cli({"weights-sweep", kRubio, "--c3", "1.5"}).code, 2);
   }
 
+  // The sweep's rankings (weight vectors x tools) are bounded: 5151 x 2 pass; 501501 x 2, and 10002 x 20
+  // on the line c3 = 0.1, are refused by the flag before the lobes are computed.
+  void sweepSizeIsBounded() {
+    QCOMPARE(cli({"weights-sweep", kRubio, "--simplex", "0.01"}).code, 0);
+    const Run r = cli({"weights-sweep", kRubio, "--simplex", "0.001"});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("--simplex = 0.001: 501501 weight vectors x 2 tools = 1e+06 rankings, at most 1.5e+05 "
+                            "(about 15 s): raise --simplex"),
+             qPrintable(r.err));
+    const Run line =
+        cli({"weights-sweep", MX_PROJECTS_DIR "/library-20-tools.mxproj", "--c3", "0.1", "--step", "0.0001"});
+    QCOMPARE(line.code, 2);
+    QVERIFY2(line.err.contains("--step = 0.0001: 10002 weight vectors x 20 tools = 2e+05 rankings"),
+             qPrintable(line.err));
+  }
+
   // Module VII in `rank`: a speed constraint on R1 moves its q* below the bound, a weight rule bounds
   // c3, advice is reported with whether q* follows it, and a rule excluding a tool's every point
   // excludes the tool with the reason.
