@@ -9,6 +9,10 @@ ExpertRunner::ExpertRunner(QThreadPool* engine_pool, QObject* parent)
   qRegisterMetaType<mx::gui::RefinementOutcome>();
 }
 
+ExpertRunner::~ExpertRunner() {
+  build_cancel_->store(true);
+}
+
 void ExpertRunner::started() {
   if (running_++ == 0) emit busyChanged(true);
 }
@@ -37,15 +41,18 @@ quint64 ExpertRunner::build(const app::Project& project) {
 quint64 ExpertRunner::startBuild(std::function<Request()> make_request) {
   const quint64 generation = ++build_generation_;
   ++refine_generation_;  // refinements of the old session are stale
+  build_cancel_->store(true);
+  build_cancel_ = std::make_shared<std::atomic<bool>>(false);
   started();
-  channel_.start(pool_, [this, make_request = std::move(make_request), generation](const EngineReply& reply) {
+  channel_.start(pool_, [this, make_request = std::move(make_request), generation,
+                         cancel = build_cancel_](const EngineReply& reply) {
     ExpertOutcome outcome;
     outcome.generation = generation;
     try {
       Request request = make_request();
       outcome.tool_ids = request.tool_ids;
-      outcome.session =
-          std::make_shared<ExpertSession>(std::move(request.tools), request.settings, request.tool_force_limits_n);
+      outcome.session = std::make_shared<ExpertSession>(std::move(request.tools), request.settings,
+                                                        request.tool_force_limits_n, JobControl{cancel.get(), {}});
       outcome.rules = request.rules;
       if (outcome.session->empty()) {
         outcome.error = QString::fromStdString("the admissible cutting-parameter space is empty: " +

@@ -36,9 +36,12 @@ class ExpertRunner : public QObject {
   Q_OBJECT
  public:
   ExpertRunner(QThreadPool* engine_pool, QObject* parent = nullptr);
+  ~ExpertRunner() override;  // cancels a running build
+  ExpertRunner(const ExpertRunner&) = delete;
+  ExpertRunner& operator=(const ExpertRunner&) = delete;
 
-  // Builds a session for these tools and settings on the engine thread (cancels nothing: the
-  // session build is not interruptible, but a stale result is dropped).
+  // Builds a session for these tools and settings on the engine thread; a newer build cancels the
+  // running one (its result, stale, is dropped).
   quint64 build(std::vector<MillingSetup> tools, const ExpertSettings& settings, const QStringList& tool_ids);
   // The same from a project snapshot: its expert request, with the tools' tap-test FRFs (read on the
   // engine thread; `project` names them by absolute path), is made on the engine thread, and its
@@ -78,6 +81,7 @@ class ExpertRunner : public QObject {
   std::shared_ptr<ExpertSession> session_;
   QStringList tool_ids_;
   app::ExpertRules rules_;
+  std::shared_ptr<std::atomic<bool>> build_cancel_ = std::make_shared<std::atomic<bool>>(false);
   quint64 build_generation_ = 0;
   quint64 refine_generation_ = 0;
   int running_ = 0;

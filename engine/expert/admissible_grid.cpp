@@ -86,21 +86,23 @@ std::vector<double> AdmissibleGrid::lobeSpeeds(const ExpertSettings& s) {
   return speeds;
 }
 
-LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s) {
+LobeDiagram AdmissibleGrid::computeLobes(const MillingSetup& setup, const ExpertSettings& s, const JobControl& job) {
   return mx::computeLobes(setup, lobeSpeeds(s),
                           {s.stability.method, s.stability.delta_per_s, s.stability.max_depth_m,
-                           s.stability.sdm_steps_per_period, s.stability.dynamics});
+                           s.stability.sdm_steps_per_period, s.stability.dynamics},
+                          JobControl{job.cancel, {}});
 }
 
-AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings)
-    : AdmissibleGrid(setup, settings, computeLobes(setup, settings)) {}
+AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const JobControl& job)
+    : AdmissibleGrid(setup, settings, computeLobes(setup, settings, job), job) {}
 
-AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes)
+AdmissibleGrid::AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes,
+                               const JobControl& job)
     : setup_(setup), settings_(settings), lobes_(lobes), boundary_(lobes_, settings.stability.alpha) {
-  build();
+  build(job);
 }
 
-void AdmissibleGrid::build() {
+void AdmissibleGrid::build(const JobControl& job) {
   const ExpertGrid& g = settings_.grid;
   const MachineLimits& lim = settings_.limits;
   if (!(g.feed_step_m > 0.0) || g.depth_divisions < 1)
@@ -160,6 +162,7 @@ void AdmissibleGrid::build() {
   max_mrr_ = 0.0;
   max_dns_ = 0.0;
   for (double n : speeds_) {
+    if (job.cancelled()) throw Cancelled();
     if (n > lim.max_spindle_rev_per_s * (1.0 + kEps)) continue;
     ++funnel_.below_max_speed;
     const double b_lim = std::min(boundary_.depthLimit(n), cap);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "expert/expert_settings.h"
 #include "model/milling_setup.h"
 #include "stability/lobe_diagram.h"
@@ -73,10 +74,12 @@ std::string describeConstraint(QConstraint constraint, const ExpertSettings& set
 
 class AdmissibleGrid {
  public:
-  // Computes the lobes (ZOA or SDM per settings.stability) over the extended speed range.
-  AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings);
+  // Computes the lobes (ZOA or SDM per settings.stability) over the extended speed range. Polls
+  // job.cancelled() in the lobes and once per grid speed (throws Cancelled).
+  AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const JobControl& job = {});
   // With lobes already computed (their speed range must cover the grid's).
-  AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes);
+  AdmissibleGrid(const MillingSetup& setup, const ExpertSettings& settings, const LobeDiagram& lobes,
+                 const JobControl& job = {});
 
   const MillingSetup& setup() const { return setup_; }
   const ExpertSettings& settings() const { return settings_; }
@@ -103,10 +106,11 @@ class AdmissibleGrid {
 
   // Lobe speeds used for a settings/grid pair: [low_factor * from, high_factor * to] by the lobe step.
   static std::vector<double> lobeSpeeds(const ExpertSettings& settings);
-  static LobeDiagram computeLobes(const MillingSetup& setup, const ExpertSettings& settings);
+  static LobeDiagram computeLobes(const MillingSetup& setup, const ExpertSettings& settings,
+                                  const JobControl& job = {});
 
  private:
-  void build();
+  void build(const JobControl& job);
 
   MillingSetup setup_;
   ExpertSettings settings_;

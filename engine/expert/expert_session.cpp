@@ -1,8 +1,10 @@
 #include "expert/expert_session.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <string>
 
@@ -85,7 +87,7 @@ std::optional<ToolChoice> bestOfGrid(const AdmissibleGrid& grid, std::size_t too
 }  // namespace
 
 ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings,
-                             const std::vector<double>& tool_force_limits_n)
+                             const std::vector<double>& tool_force_limits_n, const JobControl& job)
     : settings_(settings), tools_(std::move(tools)), cache_(settings.refinement) {
   clearUpperVectorState();
   if (tools_.empty()) throw InvalidInput("the expert system needs at least one candidate tool");
@@ -93,10 +95,14 @@ ExpertSession::ExpertSession(std::vector<MillingSetup> tools, const ExpertSettin
     throw InvalidInput("the expert system needs one tool force limit per tool (" + std::to_string(tools_.size()) +
                        "), got " + std::to_string(tool_force_limits_n.size()));
   std::vector<std::optional<AdmissibleGrid>> built(tools_.size());
+  std::atomic<std::size_t> done{0};
+  std::mutex progress_mutex;  // progress callbacks one at a time, in order
   parallelFor(tools_.size(), settings_.refinement.threads, [&](std::size_t i) {
     ExpertSettings own = settings_;
     if (!tool_force_limits_n.empty()) own.limits.max_tool_force_n = tool_force_limits_n[i];
-    built[i].emplace(tools_[i], own);
+    built[i].emplace(tools_[i], own, JobControl{job.cancel, {}});
+    const std::lock_guard<std::mutex> lock(progress_mutex);
+    job.report(static_cast<double>(++done) / static_cast<double>(tools_.size()));
   });
   grids_.reserve(built.size());
   for (auto& g : built) grids_.push_back(std::move(*g));

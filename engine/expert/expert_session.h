@@ -79,9 +79,10 @@ class ExpertSession {
   // Builds every tool's grid (in parallel). `tool_force_limits_n`, when not empty, holds each tool's
   // allowable force F_allow (Rule 3; +inf: none), aligned with `tools`, and replaces
   // settings.limits.max_tool_force_n for that tool. Throws InvalidInput for an empty library, a
-  // misaligned limit list or bad settings.
+  // misaligned limit list or bad settings; Cancelled when job.cancelled() (polled per grid speed),
+  // and reports the fraction of tools built.
   ExpertSession(std::vector<MillingSetup> tools, const ExpertSettings& settings,
-                const std::vector<double>& tool_force_limits_n = {});
+                const std::vector<double>& tool_force_limits_n = {}, const JobControl& job = {});
 
   std::size_t toolCount() const { return grids_.size(); }
   const AdmissibleGrid& grid(std::size_t tool) const { return grids_.at(tool); }

@@ -1,6 +1,7 @@
 // The expert system on the 2006 example (section 3.D): Rule 4 selects R1 over the simplex, q* on the
 // power limit at 5800 rpm, Rule 5 from cached simulations, Rule 6 keeps the weights on the simplex,
 // and the invariants of the ranking (admissible points, MRR monotone in c2).
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -25,6 +26,20 @@ class TestExpertSession : public QObject {
  private slots:
   // c = (0.2, 0.725, 0.075): R1, q* = (5800 rpm, 0.5048 mm, 0.27 mm) on the power limit.
   // Paper: q* = (5800, 0.4924, 0.2722); the cost is flat along b s_t = const on the power limit.
+  // The build polls the cancel flag (a cancelled build throws before any grid is done) and reports
+  // the fraction of tools built, rising to 1.
+  void buildIsCancellableAndReportsProgress() {
+    std::atomic<bool> cancel{true};
+    QVERIFY_THROWS_EXCEPTION(Cancelled, ExpertSession({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(),
+                                                      {}, JobControl{&cancel, {}}));
+    std::vector<double> fractions;
+    JobControl job;
+    job.progress = [&](double f) { fractions.push_back(f); };
+    const ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {}, job);
+    QCOMPARE(fractions, (std::vector<double>{0.5, 1.0}));
+    QCOMPARE(session.toolCount(), std::size_t(2));
+  }
+
   void paperWeightsQStar() {
     const Ranking r = rubio().rank({0.2, 0.725, 0.075});
     QCOMPARE(r.tools.size(), std::size_t(2));
