@@ -48,7 +48,13 @@ std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e)
     for (const auto& w : b.words)
       if (w.known && w.letter == letter) {
         const char written = b.text[w.column - 1];  // keep the letter's case
-        changes.push_back({w.column - 1, w.length, std::string(1, written) + num, order});
+        std::string text = std::string(1, written) + num;
+        // The line may go on with a '.' or a digit the old number did not take ("S30..2" is S30. and a
+        // stray ".2"); a space keeps the new number from running into it.
+        const std::size_t after = w.column - 1 + w.length;
+        if (after < b.text.size() && (b.text[after] == '.' || (b.text[after] >= '0' && b.text[after] <= '9')))
+          text += ' ';
+        changes.push_back({w.column - 1, w.length, std::move(text), order});
         return;
       }
     const std::size_t at = b.words_end;

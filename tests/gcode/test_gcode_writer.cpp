@@ -65,6 +65,17 @@ class TestGcodeWriter : public QObject {
     QCOMPARE(edited("N50 G1 X40. F600", feedEdit(450)), std::string("N50 G1 X40. F450"));
     QCOMPARE(edited("g1x10f200.5y3", feedEdit(12.25)), std::string("g1x10f12.2y3"));  // case kept, 1 decimal
   }
+  // A replaced number must not run into a stray '.' or digit after it.
+  void replacedWordStaysApartFromStrayNumber() {
+    GcodeBlockEdit s;
+    s.speed_rpm = 60668;
+    const std::string line = edited("G1 S30..2 F200", s);
+    QCOMPARE(line, std::string("G1 S60668 .2 F200"));
+    QCOMPARE(GcodeReader::parse(line).blocks.at(0).find('S')->value, 60668.0);
+    const std::string dotted = edited("G1 S.1.5", s);
+    QCOMPARE(dotted, std::string("G1 S60668 .5"));
+    QCOMPARE(GcodeReader::parse(dotted).blocks.at(0).find('S')->value, 60668.0);
+  }
   void insertFeedBeforeComments() {
     QCOMPARE(edited("G1 X10 ;cut", feedEdit(100)), std::string("G1 X10 F100 ;cut"));
     QCOMPARE(edited("G1 X10 (a) Y2 (b)", feedEdit(100)), std::string("G1 X10 (a) Y2 F100 (b)"));
