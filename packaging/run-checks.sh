@@ -6,8 +6,10 @@
 #   2. the threaded tests (CTest label "threads", tests/CMakeLists.txt) under ThreadSanitizer (preset
 #      tsan, suppressions in packaging/sanitizers/tsan.supp); only their test executables are built;
 #   3. clang-tidy (.clang-tidy) over our sources in the asan build's compile database;
-#   4. the libFuzzer targets (preset fuzz, clang-14; fuzz/README.md), each for MX_FUZZ_SECONDS (300 s by
-#      default) from its seed corpus, in a scratch corpus folder.
+#   4. every libFuzzer target (preset fuzz, clang-14, ASan + UBSan; tests/fuzz/README.md), one after the
+#      other, each for MX_FUZZ_SECONDS (120 s by default) from its seed corpus in a scratch corpus
+#      folder, with -timeout=5 -rss_limit_mb=1024: a crash, leak, timeout or out-of-memory fails it,
+#      and the input is kept in build/fuzz/findings/.
 # Exits non-zero at the first check that fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,18 +40,22 @@ run-clang-tidy-14 -p build/asan -j "$(nproc)" -quiet "^$PWD/(engine|app|widgets|
 echo "run-checks: clang-tidy took $((SECONDS - started)) s"
 echo "run-checks: libFuzzer"
 started=$SECONDS
-fuzz_seconds="${MX_FUZZ_SECONDS:-300}"
+fuzz_seconds="${MX_FUZZ_SECONDS:-120}"
 cmake --preset fuzz -G Ninja
-cmake --build --preset fuzz --parallel "$(nproc)" --target fuzz_uff fuzz_frf_csv
-for target in uff:uff frf_csv:csv; do
-  name=${target%%:*}
-  seeds=${target##*:}
+cmake --build --preset fuzz --parallel "$(nproc)" --target fuzz_all
+fuzz_dir=build/fuzz/tests/fuzz
+mkdir -p build/fuzz/findings
+# fuzz_targets.txt: one target name a line, written by tests/fuzz/CMakeLists.txt.
+while read -r name; do
   scratch="$run_tmp/corpus-$name"
   mkdir -p "$scratch"
   dict=()
-  [ -f "fuzz/$seeds.dict" ] && dict=(-dict="fuzz/$seeds.dict")
-  build/fuzz/fuzz/fuzz_"$name" "${dict[@]}" -max_total_time="$fuzz_seconds" -print_final_stats=1 \
-    "$scratch" "fuzz/corpus/$seeds"
-done
+  [ -f "tests/fuzz/dict/$name.dict" ] && dict=(-dict="tests/fuzz/dict/$name.dict")
+  if ! "$fuzz_dir/fuzz_$name" "${dict[@]}" -max_total_time="$fuzz_seconds" -timeout=5 -rss_limit_mb=1024 \
+    -print_final_stats=1 -artifact_prefix="build/fuzz/findings/$name-" "$scratch" "tests/fuzz/corpus/$name" </dev/null; then
+    echo "run-checks: fuzz_$name found a bug; replay it with $fuzz_dir/fuzz_$name build/fuzz/findings/$name-*"
+    exit 1
+  fi
+done <"$fuzz_dir/fuzz_targets.txt"
 echo "run-checks: libFuzzer took $((SECONDS - started)) s"
 echo "run-checks: all checks passed"

@@ -1,0 +1,6 @@
+G21 G90
+G0 Z5 S2000
+G1 Z-1.5 F200
+G1 X50 F800 (crlf line)
+G1 Y30
+G0 Z5

@@ -1,0 +1,8 @@
+(inch program, stock top Z0)
+G20 G90 G17
+G0 Z0.2 S3000
+G1 Z-0.05 F10.
+G1 X2.0 F30.
+G2 X3.0 Y1.0 I0 J1.0
+G1 Y0
+G0 Z0.2
