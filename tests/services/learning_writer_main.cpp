@@ -1,5 +1,7 @@
-// Test-only helper for services.learning_database: inserts learning records into DB_FILE in a loop (each
-// one transaction) and prints the running count after every commit, until killed or COUNT reached.
+// Test-only helper for services.learning_crash_safety: opens DB_FILE, prints "ready", then inserts
+// learning records in a loop (each one transaction), printing "begin i" before and "end i" after each
+// insert, until killed or COUNT inserts are done. The writer index i (also stored in the objectives as
+// "writer_index") continues from the rows already in the file, so over many runs it counts 0, 1, 2...
 //   learning_writer DB_FILE [COUNT]
 #include <QCoreApplication>
 #include <QTextStream>
@@ -20,7 +22,9 @@ int main(int argc, char** argv) {
   QTextStream out(stdout);
   try {
     mx::app::LearningDatabase db(args.at(1));
-    for (long long i = 0; limit < 0 || i < limit; ++i) {
+    const long long first = db.count();
+    out << "ready" << Qt::endl;  // flushed: the test times its kills from here
+    for (long long i = first; limit < 0 || i < first + limit; ++i) {
       mx::app::LearningRecord r;
       r.weights = {0.1, 0.2, 0.3, 0.4};
       r.tool = {QString("W%1").arg(i % 5), 8.0 + static_cast<double>(i % 5), 2 + static_cast<int>(i % 3)};
@@ -33,8 +37,9 @@ int main(int argc, char** argv) {
                                  {"ros", 0.5},
                                  {"writer_index", static_cast<double>(i)}};
       r.source = mx::app::LearningSource::Automatic;
+      out << "begin " << i << Qt::endl;
       db.insert(r);
-      out << (i + 1) << Qt::endl;  // flushed: the test waits for the first commit
+      out << "end " << i << Qt::endl;
     }
   } catch (const std::exception& e) {
     QTextStream(stderr) << e.what() << Qt::endl;

@@ -1,16 +1,14 @@
 // Rule 14 learning database (app/services/learning_database.h): schema creation, a record's round trip, the history /
 // MRR-range / weight-suggestion queries, validation (bad source, weights off the simplex), error
-// messages naming the file, several connections and threads, and durability: a writer process killed
-// with SIGKILL mid-loop leaves a consistent database that still accepts writes.
+// messages naming the file, several connections and threads. Writers killed mid-insert:
+// services.learning_crash_safety.
 #include <QDir>
 #include <QFile>
-#include <QProcess>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QThread>
 #include <atomic>
 #include <cmath>
 #include <thread>
@@ -292,44 +290,6 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(failures.load(), 0);
     QCOMPARE(b.count(), 2 + 4 * kPerThread);
     QVERIFY(b.checkConsistency().ok());
-  }
-
-  void killedWriterLeavesAConsistentDatabase() {
-    const QString path = file("killed.sqlite");
-    QProcess writer;
-    writer.start(MX_LEARNING_WRITER_PATH, {path});
-    QVERIFY2(writer.waitForStarted(10000), qPrintable(writer.errorString()));
-    QVERIFY2(writer.waitForReadyRead(20000), qPrintable(writer.readAllStandardError()));  // first commit
-    QThread::msleep(300);
-    QCOMPARE(writer.state(), QProcess::Running);
-    writer.kill();  // SIGKILL: no destructor, no checkpoint, possibly mid-transaction
-    QVERIFY(writer.waitForFinished(10000));
-    QCOMPARE(writer.exitStatus(), QProcess::CrashExit);
-    const QList<QByteArray> lines = writer.readAllStandardOutput().trimmed().split('\n');
-    const qint64 reported = lines.last().trimmed().toLongLong();  // commits acknowledged before the kill
-    QVERIFY(reported >= 1);
-
-    LearningDatabase db(path, LearningDatabase::OpenMode::ExistingOnly);
-    const mx::app::LearningConsistency c = db.checkConsistency();
-    QCOMPARE(c.integrity, QString("ok"));
-    QVERIFY2(c.problems.isEmpty(), qPrintable(c.problems.join("\n")));
-    const qint64 rows = db.count();
-    QVERIFY2(rows >= reported && rows <= reported + 1,
-             qPrintable(QString("%1 rows, %2 reported").arg(rows).arg(reported)));
-    qInfo("writer killed after %lld acknowledged commits; %lld rows, all complete", reported, rows);
-    {  // every row complete, checked in SQL too: weight rows = weight_count, writer indices 0..rows-1
-      RawDb raw(path);
-      QCOMPARE(raw.scalar("SELECT COUNT(*) FROM learning_entry e WHERE e.weight_count <>"
-                          " (SELECT COUNT(*) FROM learning_weight w WHERE w.entry_id = e.id)")
-                   .toInt(),
-               0);
-      QCOMPARE(
-          raw.scalar("SELECT MAX(json_extract(objectives_json, '$.writer_index')) FROM learning_entry").toLongLong(),
-          rows - 1);
-    }
-    db.insert(sample("after", "Aluminium", 10, 2, kW, 1.0));  // new writes still work
-    QCOMPARE(db.count(), rows + 1);
-    QVERIFY(db.checkConsistency().ok());
   }
 };
 

@@ -1,0 +1,93 @@
+#pragma once
+// Test helper for the crash-safety loops: runs a writer process, stops it at the chosen moment (SIGSTOP,
+// so that what is inspected is exactly the state the kill leaves behind), notes the files it holds open
+// below a folder and its last progress line, then kills it (SIGKILL: no destructor, no flush).
+#include <sys/types.h>
+#include <unistd.h>
+
+#include <QByteArray>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+#include <QThread>
+#include <csignal>
+
+namespace mx::test {
+
+// The files process `pid` holds open below `folder` (/proc/<pid>/fd). An unnamed temporary file
+// (QSaveFile uses O_TMPFILE on Linux) shows as "<folder>/#<inode> (deleted)".
+inline QStringList openFilesBelow(qint64 pid, const QString& folder) {
+  QStringList open;
+  const QString fd_dir = QString("/proc/%1/fd").arg(pid);
+  const QByteArray prefix = QDir(folder).absolutePath().toLocal8Bit() + '/';
+  for (const QString& fd : QDir(fd_dir).entryList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot)) {
+    char target[4096];
+    const ssize_t n = ::readlink(QString(fd_dir + '/' + fd).toLocal8Bit().constData(), target, sizeof target - 1);
+    if (n <= 0) continue;
+    const QByteArray path(target, static_cast<qsizetype>(n));
+    if (path.startsWith(prefix)) open << QString::fromLocal8Bit(path);
+  }
+  return open;
+}
+
+// Polls until `process` holds a file open below `folder`; false when it finished first or after
+// `timeout_ms`.
+inline bool waitForOpenFileBelow(QProcess& process, const QString& folder, int timeout_ms) {
+  QElapsedTimer clock;
+  clock.start();
+  while (clock.elapsed() < timeout_ms) {
+    if (process.state() != QProcess::Running) return false;
+    if (!openFilesBelow(process.processId(), folder).isEmpty()) return true;
+  }
+  return false;
+}
+
+// Busy-waits `us` microseconds: QThread::usleep oversleeps by the scheduler's slack, which would
+// shift every kill time by the same amount.
+inline void spinFor(qint64 us) {
+  QElapsedTimer clock;
+  clock.start();
+  while (clock.nsecsElapsed() < us * 1000) {
+  }
+}
+
+struct KillOutcome {
+  bool killed = false;     // false: the process finished on its own before the kill
+  QStringList open_files;  // below the watched folder, at the kill
+  QByteArray last_line;    // the last complete line the process printed before the kill
+  QByteArray output;       // all it printed
+};
+
+// Reads `process`'s output into `seen` until it holds the line `line`; false when the process ended
+// first or after `timeout_ms`.
+inline bool waitForLine(QProcess& process, QByteArray& seen, const QByteArray& line, int timeout_ms) {
+  QElapsedTimer clock;
+  clock.start();
+  while (!seen.startsWith(line + '\n') && !seen.contains('\n' + line + '\n')) {
+    const int left = timeout_ms - static_cast<int>(clock.elapsed());
+    if (left <= 0 || !process.waitForReadyRead(left)) return false;
+    seen += process.readAllStandardOutput();
+  }
+  return true;
+}
+
+// Stops `process`, records what it holds open below `folder`, kills it and reaps it. `seen`: what
+// was already read from its output.
+inline KillOutcome stopAndKill(QProcess& process, const QString& folder, const QByteArray& seen = {}) {
+  KillOutcome outcome;
+  const qint64 pid = process.processId();
+  if (pid > 0 && ::kill(static_cast<pid_t>(pid), SIGSTOP) == 0) {
+    outcome.open_files = openFilesBelow(pid, folder);
+    ::kill(static_cast<pid_t>(pid), SIGKILL);
+  }
+  process.waitForFinished(10000);
+  outcome.killed = process.exitStatus() == QProcess::CrashExit;
+  outcome.output = seen + process.readAllStandardOutput();
+  const QList<QByteArray> lines = outcome.output.trimmed().split('\n');
+  outcome.last_line = lines.isEmpty() ? QByteArray() : lines.last().trimmed();
+  return outcome;
+}
+
+}  // namespace mx::test
