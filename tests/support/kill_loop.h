@@ -8,6 +8,7 @@
 #include <QByteArray>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
@@ -32,14 +33,26 @@ inline QStringList openFilesBelow(qint64 pid, const QString& folder) {
   return open;
 }
 
-// Polls until `process` holds a file open below `folder`; false when it finished first or after
+// Whether process `pid` has ended (a zombie, or gone). QProcess::state() would only tell after its
+// events are processed, which a polling loop does not do.
+inline bool hasEnded(qint64 pid) {
+  QFile stat(QString("/proc/%1/stat").arg(pid));
+  if (pid <= 0 || !stat.open(QIODevice::ReadOnly)) return true;
+  const QByteArray line = stat.readAll();
+  const qsizetype name_end = line.lastIndexOf(')');  // "pid (name) state ..."
+  const char state = name_end >= 0 && name_end + 2 < line.size() ? line.at(name_end + 2) : 'X';
+  return state == 'Z' || state == 'X';
+}
+
+// Polls until `process` holds a file open below `folder`; false when it ended first or after
 // `timeout_ms`.
 inline bool waitForOpenFileBelow(QProcess& process, const QString& folder, int timeout_ms) {
+  const qint64 pid = process.processId();
   QElapsedTimer clock;
   clock.start();
   while (clock.elapsed() < timeout_ms) {
-    if (process.state() != QProcess::Running) return false;
-    if (!openFilesBelow(process.processId(), folder).isEmpty()) return true;
+    if (!openFilesBelow(pid, folder).isEmpty()) return true;
+    if (hasEnded(pid)) return false;
   }
   return false;
 }

@@ -1,0 +1,104 @@
+// Crash safety of the override export (docs/reliability.md, "Crash safety"): `millexpert-cli override
+// PROGRAM PROJECT --out OUT` is killed with SIGKILL while it writes OUT. The write is a small part of a
+// run, so each kill is aimed: the test polls the process's open files until it holds one in OUT's folder
+// (the temporary file of the atomic write), then waits a random 0-6 ms (fixed seed) and kills it. Runs
+// alternate between two spindle speeds, so consecutive outputs differ. After every kill OUT is
+// byte-identical to its content before the run or to the complete new output (its "(date: ...)" header
+// line aside, which changes by the second).
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <random>
+
+#include "support/kill_loop.h"
+#include "support/project_files.h"
+#include "test_registry.h"
+
+using namespace mx;
+
+namespace {
+
+constexpr int kKills = 40;
+constexpr unsigned kSeed = 20240501;
+constexpr int kMaxDelayUs = 6000;
+const QString kProgram = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
+const QString kProject = MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj";
+const QStringList kSpeeds{"3000", "4500"};
+
+QStringList overrideArgs(const QString& out, int run) {
+  return {"override", kProgram, kProject, "--out", out, "--speed", kSpeeds[run % 2]};
+}
+
+QByteArray dateless(QByteArray text) {
+  static const QRegularExpression date(R"(\(date: [^)\n]*\))");
+  return QString::fromUtf8(text).replace(date, "(date: -)").toUtf8();
+}
+
+}  // namespace
+
+class TestOverrideCrashSafety : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void killedExportsLeaveTheOldOrTheNewProgram() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("ref") && QDir(dir.path()).mkpath("out"));
+    QByteArray refs[2];
+    for (int run = 0; run < 2; ++run) {
+      const QString ref = dir.filePath(QString("ref/%1.nc").arg(run));
+      QProcess cli;
+      cli.start(MX_CLI_PATH, overrideArgs(ref, run));
+      QVERIFY(cli.waitForFinished(60000));
+      QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0, cli.readAllStandardError());
+      refs[run] = test::readBytes(ref);
+    }
+    QVERIFY(dateless(refs[0]) != dateless(refs[1]));
+    const QString folder = dir.filePath("out"), out = folder + "/program.nc";
+    QVERIFY(QFile::copy(dir.filePath("ref/1.nc"), out));
+
+    std::mt19937 random(kSeed);
+    std::uniform_int_distribution<int> delay_us(0, kMaxDelayUs);
+    int runs = 0, kills = 0, in_write = 0, old_kept = 0, new_written = 0, finished = 0, stray = 0;
+    QElapsedTimer clock;
+    clock.start();
+    while (kills < kKills && runs < 4 * kKills) {
+      const int run = runs++;
+      const QByteArray before = test::readBytes(out);
+      QProcess cli;
+      cli.start(MX_CLI_PATH, overrideArgs(out, run));
+      QVERIFY(cli.waitForStarted(10000));
+      const bool writing = test::waitForOpenFileBelow(cli, folder, 60000);
+      if (writing) test::spinFor(delay_us(random));
+      const test::KillOutcome kill = test::stopAndKill(cli, folder);
+      const QByteArray after = test::readBytes(out);
+      if (!kill.killed) {
+        ++finished;
+        QCOMPARE(cli.exitCode(), 0);
+        QCOMPARE(dateless(after), dateless(refs[run % 2]));
+      } else {
+        ++kills;
+        in_write += kill.open_files.isEmpty() ? 0 : 1;
+        const bool kept = after == before, written = dateless(after) == dateless(refs[run % 2]);
+        QVERIFY2(kept || written, qPrintable(QString("kill %1: %2 is neither the old nor the new program (%3 bytes)")
+                                                 .arg(kills)
+                                                 .arg(out)
+                                                 .arg(after.size())));
+        ++(kept ? old_kept : new_written);
+      }
+      for (const QString& name : QDir(folder).entryList(QDir::Files | QDir::Hidden))
+        if (name != "program.nc") stray += QFile::remove(folder + "/" + name) ? 1 : 0;
+    }
+    qInfo(
+        "override --out: %d runs, %d kills, %d with the output's temporary file open: old program kept %d, new "
+        "program %d; %d runs finished first; stray temporary files %d; %lld ms",
+        runs, kills, in_write, old_kept, new_written, finished, stray, static_cast<long long>(clock.elapsed()));
+    QCOMPARE(kills, kKills);
+    QVERIFY2(in_write >= kKills / 2, qPrintable(QString("%1 kills during the write").arg(in_write)));
+  }
+};
+
+MX_REGISTER_TEST(TestOverrideCrashSafety)
+#include "test_override_crash_safety.moc"
