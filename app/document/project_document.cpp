@@ -175,13 +175,16 @@ QString ProjectDocument::autosavePath() const {
   return dir + "/untitled.mxproj.autosave";
 }
 
-void ProjectDocument::writeAutosave() {
-  if (!isDirty()) return;
+QString ProjectDocument::writeAutosave() {
+  if (!isDirty()) return {};
   try {
     saveProject(project_, autosavePath());
-  } catch (const ProjectError&) {
-    // Autosave is best effort; the next interval retries.
+  } catch (const ProjectError& e) {
+    const QString message = QString::fromStdString(e.what());
+    emit autosaveFailed(message);
+    return message;
   }
+  return {};
 }
 
 QString ProjectDocument::recoveryCandidate(const QString& path) {

@@ -50,11 +50,13 @@ class ProjectDocument : public QObject {
   void recover(const QString& path);
 
   void newProject();
-  void load(const QString& path);                         // throws ProjectError; clears undo history
-  void save(const QString& path = {});                    // atomic (QSaveFile); throws ProjectError
-  void setAutosaveInterval(int ms);                       // 0 disables; default 30 s
-  QString autosavePath() const;                           // "<file>.autosave" or per-untitled file in AppDataLocation
-  void writeAutosave();                                   // atomic; no-op when clean
+  void load(const QString& path);       // throws ProjectError; clears undo history
+  void save(const QString& path = {});  // atomic (QSaveFile); throws ProjectError
+  void setAutosaveInterval(int ms);     // 0 disables; default 30 s
+  QString autosavePath() const;         // "<file>.autosave" or per-untitled file in AppDataLocation
+  // Atomic; no-op when clean. On failure the previous autosave stays, autosaveFailed is emitted and
+  // the message (naming the file and the cause) returned; "" otherwise. The next interval retries.
+  QString writeAutosave();
   static QString recoveryCandidate(const QString& path);  // autosave newer than `path`, else ""
 
  signals:
@@ -63,6 +65,7 @@ class ProjectDocument : public QObject {
   void pointChanged(const mx::app::PickedPoint& point);
   void dirtyChanged(bool dirty);
   void filePathChanged(const QString& path);
+  void autosaveFailed(const QString& message);
 
  private:
   friend class SnapshotCommand;

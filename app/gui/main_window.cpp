@@ -43,6 +43,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(&doc_, &app::ProjectDocument::changed, this, &MainWindow::onProjectChanged);
   connect(&doc_, &app::ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
   connect(&doc_, &app::ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+  // In the status bar only: a dialog every 30 s would stop the work it is there to protect.
+  connect(&doc_, &app::ProjectDocument::autosaveFailed, this,
+          [this](const QString& message) { statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 30000); });
   resize(1600, 950);
   updateTitle();
   onProjectChanged(app::kAllSections);

@@ -1,13 +1,17 @@
 // Main window (offscreen): save/reopen, autosave recovery after a simulated crash, the untitled
-// autosave's folder, and a bad file that keeps the project.
+// autosave's folder, a bad file that keeps the project, and saves that fail (a read-only folder, the
+// file replaced by a directory) showing the error and keeping the changes.
+#include <QAction>
 #include <QApplication>
 #include <QDir>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "document/project_validation.h"
 #include "main_window.h"
+#include "support/read_only_folder.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -92,6 +96,46 @@ class TestMainWindow : public QObject {
              qPrintable(autosave));
     QVERIFY2(autosave.startsWith(QDir::homePath() + "/"), qPrintable(autosave));
     QVERIFY(QFile::remove(autosave));
+  }
+
+  void failedSavesShowTheErrorAndKeepTheChanges() {
+    QTemporaryDir dir;
+    const QString path = copyToTemp(dir, kRubio);
+    const QByteArray original = [&] {
+      QFile f(path);
+      return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }();
+    gui::MainWindow window;
+    QVERIFY(openQuietly(window, path));
+    app::Project edited = *window.project();
+    edited.machine->spindle_power_W = 999.0;
+    QCOMPARE(window.document()->applyEdit(edited, "power"), QString());
+    QVERIFY(window.isWindowModified());
+    {
+      test::ReadOnlyFolder read_only(dir.path());
+      QVERIFY2(!read_only.writable(), "the folder is still writable: the test would prove nothing");
+      QVERIFY(!window.saveProject());
+    }
+    QString shown = window.statusBar()->currentMessage();
+    QVERIFY2(shown.startsWith("Cannot save project: " + path + ": cannot write project file: "), qPrintable(shown));
+    QVERIFY(window.document()->isDirty() && window.isWindowModified());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), original);
+    file.close();
+
+    QVERIFY(QFile::remove(path) && QDir().mkpath(path));  // the file replaced by a directory
+    QAction* save = nullptr;                              // File > Save, as the user reaches it
+    for (QAction* action : window.findChildren<QAction*>())
+      if (action->shortcut() == QKeySequence(QKeySequence::Save)) save = action;
+    QVERIFY(save);
+    save->trigger();
+    shown = window.statusBar()->currentMessage();
+    QVERIFY2(shown.startsWith("Cannot save project: " + path + ": cannot write project file: ") &&
+                 shown.contains("directory"),
+             qPrintable(shown));
+    QVERIFY(window.document()->isDirty() && window.isWindowModified());
+    QCOMPARE(window.project()->machine->spindle_power_W, 999.0);
   }
 
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
