@@ -346,14 +346,14 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   text->setColor(color);
   extra_markers_.push_back({group, tracer});
   extra_markers_.push_back({group, text});
-  replotOverlay();
+  replotQueued();
 }
 
 void LobeChartView::clearMarkers() {
   // Labels before the tracers they are anchored to: the reverse of the order they were added.
   std::for_each(extra_markers_.rbegin(), extra_markers_.rend(), [this](const auto& m) { plot_->removeItem(m.second); });
   extra_markers_.clear();
-  replotOverlay();
+  replotQueued();
 }
 
 QStringList LobeChartView::markerNames() const {
@@ -368,13 +368,20 @@ void LobeChartView::clearMarkers(const QString& group) {
     if (m.first == group) plot_->removeItem(m.second);
   });
   extra_markers_.removeIf([&group](const auto& marker) { return marker.first == group; });
-  replotOverlay();
+  replotQueued();
 }
 
 void LobeChartView::replotOverlay() {
   // Markers live on the buffered overlay layer: only that layer repaints while dragging.
   if (QCPLayer* overlay = plot_->layer("overlay")) overlay->replot();
   plot_->update();
+}
+
+// An item added to or removed from a layer invalidates its buffer, and the layer's own replot then
+// replots the whole chart at once: the markers of one change (q* and q** after a weight step) share one
+// replot when the event loop turns.
+void LobeChartView::replotQueued() {
+  plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 QPoint LobeChartView::pixelFor(double speed_rpm, double depth_mm) const {

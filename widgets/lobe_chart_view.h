@@ -99,6 +99,7 @@ class LobeChartView : public QWidget {
   void movePointTo(double speed_rpm, double depth_mm, bool snap_speed, bool snap_depth);
   void updateRegions();
   void replotOverlay();
+  void replotQueued();
 
   QCustomPlot* plot_;
   CostMapLayer* costs_;

@@ -1,6 +1,8 @@
 // The lobe chart's markers: each group (the expert's q* and q**, the Pareto choice) is cleared and
-// redrawn on its own; clearing every group empties the chart; a change of length unit keeps them. The
-// model title above the plot.
+// redrawn on its own; clearing every group empties the chart; a change of length unit keeps them, and
+// the markers of one change share one queued replot. The model title above the plot.
+#include <qcustomplot.h>
+
 #include <QImage>
 #include <QSignalSpy>
 #include <QStringList>
@@ -61,6 +63,29 @@ class TestLobeChartView : public QObject {
     const bool horizontal = key == Qt::Key_Right || key == Qt::Key_Left;
     QCOMPARE_LE(std::abs(released.back()[0].toDouble() - (speed_rpm + (horizontal ? sign * 1000.0 : 0.0))), 1e-9);
     QCOMPARE_LE(std::abs(released.back()[1].toDouble() - (depth_mm + (horizontal ? 0.0 : sign * 0.05))), 1e-9);
+  }
+
+  // A weight step clears and redraws q* and q**: one full replot when the event loop turns, none while
+  // the markers change (each used to replot the whole chart at once, and a quick wheel over a weight
+  // held the window for 0.4 s).
+  void markerChangesShareOneQueuedReplot() {
+    LobeChartView chart;
+    chart.resize(800, 500);
+    chart.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    chart.setMarker("q*", 9000.0, 2.0, Qt::blue, "expert");
+    QTest::qWait(50);  // the replots queued so far
+    auto* plot = qobject_cast<QCustomPlot*>(chart.plotWidget());
+    QVERIFY(plot);
+    QSignalSpy replots(plot, &QCustomPlot::afterReplot);
+    chart.clearMarkers("expert");
+    chart.setMarker("q*", 9100.0, 2.0, Qt::blue, "expert");
+    chart.setMarker("q**", 9500.0, 2.5, Qt::magenta, "expert");
+    chart.clearMarkers("pareto");
+    QCOMPARE(replots.count(), 0);
+    QTRY_COMPARE(replots.count(), 1);
+    QTest::qWait(50);
+    QCOMPARE(replots.count(), 1);
   }
 
   void markersSurviveAUnitChange() {
