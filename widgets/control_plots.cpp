@@ -159,6 +159,7 @@ void ControlPlots::rebuildThetaGraphs(const QStringList& names) {
   if (current == names) return;
   for (QCPGraph* g : std::as_const(theta_graphs_)) {
     graphs_.remove(graphs_.key(g));
+    g->removeFromLegend(legends_[3]);  // the plot removes it from its default legend only
     plot_->removeGraph(g);
   }
   theta_graphs_.clear();

@@ -212,6 +212,19 @@ class TestControlView : public QObject {
     QCOMPARE(responses.graphPointCount("theta a1"), -1);
   }
 
+  // beta = 0 estimates four parameters and beta != 0 five: the estimates' legend follows, with no entry
+  // left of a removed graph (such an entry outlived its graph and crashed the next layout).
+  void thetaLegendFollowsTheEstimates() {
+    ControlPlots plots;
+    plots.resize(800, 600);
+    plots.setTraces(syntheticTraces(30, 2, 4));
+    plots.setTraces(syntheticTraces(30, 2, 5));
+    QCOMPARE(plots.legendNames(3), QStringList({"a1", "a2", "b0", "b1", "b2"}));
+    plots.setTraces(syntheticTraces(30, 2, 4));
+    QCOMPARE(plots.legendNames(3), QStringList({"a1", "a2", "b0", "b1"}));
+    QVERIFY(!plots.grab().isNull());  // lays the legends out
+  }
+
   // Pareto paper, Fig. 6: the changes of programmed point as vertical lines in the feed row, named in its legend,
   // up to the largest sampled feed; no entry without changes.
   void programmeChangesAreMarkedInTheFeedRow() {
