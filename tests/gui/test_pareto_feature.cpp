@@ -207,6 +207,21 @@ class TestParetoFeature : public QObject {
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().front().source, QString("feedback"));
   }
 
+  // A point on the speed axis (a drag below it stops at b = 0) has no Pareto objectives: the
+  // monitoring dock shows none, where their robustness threw out of the event loop and ended the program.
+  void pointWithoutDepthHasNoObjectives() {
+    gui::MainWindow window;
+    QVERIFY(openCase(window));
+    test::contextOf(window)->setActiveTool(test::paretoOf(window)->runner()->study()->request().tool);
+    widgets::MonitoringPanel* m = test::windowPart<widgets::MonitoringPanel>(window);
+    QVERIFY(m->valueText("ros") != QString::fromUtf8("\u2013"));
+    app::PickedPoint pt = window.document()->point();
+    pt.depth_mm = 0.0;
+    window.document()->setPoint(pt);
+    QTest::qWait(100);
+    QCOMPARE(m->valueText("ros"), QString::fromUtf8("\u2013"));
+  }
+
   void monitoringShowsSimulationSignals() {
     gui::MainWindow window;
     QVERIFY(openCase(window));
