@@ -74,8 +74,10 @@ bool splitCsvLine(const QString& line, QStringList& cells) {
   return !quoted;
 }
 
+// Quoted when a bare cell would read back differently: a separator, a quote, outer spaces, or a '#'
+// first, which would make the row a comment.
 QString quoteCsv(const QString& text) {
-  if (!text.contains(',') && !text.contains('"') && text.trimmed() == text) return text;
+  if (!text.contains(',') && !text.contains('"') && text.trimmed() == text && !text.startsWith('#')) return text;
   return '"' + QString(text).replace("\"", "\"\"") + '"';
 }
 
@@ -119,7 +121,7 @@ class CsvReader {
                       .arg(width_));
     }
     const QString id = cell(kId);
-    if (id.isEmpty()) return bad(kId, "must be a non-empty tool id");
+    if (id.trimmed().isEmpty()) return bad(kId, "must be a non-empty tool id");  // a quoted " " too, as in a project
     const bool continuation = !out.tools.empty() && out.tools.back().id == id;
     if (!continuation) {
       if (firstLine_.contains(id))
@@ -333,6 +335,7 @@ QByteArray ToolLibraryCsv::toJson(const std::vector<app::ToolSpec>& tools) {
   app::Project p;
   p.name = "Tool library";
   p.tools = tools;
+  p.document.insert("tools", QJsonArray());  // written even when empty: fromJson requires the key
   return app::formatProjectJson(app::projectToJson(p));
 }
 

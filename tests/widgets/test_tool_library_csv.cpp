@@ -95,6 +95,19 @@ class TestToolLibraryCsv : public QObject {
     QCOMPARE(*back.tools.back().max_force_N, 250.5);
   }
 
+  // An id that starts with '#' is quoted on export: a bare one would turn its rows into comments.
+  void hashIdSurvivesTheExport() {
+    const auto file = ToolLibraryCsv::fromCsv(kHeader + "\"#7 rough\",2,16,30,,,,x,720,2.5,4.2\n");
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    QCOMPARE(file.tools.at(0).id, QString("#7 rough"));
+    const QByteArray csv = ToolLibraryCsv::toCsv(file.tools);
+    QVERIFY(csv.contains("\n\"#7 rough\",2,16,30,"));
+    const auto back = ToolLibraryCsv::fromCsv(csv);
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(back.tools.size(), std::size_t(1));
+    QCOMPARE(back.tools.at(0).id, QString("#7 rough"));
+  }
+
   // max_force_N is an optional column: a header without it (kHeader) reads as before, one with it gives
   // the tool's F_allow; blank is no limit.
   void maxForceColumnIsOptional() {
@@ -204,6 +217,8 @@ class TestToolLibraryCsv : public QObject {
         << true << "line 3, column 2 (teeth): '3' differs from the tool's first row (line 2";
     QTest::newRow("missing id") << kHeader + good + ",2,10,0,,,,x,1000,2,10\n"
                                 << true << "line 3, column 1 (tool_id): '' must be a non-empty tool id";
+    QTest::newRow("blank quoted id") << kHeader + good + "\" \",2,10,0,,,,x,1000,2,10\n"
+                                     << true << "line 3, column 1 (tool_id): ' ' must be a non-empty tool id";
     const QByteArray geometry = kGeometryHeader;
     QTest::newRow("pitch wrong length")
         << geometry + "A,2,10,0,90;90;180,,,,,x,1000,2,10\n"
@@ -286,6 +301,15 @@ class TestToolLibraryCsv : public QObject {
     QCOMPARE(editor.importJson(path, true), QString());
     QCOMPARE(spy.count(), 1);
     QCOMPARE(toolsJson(spy.at(0).at(0).value<Project>().tools), toolsJson(p.tools));
+  }
+
+  // An empty library exports a "tools" array, so that it imports again (as an empty library).
+  void emptyLibraryJsonRoundTrip() {
+    const QByteArray json = ToolLibraryCsv::toJson({});
+    QVERIFY(json.contains("\"tools\": []"));
+    const auto back = ToolLibraryCsv::fromJson(json);
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QVERIFY(back.tools.empty());
   }
 
   void badJsonNamesTheFieldPath_data() {
