@@ -7,6 +7,7 @@
 #include "cli/cli_support.h"
 #include "core/invalid_input.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -27,10 +28,23 @@ const char* kUsage =
     "  override  optimise a G-code program: override PROGRAM.nc PROJECT --out OUT.nc [--csv FILE]\n"
     "  supervise supervisory control of face milling (--controller none|smc1|smc2 [--csv FILE])\n"
     "  control   adaptive force control under beta-FROH (--beta B [--csv FILE] | --sweep-beta FROM:TO:STEP)\n"
-    "Run 'millexpert-cli <command> --help' for the options of a command.\n";
+    "  frf-info  the FRF datasets of a tap-test file: frf-info FILE [--quantity Q]\n"
+    "  frf-fit   modes fitted to one FRF of a tap-test file: frf-fit FILE [--modes N] [--method lscf|peak]\n"
+    "  frf-export  a tool's FRF as UFF 58/58b or CSV (--tool ID --output FILE)\n"
+    "An output (--csv, --out, --output, --db) is never an input of the command, another output, or an\n"
+    "existing file that is not a regular file (device, FIFO, directory, socket): exit 2 before any work.\n"
+    "Run 'millexpert-cli <command> --help' or 'millexpert-cli help <command>' for the options of a command.\n";
 
 void printError(const QString& message) {
   QTextStream(stderr) << "millexpert-cli: " << message << Qt::endl;
+}
+
+// QCommandLineParser names the executable in its usage line; the command belongs there too.
+QString commandUsage(const QString& command, const QString& help) {
+  const qsizetype options = help.indexOf(" [options]");
+  const qsizetype eol = help.indexOf('\n');
+  if (!help.startsWith("Usage: ") || options < 0 || options > eol) return help;
+  return "Usage: millexpert-cli " + command + help.mid(options);
 }
 }  // namespace
 
@@ -43,13 +57,23 @@ int runCli(const QStringList& arguments) {
     QTextStream(stdout) << "millexpert-cli " << MX_APP_VERSION << Qt::endl;
     return kExitOk;
   }
-  const QString& command = arguments.at(1);
+  const bool help = arguments.at(1) == "help";  // "help COMMAND" is "COMMAND --help"
+  if (help && arguments.size() < 3) {
+    QTextStream(stdout) << kUsage;
+    return kExitOk;
+  }
+  const QString command = arguments.at(help ? 2 : 1);
   QStringList rest = arguments;
   rest.removeAt(1);  // keep argv[0] for QCommandLineParser
+  if (help) rest = QStringList{arguments.at(0), QStringLiteral("--help")};
   try {
     const CliCommand* handler = findCommand(command);
-    if (handler == nullptr) throw CliError(QString("unknown command '%1'\n%2").arg(command, kUsage), kExitBadInput);
+    if (handler == nullptr)
+      throw CliError(QString("unknown command %1\n%2").arg(quoted(command), kUsage), kExitBadInput);
     return handler->run(rest);
+  } catch (const CliHelp& e) {
+    QTextStream(stdout) << commandUsage(command, QString::fromStdString(e.what()));
+    return kExitOk;
   } catch (const CliError& e) {
     printError(QString::fromStdString(e.what()));
     return e.code;

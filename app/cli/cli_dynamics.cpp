@@ -3,6 +3,7 @@
 #include <QTextStream>
 
 #include "cli/cli_support.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -31,7 +32,7 @@ void reportDynamicsNote(const DynamicsChoice& choice, const QString& tool_id) {
 const ToolSpec& requireTool(const Project& project, const QString& tool_id) {
   if (const ToolSpec* tool = project.findTool(tool_id)) return *tool;
   project.setupFor(tool_id);  // throws "tool 'X' not found", naming the known ids
-  throw ProjectError(QString("tool '%1' not found").arg(tool_id));
+  throw ProjectError(QString("tool %1 not found").arg(quoted(tool_id)));
 }
 
 }  // namespace mx::app

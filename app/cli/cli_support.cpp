@@ -3,10 +3,14 @@
 #include <QJsonDocument>
 #include <QSaveFile>
 #include <QTextStream>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 
 #include "cli/cli_application.h"
+#include "document/output_file.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "services/expert_request.h"
 
 namespace mx::app {
@@ -17,9 +21,10 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
   bool ok = false;
   const double value = text.toDouble(&ok);
   if (!ok || !std::isfinite(value))
-    throw CliError(QString("--%1 = '%2': not a finite number").arg(name, text), kExitBadInput);
+    throw CliError(QString("--%1 = %2: not a finite number").arg(name, quoted(text)), kExitBadInput);
   if (value < min || value > max)
-    throw CliError(QString("--%1 = %2: must be in [%3, %4]").arg(name, text).arg(min).arg(max), kExitBadInput);
+    throw CliError(QString("--%1 = %2: must be in [%3, %4]").arg(name, shortened(text)).arg(min).arg(max),
+                   kExitBadInput);
   return value;
 }
 
@@ -28,9 +33,9 @@ std::optional<int> integerOption(const QCommandLineParser& parser, const QString
   const QString text = parser.value(name);
   bool ok = false;
   const int value = text.toInt(&ok);
-  if (!ok) throw CliError(QString("--%1 = '%2': not an integer").arg(name, text), kExitBadInput);
+  if (!ok) throw CliError(QString("--%1 = %2: not an integer").arg(name, quoted(text)), kExitBadInput);
   if (value < min || value > max)
-    throw CliError(QString("--%1 = %2: must be an integer in [%3, %4]").arg(name, text).arg(min).arg(max),
+    throw CliError(QString("--%1 = %2: must be an integer in [%3, %4]").arg(name, shortened(text)).arg(min).arg(max),
                    kExitBadInput);
   return value;
 }
@@ -40,20 +45,28 @@ QString requiredOption(const QCommandLineParser& parser, const QString& name) {
   return parser.value(name);
 }
 
-QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments) {
-  parser.addPositionalArgument("project", "The .mxproj project file.");
-  if (!parser.parse(arguments)) throw CliError(parser.errorText(), kExitBadInput);
+void parseArguments(QCommandLineParser& parser, const QStringList& arguments) {
+  const bool parsed = parser.parse(arguments);
+  const bool help = arguments.contains("--help") || arguments.contains("-h") || arguments.contains("-?");
+  if (help) throw CliHelp(parser.helpText());
+  if (!parsed) throw CliError(parser.errorText(), kExitBadInput);
+}
+
+QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments, const QString& name,
+                        const QString& description) {
+  parser.addPositionalArgument(name, description);
+  parseArguments(parser, arguments);
   const QStringList positional = parser.positionalArguments();
   if (positional.size() != 1)
-    throw CliError(QString("expected exactly one PROJECT argument, got %1").arg(positional.size()), kExitBadInput);
+    throw CliError(QString("expected exactly one %1 argument, got %2").arg(name).arg(positional.size()), kExitBadInput);
   return positional.front();
 }
 
 QList<QCommandLineOption> cutPointOptions() {
-  return {{"tool", "Tool id.", "ID"},
-          {"speed", "Spindle speed [rpm].", "RPM"},
-          {"depth", "Axial depth of cut [mm].", "MM"},
-          {"feed", "Feed per tooth [mm/tooth].", "MM_PER_TOOTH"}};
+  return {{"tool", "Tool id (required).", "ID"},
+          {"speed", "Spindle speed [rpm], 1..1e5 (required).", "RPM"},
+          {"depth", "Axial depth of cut [mm], 0..1000 (required).", "MM"},
+          {"feed", "Feed per tooth [mm/tooth], 1e-6..10 (required).", "MM_PER_TOOTH"}};
 }
 
 CutPointFlags readCutPoint(const QCommandLineParser& parser) {
@@ -92,14 +105,24 @@ void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& setting
 }
 
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write) {
+  if (const QString problem = outputFileProblem(path); !problem.isEmpty())
+    throw CliError(QString("%1 = %2: %3").arg(flag, quoted(path), problem), kExitBadInput);
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-    throw CliError(QString("%1 = '%2': cannot write (%3)").arg(flag, path, file.errorString()), kExitBadInput);
+    throw CliError(QString("%1 = %2: cannot write (%3)").arg(flag, quoted(path), file.errorString()), kExitBadInput);
   QTextStream out(&file);
   out.setRealNumberPrecision(10);
   write(out);
   out.flush();
-  if (!file.commit()) throw CliError(QString("%1 = '%2': write failed").arg(flag, path), kExitComputationFailed);
+  errno = 0;
+  if (!file.flush()) {  // before commit(), which would rename a torn file into place (QSaveFile buffers)
+    const QString reason = errno != 0 ? QString::fromLocal8Bit(std::strerror(errno)) : file.errorString();
+    file.cancelWriting();
+    throw CliError(QString("%1 = %2: write failed (%3)").arg(flag, quoted(path), reason), kExitComputationFailed);
+  }
+  if (!file.commit())
+    throw CliError(QString("%1 = %2: write failed (%3)").arg(flag, quoted(path), file.errorString()),
+                   kExitComputationFailed);
 }
 
 }  // namespace mx::app

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "expert/expert_settings.h"
+#include "services/exit_code.h"
 #include "services/json_output.h"
 
 namespace mx::app {
@@ -22,6 +23,12 @@ class CliError : public std::runtime_error {
   int code;
 };
 
+// `millexpert-cli COMMAND --help`: the command's usage, printed on stdout with exit 0.
+class CliHelp : public CliError {
+ public:
+  explicit CliHelp(const QString& usage) : CliError(usage, kExitOk) {}
+};
+
 // Reads --name as a finite number in [min, max]; nullopt when absent. Throws CliError(2) naming
 // the flag, the value and the range otherwise.
 std::optional<double> numberOption(const QCommandLineParser& parser, const QString& name,
@@ -30,8 +37,12 @@ std::optional<double> numberOption(const QCommandLineParser& parser, const QStri
 std::optional<int> integerOption(const QCommandLineParser& parser, const QString& name, int min, int max);
 QString requiredOption(const QCommandLineParser& parser, const QString& name);
 
-// Parses the subcommand's arguments; throws CliError(2) on unknown flags or a missing PROJECT.
-QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments);
+// Parses the arguments: throws CliHelp for --help (whatever else is given), CliError(2) on unknown flags.
+void parseArguments(QCommandLineParser& parser, const QStringList& arguments);
+// parseArguments with one positional argument (the project, or `name` described by `description`),
+// returned; CliError(2) unless there is exactly one.
+QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments, const QString& name = "PROJECT",
+                        const QString& description = "The .mxproj project file (at most 64 MB).");
 
 // The operating point flags shared by simulate and point: --tool, --speed [rpm], --depth [mm],
 // --feed [mm/tooth], all required and range-checked.
@@ -56,7 +67,8 @@ void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& setting
 void printJson(const QJsonObject& object);
 
 // Writes `lines` (CSV or other text) atomically to `path` (QSaveFile); `flag` names the option in
-// errors: cannot open -> CliError(2), write failed -> CliError(1).
+// errors: not a regular file or a new one (outputFileProblem), cannot open -> CliError(2), write
+// failed -> CliError(1). The commands check their outputs before they compute (output_paths.h).
 void writeTextFileAtomically(const QString& flag, const QString& path, const std::function<void(QTextStream&)>& write);
 
 }  // namespace mx::app

@@ -23,8 +23,10 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
 #include "cli/control_programme_json.h"
+#include "cli/output_paths.h"
 #include "control/beta_sweep.h"
 #include "core/invalid_input.h"
+#include "document/shortened_text.h"
 #include "services/control_request.h"
 
 namespace mx::app {
@@ -52,9 +54,9 @@ BetaSweepSettings parseSweep(const QString& text) {
   }
   if (!ok[0] || !ok[1] || !ok[2] || !(s.from >= -1.0 && s.from <= s.to && s.to <= 1.0 && s.step > 0.0) ||
       (s.to - s.from) / s.step > kMaxBetaSweepSteps)
-    throw CliError(QString("--sweep-beta = '%1': expected FROM:TO:STEP with -1 <= FROM <= TO <= 1, STEP > 0 and at "
+    throw CliError(QString("--sweep-beta = %1: expected FROM:TO:STEP with -1 <= FROM <= TO <= 1, STEP > 0 and at "
                            "most %2 steps (each a closed-loop run)")
-                       .arg(text)
+                       .arg(quoted(text))
                        .arg(kMaxBetaSweepSteps),
                    kExitBadInput);
   return s;
@@ -103,14 +105,15 @@ int runControlCommand(const QStringList& arguments) {
   const std::optional<double> beta = numberOption(parser, "beta", -1.0, 1.0);
   std::optional<BetaSweepSettings> sweep;
   if (parser.isSet("sweep-beta")) sweep = parseSweep(parser.value("sweep-beta"));
-  const Project project = loadProject(path);
+  const Project project =
+      OutputPaths().outputOption(parser, "csv").outputOption(parser, "csv-continuous").loadProject(path);
   ControlRequest request = controlRequestFromProject(project);
   AdaptiveControlSettings& s = request.settings;
   if (beta) s.beta = *beta;
   if (parser.isSet("sample-period")) {
     const QString rule = parser.value("sample-period");
     if (rule != "spindle" && rule != "rule4")
-      throw CliError(QString("--sample-period = '%1': must be one of spindle, rule4").arg(rule), kExitBadInput);
+      throw CliError(QString("--sample-period = %1: must be one of spindle, rule4").arg(quoted(rule)), kExitBadInput);
     s.sample_period = rule == "rule4" ? SamplePeriodRule::Rule4 : SamplePeriodRule::Spindle;
   }
   if (const std::optional<int> k = integerOption(parser, "rule4-periods", 1, 100)) s.rule4_periods = *k;

@@ -14,11 +14,14 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "document/shortened_text.h"
 #include "services/frf_import.h"
 
 namespace mx::app {
 
 namespace {
+
+const char* kFileDescription = "The tap-test file: universal file 58/58b or CSV (at most 64 MB).";
 
 QString name(std::string_view text) {
   return QString::fromLatin1(text.data(), static_cast<qsizetype>(text.size()));
@@ -50,7 +53,7 @@ ModalFitSettings::Method readMethod(const QCommandLineParser& parser) {
   const QString method = parser.value("method");
   if (method.isEmpty() || method == "lscf") return ModalFitSettings::Method::Lscf;
   if (method == "peak") return ModalFitSettings::Method::Peak;
-  throw CliError(QString("--method = \"%1\": must be lscf or peak").arg(method), kExitBadInput);
+  throw CliError(QString("--method = %1: must be lscf or peak").arg(quoted(method, u'"')), kExitBadInput);
 }
 
 }  // namespace
@@ -60,7 +63,7 @@ int runFrfInfoCommand(const QStringList& arguments) {
   parser.setApplicationDescription("The FRF datasets of a tap-test file (universal file 58/58b or CSV).");
   parser.addHelpOption();
   parser.addOption(quantityOption());
-  const QString path = parseSubcommand(parser, arguments);
+  const QString path = parseSubcommand(parser, arguments, "FILE", kFileDescription);
   const FrfFile file = loadFrfFile(path, readQuantity(parser));
   QJsonArray datasets;
   for (std::size_t i = 0; i < file.datasets.size(); ++i)
@@ -84,7 +87,7 @@ int runFrfFitCommand(const QStringList& arguments) {
       {"modes", "Number of modes to keep, 1..40 (default: chosen from the stabilisation diagram).", "N"},
       {"method", "lscf (default) or peak (half-power peak picking).", "M"},
   });
-  const QString path = parseSubcommand(parser, arguments);
+  const QString path = parseSubcommand(parser, arguments, "FILE", kFileDescription);
   const std::optional<int> dataset = integerOption(parser, "dataset", 0, 1000000);
   const std::optional<double> from_hz = numberOption(parser, "from", 0.0, 1e7);
   const std::optional<double> to_hz = numberOption(parser, "to", 0.0, 1e7);

@@ -15,7 +15,9 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "frf/modal_frf.h"
 #include "frf/receptance_conversion.h"
 #include "services/frf_export.h"
@@ -48,11 +50,11 @@ ExportRequest readRequest(const QCommandLineParser& parser) {
   } else if (axis == "x" || axis == "y") {
     r.axes = {frfAxisFromName("--axis", axis)};
   } else {
-    throw CliError(QString("--axis = \"%1\": must be x, y or xy").arg(axis), kExitBadInput);
+    throw CliError(QString("--axis = %1: must be x, y or xy").arg(quoted(axis, u'"')), kExitBadInput);
   }
   const QString source = parser.value("source");
   if (source != "modes" && source != "measured")
-    throw CliError(QString("--source = \"%1\": must be modes or measured").arg(source), kExitBadInput);
+    throw CliError(QString("--source = %1: must be modes or measured").arg(quoted(source, u'"')), kExitBadInput);
   r.measured = source == "measured";
   r.format = frfFormatFromName("--format", parser.value("format"));
   r.quantity = frfQuantityFromName("--quantity", parser.value("quantity"));
@@ -90,16 +92,16 @@ Receptance axisReceptance(const ExportRequest& r, const Project& project, const 
     const std::optional<FrfRefSpec>& ref = axis == FrfDirection::X ? tool.frf_x : tool.frf_y;
     if (!ref)
       throw InputError(
-          QString("tool '%1': %2 is not given: --source measured needs a tap-test FRF").arg(tool.id, field));
+          QString("tool %1: %2 is not given: --source measured needs a tap-test FRF").arg(quoted(tool.id), field));
     MeasuredAxis m = loadMeasuredAxis(project, tool, field, *ref);
     return {axis, axis, std::move(m.frequency_hz), std::move(m.h_m_per_n)};
   }
   const MillingSetup setup = project.setupFor(tool.id);
   const ModalAxis& modes = axis == FrfDirection::X ? setup.modes_x : setup.modes_y;
   if (modes.empty())
-    throw InputError(QString("tool '%1': modes_%2 is empty: nothing to export from modes (--source measured exports "
+    throw InputError(QString("tool %1: modes_%2 is empty: nothing to export from modes (--source measured exports "
                              "the tap-test FRF)")
-                         .arg(tool.id, axisName(axis)));
+                         .arg(quoted(tool.id), axisName(axis)));
   const FrfDataset d = modalFrfDataset(modes, FrfQuantity::Receptance, exportGrid(r, modes), axis, {});
   return {axis, axis, d.frequency_hz, d.values};
 }
@@ -133,7 +135,7 @@ int runFrfExportCommand(const QStringList& arguments) {
   });
   const QString path = parseSubcommand(parser, arguments);
   const ExportRequest request = readRequest(parser);
-  const Project project = loadProject(path);
+  const Project project = OutputPaths().output("--output", request.output).loadProject(path);
   const ToolSpec* tool = &requireTool(project, request.tool);
   std::vector<FrfDataset> datasets;
   QJsonArray written;

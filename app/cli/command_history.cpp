@@ -15,7 +15,9 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "services/learning_database.h"
 
 namespace mx::app {
@@ -37,7 +39,7 @@ LearningRecord recordFromJson(const QString& text, const Project& project) {
   LearningRecord r;
   const ToolSpec* tool = project.findTool(o.value("tool").toString());
   if (tool == nullptr)
-    throw CliError(QString("--add-json: tool '%1' not found in the project").arg(o.value("tool").toString()),
+    throw CliError(QString("--add-json: tool %1 not found in the project").arg(quoted(o.value("tool").toString())),
                    kExitBadInput);
   if (!project.material) throw CliError("--add-json: the project has no material section", kExitBadInput);
   const MachineSpec& machine = project.requireMachine();
@@ -80,7 +82,9 @@ int runHistoryCommand(const QStringList& arguments) {
   });
   const QString projectPath = parseSubcommand(parser, arguments);
   const int limit = integerOption(parser, "limit", 1, 1000000).value_or(100);
-  const Project project = loadProject(projectPath);
+  OutputPaths files;  // the database is written only with --add-json
+  if (parser.isSet("add-json")) files.outputOption(parser, "db");
+  const Project project = files.loadProject(projectPath);
   const bool add = parser.isSet("add-json");
   const std::optional<LearningRecord> record =
       add ? std::optional<LearningRecord>(recordFromJson(parser.value("add-json"), project)) : std::nullopt;

@@ -15,6 +15,7 @@
 #include "cli/cli_support.h"
 #include "document/lobe_inputs.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "services/cutter_json.h"
 #include "stability/lobe_computation.h"
 
@@ -67,7 +68,7 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
   r.tool = requiredOption(parser, "tool");
   r.method = parser.value("method");
   if (r.method != "zoa" && r.method != "sdm")
-    throw CliError(QString("--method = '%1': must be zoa or sdm").arg(r.method), kExitBadInput);
+    throw CliError(QString("--method = %1: must be zoa or sdm").arg(quoted(r.method)), kExitBadInput);
   const LobeInputs inputs = lobeInputsFrom(project, gridStepRpm(project, 100.0));
   const double from = numberOption(parser, "from", 1e-3, 1e5).value_or(inputs.from_rpm);
   const double to = numberOption(parser, "to", 1e-3, 1e5).value_or(inputs.to_rpm);

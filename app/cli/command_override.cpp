@@ -16,6 +16,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "core/invalid_input.h"
 #include "gcode/gcode_reader.h"
 #include "services/part_program_request.h"
@@ -26,22 +27,26 @@ int runOverrideCommand(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Optimise the feeds of a G-code part program with a force controller.");
   parser.addHelpOption();
-  parser.addPositionalArgument("program", "The G-code part program (.nc).");
-  parser.addPositionalArgument("project", "The .mxproj project file.");
+  parser.addPositionalArgument("PROGRAM", "The G-code part program (.nc, at most 16 MB).");
+  parser.addPositionalArgument("PROJECT", "The .mxproj project file.");
   parser.addOptions({
       {"out", "Write the optimised program to FILE (required).", "FILE"},
       {"csv", "Write the per-block feed-override table to FILE.", "FILE"},
       {"controller", "adaptive or model-based (default: the project's part_program.controller).", "NAME"},
       {"speed", "Spindle speed [rpm] of the expert system: every S word becomes it.", "RPM"},
   });
-  if (!parser.parse(arguments)) throw CliError(parser.errorText(), kExitBadInput);
+  parseArguments(parser, arguments);
   const QStringList positional = parser.positionalArguments();
   if (positional.size() != 2)
     throw CliError(QString("expected PROGRAM.nc and PROJECT, got %1 argument(s)").arg(positional.size()),
                    kExitBadInput);
   const QString out_path = requiredOption(parser, "out");
   const std::optional<double> speed = numberOption(parser, "speed", 1e-3, 1e5);
-  const Project project = loadProject(positional[1]);
+  const Project project = OutputPaths()
+                              .input("PROGRAM", positional[0])
+                              .output("--out", out_path)
+                              .outputOption(parser, "csv")
+                              .loadProject(positional[1]);
   const OverrideRequest request = overrideRequestFromProject(project, parser.value("controller"), speed);
 
   GcodeProgram program;

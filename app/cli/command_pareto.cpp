@@ -48,6 +48,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "document/project.h"
 #include "expert/admissible_grid.h"
 #include "pareto/objective_table.h"
@@ -137,7 +138,7 @@ int runParetoCommand(const QStringList& arguments) {
     paretoNormalisationFromName(parser.value("normalisation"), "--normalisation");  // checks the name
 
   const std::optional<DynamicsSource> dynamics = dynamicsOption(parser);
-  Project project = loadProject(path);
+  Project project = OutputPaths().outputOption(parser, "db").loadProject(path);
   if (parser.isSet("normalisation") && project.pareto) project.pareto->normalisation = parser.value("normalisation");
   const ParetoStudy study(std::move(project), dynamics);
   reportDynamicsNote(study.dynamics(), study.request().tool);

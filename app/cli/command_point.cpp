@@ -15,6 +15,7 @@
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "model/cutting_force.h"
 #include "services/cutter_json.h"
 #include "stability/lobe_computation.h"
@@ -78,7 +79,7 @@ int runPointCommand(const QStringList& arguments) {
   const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   const QString method = parser.value("method");
   if (method != "zoa" && method != "sdm")
-    throw CliError(QString("--method = '%1': must be zoa or sdm").arg(method), kExitBadInput);
+    throw CliError(QString("--method = %1: must be zoa or sdm").arg(quoted(method)), kExitBadInput);
 
   const std::optional<DynamicsSource> requested = dynamicsOption(parser);
   const Project project = loadProject(path);

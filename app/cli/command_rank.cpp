@@ -33,6 +33,7 @@
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
+#include "document/shortened_text.h"
 #include "expert/expert_session.h"
 #include "model/cutting_force.h"
 #include "services/expert_request.h"
@@ -78,8 +79,9 @@ std::vector<ChatterReportSpec> commandLineReports(const QCommandLineParser& pars
       throw CliError("--chatter-at: no tool has an admissible point to report it on", kExitComputationFailed);
     tool = request.tool_ids[static_cast<qsizetype>(r.selected().tool)];
   } else if (!request.tool_ids.contains(tool)) {
-    throw CliError(QString("--chatter-tool = '%1': must be one of %2").arg(tool, request.tool_ids.join(", ")),
-                   kExitBadInput);
+    throw CliError(
+        QString("--chatter-tool = %1: must be one of %2").arg(quoted(tool), shortened(request.tool_ids.join(", "))),
+        kExitBadInput);
   }
   std::vector<ChatterReportSpec> out;
   for (const QString& t : texts) out.push_back(parseChatterAt(t, tool));

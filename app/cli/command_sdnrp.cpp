@@ -8,6 +8,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "core/invalid_input.h"
 #include "services/sdnrp_request.h"
 
@@ -42,7 +43,7 @@ int runSdnrpCommand(const QStringList& arguments) {
   const std::optional<double> ra = numberOption(parser, "ra", 0.25, 2.5);
   const std::optional<double> seconds = numberOption(parser, "seconds", 0.1, 600.0);
   const std::optional<int> seed = integerOption(parser, "seed", 0, 2147483647);
-  const Project project = loadProject(path);
+  const Project project = OutputPaths().outputOption(parser, "csv").loadProject(path);
   SdnrpSettings s = sdnrpSettingsFromProject(project);
   if (ra) s.ra_desired_m = *ra * 1e-6;
   if (seconds) s.duration_s = *seconds;

@@ -13,6 +13,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "document/project.h"
 #include "model/axial_slices.h"
 #include "services/cutter_json.h"
@@ -76,7 +77,7 @@ int runSimulateCommand(const QStringList& arguments) {
   options.regenerative_passes = integerOption(parser, "passes", 1, kMaxRegenerativePasses).value_or(1);
   options.axial_slices = integerOption(parser, "axial-slices", 1, kMaxAxialSlices).value_or(0);
 
-  const Project project = loadProject(path);
+  const Project project = OutputPaths().outputOption(parser, "csv").loadProject(path);
   requireFittedModes(requireTool(project, tool), "the time-domain simulation");
   const MillingSetup setup = project.setupFor(tool);
   const OperatingPoint point{rpmToRevPerS(speed_rpm), depth_mm * 1e-3, feed_mm * 1e-3};

@@ -15,6 +15,7 @@
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
+#include "cli/output_paths.h"
 #include "core/invalid_input.h"
 #include "grafcet/grafcet_interpreter.h"
 #include "services/supervisor_request.h"
@@ -67,7 +68,7 @@ int runSuperviseCommand(const QStringList& arguments) {
       {"marginal-depth", "Print the depth of marginal stability of the process instead (appendix)."},
   });
   const QString path = parseSubcommand(parser, arguments);
-  const Project project = loadProject(path);
+  const Project project = OutputPaths().outputOption(parser, "csv").loadProject(path);
   if (parser.isSet("marginal-depth")) return printMarginalDepth(project);
   const QString controller = requiredOption(parser, "controller");
   const SupervisorRequest request = supervisorRequestFromProject(project, controller);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "document/project_validation.h"
+#include "document/shortened_text.h"
 #include "document/tool_geometry.h"
 
 namespace mx::app {
@@ -26,7 +27,7 @@ ModalAxis toModalAxis(const std::vector<ModeSpec>& modes) {
 
 QString toolIds(const std::vector<ToolSpec>& tools) {
   QStringList ids;
-  for (const ToolSpec& t : tools) ids << t.id;
+  for (const ToolSpec& t : tools) ids << shortened(t.id);
   return ids.isEmpty() ? QString("(none)") : ids.join(", ");
 }
 
@@ -47,24 +48,25 @@ double Project::toolForceLimitN(const ToolSpec& tool) const {
 
 MillingSetup Project::setupFor(const QString& toolId) const {
   const ToolSpec* tool = findTool(toolId);
-  if (tool == nullptr) throw ProjectError(QString("tool '%1' not found; available: %2").arg(toolId, toolIds(tools)));
+  if (tool == nullptr)
+    throw ProjectError(QString("tool %1 not found; available: %2").arg(quoted(toolId), toolIds(tools)));
   if (!operation) {
-    throw ProjectError(QString("section 'operation' is missing (needed by tool '%1' for the milling direction and "
+    throw ProjectError(QString("section 'operation' is missing (needed by tool %1 for the milling direction and "
                                "radial engagement)")
-                           .arg(toolId));
+                           .arg(quoted(toolId)));
   }
   if (!material && (!tool->Kt_N_mm2 || !tool->Kr)) {
     QStringList needed;
     if (!tool->Kt_N_mm2) needed << "Kt_N_mm2";
     if (!tool->Kr) needed << "Kr";
-    throw ProjectError(QString("section 'material' is missing (needed by tool '%1' for %2; or give them on the tool)")
-                           .arg(toolId, needed.join(" and ")));
+    throw ProjectError(QString("section 'material' is missing (needed by tool %1 for %2; or give them on the tool)")
+                           .arg(quoted(toolId), needed.join(" and ")));
   }
   const std::optional<double> radial_depth_mm = radialDepthMm(*this, *tool);
   if (!radial_depth_mm) {
-    throw ProjectError(QString("operation: no radial engagement for tool '%1' (give operation.radial_immersion or "
+    throw ProjectError(QString("operation: no radial engagement for tool %1 (give operation.radial_immersion or "
                                "operation.radial_depth_mm)")
-                           .arg(toolId));
+                           .arg(quoted(toolId)));
   }
 
   MillingSetup s = cutterGeometryOf(*tool);

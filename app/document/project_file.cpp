@@ -1,12 +1,13 @@
 // Project files on disk: loadProject (read, parse, validate) and saveProject (atomic QSaveFile).
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
-#include <QSaveFile>
 #include <algorithm>
 
+#include "core/invalid_input.h"
 #include "document/frf_paths.h"
+#include "document/input_files.h"
 #include "document/json_format.h"
+#include "document/output_file.h"
 #include "document/project.h"
 
 namespace mx::app {
@@ -29,11 +30,13 @@ QString parseErrorMessage(const QString& path, const QByteArray& data, const QJs
 }  // namespace
 
 Project loadProject(const QString& path) {
-  QFile file(path);
-  if (!file.exists()) throw ProjectError(QString("%1: project file not found").arg(path));
-  if (!file.open(QIODevice::ReadOnly))
-    throw ProjectError(QString("%1: cannot open project file: %2").arg(path, file.errorString()));
-  const QByteArray data = file.readAll();
+  if (!QFileInfo::exists(path)) throw ProjectError(QString("%1: project file not found").arg(path));
+  QByteArray data;
+  try {
+    data = readBoundedFile(path, kProjectFileLimit);
+  } catch (const InvalidInput& e) {
+    throw ProjectError(QString("%1: %2").arg(path, QString::fromStdString(e.what())));
+  }
   QJsonParseError error;
   const QJsonDocument document = QJsonDocument::fromJson(data, &error);
   if (error.error != QJsonParseError::NoError) throw ProjectError(parseErrorMessage(path, data, error));
@@ -52,15 +55,8 @@ Project loadProject(const QString& path) {
 void saveProject(const Project& project, const QString& path) {
   const QString folder = QFileInfo(path).absolutePath();
   const QByteArray text = formatProjectJson(projectToJson(withFrfPathsRelativeTo(project, folder)));
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly))
-    throw ProjectError(QString("%1: cannot write project file: %2").arg(path, file.errorString()));
-  if (file.write(text) != text.size()) {
-    const QString reason = file.errorString();
-    file.cancelWriting();
-    throw ProjectError(QString("%1: cannot write project file: %2").arg(path, reason));
-  }
-  if (!file.commit()) throw ProjectError(QString("%1: cannot save project file: %2").arg(path, file.errorString()));
+  if (const QString error = writeFileAtomically(path, text); !error.isEmpty())
+    throw ProjectError(QString("%1: cannot write project file: %2").arg(path, error));
 }
 
 }  // namespace mx::app

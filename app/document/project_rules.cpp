@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "document/project.h"
+#include "document/shortened_text.h"
 
 namespace mx::app {
 
@@ -46,11 +47,23 @@ QString formatNumber(double value) {
   return QString::number(value, 'g', QLocale::FloatingPointShortest);
 }
 
+namespace {
+QString compactJson(const QJsonValue& value) {
+  const QByteArray wrapped = QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact);
+  return QString::fromUtf8(wrapped.mid(1, wrapped.size() - 2));  // strip the [ ]
+}
+}  // namespace
+
 QString formatValue(const QJsonValue& value) {
   if (value.isDouble()) return formatNumber(value.toDouble());
   if (value.isUndefined()) return "undefined";
-  const QByteArray wrapped = QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact);
-  return QString::fromUtf8(wrapped.mid(1, wrapped.size() - 2));  // strip the [ ]
+  const QString text = value.toString();
+  if (value.isString() && text.size() > kMaxEchoedCharacters) {  // "aaaa…" (N characters), still escaped
+    QString head = compactJson(text.left(kMaxEchoedCharacters));
+    head.insert(head.size() - 1, QChar(0x2026));
+    return head + QString(" (%1 characters)").arg(text.size());
+  }
+  return shortened(compactJson(value));
 }
 
 QString jsonTypeName(const QJsonValue& value) {

@@ -68,7 +68,7 @@ inline constexpr NumberRule radialDepth(double diameter_mm) {
 
 // Shortest text that reads back as the same double ("0.1", "150", "inf", "nan").
 QString formatNumber(double value);
-// Compact JSON text of any value ("\"up\"", "[1, 2]", "150").
+// Compact JSON text of any value ("\"up\"", "[1, 2]", "150"), shortened (shortened_text.h).
 QString formatValue(const QJsonValue& value);
 // "null", "boolean", "number", "string", "array", "object".
 QString jsonTypeName(const QJsonValue& value);

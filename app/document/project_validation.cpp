@@ -4,10 +4,13 @@
 #include <QStringList>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 
 #include "document/project_reported_chatter.h"
 #include "document/project_rules.h"
 #include "document/project_sections_io.h"
+#include "document/shortened_text.h"
 #include "document/tool_geometry.h"
 
 namespace mx::app {
@@ -128,7 +131,7 @@ void validateRadialDepths(const std::vector<ToolSpec>& tools, const std::optiona
       checkNumber(tool + ".radial_depth_mm", *t.radial_depth_mm, rules::radialDepth(t.diameter_mm), diameter);
     } else if (operation && operation->radial_depth_mm) {
       checkNumber("operation.radial_depth_mm", *operation->radial_depth_mm, rules::radialDepth(t.diameter_mm),
-                  QString("%1, tool '%2'").arg(diameter, t.id));
+                  QString("%1, tool %2").arg(diameter, quoted(t.id)));
     }
   }
 }
@@ -196,6 +199,26 @@ void validateExpert(const ExpertSpec& e) {
   validateExpertExtras(e);
 }
 
+// Rule 1.1's margin shifts the lobes' poles by -delta: it must stay below every mode's decay rate
+// zeta omega_n, else the margined system has no stable depth at all.
+void validateDeltaAgainstModes(double delta_per_s, const std::vector<ToolSpec>& tools) {
+  for (std::size_t i = 0; i < tools.size(); ++i) {
+    for (const auto& [axis, modes] :
+         {std::pair{"modes_x", &tools[i].modes_x}, std::pair{"modes_y", &tools[i].modes_y}}) {
+      for (std::size_t j = 0; j < modes->size(); ++j) {
+        const ModeSpec& m = (*modes)[j];
+        const double decay = m.damping_pct / 100.0 * 2.0 * std::numbers::pi * m.freq_Hz;
+        if (delta_per_s >= decay)
+          throw ProjectError(
+              QString("expert.delta_per_s = %1: must be in [0, %2) 1/s, below the decay rate zeta "
+                      "omega_n of %3.%4[%5]")
+                  .arg(formatNumber(delta_per_s), formatNumber(decay), indexPath("tools", qsizetype(i)), axis)
+                  .arg(j));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void validateProject(const Project& project) {
@@ -205,6 +228,7 @@ void validateProject(const Project& project) {
   validateTools(project.tools, project.operation);
   if (project.expert) validateExpert(*project.expert);
   if (project.expert && project.expert->grid) validateGridSize(*project.expert->grid, project.operation);
+  if (project.expert) validateDeltaAgainstModes(project.expert->delta_per_s, project.tools);
   if (project.expert) validateReportedChatter(*project.expert, project.tools);
   validateProcessSections(project);
 }

@@ -4,9 +4,9 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <cmath>
 
+#include "document/output_file.h"
 #include "engine_task.h"
 #include "feature_dock.h"
 #include "gcode/gcode_reader.h"
@@ -53,13 +53,10 @@ QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult
   return rows;
 }
 
+// A device, FIFO or directory chosen in the dialog is refused, not replaced (document/output_file.h).
 bool writeAtomically(const QString& path, const QByteArray& bytes, QString* error) {
-  QSaveFile f(path);
-  if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
-    *error = f.errorString();
-    return false;
-  }
-  return true;
+  *error = app::writeFileAtomically(path, bytes);
+  return error->isEmpty();
 }
 
 }  // namespace

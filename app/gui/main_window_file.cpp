@@ -23,6 +23,9 @@ bool MainWindow::openProject(const QString& path) {
         recover = recovery_ == RecoveryPolicy::Recover;
       }
     }
+    // Read first: a file refused (malformed, over 64 MB, a FIFO) leaves the open project, its point and
+    // the views as they are.
+    app::loadProject(recover ? autosave : path);
     replaceProject();
     if (recover) {
       doc_.recover(path);

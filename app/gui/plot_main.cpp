@@ -7,7 +7,6 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -17,18 +16,22 @@
 #include <limits>
 
 #include "control_figures.h"
+#include "core/invalid_input.h"
+#include "document/input_files.h"
 #include "lobe_chart_view.h"
 
 namespace {
 
 bool addCurve(QCustomPlot& plot, const QString& spec, int index, QString& error) {
   const QString path = spec.section('=', 0, 0);
-  QFile file(path);
-  if (!file.open(QIODevice::ReadOnly)) {
-    error = path + ": cannot read";
+  QByteArray bytes;
+  try {
+    bytes = mx::app::readBoundedFile(path, mx::app::kPlotInputFileLimit);
+  } catch (const mx::InvalidInput& e) {
+    error = path + ": " + QString::fromStdString(e.what());
     return false;
   }
-  const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+  const QJsonObject root = QJsonDocument::fromJson(bytes).object();
   const QJsonArray speeds = root.value("speed_rpm").toArray(), depths = root.value("blim_mm").toArray();
   if (speeds.isEmpty() || speeds.size() != depths.size()) {
     error = path + ": not the output of 'millexpert-cli lobes' (speed_rpm / blim_mm)";

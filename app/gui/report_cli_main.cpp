@@ -11,6 +11,7 @@
 #include <clocale>
 
 #include "core/invalid_input.h"
+#include "document/output_file.h"
 #include "document/project.h"
 #include "report_data.h"
 #include "report_writer.h"
@@ -54,6 +55,15 @@ int run(const QApplication& app) {
   if (positional.size() != 1) return fail("expected exactly one PROJECT argument", mx::app::kExitBadInput);
   if (!parser.isSet("pdf") && !parser.isSet("html"))
     return fail("nothing to write: give --pdf and/or --html", mx::app::kExitBadInput);
+
+  // The outputs are checked before any work: never the project, a tap test it names, each other, or a
+  // device, FIFO or directory (document/output_file.h).
+  QList<mx::app::NamedPath> outputs, inputs{{"PROJECT", positional.front()}};
+  for (const QString flag : {"html", "pdf"})
+    if (parser.isSet(flag)) outputs.append({"--" + flag, parser.value(flag)});
+  inputs.append(mx::app::projectInputFiles(mx::app::loadProject(positional.front())));
+  if (const QString problem = mx::app::outputPathsProblem(outputs, inputs); !problem.isEmpty())
+    return fail(problem, mx::app::kExitBadInput);
 
   mx::gui::ReportOptions options;
   if (parser.isSet("c")) {

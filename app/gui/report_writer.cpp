@@ -13,6 +13,7 @@
 #include <QUrl>
 #include <stdexcept>
 
+#include "document/output_file.h"
 #include "report_builder.h"
 
 namespace mx::gui {
@@ -39,6 +40,8 @@ QString ReportWriter::imageFolder(const QString& html_path) {
 }
 
 void ReportWriter::writeHtml(const QString& path, HtmlImages images) const {
+  if (const QString problem = app::outputFileProblem(path); !problem.isEmpty())
+    fail(QString("cannot write '%1': %2").arg(path, problem));
   const QString folder = imageFolder(path);
   const QString folder_name = QFileInfo(folder).fileName();
   if (images == HtmlImages::SiblingFolder && !QDir().mkpath(folder))
@@ -61,6 +64,8 @@ void ReportWriter::writeHtml(const QString& path, HtmlImages images) const {
 }
 
 void ReportWriter::writePdf(const QString& path) const {
+  if (const QString problem = app::outputFileProblem(path); !problem.isEmpty())
+    fail(QString("cannot write '%1': %2").arg(path, problem));
   QPrinter printer(QPrinter::HighResolution);
   printer.setOutputFormat(QPrinter::PdfFormat);
   printer.setOutputFileName(path);

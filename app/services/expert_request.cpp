@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/invalid_input.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -26,7 +27,7 @@ std::array<double, N> checkedWeights(const QString& name, const std::vector<doub
 StabilityMethod stabilityMethodFromText(const QString& text, const QString& where) {
   if (text == "zoa") return StabilityMethod::ZeroOrder;
   if (text == "sdm") return StabilityMethod::SemiDiscretization;
-  throw InputError(QString("%1 = '%2': must be zoa or sdm").arg(where, text));
+  throw InputError(QString("%1 = %2: must be zoa or sdm").arg(where, quoted(text)));
 }
 
 ExpertRequest expertRequestFromProject(const Project& project) {
@@ -101,11 +102,11 @@ std::vector<double> parseWeightList(const QString& flag, const QString& text, st
     bool ok = false;
     const double v = item.trimmed().toDouble(&ok);
     if (!ok || !std::isfinite(v))
-      throw InputError(QString("--%1 = '%2': '%3' is not a finite number").arg(flag, text, item));
+      throw InputError(QString("--%1 = %2: %3 is not a finite number").arg(flag, quoted(text), quoted(item)));
     values.push_back(v);
   }
   if (values.size() != count)
-    throw InputError(QString("--%1 = '%2': expected %3 comma-separated weights").arg(flag, text).arg(count));
+    throw InputError(QString("--%1 = %2: expected %3 comma-separated weights").arg(flag, quoted(text)).arg(count));
   try {
     validateSimplexWeights(("--" + flag).toStdString(), values, count);
   } catch (const InvalidInput& e) {

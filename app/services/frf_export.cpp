@@ -1,7 +1,7 @@
 #include "services/frf_export.h"
 
-#include <QSaveFile>
-
+#include "document/output_file.h"
+#include "document/shortened_text.h"
 #include "frf/frf_csv.h"
 #include "frf/uff_writer.h"
 #include "services/service_errors.h"
@@ -12,13 +12,13 @@ FrfFormat frfFormatFromName(const QString& field, const QString& name) {
   if (name == "uff58") return FrfFormat::Uff58;
   if (name == "uff58b") return FrfFormat::Uff58b;
   if (name == "csv") return FrfFormat::Csv;
-  throw InputError(QString("%1 = \"%2\": must be uff58, uff58b or csv").arg(field, name));
+  throw InputError(QString("%1 = %2: must be uff58, uff58b or csv").arg(field, quoted(name, u'"')));
 }
 
 FrfDirection frfAxisFromName(const QString& field, const QString& name) {
   if (name == "x") return FrfDirection::X;
   if (name == "y") return FrfDirection::Y;
-  throw InputError(QString("%1 = \"%2\": must be x or y").arg(field, name));
+  throw InputError(QString("%1 = %2: must be x or y").arg(field, quoted(name, u'"')));
 }
 
 void saveFrfFile(const QString& path, FrfFormat format, const std::vector<FrfDataset>& datasets) {
@@ -37,14 +37,9 @@ void saveFrfFile(const QString& path, FrfFormat format, const std::vector<FrfDat
       bytes = frfCsvString(datasets.front());
       break;
   }
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly)) throw InputError(QString("%1: cannot write: %2").arg(path, file.errorString()));
-  if (file.write(bytes.data(), static_cast<qint64>(bytes.size())) != static_cast<qint64>(bytes.size())) {
-    const QString reason = file.errorString();
-    file.cancelWriting();
-    throw InputError(QString("%1: cannot write: %2").arg(path, reason));
-  }
-  if (!file.commit()) throw InputError(QString("%1: cannot save: %2").arg(path, file.errorString()));
+  const QByteArray data(bytes.data(), static_cast<qsizetype>(bytes.size()));
+  if (const QString error = writeFileAtomically(path, data); !error.isEmpty())
+    throw InputError(QString("%1: cannot write: %2").arg(path, error));
 }
 
 }  // namespace mx::app

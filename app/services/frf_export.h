@@ -16,8 +16,8 @@ FrfFormat frfFormatFromName(const QString& field, const QString& name);
 // One tool axis, "x" or "y".
 FrfDirection frfAxisFromName(const QString& field, const QString& name);
 
-// Writes atomically (QSaveFile: write, then rename). A CSV holds one dataset. InputError naming the
-// path when it cannot be written or the CSV would hold several datasets.
+// Writes atomically (writeFileAtomically: only a regular file or a new one). A CSV holds one dataset.
+// InputError naming the path when it cannot be written or the CSV would hold several datasets.
 void saveFrfFile(const QString& path, FrfFormat format, const std::vector<FrfDataset>& datasets);
 
 }  // namespace mx::app

@@ -1,6 +1,7 @@
 #include "services/frf_import.h"
 
 #include "core/invalid_input.h"
+#include "document/shortened_text.h"
 #include "frf/frf_file.h"
 #include "frf/frf_file_error.h"
 #include "services/service_errors.h"
@@ -11,7 +12,7 @@ FrfQuantity frfQuantityFromName(const QString& field, const QString& name) {
   if (name == "receptance") return FrfQuantity::Receptance;
   if (name == "mobility") return FrfQuantity::Mobility;
   if (name == "accelerance") return FrfQuantity::Accelerance;
-  throw InputError(QString("%1 = \"%2\": must be receptance, mobility or accelerance").arg(field, name));
+  throw InputError(QString("%1 = %2: must be receptance, mobility or accelerance").arg(field, quoted(name, u'"')));
 }
 
 QString frfFormatName(FrfFormat format) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "document/shortened_text.h"
+
 namespace mx::app {
 
 namespace {
@@ -36,7 +38,7 @@ LearningSource parseLearningSource(const QString& name) {
   for (const auto& [value, text] : kSources)
     if (name == QLatin1String(text)) return value;
   throw std::invalid_argument(
-      QString("source '%1': must be one of operator, automatic, rule, feedback").arg(name).toStdString());
+      QString("source %1: must be one of operator, automatic, rule, feedback").arg(quoted(name)).toStdString());
 }
 
 void validateLearningRecord(const LearningRecord& r) {

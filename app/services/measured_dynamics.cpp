@@ -5,6 +5,7 @@
 
 #include "core/invalid_input.h"
 #include "document/frf_paths.h"
+#include "document/shortened_text.h"
 #include "services/frf_import.h"
 #include "services/service_errors.h"
 
@@ -32,7 +33,7 @@ void checkDirection(const QString& where, const Receptance& r, FrfDirection axis
 DynamicsSource dynamicsSourceFromName(const QString& field, const QString& name) {
   if (name == "modal") return DynamicsSource::Modal;
   if (name == "measured") return DynamicsSource::Measured;
-  throw InputError(QString("%1 = '%2': must be modal or measured").arg(field, name));
+  throw InputError(QString("%1 = %2: must be modal or measured").arg(field, quoted(name)));
 }
 
 QString dynamicsName(DynamicsSource source) {
@@ -48,10 +49,10 @@ void requireFittedModes(const ToolSpec& tool, const QString& purpose) {
   for (const auto& [modes, frf, axis] :
        {std::tuple{&tool.modes_x, &tool.frf_x, "x"}, {&tool.modes_y, &tool.frf_y, "y"}}) {
     if (!axisNeedsFit(*modes, *frf)) continue;
-    throw InputError(QString("tool '%1': modes_%2 is empty and only frf_%2 (%3) is given: %4 needs fitted modes; "
+    throw InputError(QString("tool %1: modes_%2 is empty and only frf_%2 (%3) is given: %4 needs fitted modes; "
                              "fit the FRF (millexpert-cli frf-fit, or Tap test > Fit in the GUI) and accept them "
                              "as modes_%2")
-                         .arg(tool.id, axis, (*frf)->file, purpose));
+                         .arg(quoted(tool.id), axis, shortened((*frf)->file), purpose));
   }
 }
 
@@ -63,9 +64,9 @@ DynamicsChoice chooseDynamics(const ToolSpec& tool, std::optional<DynamicsSource
     return {};
   }
   if (!tool.hasFrf())
-    throw InputError(QString("tool '%1': dynamics = measured needs a tap-test FRF (frf_x or frf_y); the tool has "
+    throw InputError(QString("tool %1: dynamics = measured needs a tap-test FRF (frf_x or frf_y); the tool has "
                              "modes only")
-                         .arg(tool.id));
+                         .arg(quoted(tool.id)));
   DynamicsChoice choice{DynamicsSource::Measured, {}};
   if (method == StabilityMethod::SemiDiscretization) {
     choice.note = "semi-discretization needs a state-space model: the lobes use the fitted modes";
@@ -85,7 +86,7 @@ DynamicsChoice chooseDynamics(const ToolSpec& tool, std::optional<DynamicsSource
 MeasuredAxis loadMeasuredAxis(const Project& project, const ToolSpec& tool, const QString& field,
                               const FrfRefSpec& ref) {
   const QString path = resolvedFrfPath(project, ref);
-  const QString where = QString("tool '%1': %2.file = \"%3\" (%4)").arg(tool.id, field, ref.file, path);
+  const QString where = QString("tool %1: %2.file = %3 (%4)").arg(quoted(tool.id), field, quoted(ref.file, u'"'), path);
   if (!QFileInfo::exists(path)) throw InputError(where + ": file not found");
   FrfFile file;
   Receptance r;
@@ -95,7 +96,7 @@ MeasuredAxis loadMeasuredAxis(const Project& project, const ToolSpec& tool, cons
     file = loadFrfFile(path, quantity);
     r = frfReceptance(file, path, ref.datasetIndex());
   } catch (const InputError& e) {
-    throw InputError(QString("tool '%1': %2: %3").arg(tool.id, field, QString::fromStdString(e.what())));
+    throw InputError(QString("tool %1: %2: %3").arg(quoted(tool.id), field, QString::fromStdString(e.what())));
   }
   if (file.format != FrfFormat::Csv) checkDirection(where, r, field.endsWith('y') ? FrfDirection::Y : FrfDirection::X);
   MeasuredAxis axis{std::move(r.frequency_hz), std::move(r.h_m_per_n)};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/invalid_input.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -114,7 +115,7 @@ ParetoNormalisation paretoNormalisationFromName(const QString& name, const QStri
   if (name == "minmax") return ParetoNormalisation::MinMax;
   if (name == "max") return ParetoNormalisation::Max;
   if (name == "log") return ParetoNormalisation::Log;
-  throw InputError(QString("%1 = '%2': must be one of minmax, max, log").arg(field, name));
+  throw InputError(QString("%1 = %2: must be one of minmax, max, log").arg(field, quoted(name)));
 }
 
 QString paretoNormalisationName(ParetoNormalisation n) {
@@ -133,7 +134,7 @@ ParetoObjectiveKind paretoObjectiveFromName(const QString& name, const QString& 
   if (name == "weighted") return ParetoObjectiveKind::Weighted;
   if (name == "min_cost") return ParetoObjectiveKind::MinCost;
   if (name == "max_rate") return ParetoObjectiveKind::MaxRate;
-  throw InputError(QString("%1 = '%2': must be one of weighted, min_cost, max_rate").arg(field, name));
+  throw InputError(QString("%1 = %2: must be one of weighted, min_cost, max_rate").arg(field, quoted(name)));
 }
 
 QString paretoObjectiveName(ParetoObjectiveKind k) {
@@ -153,7 +154,7 @@ ParetoRequest paretoRequestFrom(const ParetoSection& p, const Project& project) 
   if (project.tools.empty()) throw ProjectError("section 'tools' is empty");
   r.tool = p.tool.value_or(project.tools.front().id);
   if (project.findTool(r.tool) == nullptr)
-    throw ProjectError(QString("pareto.tool = '%1': no tool with that id").arg(r.tool));
+    throw ProjectError(QString("pareto.tool = %1: no tool with that id").arg(quoted(r.tool)));
   if (!p.taylor) throw ProjectError("pareto.taylor is missing: the model constants K and exponents");
   if (!p.roughness) throw ProjectError("pareto.roughness is missing: the model constants K and exponents");
   r.models.tool_life = modelFrom(*p.taylor);
@@ -194,10 +195,11 @@ ParetoWeights parseParetoWeights(const QString& text) {
   for (const QString& item : text.split(',')) {
     bool ok = false;
     const double v = item.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(v)) throw InputError(QString("--w = '%1': '%2' is not a finite number").arg(text, item));
+    if (!ok || !std::isfinite(v))
+      throw InputError(QString("--w = %1: %2 is not a finite number").arg(quoted(text), quoted(item)));
     values.push_back(v);
   }
-  return checkedWeights(QString("--w = '%1'").arg(text), values, raiseFlag);
+  return checkedWeights(QString("--w = %1").arg(quoted(text)), values, raiseFlag);
 }
 
 ObjectiveRequirement parseRequirement(const QString& text) {

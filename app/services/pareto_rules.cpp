@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "document/shortened_text.h"
 #include "model/milling_setup.h"
 #include "rules/rule_evaluator.h"
 #include "rules/rule_parser.h"
@@ -98,14 +99,14 @@ ParetoRules evaluateParetoRules(const QStringList& texts, const Project& project
     QStringList messages;
     for (const RuleContradiction& c : r.outcome.contradictions)
       messages << QString(
-                      "operator_rules: contradictory rules: operator_rules[%1] (line %2) '%3' and "
-                      "operator_rules[%4] (line %5) '%6': %7")
+                      "operator_rules: contradictory rules: operator_rules[%1] (line %2) %3 and "
+                      "operator_rules[%4] (line %5) %6: %7")
                       .arg(c.first.line - 1)
                       .arg(c.first.line)
-                      .arg(qs(c.first.text))
+                      .arg(quoted(qs(c.first.text)))
                       .arg(c.second.line - 1)
                       .arg(c.second.line)
-                      .arg(qs(c.second.text), qs(c.message));
+                      .arg(quoted(qs(c.second.text)), qs(c.message));
     throw ProjectError(messages.join('\n'));
   }
   return r;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "document/shortened_text.h"
 #include "expert/limits_at_point.h"
 #include "pareto/economic_selection.h"
 #include "pareto/pareto_front.h"
@@ -24,9 +25,9 @@ ParetoStudy::ParetoStudy(Project project, std::optional<DynamicsSource> dynamics
   if (!request_.operator_rules.isEmpty()) rules_ = evaluateParetoRules(request_.operator_rules, project_, tool());
   grid_ = std::make_unique<AdmissibleGrid>(setup_, expert_.settings);
   if (grid_->empty())
-    throw ComputationError(QString("the admissible space of tool '%1' is empty: %2")
-                               .arg(request_.tool, QString::fromStdString(describeConstraint(
-                                                       grid_->funnel().emptiedBy(), expert_.settings))));
+    throw ComputationError(QString("the admissible space of tool %1 is empty: %2")
+                               .arg(quoted(request_.tool), QString::fromStdString(describeConstraint(
+                                                               grid_->funnel().emptiedBy(), expert_.settings))));
   table_ = std::make_unique<ObjectiveTable>(*grid_, request_.models, request_.normalisation);
   front_ = nonDominated(table_->scores());
 }
@@ -51,8 +52,8 @@ ParetoSelection ParetoStudy::selectWeighted(const ParetoWeights& w,
   }
   if (!s)
     throw ComputationError(
-        QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
-            .arg(request_.tool)
+        QString("the operator rules exclude every point of the admissible space of tool %1 (%2 points)")
+            .arg(quoted(request_.tool))
             .arg(table_->size()));
   return *s;
 }
@@ -71,8 +72,8 @@ ParetoSelection ParetoStudy::selectEconomic(EconomicObjective objective,
   }
   if (!i)
     throw ComputationError(
-        QString("the operator rules exclude every point of the admissible space of tool '%1' (%2 points)")
-            .arg(request_.tool)
+        QString("the operator rules exclude every point of the admissible space of tool %1 (%2 points)")
+            .arg(quoted(request_.tool))
             .arg(table_->size()));
   ParetoSelection s;
   s.point = table_->points()[*i];

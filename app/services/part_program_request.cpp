@@ -1,6 +1,7 @@
 #include "services/part_program_request.h"
 
 #include "document/project_rules.h"
+#include "document/shortened_text.h"
 #include "gcode/gcode_interpreter.h"
 #include "machining/adaptive_path_feeds.h"
 #include "machining/depth_profile.h"
@@ -65,7 +66,7 @@ OverrideRequest overrideRequestFrom(const PartProgramSection& p, const Project& 
   } else if (choice == "model-based") {
     r.model = modelBasedSettingsFrom(project.force_control.value_or(ForceControlSection{}), project);
   } else {
-    throw InputError(QString("--controller = '%1': must be adaptive or model-based").arg(choice));
+    throw InputError(QString("--controller = %1: must be adaptive or model-based").arg(quoted(choice)));
   }
   return r;
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "document/project_rules.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -14,7 +15,8 @@ double numberIn(const QString& text, const QString& whole, const char* what, con
   bool ok = false;
   const double v = text.trimmed().toDouble(&ok);
   if (!ok || !std::isfinite(v) || v < range.lo || v > range.hi)
-    throw InputError(QString("--chatter-at = '%1': %2 '%3' must be a number %4").arg(whole, what, text, range.text));
+    throw InputError(
+        QString("--chatter-at = %1: %2 %3 must be a number %4").arg(quoted(whole), what, quoted(text), range.text));
   return v;
 }
 
@@ -31,7 +33,7 @@ ChatterReportSpec parseChatterAt(const QString& text, const QString& tool) {
   const QStringList parts = text.split(':');
   if (parts.size() < 2 || parts.size() > 3)
     throw InputError(
-        QString("--chatter-at = '%1': must be SPEED_RPM:DEPTH_MM or SPEED_RPM:DEPTH_MM:FREQ_HZ").arg(text));
+        QString("--chatter-at = %1: must be SPEED_RPM:DEPTH_MM or SPEED_RPM:DEPTH_MM:FREQ_HZ").arg(quoted(text)));
   ChatterReportSpec c;
   c.tool = tool;
   c.speed_rpm = numberIn(parts[0], text, "speed [rpm]", chatter_report::kSpeedRpm);
@@ -47,9 +49,9 @@ std::vector<ChatterReport> engineChatterReports(const std::vector<ChatterReportS
     const ChatterReportSpec& c = reports[i];
     const qsizetype tool = tool_ids.indexOf(c.tool);
     if (tool < 0)
-      throw ProjectError(QString("expert.reported_chatter[%1].tool = '%2': must be the id of a tool of the project")
+      throw ProjectError(QString("expert.reported_chatter[%1].tool = %2: must be the id of a tool of the project")
                              .arg(i)
-                             .arg(c.tool));
+                             .arg(quoted(c.tool)));
     ChatterReport r;
     r.tool = static_cast<std::size_t>(tool);
     r.speed_rev_per_s = rpmToRevPerS(c.speed_rpm);

@@ -5,6 +5,7 @@
 #include "core/invalid_input.h"
 #include "document/project_grafcet_io.h"
 #include "document/project_rules.h"
+#include "document/shortened_text.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -20,7 +21,7 @@ QStringList supervisorControllers() {
 
 SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Project& project, const QString& controller) {
   if (!supervisorControllers().contains(controller))
-    throw InputError(QString("--controller = '%1': must be one of none, smc1, smc2").arg(controller));
+    throw InputError(QString("--controller = %1: must be one of none, smc1, smc2").arg(quoted(controller)));
   SupervisorRequest r;
   SupervisionScenario& sc = r.scenario;
   sc.controller = parseController(controller.toStdString());
@@ -84,7 +85,7 @@ SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Projec
 
 SupervisorRequest supervisorRequestFromProject(const Project& project, const QString& controller) {
   if (!supervisorControllers().contains(controller))
-    throw InputError(QString("--controller = '%1': must be one of none, smc1, smc2").arg(controller));
+    throw InputError(QString("--controller = %1: must be one of none, smc1, smc2").arg(quoted(controller)));
   if (!project.supervisor)
     throw ProjectError("section 'supervisor' is missing: the supervised run needs it (docs/project-file.md)");
   return supervisorRequestFrom(*project.supervisor, project, controller);

@@ -1,7 +1,6 @@
 #include "frf/frf_file.h"
 
 #include <fstream>
-#include <sstream>
 
 #include "core/invalid_input.h"
 #include "frf/fortran_number.h"
@@ -42,11 +41,13 @@ FrfFile readFrf(std::string_view bytes, const std::string& source_name, std::opt
 }
 
 FrfFile readFrfFile(const std::string& path, std::optional<FrfQuantity> csv_quantity) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FrfFileError(path, 0, "cannot be read (expected a readable file)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return readFrf(ss.str(), path, csv_quantity);
+  std::string bytes;
+  try {
+    bytes = readInputFile(path, kFrfFileLimit);
+  } catch (const InvalidInput& e) {
+    throw FrfFileError(path, 0, e.what());
+  }
+  return readFrf(bytes, path, csv_quantity);
 }
 
 void writeFrfFile(const std::string& path, FrfFormat format, const std::vector<FrfDataset>& datasets) {

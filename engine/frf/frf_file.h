@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/input_file.h"
 #include "frf/frf_dataset.h"
 #include "frf/frf_file_error.h"
 
@@ -19,7 +20,11 @@ std::optional<FrfFormat> detectFrfFormat(std::string_view bytes);
 // say); FrfFileError "... the CSV does not say its quantity ..." when a CSV comes without it.
 FrfFile readFrf(std::string_view bytes, const std::string& source_name, std::optional<FrfQuantity> csv_quantity);
 
-// Reads the file at path (FrfFileError naming the path when it cannot be read) and parses it as readFrf.
+// A tap-test file: far above any measurement (a few thousand lines per FRF), far below memory limits.
+inline constexpr InputFileLimit kFrfFileLimit{64 * kMegabyte, "an FRF file"};
+
+// Reads the file at path (FrfFileError naming the path when it cannot be read, is over kFrfFileLimit or
+// is not a regular file) and parses it as readFrf.
 FrfFile readFrfFile(const std::string& path, std::optional<FrfQuantity> csv_quantity);
 
 // Writes datasets to path in the format; a CSV takes exactly one dataset. Throws InvalidInput for a

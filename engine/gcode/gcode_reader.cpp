@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "core/invalid_input.h"
@@ -241,11 +240,13 @@ GcodeProgram GcodeReader::parse(std::string_view text) {
 }
 
 GcodeProgram GcodeReader::readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("gcode file = " + path + ": cannot be read (must be a readable file)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str());
+  std::string text;
+  try {
+    text = readInputFile(path, kPartProgramFileLimit);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("gcode file = " + path + ": " + e.what());
+  }
+  return parse(text);
 }
 
 }  // namespace mx

@@ -12,11 +12,14 @@
 #include <string>
 #include <string_view>
 
+#include "core/input_file.h"
 #include "gcode/gcode_program.h"
 
 namespace mx {
 
 inline constexpr std::size_t kMaxGcodeLineLength = 4096;  // bytes, line end excluded
+// A part program file: 16 MB holds about half a million blocks, far more than any override runs.
+inline constexpr InputFileLimit kPartProgramFileLimit{16 * kMegabyte, "a part program"};
 
 // Word ranges, in program units (mm or inch, per minute).
 struct GcodeWordLimits {
@@ -32,7 +35,8 @@ class GcodeReader {
   // kMaxGcodeLineLength or a word outside GcodeWordLimits; any other text is kept and warned about.
   // An empty text gives an empty program.
   static GcodeProgram parse(std::string_view text);
-  // Reads and parses a file; throws InvalidInput ("gcode file = <path>: cannot be read") on failure.
+  // Reads and parses a file; throws InvalidInput ("gcode file = <path>: cannot be read", or over
+  // kPartProgramFileLimit, or not a regular file) on failure.
   static GcodeProgram readFile(const std::string& path);
 
  private:

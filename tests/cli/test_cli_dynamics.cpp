@@ -2,6 +2,8 @@
 // test from the tool's own modes, gives the lobes of those modes; delta > 0 and semi-discretization use
 // the fitted modes and say so ("dynamics_used", stderr); a tool with only an FRF needs a fit for the
 // simulation; every bad flag or file exits 2 naming it.
+#include <sys/stat.h>
+
 #include <QDir>
 
 #include "document/project.h"
@@ -158,6 +160,13 @@ class TestCliDynamics : public QObject {
         << false << QStringList{"rank"} << QStringList{"tool 'R1'", "the time-domain refinement"};
     QTest::newRow("missing FRF file") << true << QStringList{"lobes", "--tool", "R1", "--dynamics", "measured"}
                                       << QStringList{"tool 'R1'", "frf_x.file = \"taps/R1.uff\"", "not found"};
+    QTest::newRow("FRF file is a FIFO") << true << QStringList{"lobes", "--tool", "R1", "--dynamics", "measured"}
+                                        << QStringList{"tool 'R1'", "R1.uff: a FIFO, not a regular file"};
+    QTest::newRow("long tool id") << true << QStringList{"simulate", "--tool", QString(100000, 'x'),
+                                                         "--speed",  "5000",   "--depth",
+                                                         "1",        "--feed", "0.1"}
+                                  << QStringList{"millexpert-cli: tool '" + QString(80, 'x') + QChar(0x2026) +
+                                                 "' (100000 characters) not found; available: R1, R2\n"};
   }
   void badInputExitsTwo() {
     QFETCH(bool, keep_modes);
@@ -165,7 +174,10 @@ class TestCliDynamics : public QObject {
     QFETCH(QStringList, expected);
     QTemporaryDir dir;
     const QString project = tapProject(dir, keep_modes);
-    if (QString(QTest::currentDataTag()) == "missing FRF file") QFile::remove(dir.filePath("taps/R1.uff"));
+    const QString tag = QTest::currentDataTag();
+    if (tag == "missing FRF file" || tag == "FRF file is a FIFO") QFile::remove(dir.filePath("taps/R1.uff"));
+    if (tag == "FRF file is a FIFO")
+      QCOMPARE(::mkfifo(QFile::encodeName(dir.filePath("taps/R1.uff")).constData(), 0600), 0);
     args.insert(1, project);
     const test::CliRun r = test::runCli(args);
     QCOMPARE(r.code, 2);

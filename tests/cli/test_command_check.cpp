@@ -1,6 +1,7 @@
 // millexpert-cli check PROJECT: exit 0 and a JSON summary for a valid project; exit 2 and a message
 // naming the field path on stderr for every validation rule, a malformed or missing file, or a bad
 // subcommand.
+#include <QElapsedTimer>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -8,6 +9,7 @@
 #include <QTemporaryDir>
 
 #include "support/cli_runner.h"
+#include "support/hostile_files.h"
 #include "support/json_mutation.h"
 #include "support/project_files.h"
 #include "test_registry.h"
@@ -142,6 +144,54 @@ class TestCliCheck : public QObject {
     const CliRun run = runCli({"check", fixturePath(file)});
     QCOMPARE(run.code, 2);
     QVERIFY2(run.err.contains(fixturePath(file) + ": " + expected), qPrintable(run.err));
+  }
+
+  // Refused before a byte is read (a device never ends, a FIFO blocks, 64 MB is the limit), in well
+  // under the time that reading them would take; a file at the limit is read (and is no JSON).
+  void unreadableFiles_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("/dev/zero") << "/dev/zero"
+                               << "a character device, not a regular file: a project file must be a regular file";
+    QTest::newRow("FIFO") << "fifo"
+                          << "a FIFO, not a regular file: a project file must be a regular file";
+    QTest::newRow("folder") << "folder"
+                            << "a directory, not a regular file: a project file must be a regular file";
+    QTest::newRow("64 MB + 1 byte") << QString("bytes:%1").arg(64 * mx::test::kMB + 1)
+                                    << "64.0 MB (67108865 bytes) is over the 64 MB limit of a project file";
+    QTest::newRow("80 MB") << QString("bytes:%1").arg(80 * mx::test::kMB)
+                           << "80.0 MB (83886080 bytes) is over the 64 MB limit of a project file";
+    QTest::newRow("64 MB is read") << QString("bytes:%1").arg(64 * mx::test::kMB)
+                                   << "invalid JSON at line 1, column 2 (offset 1): illegal value";
+  }
+
+  void unreadableFiles() {
+    QFETCH(QString, kind);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString path = mx::test::hostileInput(dir, kind);
+    QVERIFY(!path.isEmpty());
+    QElapsedTimer clock;
+    clock.start();
+    const CliRun run = runCli({"check", path}, 20000);
+    QCOMPARE(run.code, 2);
+    QVERIFY2(run.err.contains(path + ": " + expected), qPrintable(run.err));
+    QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));
+  }
+
+  // A 10 MB tool id is echoed as its first 80 characters and its length.
+  void longValuesAreShortened() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("long-id.mxproj");
+    const QString id(10 * 1024 * 1024, 'a');
+    mx::test::writeMutatedProject(fixturePath("valid-full.mxproj"),
+                                  {QString("tools/0/id=\"%1\"").arg(id), QString("tools/1/id=\"%1\"").arg(id)}, path);
+    const CliRun run = runCli({"check", path});
+    QCOMPARE(run.code, 2);
+    const QString echoed =
+        "tools[1].id = \"" + QString(80, 'a') + QChar(0x2026) + "\" (10485760 characters): duplicate of tools[0].id";
+    QVERIFY2(run.err.contains(echoed), qPrintable(run.err.left(1000)));
+    QVERIFY2(run.err.size() < 1000, qPrintable(QString::number(run.err.size())));
   }
 
   void missingFile() {

@@ -5,6 +5,7 @@
 #include "frf/uff_writer.h"
 #include "support/cli_runner.h"
 #include "support/frf_samples.h"
+#include "support/hostile_files.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -150,6 +151,32 @@ class TestCommandFrf : public QObject {
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QVERIFY(r.out.isEmpty());
+  }
+
+  // A tap-test file is refused before it is read when it is not a regular file or over 64 MB.
+  void unreadableFiles_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("/dev/zero") << "/dev/zero"
+                               << "a character device, not a regular file: an FRF file must be a regular file";
+    QTest::newRow("FIFO") << "fifo"
+                          << "a FIFO, not a regular file: an FRF file must be a regular file";
+    QTest::newRow("folder") << "folder"
+                            << "a directory, not a regular file: an FRF file must be a regular file";
+    QTest::newRow("64 MB + 1 byte") << QString("bytes:%1").arg(64 * test::kMB + 1)
+                                    << "64.0 MB (67108865 bytes) is over the 64 MB limit of an FRF file";
+  }
+  void unreadableFiles() {
+    QFETCH(QString, kind);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString path = test::hostileInput(dir, kind);
+    QVERIFY(!path.isEmpty());
+    for (const char* command : {"frf-info", "frf-fit"}) {
+      const test::CliRun r = test::runCli({command, path, "--quantity", "receptance"}, 20000);
+      QCOMPARE(r.code, 2);
+      QVERIFY2(r.err.contains(path + ": " + expected), qPrintable(r.err));
+    }
   }
 };
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
+#include "support/hostile_files.h"
 #include "support/json_mutation.h"
 #include "test_registry.h"
 
@@ -132,6 +133,34 @@ class TestCliSdnrp : public QObject {
     const mx::test::CliRun r = mx::test::runCli(args);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(!QFile::exists(out));
+  }
+  // A part program is refused before it is read when it is not a regular file or over 16 MB; no
+  // output is written.
+  void unreadablePrograms_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("/dev/zero") << "/dev/zero"
+                               << "a character device, not a regular file: a part program must be a regular file";
+    QTest::newRow("FIFO") << "fifo"
+                          << "a FIFO, not a regular file: a part program must be a regular file";
+    QTest::newRow("folder") << "folder"
+                            << "a directory, not a regular file: a part program must be a regular file";
+    QTest::newRow("16 MB + 1 byte") << QString("bytes:%1").arg(16 * mx::test::kMB + 1)
+                                    << "16.0 MB (16777217 bytes) is over the 16 MB limit of a part program";
+    QTest::newRow("80 MB") << QString("bytes:%1").arg(80 * mx::test::kMB)
+                           << "80.0 MB (83886080 bytes) is over the 16 MB limit of a part program";
+  }
+  void unreadablePrograms() {
+    QFETCH(QString, kind);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    const QString program = mx::test::hostileInput(dir, kind);
+    QVERIFY(!program.isEmpty());
+    const QString out = dir.filePath("out.nc");
+    const mx::test::CliRun r = mx::test::runCli({"override", program, kSdnrp, "--out", out}, 20000);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(program + ": ") && r.err.contains(expected), qPrintable(r.err));
     QVERIFY(!QFile::exists(out));
   }
 };

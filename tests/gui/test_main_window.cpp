@@ -4,6 +4,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -11,6 +12,7 @@
 
 #include "document/project_validation.h"
 #include "main_window.h"
+#include "support/hostile_files.h"
 #include "support/read_only_folder.h"
 #include "test_registry.h"
 
@@ -136,6 +138,44 @@ class TestMainWindow : public QObject {
              qPrintable(shown));
     QVERIFY(window.document()->isDirty() && window.isWindowModified());
     QCOMPARE(window.project()->machine->spindle_power_W, 999.0);
+  }
+
+  // A file that cannot be a project (over 64 MB, a FIFO, a device) is refused before it is read: the
+  // message names it and the limit, and the open project keeps its edits, point, undo steps and file.
+  void unreadableProjectKeepsTheCurrentOne_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("why");
+    QTest::newRow("80 MB") << QString("bytes:%1").arg(80 * test::kMB)
+                           << "80.0 MB (83886080 bytes) is over the 64 MB limit of a project file";
+    QTest::newRow("FIFO") << "fifo"
+                          << "a FIFO, not a regular file: a project file must be a regular file";
+    QTest::newRow("/dev/zero") << "/dev/zero"
+                               << "a character device, not a regular file: a project file must be a regular file";
+  }
+  void unreadableProjectKeepsTheCurrentOne() {
+    QFETCH(QString, kind);
+    QFETCH(QString, why);
+    QTemporaryDir dir;
+    const QString path = copyToTemp(dir, kRubio);
+    gui::MainWindow window;
+    QVERIFY(openQuietly(window, path));
+    app::Project edited = *window.project();
+    edited.machine->spindle_power_W = 999.0;
+    const app::PickedPoint point{5800.0, 0.49, 0.27};
+    QCOMPARE(window.document()->applyEditAndMovePoint(edited, point, "power and point"), QString());
+    const int steps = window.document()->undoStack()->count();
+    const QString bad = test::hostileInput(dir, kind);
+    QVERIFY(!bad.isEmpty());
+    QElapsedTimer clock;
+    clock.start();
+    QVERIFY(!window.openProject(bad));
+    QVERIFY(clock.elapsed() < 5000);
+    QCOMPARE(window.statusBar()->currentMessage(), "Cannot open project: " + bad + ": " + why);
+    QVERIFY(window.document()->isDirty());
+    QCOMPARE(window.document()->filePath(), path);
+    QCOMPARE(window.project()->machine->spindle_power_W, 999.0);
+    QVERIFY(window.document()->point() == point);
+    QCOMPARE(window.document()->undoStack()->count(), steps);
   }
 
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
