@@ -442,6 +442,10 @@ class TestProjectFile : public QObject {
         {"tools[0].modes_x[1].stiffness_N_per_um = 1e+09: must be in [0.001, 1e+06]"});
     row("51 modes", {"tools/0/modes_x=" + manyModes(51)}, {"tools[0].modes_x has 51 modes: at most 50 are allowed"});
     row("delta 1e5", {"expert/delta_per_s=1e5"}, {"expert.delta_per_s = 1e+05: must be in [0, 10000]"});
+    // T1's first x mode decays at 2.5 % of 2 pi 1200 Hz = 188.5 1/s (its y mode, 172.8 1/s, comes later)
+    row("delta at a mode's decay rate", {"expert/delta_per_s=188.5"},
+        {"expert.delta_per_s = 188.5: must be in [0, 188.49555921538757) 1/s, below the decay rate zeta omega_n of "
+         "tools[0].modes_x[0]"});
     row("grid to 1e308", {"expert/grid/speed_to_rpm=1e308"},
         {"expert.grid.speed_to_rpm = 1e+308: must be in (0, 1e+05]"});
     row("grid divisions 1e6", {"expert/grid/depth_divisions=1e6"},
