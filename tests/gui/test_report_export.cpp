@@ -1,7 +1,10 @@
 // The expert report: built for the Rubio 2006 project, the HTML has real
 // tables with captions and the three figures as PNG files; the PDF, turned into text by pdftotext
 // (poppler-utils), names the project, the tools, q* with units, the sections and captions, and the
-// minimum cost of R1 as the engine computes it. millexpert-report refuses bad weights with exit 2.
+// minimum cost of R1 as the engine computes it. millexpert-report refuses bad weights with exit 2, and
+// outputs that are the project, each other, or not a regular file.
+#include <sys/stat.h>
+
 #include <QApplication>
 #include <QDir>
 #include <QFile>
@@ -156,6 +159,45 @@ class TestReportExport : public QObject {
     QVERIFY(good.waitForFinished(60000));
     QVERIFY2(good.exitCode() == 0, good.readAllStandardError().constData());
     QVERIFY(readText(html).contains("(0.3, 0.625, 0.075)"));
+  }
+
+  // The report's outputs are checked before any work (document/output_file.h): never the project, each
+  // other, or a device, FIFO or directory; the folder is unchanged afterwards.
+  void cliRefusesOutputsThatWouldDestroyInputs_data() {
+    QTest::addColumn<QStringList>("outputs");  // "@name": a file of the test's folder
+    QTest::addColumn<QString>("flag");
+    QTest::addColumn<QString>("why");
+    QTest::newRow("project as --pdf") << QStringList{"--pdf", "@p.mxproj"} << "--pdf"
+                                      << "the same file as PROJECT";
+    QTest::newRow("--html as --pdf") << QStringList{"--html", "@r.html", "--pdf", "@r.html"} << "--pdf"
+                                     << "the same file as --html";
+    QTest::newRow("/dev/null") << QStringList{"--pdf", "/dev/null"} << "--pdf"
+                               << "a character device, not a regular file";
+    QTest::newRow("FIFO") << QStringList{"--html", "@fifo"} << "--html"
+                          << "a FIFO, not a regular file";
+    QTest::newRow("folder") << QStringList{"--pdf", "@folder"} << "--pdf"
+                            << "a directory, not a regular file";
+  }
+  void cliRefusesOutputsThatWouldDestroyInputs() {
+    QFETCH(QStringList, outputs);
+    QFETCH(QString, flag);
+    QFETCH(QString, why);
+    QTemporaryDir dir;
+    const QString project = dir.filePath("p.mxproj");
+    QVERIFY(QFile::copy(kRubio, project));
+    QVERIFY(QDir(dir.path()).mkdir("folder"));
+    QVERIFY(::mkfifo(QFile::encodeName(dir.filePath("fifo")).constData(), 0600) == 0);
+    const QByteArray original = readText(project).toUtf8();
+    const QStringList before = QDir(dir.path()).entryList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot);
+    outputs.replaceInStrings(QRegularExpression("^@"), dir.path() + "/");
+    QProcess report;
+    report.start(reportExecutable(), QStringList{project} + outputs);
+    QVERIFY(report.waitForFinished(30000));
+    QCOMPARE(report.exitCode(), 2);
+    const QString message = QString::fromUtf8(report.readAllStandardError());
+    QVERIFY2(message.startsWith("millexpert-report: " + flag + " = '") && message.contains(why), qPrintable(message));
+    QCOMPARE(readText(project).toUtf8(), original);
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot), before);
   }
 
  private:
