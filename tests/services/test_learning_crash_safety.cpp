@@ -109,7 +109,7 @@ class TestLearningCrashSafety : public QObject {
         kills, in_write, in_flight_committed, integrity_ok, static_cast<long long>(rows),
         static_cast<long long>(clock.elapsed()));
     QVERIFY2(in_write >= kKills / 2, qPrintable(QString("%1 kills inside an insert").arg(in_write)));
-    QVERIFY2(rows >= kKills / 2, "the writers committed almost nothing: the kills came too early");
+    QVERIFY2(rows >= kKills / 4, "the writers committed almost nothing: the kills came too early");
 
     QProcess writer;  // the file still takes writes after all the kills
     writer.start(MX_LEARNING_WRITER_PATH, {path, "1"});
