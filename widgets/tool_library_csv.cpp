@@ -1,14 +1,15 @@
 #include "tool_library_csv.h"
 
-#include <QFile>
 #include <QHash>
 #include <QLocale>
 #include <QRegularExpression>
-#include <QSaveFile>
 #include <QSet>
 #include <algorithm>
 
+#include "core/invalid_input.h"
+#include "document/input_files.h"
 #include "document/json_format.h"
+#include "document/output_file.h"
 #include "document/project_rules.h"
 #include "document/project_validation.h"
 #include "document/tool_geometry.h"
@@ -390,17 +391,16 @@ QString ToolLibraryCsv::validationError(const app::Project& project) {
 }
 
 QString ToolLibraryCsv::writeFile(const QString& path, const QByteArray& bytes) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly)) return QString("%1: cannot write (%2)").arg(path, file.errorString());
-  if (file.write(bytes) != bytes.size() || !file.commit())
-    return QString("%1: write failed (%2)").arg(path, file.errorString());
-  return {};
+  const QString error = app::writeFileAtomically(path, bytes);
+  return error.isEmpty() ? QString() : QString("%1: cannot write (%2)").arg(path, error);
 }
 
 QString ToolLibraryCsv::readFile(const QString& path, QByteArray& bytes) {
-  QFile file(path);
-  if (!file.open(QIODevice::ReadOnly)) return QString("%1: cannot read (%2)").arg(path, file.errorString());
-  bytes = file.readAll();
+  try {
+    bytes = app::readBoundedFile(path, app::kToolLibraryFileLimit);
+  } catch (const InvalidInput& e) {
+    return QString("%1: %2").arg(path, QString::fromStdString(e.what()));
+  }
   return {};
 }
 

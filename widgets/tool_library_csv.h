@@ -45,9 +45,10 @@ class ToolLibraryCsv {
 
   // validateProject as text: "" when valid, else the ProjectError message.
   static QString validationError(const app::Project& project);
-  // Atomic write (QSaveFile); "" = ok.
+  // Atomic write of a regular or new file (app::writeFileAtomically: a device, FIFO or folder is
+  // refused); "" = ok.
   static QString writeFile(const QString& path, const QByteArray& bytes);
-  // Reads a whole file into `bytes`; "" = ok.
+  // Reads a whole regular file of at most 16 MB (app::kToolLibraryFileLimit) into `bytes`; "" = ok.
   static QString readFile(const QString& path, QByteArray& bytes);
 };
 

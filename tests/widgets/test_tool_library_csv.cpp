@@ -1,11 +1,13 @@
 // Tool library import/export: CSV and JSON round trips, the documented CSV layout, and all-or-nothing
-// import (a bad row changes nothing and is reported by line and column).
+// import (a bad row changes nothing and is reported by line and column); files that are not regular or
+// over the size limit are refused.
 #include <QApplication>
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
 #include "document/project.h"
+#include "support/hostile_files.h"
 #include "test_registry.h"
 #include "tool_library_csv.h"
 #include "tool_library_editor.h"
@@ -340,8 +342,45 @@ class TestToolLibraryCsv : public QObject {
 
   void missingFileIsReported() {
     ToolLibraryEditor editor;
-    QVERIFY(editor.importCsv("/nonexistent/lib.csv", true).contains("cannot read"));
+    QVERIFY(editor.importCsv("/nonexistent/lib.csv", true).contains("cannot be read"));
     QVERIFY(!editor.exportCsv("/nonexistent/dir/lib.csv").isEmpty());
+  }
+  // Import reads only a regular file of at most 16 MB, refused before it is read; export never
+  // replaces a device, FIFO or folder.
+  void unreadableAndUnwritableFiles_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("read");
+    QTest::addColumn<QString>("written");
+    QTest::newRow("FIFO") << "fifo"
+                          << "a FIFO, not a regular file: a tool library must be a regular file"
+                          << "a FIFO, not a regular file";
+    QTest::newRow("folder") << "folder"
+                            << "a directory, not a regular file: a tool library must be a regular file"
+                            << "a directory, not a regular file";
+    QTest::newRow("/dev/null") << "/dev/null"
+                               << "a character device, not a regular file: a tool library must be a regular file"
+                               << "a character device, not a regular file";
+    QTest::newRow("16 MB + 1 byte") << QString("bytes:%1").arg(16 * mx::test::kMB + 1)
+                                    << "16.0 MB (16777217 bytes) is over the 16 MB limit of a tool library"
+                                    << QString();
+  }
+  void unreadableAndUnwritableFiles() {
+    QFETCH(QString, kind);
+    QFETCH(QString, read);
+    QFETCH(QString, written);
+    QTemporaryDir dir;
+    const QString path = mx::test::hostileInput(dir, kind);
+    QVERIFY(!path.isEmpty());
+    QByteArray bytes = "untouched";
+    QCOMPARE(ToolLibraryCsv::readFile(path, bytes), path + ": " + read);
+    QCOMPARE(bytes, QByteArray("untouched"));
+    const QString error = ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toCsv(rubio().tools));
+    if (written.isEmpty()) {
+      QCOMPARE(error, QString());  // a regular file is replaced
+    } else {
+      QCOMPARE(error, path + ": cannot write (" + written + ")");
+      QVERIFY(!QFileInfo(path).isFile() || kind == "/dev/null");
+    }
   }
 };
 
