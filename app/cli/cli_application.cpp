@@ -62,7 +62,7 @@ int runCli(const QStringList& arguments) {
     QTextStream(stdout) << kUsage;
     return kExitOk;
   }
-  const QString command = arguments.at(help ? 2 : 1);
+  const QString& command = arguments.at(help ? 2 : 1);
   QStringList rest = arguments;
   rest.removeAt(1);  // keep argv[0] for QCommandLineParser
   if (help) rest = QStringList{arguments.at(0), QStringLiteral("--help")};

@@ -124,7 +124,7 @@ QString writeFileAtomically(const QString& path, const QByteArray& bytes) {
   // commit() would rename the torn file into place, so the flush is checked before it.
   errno = 0;
   if (file.write(bytes) != bytes.size() || !file.flush()) {
-    const QString reason = errno != 0 ? QString::fromLocal8Bit(std::strerror(errno)) : file.errorString();
+    QString reason = errno != 0 ? QString::fromLocal8Bit(std::strerror(errno)) : file.errorString();
     file.cancelWriting();
     return reason;
   }
