@@ -180,7 +180,7 @@ QString ProjectDocument::writeAutosave() {
   try {
     saveProject(project_, autosavePath());
   } catch (const ProjectError& e) {
-    const QString message = QString::fromStdString(e.what());
+    QString message = QString::fromStdString(e.what());
     emit autosaveFailed(message);
     return message;
   }

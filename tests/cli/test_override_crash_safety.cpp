@@ -32,7 +32,7 @@ QStringList overrideArgs(const QString& out, int run) {
   return {"override", kProgram, kProject, "--out", out, "--speed", kSpeeds[run % 2]};
 }
 
-QByteArray dateless(QByteArray text) {
+QByteArray dateless(const QByteArray& text) {
   static const QRegularExpression date(R"(\(date: [^)\n]*\))");
   return QString::fromUtf8(text).replace(date, "(date: -)").toUtf8();
 }

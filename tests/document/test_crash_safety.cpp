@@ -37,7 +37,7 @@ struct Tally {
   QString failure;      // the first broken expectation; the loop stops there
 };
 
-QProcess* startWriter(const QString& mode, const QString& project, QStringList extra = {}) {
+QProcess* startWriter(const QString& mode, const QString& project, const QStringList& extra = {}) {
   auto* writer = new QProcess;
   writer->start(MX_DOCUMENT_WRITER_PATH, QStringList{mode, project} + extra);
   return writer;
