@@ -18,6 +18,7 @@
 #include "control_figures.h"
 #include "core/invalid_input.h"
 #include "document/input_files.h"
+#include "document/output_file.h"
 #include "lobe_chart_view.h"
 
 namespace {
@@ -52,6 +53,15 @@ bool addCurve(QCustomPlot& plot, const QString& spec, int index, QString& error)
   return true;
 }
 
+// OUT is never one of the files read, nor a device, FIFO or directory (document/output_file.h).
+QString outputProblem(const QStringList& args, const QString& control_project) {
+  if (args.isEmpty()) return {};
+  QList<mx::app::NamedPath> inputs;
+  if (!control_project.isEmpty()) inputs.append({"--control", control_project});
+  for (qsizetype i = 1; i < args.size(); ++i) inputs.append({"a curve file", args[i].section('=', 0, 0)});
+  return mx::app::outputPathsProblem({{"OUT", args.front()}}, inputs);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -69,6 +79,10 @@ int main(int argc, char** argv) {
   parser.addOption({"jc", "With --control: J_c against beta over FROM:TO:STEP (figure 13).", "FROM:TO:STEP"});
   parser.process(app);
   const QStringList args = parser.positionalArguments();
+  if (const QString problem = outputProblem(args, parser.value("control")); !problem.isEmpty()) {
+    QTextStream(stderr) << "millexpert-plot: " << problem << '\n';
+    return 2;
+  }
   if (parser.isSet("control")) {
     if (args.size() != 1) {
       QTextStream(stderr) << "millexpert-plot: --control needs exactly one OUT.png\n";
@@ -117,7 +131,7 @@ int main(int argc, char** argv) {
     plot.yAxis->setRange(0.0, parser.value("max-depth").toDouble());
   else
     plot.yAxis->setRangeLower(0.0);
-  const QString out = args.front();
+  const QString& out = args.front();
   const bool ok =
       out.endsWith(".pdf", Qt::CaseInsensitive) ? plot.savePdf(out, 1200, 700) : plot.savePng(out, 1200, 700);
   if (!ok) {
