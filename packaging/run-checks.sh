@@ -5,8 +5,10 @@
 #      test command;
 #   2. the threaded tests (CTest label "threads", tests/CMakeLists.txt) under ThreadSanitizer (preset
 #      tsan, suppressions in packaging/sanitizers/tsan.supp); only their test executables are built;
-#   3. clang-tidy (.clang-tidy) over our sources in the asan build's compile database;
-#   4. every libFuzzer target (preset fuzz, clang-14, ASan + UBSan; tests/fuzz/README.md), one after the
+#   3. the GUI monkey (docs/testing.md) on the asan build's real window under Xvfb for MX_MONKEY_SECONDS
+#      (600 s by default) from MX_MONKEY_SEED (the time by default; printed, so that a failure replays);
+#   4. clang-tidy (.clang-tidy) over our sources in the asan build's compile database;
+#   5. every libFuzzer target (preset fuzz, clang-14, ASan + UBSan; tests/fuzz/README.md), one after the
 #      other, each for MX_FUZZ_SECONDS (120 s by default) from its seed corpus in a scratch corpus
 #      folder, with -timeout=5 -rss_limit_mb=1024: a crash, leak, timeout or out-of-memory fails it,
 #      and the input is kept in build/fuzz/findings/.
@@ -31,6 +33,17 @@ trap 'rm -rf "$run_tmp" "$run_home"' EXIT
 env -u XDG_CONFIG_HOME -u XDG_DATA_HOME -u XDG_STATE_HOME -u XDG_CACHE_HOME -u XDG_RUNTIME_DIR \
   TMPDIR="$run_tmp" HOME="$run_home" ctest --preset tsan --parallel "$(nproc)"
 echo "run-checks: TSan took $((SECONDS - started)) s"
+
+started=$SECONDS
+monkey_seed="${MX_MONKEY_SEED:-$(date +%s)}"
+monkey_seconds="${MX_MONKEY_SECONDS:-600}"
+echo "run-checks: GUI monkey under ASan, seed $monkey_seed, $monkey_seconds s (MX_MONKEY_SEED=$monkey_seed replays it)"
+env -u XDG_CONFIG_HOME -u XDG_DATA_HOME -u XDG_STATE_HOME -u XDG_CACHE_HOME -u XDG_RUNTIME_DIR \
+  TMPDIR="$run_tmp" HOME="$run_home" ASAN_OPTIONS=detect_leaks=1 \
+  LSAN_OPTIONS="suppressions=$PWD/packaging/sanitizers/lsan.supp:print_suppressions=0" \
+  xvfb-run -a -s "-screen 0 1920x1080x24" build/asan/tests/millexpert-e2e monkey \
+  --seed "$monkey_seed" --seconds "$monkey_seconds"
+echo "run-checks: the monkey took $((SECONDS - started)) s"
 
 echo "run-checks: clang-tidy"
 started=$SECONDS

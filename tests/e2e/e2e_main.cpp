@@ -4,10 +4,13 @@
 //                                             check passes, 1 naming the failed checks
 //   millexpert-e2e screenshots DIR [FILE...]  the README's and docs' pictures into DIR
 //                                             (packaging/screenshots.sh)
+//   millexpert-e2e monkey [--seed N] [--seconds S] [--project FILE]
+//                                             random input on every dock (CTest e2e.monkey)
 // A check that cannot run (no X display, not the xcb platform, a screen under 1920x1080, no xdotool)
 // fails.
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QStringList>
 #include <QTextStream>
 #include <clocale>
 #include <cstdio>
@@ -15,6 +18,8 @@
 #include "e2e_check.h"
 #include "e2e_driver.h"
 #include "e2e_environment.h"
+#include "e2e_monkey.h"
+#include "e2e_monkey_supervisor.h"
 #include "e2e_report.h"
 #include "e2e_screenshots.h"
 
@@ -23,7 +28,8 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: millexpert-e2e check\n"
-               "       millexpert-e2e screenshots DIR [FILE...]   (FILE: %s)\n",
+               "       millexpert-e2e screenshots DIR [FILE...]   (FILE: %s)\n"
+               "       millexpert-e2e monkey [--seed N] [--seconds S] [--project FILE]\n",
                qPrintable(mx::e2e::screenshotNames().join(", ")));
   return 2;
 }
@@ -50,7 +56,15 @@ int finish(const mx::e2e::Report& report, qint64 elapsed_ms) {
 
 int main(int argc, char** argv) {
   const QString scenario = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
-  if (scenario != "check" && !(scenario == "screenshots" && argc > 2)) return usage();
+  if (scenario != "check" && scenario != "monkey" && !(scenario == "screenshots" && argc > 2)) return usage();
+  mx::e2e::MonkeyOptions monkey;
+  if (scenario == "monkey") {
+    QStringList arguments;
+    for (int i = 2; i < argc; ++i) arguments << QString::fromLocal8Bit(argv[i]);
+    monkey = mx::e2e::parseMonkeyOptions(arguments);
+    if (!monkey.error.isEmpty()) return fail(monkey.error);
+    if (mx::e2e::monkeyLogPath().isEmpty()) return mx::e2e::superviseMonkey(argv, monkey);
+  }
   std::setlocale(LC_ALL, "C");
   const mx::e2e::IsolatedEnvironment environment;
   if (!environment.valid()) return fail("cannot create the private HOME and TMPDIR");
@@ -67,11 +81,14 @@ int main(int argc, char** argv) {
   clock.start();
   mx::e2e::Report report;
   try {
-    if (scenario == "check") {
+    if (scenario != "screenshots") {
       const QString xdotool = mx::e2e::findXdotool();
       if (xdotool.isEmpty()) return fail("xdotool is not on PATH (packaging/bootstrap.sh installs it)");
       mx::e2e::XInput input(xdotool);
-      mx::e2e::runCheck(report, input);
+      if (scenario == "check")
+        mx::e2e::runCheck(report, input);
+      else
+        mx::e2e::runMonkey(report, xdotool, monkey, mx::e2e::monkeyLogPath());
     } else {
       mx::e2e::runScreenshots(report, QString::fromLocal8Bit(argv[2]), QApplication::arguments().mid(3));
     }
