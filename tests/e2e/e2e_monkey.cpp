@@ -10,6 +10,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "document/project.h"
@@ -200,6 +202,14 @@ void Monkey::report() {
   report_.check("monkey.no_dialog_left", open.isEmpty(), open.isEmpty() ? "none open" : open.join(", "));
 }
 
+// The status bar's message and labels (the engine's state, an error).
+QStringList statusTexts(gui::MainWindow& window) {
+  QStringList texts{window.statusBar()->currentMessage()};
+  for (const QLabel* label : window.statusBar()->findChildren<QLabel*>())
+    if (!label->text().isEmpty()) texts << label->text();
+  return texts;
+}
+
 // Ctrl+S onto the copy (its time stamp set back a day, so the save must renew it).
 void saveWithCtrlS(Report& report, AsyncXInput& input, gui::MainWindow& window, const QString& path) {
   {
@@ -234,8 +244,14 @@ void reloadAndCompare(Report& report, gui::MainWindow& window, const QString& pa
   report.require("reload.second_window_opens", second->openProject(path), path);
   report.check("reload.second_window_equal", app::projectToJson(*second->project()) == shown,
                "a second window on the saved file holds the same project");
-  report.check("reload.second_window_lobes", lobes.count() > 0 || lobes.wait(kComputeMs),
-               "the second window computes the lobes of the saved project");
+  if (second->project()->tools.empty()) {  // the monkey removed every tool: nothing to compute
+    report.note("the saved project has no tools left: no lobes to compute");
+    return;
+  }
+  const bool computed = lobes.count() > 0 || lobes.wait(kComputeMs);
+  report.check("reload.second_window_lobes", computed,
+               computed ? QString("the second window computes the lobes of the saved project")
+                        : "no lobes; the status bar says: " + statusTexts(*second).join(" | "));
 }
 
 }  // namespace
