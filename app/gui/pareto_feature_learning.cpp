@@ -74,13 +74,15 @@ void ParetoFeature::setLearningDatabasePath(const QString& path) {
 }
 
 // The current operating point in engine form, with the Pareto objectives when the active tool is the
-// study's tool and the point cuts (a drag below the speed axis stops at b = 0: no robustness there).
+// study's tool and the point cuts within the study's lobes: the robustness has no value at b = 0 (a drag
+// below the speed axis stops there) nor off the lobes (the chart shows speeds beyond them).
 std::optional<ParetoPoint> ParetoFeature::currentParetoPoint() const {
   const auto& study = runner_->study();
   const app::PickedPoint& pt = context_.point();
   if (!study || context_.activeTool() != study->request().tool) return std::nullopt;
-  if (!(pt.speed_rpm > 0.0 && pt.depth_mm > 0.0 && pt.feed_mm_per_tooth > 0.0)) return std::nullopt;
-  return study->table().evaluate(rpmToRevPerS(pt.speed_rpm), pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3);
+  const double n = rpmToRevPerS(pt.speed_rpm);
+  if (!(pt.depth_mm > 0.0 && pt.feed_mm_per_tooth > 0.0 && study->grid().boundary().covers(n))) return std::nullopt;
+  return study->table().evaluate(n, pt.depth_mm * 1e-3, pt.feed_mm_per_tooth * 1e-3);
 }
 
 void ParetoFeature::recordOperatingPoint() {

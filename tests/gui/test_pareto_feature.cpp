@@ -207,18 +207,30 @@ class TestParetoFeature : public QObject {
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().front().source, QString("feedback"));
   }
 
-  // A point on the speed axis (a drag below it stops at b = 0) has no Pareto objectives: the
-  // monitoring dock shows none, where their robustness threw out of the event loop and ended the program.
-  void pointWithoutDepthHasNoObjectives() {
+  // A point on the speed axis (a drag below it stops at b = 0) or beside the lobes (the chart reaches
+  // past them) has no Pareto objectives: the monitoring dock shows none, where their robustness threw
+  // out of the event loop and ended the program.
+  void pointWithoutObjectives_data() {
+    QTest::addColumn<double>("speed_rpm");
+    QTest::addColumn<double>("depth_mm");
+    QTest::newRow("no depth") << 0.0 << 0.0;
+    QTest::newRow("below the lobes' speeds") << 781.141 << -1.0;
+    QTest::newRow("above them") << 1e5 << -1.0;
+  }
+  void pointWithoutObjectives() {
+    QFETCH(double, speed_rpm);
+    QFETCH(double, depth_mm);
     gui::MainWindow window;
     QVERIFY(openCase(window));
     test::contextOf(window)->setActiveTool(test::paretoOf(window)->runner()->study()->request().tool);
     widgets::MonitoringPanel* m = test::windowPart<widgets::MonitoringPanel>(window);
     QVERIFY(m->valueText("ros") != QString::fromUtf8("\u2013"));
     app::PickedPoint pt = window.document()->point();
-    pt.depth_mm = 0.0;
+    if (speed_rpm > 0.0) pt.speed_rpm = speed_rpm;
+    if (depth_mm >= 0.0) pt.depth_mm = depth_mm;
     window.document()->setPoint(pt);
-    QTest::qWait(100);
+    QVERIFY(test::waitForReadout(window));
+    QTest::qWait(50);
     QCOMPARE(m->valueText("ros"), QString::fromUtf8("\u2013"));
   }
 
