@@ -1,7 +1,8 @@
 #pragma once
 // Numbers the window shows that are not numbers: "nan" or "inf" in a visible label, a read-only field
 // or a cell of a visible table. What the user typed is theirs: editable fields are not scanned, and the
-// project's own strings (a tool named "-inf", a rule line) are taken out of a text before it is.
+// project's own strings (a tool named "-inf", a rule line) and a refused value quoted in its refusal
+// ("= -inf: not a number") are taken out of a text before it is.
 #include <QJsonObject>
 #include <QStringList>
 
