@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tool_library_csv.h"
+#include "document/project_validation.h"
 
 namespace mx::widgets {
 
@@ -303,7 +303,7 @@ void MachineOperationPanel::commitRadialChoice() {
 }
 
 void MachineOperationPanel::request(const app::Project& edited, const QString& path, const QString& description) {
-  const QString error = ToolLibraryCsv::validationError(edited);
+  const QString error = app::projectValidationError(edited);
   markError(error.isEmpty() ? QString() : path, error);
   if (!error.isEmpty()) {
     refresh();  // refused in place: the field shows the project's value again

@@ -4,7 +4,7 @@
 #include <QJsonObject>
 
 #include "range_delegate.h"
-#include "tool_library_csv.h"
+#include "document/project_validation.h"
 
 namespace mx::widgets {
 
@@ -126,7 +126,7 @@ Qt::ItemFlags ModeTableModel::flags(const QModelIndex& index) const {
 }
 
 bool ModeTableModel::request(const app::Project& edited, const QString& description) {
-  const QString error = ToolLibraryCsv::validationError(edited);
+  const QString error = app::projectValidationError(edited);
   if (!error.isEmpty()) {
     emit editRefused(error);
     return false;

@@ -1,19 +1,17 @@
 #include "tool_library_editor.h"
 
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QJsonArray>
-#include <QMessageBox>
 #include <QScrollBar>
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "cam_tool_summary.h"
+#include "document/project_validation.h"
 #include "range_delegate.h"
-#include "tool_library_csv.h"
 
 namespace mx::widgets {
 
@@ -49,29 +47,29 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
       modesY_(new ModeTableModel(Axis::Y, this)),
       toolView_(new QTableView(this)),
       picture_(new ToolPictureWidget(this)),
+      camData_(new QLabel(this)),
       toolError_(errorLabel(this)),
       modeError_(errorLabel(this)),
       modeBox_(new QGroupBox(tr("Modes"), this)) {
   auto* add = button(tr("Add tool"), tr("Add a new tool to the library (undoable)"), this);
   duplicate_ = button(tr("Duplicate"), tr("Add a copy of the selected tool (undoable)"), this);
   remove_ = button(tr("Remove"), tr("Remove the selected tool from the library (undoable)"), this);
-  auto* importCsvButton = button(tr("Import CSV…"), tr("Replace or extend the library from a CSV file"), this);
-  auto* exportCsvButton = button(tr("Export CSV…"), tr("Write the library as CSV (one row per mode)"), this);
-  auto* importJsonButton =
-      button(tr("Import JSON…"), tr("Replace or extend the library from the tools of a project / library file"), this);
-  auto* exportJsonButton = button(tr("Export JSON…"), tr("Write the library as a JSON tool library"), this);
+  auto* importButton = button(tr("Import library…"),
+                              tr("Replace or extend the library from a Fusion 360, FreeCAD, LinuxCNC, CSV or JSON "
+                                 "tool library"),
+                              this);
+  auto* exportButton =
+      button(tr("Export library…"), tr("Write the library for Fusion 360, FreeCAD, LinuxCNC, CSV or JSON"), this);
   connect(add, &QPushButton::clicked, this, &ToolLibraryEditor::addTool);
   connect(duplicate_, &QPushButton::clicked, this, &ToolLibraryEditor::duplicateTool);
   connect(remove_, &QPushButton::clicked, this, &ToolLibraryEditor::removeTool);
-  connect(importCsvButton, &QPushButton::clicked, this, [this] { chooseImport(true); });
-  connect(exportCsvButton, &QPushButton::clicked, this, [this] { chooseExport(true); });
-  connect(importJsonButton, &QPushButton::clicked, this, [this] { chooseImport(false); });
-  connect(exportJsonButton, &QPushButton::clicked, this, [this] { chooseExport(false); });
+  connect(importButton, &QPushButton::clicked, this, &ToolLibraryEditor::importRequested);
+  connect(exportButton, &QPushButton::clicked, this, &ToolLibraryEditor::exportRequested);
 
   auto* buttons = new QHBoxLayout;
   for (QPushButton* b : {add, duplicate_, remove_}) buttons->addWidget(b);
   buttons->addStretch(1);
-  for (QPushButton* b : {importCsvButton, exportCsvButton, importJsonButton, exportJsonButton}) buttons->addWidget(b);
+  for (QPushButton* b : {importButton, exportButton}) buttons->addWidget(b);
 
   toolView_->setModel(tools_);
   toolView_->setItemDelegate(new RangeDelegate(toolView_));
@@ -117,6 +115,9 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
   layout->addLayout(buttons);
   layout->addWidget(toolView_, 2);
   layout->addWidget(toolError_);
+  camData_->setObjectName("camData");
+  camData_->setWordWrap(true);
+  layout->addWidget(camData_);
   layout->addWidget(picture_);  // under the table: the tools dock is narrow
   layout->addWidget(modeBox_, 1);
   layout->addWidget(modeError_);
@@ -183,6 +184,8 @@ void ToolLibraryEditor::showTapTests(const app::ToolSpec* tool) {
 
 void ToolLibraryEditor::setUnits(DisplayUnits* units) {
   tools_->setUnits(units);
+  units_ = units;
+  if (units) connect(units, &DisplayUnits::changed, this, [this] { showCamData(project().findTool(currentToolId())); });
 }
 
 QString ToolLibraryEditor::currentToolId() const {
@@ -207,17 +210,26 @@ void ToolLibraryEditor::onSelectionChanged() {
   modeBox_->setTitle(id.isEmpty() ? tr("Modes (no tool selected)") : tr("Modes of tool %1").arg(id));
   modeBox_->setEnabled(!id.isEmpty());
   showTapTests(project().findTool(id));
-  if (const app::ToolSpec* tool = project().findTool(id)) {
+  const app::ToolSpec* tool = project().findTool(id);
+  if (tool) {
     picture_->setTool(*tool);
   } else {
     picture_->clear();
   }
+  showCamData(tool);
   duplicate_->setEnabled(!id.isEmpty());
   remove_->setEnabled(!id.isEmpty());
   if (id != selected_) {
     selected_ = id;
     emit toolSelected(id);
   }
+}
+
+void ToolLibraryEditor::showCamData(const app::ToolSpec* tool) {
+  const QString summary = tool ? camToolSummary(*tool, units_) : QString();
+  camData_->setText(summary);
+  camData_->setToolTip(tool ? cuttingPresetsText(*tool, units_) : QString());
+  camData_->setVisible(!summary.isEmpty());
 }
 
 void ToolLibraryEditor::showError(const QString& reason) {
@@ -227,7 +239,7 @@ void ToolLibraryEditor::showError(const QString& reason) {
 }
 
 void ToolLibraryEditor::request(const app::Project& edited, const QString& description, const QString& select) {
-  const QString error = ToolLibraryCsv::validationError(edited);
+  const QString error = app::projectValidationError(edited);
   if (!error.isEmpty()) {
     showError(error);
     return;
@@ -277,67 +289,6 @@ void ToolLibraryEditor::removeTool() {
   edited.tools.erase(edited.tools.begin() + row);
   const QString next = tools_->idAt(row + 1).isEmpty() ? tools_->idAt(row - 1) : tools_->idAt(row + 1);
   request(edited, tr("Remove tool %1").arg(id), next);
-}
-
-QString ToolLibraryEditor::importFile(const QString& path, bool replace, bool csv) {
-  QByteArray bytes;
-  QString error = ToolLibraryCsv::readFile(path, bytes);
-  app::Project merged;
-  if (error.isEmpty()) {
-    const ToolLibraryFile file = csv ? ToolLibraryCsv::fromCsv(bytes) : ToolLibraryCsv::fromJson(bytes);
-    error = ToolLibraryCsv::merge(project(), file, replace, merged);
-  }
-  if (!error.isEmpty()) {
-    showError(tr("Import refused, the library is unchanged: %1").arg(error));
-    return error;
-  }
-  request(merged, replace ? tr("Replace the tool library from %1").arg(QFileInfo(path).fileName())
-                          : tr("Add tools from %1").arg(QFileInfo(path).fileName()));
-  return {};
-}
-
-QString ToolLibraryEditor::importCsv(const QString& path, bool replace) {
-  return importFile(path, replace, true);
-}
-
-QString ToolLibraryEditor::importJson(const QString& path, bool replace) {
-  return importFile(path, replace, false);
-}
-
-QString ToolLibraryEditor::exportCsv(const QString& path) const {
-  return ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toCsv(project().tools));
-}
-
-QString ToolLibraryEditor::exportJson(const QString& path) const {
-  return ToolLibraryCsv::writeFile(path, ToolLibraryCsv::toJson(project().tools));
-}
-
-void ToolLibraryEditor::chooseImport(bool csv) {
-  const QString filter = csv ? tr("CSV tool library (*.csv)") : tr("JSON tool library or project (*.json *.mxproj)");
-  const QString path = QFileDialog::getOpenFileName(this, tr("Import tool library"), {}, filter);
-  if (path.isEmpty()) return;
-  bool replace = true;
-  if (tools_->rowCount() > 0) {
-    QMessageBox box(
-        QMessageBox::Question, tr("Import tool library"),
-        tr("Replace the current %n tool(s) or add the imported tools to them?", nullptr, tools_->rowCount()),
-        QMessageBox::Cancel, this);
-    QAbstractButton* replaceButton = box.addButton(tr("Replace"), QMessageBox::DestructiveRole);
-    QAbstractButton* appendButton = box.addButton(tr("Append"), QMessageBox::AcceptRole);
-    box.exec();
-    if (box.clickedButton() != replaceButton && box.clickedButton() != appendButton) return;
-    replace = box.clickedButton() == replaceButton;
-  }
-  const QString error = csv ? importCsv(path, replace) : importJson(path, replace);
-  if (!error.isEmpty()) QMessageBox::warning(this, tr("Import refused"), error);
-}
-
-void ToolLibraryEditor::chooseExport(bool csv) {
-  const QString filter = csv ? tr("CSV tool library (*.csv)") : tr("JSON tool library (*.json)");
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export tool library"), {}, filter);
-  if (path.isEmpty()) return;
-  const QString error = csv ? exportCsv(path) : exportJson(path);
-  if (!error.isEmpty()) QMessageBox::warning(this, tr("Export failed"), error);
 }
 
 }  // namespace mx::widgets

@@ -3,7 +3,7 @@
 // remove, and for the selected tool its end view (teeth at their pitch angles) and its x and y modes. It shows the
 // project given by setProject() and never changes it: every edit is validated (validateProject) and requested with
 // editRequested(); an invalid edit is refused in place (no signal, the old value stays, the reason is shown in red
-// under the table). CSV and JSON import/export of the library are all-or-nothing.
+// under the table). Its Import / Export buttons ask the window for a library transfer.
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>
@@ -35,17 +35,11 @@ class ToolLibraryEditor : public QWidget {
   bool selectTool(const QString& id);           // false when the library has no such tool
   QString errorText() const { return error_; }  // the last refusal shown ("" after a good edit)
 
-  // Import / export of the library; return "" on success, else the reason (also shown in the
-  // editor). Imports validate everything first and emit at most one editRequested.
-  QString importCsv(const QString& path, bool replace);
-  QString exportCsv(const QString& path) const;
-  QString importJson(const QString& path, bool replace);
-  QString exportJson(const QString& path) const;
-
   ToolTableModel* toolModel() const { return tools_; }
   ModeTableModel* modeModel(Axis axis) const { return axis == Axis::X ? modesX_ : modesY_; }
   QTableView* toolView() const { return toolView_; }
   ToolPictureWidget* toolPicture() const { return picture_; }
+  QLabel* camData() const { return camData_; }
   QTableView* modeView(Axis axis) const { return axis == Axis::X ? modeViewX_ : modeViewY_; }
 
  public slots:
@@ -57,15 +51,16 @@ class ToolLibraryEditor : public QWidget {
  signals:
   void editRequested(const mx::app::Project& edited, const QString& description);
   void toolSelected(const QString& id);
+  // The Import / Export buttons: the window's tool-library transfer chooses the file and the format.
+  void importRequested();
+  void exportRequested();
 
  private:
   QWidget* buildModePane(Axis axis);
   void request(const app::Project& edited, const QString& description, const QString& select = {});
-  QString importFile(const QString& path, bool replace, bool csv);
-  void chooseImport(bool csv);
-  void chooseExport(bool csv);
   void onSelectionChanged();
   void showTapTests(const app::ToolSpec* tool);
+  void showCamData(const app::ToolSpec* tool);
   QString uniqueId(const QString& stem) const;
 
   ToolTableModel* tools_;
@@ -73,6 +68,8 @@ class ToolLibraryEditor : public QWidget {
   ModeTableModel* modesY_;
   QTableView* toolView_;
   ToolPictureWidget* picture_;  // the end view of the selected tool
+  QLabel* camData_;             // what the CAM library says about the selected tool
+  DisplayUnits* units_ = nullptr;
   QTableView* modeViewX_ = nullptr;
   QTableView* modeViewY_ = nullptr;
   QLabel* titleX_ = nullptr;  // "x direction", with its tap test when the tool has one

@@ -4,8 +4,8 @@
 
 #include "document/project_rules.h"
 #include "range_delegate.h"
-#include "tool_library_csv.h"
-#include "tooth_list_text.h"
+#include "document/project_validation.h"
+#include "document/tooth_list_text.h"
 
 namespace mx::widgets {
 
@@ -79,9 +79,9 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
     case Helix:
       return t.helix_deg;
     case Pitch:
-      return t.pitch_deg ? toothListText(*t.pitch_deg, "; ") : uniformPitchText();
+      return t.pitch_deg ? app::toothListText(*t.pitch_deg, "; ") : uniformPitchText();
     case Runout:
-      return t.runout_um ? toothListText(*t.runout_um, "; ") : noRunoutText();
+      return t.runout_um ? app::toothListText(*t.runout_um, "; ") : noRunoutText();
     case Kt:
       return opt(t.Kt_N_mm2);
     case Kr:
@@ -324,7 +324,7 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
       !listError.isEmpty() ? listError
       : !ok                ? QString("%1 = '%2': not a number").arg(path, value.toString())
       : !integral ? QString("%1 = %2: must be an integer %3").arg(path, value.toString(), app::rules::kTeeth.range())
-                  : ToolLibraryCsv::validationError(edited);
+                  : app::projectValidationError(edited);
   if (!error.isEmpty()) {
     emit editRefused(error);
     return false;
@@ -341,7 +341,7 @@ QString ToolTableModel::readToothList(const QVariant& value, const QString& path
     list.reset();
     return {};
   }
-  const ToothListParse parsed = parseToothList(text);
+  const app::ToothListParse parsed = app::parseToothList(text);
   if (!parsed.ok())
     return tr("%1 = '%2': value %3 ('%4') is not a number (one number per tooth, separated by ';'; empty or '%5' "
               "for none)")

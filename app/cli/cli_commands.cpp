@@ -23,6 +23,10 @@ const CliCommand* findCommand(const QString& name) {
       {"frf-info", "the FRF datasets of a tap-test file (UFF 58/58b, CSV)", &runFrfInfoCommand},
       {"frf-fit", "modes fitted to one FRF of a tap-test file (LSCF or peak picking)", &runFrfFitCommand},
       {"frf-export", "a tool's FRF from its modes or tap test, written as UFF 58/58b or CSV", &runFrfExportCommand},
+      {"library-import", "append the tools of a Fusion 360, FreeCAD, LinuxCNC, CSV or JSON tool library to a project",
+       &runLibraryImportCommand},
+      {"library-export", "write a project's tools as a Fusion 360, FreeCAD, LinuxCNC, CSV or JSON tool library",
+       &runLibraryExportCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

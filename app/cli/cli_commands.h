@@ -28,5 +28,7 @@ int runSuperviseCommand(const QStringList& arguments);
 int runFrfInfoCommand(const QStringList& arguments);
 int runFrfFitCommand(const QStringList& arguments);
 int runFrfExportCommand(const QStringList& arguments);
+int runLibraryImportCommand(const QStringList& arguments);
+int runLibraryExportCommand(const QStringList& arguments);
 
 }  // namespace mx::app

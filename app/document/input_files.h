@@ -13,6 +13,9 @@ namespace mx::app {
 inline constexpr InputFileLimit kProjectFileLimit{64 * kMegabyte, "a project file"};
 // A tool library (CSV or JSON) of the tool-library editor: at most kMaxTools tools.
 inline constexpr InputFileLimit kToolLibraryFileLimit{16 * kMegabyte, "a tool library"};
+// A CAM or controller tool library (Fusion 360, FreeCAD, LinuxCNC): a shop's whole library, thousands
+// of tools with their holders and presets, a few kB each.
+inline constexpr InputFileLimit kCamToolLibraryFileLimit{64 * kMegabyte, "a CAM tool library"};
 // The lobes JSON that millexpert-plot draws.
 inline constexpr InputFileLimit kPlotInputFileLimit{64 * kMegabyte, "a lobes JSON file"};
 

@@ -43,7 +43,18 @@ const QStringList& keyOrder() {
                                  "modes_x",
                                  "modes_y",
                                  "frf_x",
-                                 "frf_y",  // tool
+                                 "frf_y",
+                                 "type",
+                                 "flute_length_mm",
+                                 "overall_length_mm",
+                                 "stickout_mm",
+                                 "corner_radius_mm",
+                                 "cutting_data",
+                                 "origin",  // tool
+                                 "surface_speed_m_min",
+                                 "feed_per_tooth_mm",
+                                 "feed_mm_min",
+                                 "axial_depth_mm",  // cutting preset
                                  "file",
                                  "dataset",
                                  "quantity",  // FRF reference

@@ -41,6 +41,29 @@ struct FrfRefSpec {
   bool operator==(const FrfRefSpec&) const = default;
 };
 
+// A cutting preset of a CAM tool library (Fusion 360 start values): the recommended cut for one
+// material. Informative: the ranking computes its own speeds and feeds.
+struct CuttingPresetSpec {
+  QString name;
+  std::optional<double> speed_rpm;
+  std::optional<double> surface_speed_m_min;
+  std::optional<double> feed_per_tooth_mm;
+  std::optional<double> feed_mm_min;
+  std::optional<double> axial_depth_mm;
+  std::optional<double> radial_depth_mm;
+  QJsonObject unknown;
+  bool operator==(const CuttingPresetSpec&) const = default;
+};
+
+// The tool's record in the CAM library it was imported from (docs/tool-libraries.md), kept whole so
+// that an export back to that format returns what MillExpert does not map (holders, post-processor
+// numbers, vendor data).
+struct ToolOriginSpec {
+  QString format;  // "fusion", "freecad" or "linuxcnc"
+  QJsonObject data;
+  bool operator==(const ToolOriginSpec&) const = default;
+};
+
 struct ToolSpec {
   QString id;
   int teeth = 0;
@@ -58,6 +81,14 @@ struct ToolSpec {
   std::vector<ModeSpec> modes_y;
   std::optional<FrfRefSpec> frf_x;  // measured dynamics; an axis may have modes, an FRF or both
   std::optional<FrfRefSpec> frf_y;
+  // Geometry and cutting data from CAM tool libraries; shown and exported, not used by the models.
+  std::optional<QString> type;  // "flat end mill", "ball end mill", ...
+  std::optional<double> flute_length_mm;
+  std::optional<double> overall_length_mm;
+  std::optional<double> stickout_mm;
+  std::optional<double> corner_radius_mm;
+  std::vector<CuttingPresetSpec> cutting_data;
+  std::optional<ToolOriginSpec> origin;
   QJsonObject unknown;  // the file's keys this build does not know; they stay with this tool
   bool hasFrf() const { return frf_x.has_value() || frf_y.has_value(); }
   bool operator==(const ToolSpec&) const = default;
@@ -193,6 +224,10 @@ Project loadProject(const QString& path);
 std::vector<ToolSpec> toolsFromJson(const QByteArray& text);
 // Back to JSON: the typed values, written over the unknown keys of each object.
 QJsonObject projectToJson(const Project& project);
+// One tool as an element of the project file's tools array, and back. toolFromJson checks the types
+// (messages start with `path`), not the ranges: validateTools does.
+QJsonObject toolToJson(const ToolSpec& tool);
+ToolSpec toolFromJson(const QJsonObject& object, const QString& path);
 // Atomic save (QSaveFile: write, then rename). Relative FRF paths are written relative to the new
 // file's folder (withFrfPathsRelativeTo). Throws ProjectError on I/O failure.
 void saveProject(const Project& project, const QString& path);

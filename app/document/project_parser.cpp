@@ -124,6 +124,47 @@ std::optional<FrfRefSpec> readFrfRef(const ObjectReader& tool, const QString& ke
   return ref;
 }
 
+std::vector<CuttingPresetSpec> readCuttingData(const ObjectReader& tool) {
+  std::vector<CuttingPresetSpec> presets;
+  const std::optional<QJsonArray> array = tool.optionalArray("cutting_data");
+  if (!array) return presets;
+  for (qsizetype i = 0; i < array->size(); ++i) {
+    const ObjectReader r = elementObject(*array, i, tool.pathOf("cutting_data"));
+    CuttingPresetSpec p;
+    p.name = r.string("name");
+    p.speed_rpm = r.optionalNumber("speed_rpm");
+    p.surface_speed_m_min = r.optionalNumber("surface_speed_m_min");
+    p.feed_per_tooth_mm = r.optionalNumber("feed_per_tooth_mm");
+    p.feed_mm_min = r.optionalNumber("feed_mm_min");
+    p.axial_depth_mm = r.optionalNumber("axial_depth_mm");
+    p.radial_depth_mm = r.optionalNumber("radial_depth_mm");
+    p.unknown = withoutKeys(r.object(), {"name", "speed_rpm", "surface_speed_m_min", "feed_per_tooth_mm",
+                                         "feed_mm_min", "axial_depth_mm", "radial_depth_mm"});
+    presets.push_back(p);
+  }
+  return presets;
+}
+
+std::optional<ToolOriginSpec> readOrigin(const ObjectReader& tool) {
+  const std::optional<ObjectReader> r = tool.optionalObject("origin");
+  if (!r) return std::nullopt;
+  ToolOriginSpec origin;
+  origin.format = r->string("format");
+  const std::optional<ObjectReader> data = r->optionalObject("data");
+  if (data) origin.data = data->object();
+  return origin;
+}
+
+void readCamGeometry(const ObjectReader& r, ToolSpec& t) {
+  t.type = r.optionalString("type");
+  t.flute_length_mm = r.optionalNumber("flute_length_mm");
+  t.overall_length_mm = r.optionalNumber("overall_length_mm");
+  t.stickout_mm = r.optionalNumber("stickout_mm");
+  t.corner_radius_mm = r.optionalNumber("corner_radius_mm");
+  t.cutting_data = readCuttingData(r);
+  t.origin = readOrigin(r);
+}
+
 ToolSpec readTool(const ObjectReader& r) {
   ToolSpec t;
   t.id = r.string("id");
@@ -140,8 +181,11 @@ ToolSpec readTool(const ObjectReader& r) {
   t.frf_y = readFrfRef(r, "frf_y");
   t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
   t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
+  readCamGeometry(r, t);
   t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "pitch_deg", "runout_um", "Kt_N_mm2",
-                                       "Kr", "radial_depth_mm", "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y"});
+                                       "Kr", "radial_depth_mm", "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y",
+                                       "type", "flute_length_mm", "overall_length_mm", "stickout_mm",
+                                       "corner_radius_mm", "cutting_data", "origin"});
   return t;
 }
 
@@ -192,6 +236,8 @@ Project projectFromJson(const QJsonObject& root) {
   validateProject(p);
   return p;
 }
+
+ToolSpec toolFromJson(const QJsonObject& object, const QString& path) { return readTool(ObjectReader(object, path)); }
 
 std::vector<ToolSpec> toolsFromJson(const QByteArray& text) {
   QJsonParseError parse{};

@@ -55,11 +55,23 @@ inline constexpr NumberRule kGridSpeedRpm{B::Open, 0.0, B::Closed, 1e5, false};
 inline constexpr NumberRule kGridDivisions{B::Closed, 1.0, B::Closed, 1000.0, true};
 inline constexpr NumberRule kGridFeedStepMm{B::Closed, 1e-4, B::Closed, 10.0, false};
 inline constexpr NumberRule kDeltaPerS{B::Closed, 0.0, B::Closed, 1e4, false};  // expert.delta_per_s
+// CAM geometry and cutting presets (tools[].flute_length_mm ..., tools[].cutting_data[]).
+inline constexpr NumberRule kToolLengthMm{B::Open, 0.0, B::Closed, 1e4, false};
+inline constexpr NumberRule kPresetSpeedRpm{B::Open, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kSurfaceSpeedMMin{B::Open, 0.0, B::Closed, 1e5, false};
+inline constexpr NumberRule kPresetFeedMmMin{B::Open, 0.0, B::Closed, 1e6, false};
+inline constexpr NumberRule kPresetDepthMm{B::Open, 0.0, B::Closed, 1000.0, false};
+inline constexpr qsizetype kMaxCuttingPresets = 100;  // tools[].cutting_data
+inline constexpr qsizetype kMaxToolTypeChars = 100;   // tools[].type
 // Counts that scale every computation linearly.
 inline constexpr qsizetype kMaxTools = 100;        // tools in one project
 inline constexpr qsizetype kMaxModesPerAxis = 50;  // modes_x, modes_y
 inline constexpr double kMaxGridCells = 1e6;       // expert grid speeds x depth divisions
 inline constexpr double kMaxGridPoints = 5e6;      // ... x feeds: the Pareto study's table
+// Corner radius of a tool of diameter D: [0, D/2].
+inline constexpr NumberRule cornerRadius(double diameter_mm) {
+  return {B::Closed, 0.0, B::Closed, diameter_mm / 2.0, false};
+}
 // Radial depth of a tool of diameter D: (0, D].
 inline constexpr NumberRule radialDepth(double diameter_mm) {
   return {B::Open, 0.0, B::Closed, diameter_mm, false};

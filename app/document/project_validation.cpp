@@ -91,6 +91,48 @@ void validateFrfRef(const QString& path, const std::optional<FrfRefSpec>& ref) {
                            .arg(path, formatValue(*ref->quantity)));
 }
 
+void validateCuttingPreset(const QString& path, const CuttingPresetSpec& p) {
+  if (p.name.trimmed().isEmpty())
+    throw ProjectError(QString("%1.name = %2: must be a non-empty string").arg(path, formatValue(p.name)));
+  checkOptional(path + ".speed_rpm", p.speed_rpm, rules::kPresetSpeedRpm);
+  checkOptional(path + ".surface_speed_m_min", p.surface_speed_m_min, rules::kSurfaceSpeedMMin);
+  checkOptional(path + ".feed_per_tooth_mm", p.feed_per_tooth_mm, rules::kFeedPerToothMm);
+  checkOptional(path + ".feed_mm_min", p.feed_mm_min, rules::kPresetFeedMmMin);
+  checkOptional(path + ".axial_depth_mm", p.axial_depth_mm, rules::kPresetDepthMm);
+  checkOptional(path + ".radial_depth_mm", p.radial_depth_mm, rules::kPresetDepthMm);
+}
+
+// A length of the tool that cannot exceed its overall length.
+void checkWithinOverallLength(const QString& path, const QString& key, const std::optional<double>& length,
+                              const ToolSpec& t) {
+  if (!length || !t.overall_length_mm) return;
+  checkNumber(QString("%1.%2").arg(path, key), *length,
+              {rules::B::Open, 0.0, rules::B::Closed, *t.overall_length_mm, false},
+              QString("%1.overall_length_mm = %2").arg(path, formatNumber(*t.overall_length_mm)));
+}
+
+void validateCamGeometry(const QString& path, const ToolSpec& t) {
+  if (t.type && (t.type->trimmed().isEmpty() || t.type->size() > rules::kMaxToolTypeChars))
+    throw ProjectError(QString("%1.type = %2: must be a non-empty string of at most %3 characters")
+                           .arg(path, formatValue(*t.type))
+                           .arg(rules::kMaxToolTypeChars));
+  checkOptional(path + ".flute_length_mm", t.flute_length_mm, rules::kToolLengthMm);
+  checkOptional(path + ".overall_length_mm", t.overall_length_mm, rules::kToolLengthMm);
+  checkOptional(path + ".stickout_mm", t.stickout_mm, rules::kToolLengthMm);
+  checkWithinOverallLength(path, "flute_length_mm", t.flute_length_mm, t);
+  checkWithinOverallLength(path, "stickout_mm", t.stickout_mm, t);
+  if (t.corner_radius_mm)
+    checkNumber(path + ".corner_radius_mm", *t.corner_radius_mm, rules::cornerRadius(t.diameter_mm),
+                QString("%1.diameter_mm = %2").arg(path, formatNumber(t.diameter_mm)));
+  checkCount(path + ".cutting_data", t.cutting_data.size(), rules::kMaxCuttingPresets, "cutting presets");
+  for (std::size_t i = 0; i < t.cutting_data.size(); ++i)
+    validateCuttingPreset(indexPath(path + ".cutting_data", static_cast<qsizetype>(i)), t.cutting_data[i]);
+  static const QStringList kFormats{"fusion", "freecad", "linuxcnc"};
+  if (t.origin && !kFormats.contains(t.origin->format))
+    throw ProjectError(QString("%1.origin.format = %2: must be \"fusion\", \"freecad\" or \"linuxcnc\"")
+                           .arg(path, formatValue(t.origin->format)));
+}
+
 void validateTool(const QString& path, const ToolSpec& t) {
   if (t.id.trimmed().isEmpty())
     throw ProjectError(QString("%1.id = %2: must be a non-empty string").arg(path, formatValue(t.id)));
@@ -105,6 +147,7 @@ void validateTool(const QString& path, const ToolSpec& t) {
   validateModes(path + ".modes_y", t.modes_y);
   validateFrfRef(path + ".frf_x", t.frf_x);
   validateFrfRef(path + ".frf_y", t.frf_y);
+  validateCamGeometry(path, t);
 }
 
 void validateUniqueIds(const std::vector<ToolSpec>& tools) {
@@ -246,6 +289,15 @@ std::optional<double> radialDepthMm(const Project& project, const ToolSpec& tool
   if (project.operation->radial_depth_mm) return project.operation->radial_depth_mm;
   if (project.operation->radial_immersion) return *project.operation->radial_immersion * tool.diameter_mm;
   return std::nullopt;
+}
+
+QString projectValidationError(const Project& project) {
+  try {
+    validateProject(project);
+  } catch (const ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
 }
 
 }  // namespace mx::app

@@ -53,6 +53,44 @@ void putAxis(QJsonObject& t, const QString& modes_key, const std::vector<ModeSpe
   }
 }
 
+QJsonArray cuttingDataJson(const std::vector<CuttingPresetSpec>& presets) {
+  QJsonArray out;
+  for (const CuttingPresetSpec& p : presets) {
+    QJsonObject o = p.unknown;
+    o.insert("name", p.name);
+    putOptional(o, "speed_rpm", p.speed_rpm);
+    putOptional(o, "surface_speed_m_min", p.surface_speed_m_min);
+    putOptional(o, "feed_per_tooth_mm", p.feed_per_tooth_mm);
+    putOptional(o, "feed_mm_min", p.feed_mm_min);
+    putOptional(o, "axial_depth_mm", p.axial_depth_mm);
+    putOptional(o, "radial_depth_mm", p.radial_depth_mm);
+    out.append(o);
+  }
+  return out;
+}
+
+void putCamGeometry(QJsonObject& t, const ToolSpec& tool) {
+  if (tool.type) {
+    t.insert("type", *tool.type);
+  } else {
+    t.remove("type");
+  }
+  putOptional(t, "flute_length_mm", tool.flute_length_mm);
+  putOptional(t, "overall_length_mm", tool.overall_length_mm);
+  putOptional(t, "stickout_mm", tool.stickout_mm);
+  putOptional(t, "corner_radius_mm", tool.corner_radius_mm);
+  if (tool.cutting_data.empty()) {
+    t.remove("cutting_data");
+  } else {
+    t.insert("cutting_data", cuttingDataJson(tool.cutting_data));
+  }
+  if (tool.origin) {
+    t.insert("origin", QJsonObject{{"format", tool.origin->format}, {"data", tool.origin->data}});
+  } else {
+    t.remove("origin");
+  }
+}
+
 QJsonObject toolJson(const ToolSpec& tool) {
   QJsonObject t = tool.unknown;
   t.insert("id", tool.id);
@@ -67,6 +105,7 @@ QJsonObject toolJson(const ToolSpec& tool) {
   putOptional(t, "max_force_N", tool.max_force_N);
   putAxis(t, "modes_x", tool.modes_x, "frf_x", tool.frf_x);
   putAxis(t, "modes_y", tool.modes_y, "frf_y", tool.frf_y);
+  putCamGeometry(t, tool);
   return t;
 }
 
@@ -151,6 +190,8 @@ void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>
 }
 
 }  // namespace
+
+QJsonObject toolToJson(const ToolSpec& tool) { return toolJson(tool); }
 
 QJsonObject projectToJson(const Project& project) {
   QJsonObject root = project.document;

@@ -5,13 +5,15 @@
 #include "feature_dock.h"
 #include "machine_operation_panel.h"
 #include "tool_library_editor.h"
+#include "tool_library_transfer.h"
 
 namespace mx::gui {
 
 EditorsFeature::EditorsFeature(QMainWindow* window, FeatureContext& context)
     : WindowFeature(window),
       tool_editor_(new widgets::ToolLibraryEditor(window)),
-      machine_panel_(new widgets::MachineOperationPanel(window)) {
+      machine_panel_(new widgets::MachineOperationPanel(window)),
+      transfer_(new ToolLibraryTransfer(context, window)) {
   setObjectName("editorsFeature");
   tool_editor_->setUnits(context.units());
   machine_panel_->setUnits(context.units());
@@ -26,6 +28,16 @@ EditorsFeature::EditorsFeature(QMainWindow* window, FeatureContext& context)
   };
   connect(tool_editor_, &widgets::ToolLibraryEditor::editRequested, this, forward);
   connect(machine_panel_, &widgets::MachineOperationPanel::editRequested, this, forward);
+  connect(transfer_, &ToolLibraryTransfer::editRequested, this, forward);
+  connect(transfer_, &ToolLibraryTransfer::importFinished, tool_editor_, [this](const QString& error) {
+    tool_editor_->showError(error.isEmpty() || error == tr("cancelled")
+                                ? QString()
+                                : tr("Import refused, the library is unchanged: %1").arg(error));
+  });
+  connect(transfer_, &ToolLibraryTransfer::statusMessage, this,
+          [this](const QString& text) { emit statusMessage(text, 10000); });
+  connect(tool_editor_, &widgets::ToolLibraryEditor::importRequested, transfer_, &ToolLibraryTransfer::chooseImport);
+  connect(tool_editor_, &widgets::ToolLibraryEditor::exportRequested, transfer_, &ToolLibraryTransfer::chooseExport);
   connect(tool_editor_, &widgets::ToolLibraryEditor::toolSelected, &context, &FeatureContext::setActiveTool);
 }
 

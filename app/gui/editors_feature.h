@@ -1,7 +1,7 @@
 #pragma once
 // The project's editors: the tool library and the machine and operation panel (tabbed docks on the
 // left). Their edits go to the document as undoable steps; choosing a tool in the library makes it the
-// active tool.
+// active tool. The library's Import / Export go through ToolLibraryTransfer.
 #include <QMainWindow>
 
 #include "feature_context.h"
@@ -14,6 +14,8 @@ class ToolLibraryEditor;
 
 namespace mx::gui {
 
+class ToolLibraryTransfer;
+
 class EditorsFeature : public WindowFeature {
   Q_OBJECT
  public:
@@ -22,10 +24,12 @@ class EditorsFeature : public WindowFeature {
 
   void projectChanged(const app::Project& project, Features recompute) override;
   widgets::ToolLibraryEditor* toolEditor() const { return tool_editor_; }
+  ToolLibraryTransfer* libraryTransfer() const { return transfer_; }
 
  private:
   widgets::ToolLibraryEditor* tool_editor_;
   widgets::MachineOperationPanel* machine_panel_;
+  ToolLibraryTransfer* transfer_;
 };
 
 }  // namespace mx::gui

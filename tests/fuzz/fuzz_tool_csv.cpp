@@ -6,11 +6,11 @@
 
 #include "fuzz_check.h"
 #include "tool_checks.h"
-#include "tool_library_csv.h"
+#include "services/tool_formats/tool_library_csv.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using mx::fuzz::require;
-  using mx::widgets::ToolLibraryCsv;
+  using mx::app::ToolLibraryCsv;
   const auto file = ToolLibraryCsv::fromCsv(QByteArray(reinterpret_cast<const char*>(data), qsizetype(size)));
   if (!file.ok()) {
     require(file.tools.empty() && file.lines.empty(), "a refused file gives no tools");

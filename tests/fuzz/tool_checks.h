@@ -13,8 +13,13 @@ namespace mx::fuzz {
 inline void requireFiniteTool(const app::ToolSpec& t) {
   const char* what = "an accepted tool holds finite numbers only";
   for (const double v : {t.diameter_mm, t.helix_deg}) requireFinite(v, what);
-  for (const auto& v : {t.Kt_N_mm2, t.Kr, t.radial_depth_mm, t.max_force_N})
+  for (const auto& v : {t.Kt_N_mm2, t.Kr, t.radial_depth_mm, t.max_force_N, t.flute_length_mm, t.overall_length_mm,
+                        t.stickout_mm, t.corner_radius_mm})
     if (v) requireFinite(*v, what);
+  for (const app::CuttingPresetSpec& p : t.cutting_data)
+    for (const auto& v : {p.speed_rpm, p.surface_speed_m_min, p.feed_per_tooth_mm, p.feed_mm_min, p.axial_depth_mm,
+                          p.radial_depth_mm})
+      if (v) requireFinite(*v, what);
   for (const auto& list : {t.pitch_deg, t.runout_um})
     if (list)
       for (const double v : *list) requireFinite(v, what);

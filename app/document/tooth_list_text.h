@@ -4,7 +4,7 @@
 #include <QString>
 #include <vector>
 
-namespace mx::widgets {
+namespace mx::app {
 
 inline constexpr QChar kToothListSeparator = u';';
 
@@ -21,4 +21,4 @@ struct ToothListParse {
 // Items are trimmed; numbers use a decimal point. An empty text gives an empty list.
 ToothListParse parseToothList(const QString& text);
 
-}  // namespace mx::widgets
+}  // namespace mx::app

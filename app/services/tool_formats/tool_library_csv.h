@@ -10,12 +10,12 @@
 
 #include "document/project.h"
 
-namespace mx::widgets {
+namespace mx::app {
 
 // A parsed library file: the tools (from JSON with their unknown keys), the source line of each
 // tool's first row (CSV; 0 for JSON), and the error ("" = ok).
 struct ToolLibraryFile {
-  std::vector<app::ToolSpec> tools;
+  std::vector<ToolSpec> tools;
   std::vector<int> lines;
   int idColumn = 1;  // CSV column of tool_id (1-based), for messages about ids
   QString error;
@@ -28,28 +28,26 @@ class ToolLibraryCsv {
   static const QStringList& columns();
 
   // One row per mode (x modes first, then y); a tool without modes gets one row with an empty axis.
-  static QByteArray toCsv(const std::vector<app::ToolSpec>& tools);
+  static QByteArray toCsv(const std::vector<ToolSpec>& tools);
   // Parses and range-checks everything; the first bad cell is reported as
   // "line 4, column 9 (freq_Hz): '-3' must be > 0". On error `tools` is empty.
   static ToolLibraryFile fromCsv(const QByteArray& text);
 
   // A minimal project file holding only the tools (loadable as a .mxproj).
-  static QByteArray toJson(const std::vector<app::ToolSpec>& tools);
+  static QByteArray toJson(const std::vector<ToolSpec>& tools);
   // Accepts a project file / library export (object with "tools") or a bare tools array. Errors
   // name the field path, e.g. "tools[0].modes_x[0].damping_pct = 150: must be in (0, 100)".
   static ToolLibraryFile fromJson(const QByteArray& text);
 
   // `base` with the imported tools (replacing or appended to its library), validated as a whole
   // (validateProject). Returns "" and sets `merged`, or the reason (with the CSV line when known).
-  static QString merge(const app::Project& base, const ToolLibraryFile& file, bool replace, app::Project& merged);
+  static QString merge(const Project& base, const ToolLibraryFile& file, bool replace, Project& merged);
 
-  // validateProject as text: "" when valid, else the ProjectError message.
-  static QString validationError(const app::Project& project);
-  // Atomic write of a regular or new file (app::writeFileAtomically: a device, FIFO or folder is
+  // Atomic write of a regular or new file (writeFileAtomically: a device, FIFO or folder is
   // refused); "" = ok.
   static QString writeFile(const QString& path, const QByteArray& bytes);
-  // Reads a whole regular file of at most 16 MB (app::kToolLibraryFileLimit) into `bytes`; "" = ok.
+  // Reads a whole regular file of at most 16 MB (kToolLibraryFileLimit) into `bytes`; "" = ok.
   static QString readFile(const QString& path, QByteArray& bytes);
 };
 
-}  // namespace mx::widgets
+}  // namespace mx::app

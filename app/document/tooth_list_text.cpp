@@ -1,11 +1,11 @@
-#include "tooth_list_text.h"
+#include "document/tooth_list_text.h"
 
 #include <QLocale>
 #include <QStringList>
 
 #include "document/project_rules.h"
 
-namespace mx::widgets {
+namespace mx::app {
 
 QString toothListText(const std::vector<double>& values, const QString& separator) {
   QStringList items;
@@ -34,4 +34,4 @@ ToothListParse parseToothList(const QString& text) {
   return out;
 }
 
-}  // namespace mx::widgets
+}  // namespace mx::app

@@ -1,4 +1,4 @@
-#include "tool_library_csv.h"
+#include "services/tool_formats/tool_library_csv.h"
 
 #include <QHash>
 #include <QLocale>
@@ -13,13 +13,11 @@
 #include "document/project_rules.h"
 #include "document/project_validation.h"
 #include "document/tool_geometry.h"
-#include "tooth_list_text.h"
+#include "document/tooth_list_text.h"
 
-namespace mx::widgets {
+namespace mx::app {
 
 namespace {
-
-namespace rules = app::rules;
 
 enum Col {
   kId,
@@ -128,7 +126,7 @@ class CsvReader {
       if (firstLine_.contains(id))
         return bad(kId, QString("duplicate tool id (first on line %1); the rows of one tool must be consecutive")
                             .arg(firstLine_.value(id)));
-      app::ToolSpec tool;
+      ToolSpec tool;
       tool.id = id;
       double teeth = 0.0;
       if (out.tools.size() >= static_cast<std::size_t>(rules::kMaxTools))
@@ -165,18 +163,18 @@ class CsvReader {
                     .arg(pos_[col] + 1)
                     .arg(ToolLibraryCsv::columns()[col], cell(col), what));
   }
-  bool number(int col, const app::NumberRule& rule, double& value) {
+  bool number(int col, const NumberRule& rule, double& value) {
     bool ok = false;
     value = QLocale::c().toDouble(cell(col), &ok);
     if (!ok) return bad(col, "is not a number (" + rule.requirement() + ")");
     if (!rule.accepts(value)) return bad(col, rule.mustBe(value));
     return true;
   }
-  bool required(int col, const app::NumberRule& rule, double& value) {
+  bool required(int col, const NumberRule& rule, double& value) {
     if (cell(col).isEmpty()) return bad(col, "is empty (required " + rule.requirement() + ")");
     return number(col, rule, value);
   }
-  bool optional(int col, const app::NumberRule& rule, std::optional<double>& value) {
+  bool optional(int col, const NumberRule& rule, std::optional<double>& value) {
     if (cell(col).isEmpty()) return true;
     double v = 0.0;
     if (!number(col, rule, v)) return false;
@@ -195,19 +193,19 @@ class CsvReader {
     return true;
   }
   // The per-tooth lists against the tool's teeth and diameter; values are counted from 1.
-  bool geometry(const app::ToolSpec& t) {
-    const auto check = [&](int col, const app::ToothListIssue& issue, const std::vector<double>& values) {
+  bool geometry(const ToolSpec& t) {
+    const auto check = [&](int col, const ToothListIssue& issue, const std::vector<double>& values) {
       if (issue.ok()) return true;
       if (issue.index < 0) return bad(col, issue.rule);
       return bad(col, QString("value %1 (%2) %3")
                           .arg(issue.index + 1)
-                          .arg(app::formatNumber(values[std::size_t(issue.index)]), issue.rule));
+                          .arg(formatNumber(values[std::size_t(issue.index)]), issue.rule));
     };
-    return (!t.pitch_deg || check(kPitch, app::pitchIssue(*t.pitch_deg, t.teeth), *t.pitch_deg)) &&
-           (!t.runout_um || check(kRunout, app::runoutIssue(*t.runout_um, t.teeth, t.diameter_mm), *t.runout_um));
+    return (!t.pitch_deg || check(kPitch, pitchIssue(*t.pitch_deg, t.teeth), *t.pitch_deg)) &&
+           (!t.runout_um || check(kRunout, runoutIssue(*t.runout_um, t.teeth, t.diameter_mm), *t.runout_um));
   }
   // A continuation row leaves the tool fields blank or repeats them exactly.
-  bool sameAsFirst(const app::ToolSpec& t) {
+  bool sameAsFirst(const ToolSpec& t) {
     for (const auto& [col, first] : {std::pair{kPitch, t.pitch_deg}, {kRunout, t.runout_um}}) {
       if (cell(col).isEmpty()) continue;
       const ToothListParse parsed = parseToothList(cell(col));
@@ -226,11 +224,11 @@ class CsvReader {
       if (!ok || !first || v != *first)
         return bad(col, QString("differs from the tool's first row (line %1, '%2'); leave it blank or repeat it")
                             .arg(firstLine_.value(t.id))
-                            .arg(first ? app::formatNumber(*first) : QString()));
+                            .arg(first ? formatNumber(*first) : QString()));
     }
     return true;
   }
-  bool readMode(app::ToolSpec& tool, bool continuation) {
+  bool readMode(ToolSpec& tool, bool continuation) {
     const QString axis = cell(kAxis).toLower();
     if (axis.isEmpty()) {
       if (continuation) return bad(kAxis, "is empty: a further row of a tool must give a mode (axis x or y)");
@@ -240,8 +238,8 @@ class CsvReader {
       return true;
     }
     if (axis != "x" && axis != "y") return bad(kAxis, "must be x or y");
-    app::ModeSpec m;
-    std::vector<app::ModeSpec>& modes = axis == "x" ? tool.modes_x : tool.modes_y;
+    ModeSpec m;
+    std::vector<ModeSpec>& modes = axis == "x" ? tool.modes_x : tool.modes_y;
     if (modes.size() >= static_cast<std::size_t>(rules::kMaxModesPerAxis))
       return bad(kAxis, QString("is mode %1 of the axis: a tool has at most %2 modes per axis")
                             .arg(modes.size() + 1)
@@ -271,29 +269,29 @@ const QStringList& ToolLibraryCsv::columns() {
 }
 
 // The pitch and runout columns are written when some tool has that list.
-QByteArray ToolLibraryCsv::toCsv(const std::vector<app::ToolSpec>& tools) {
-  const auto opt = [](const std::optional<double>& v) { return v ? app::formatNumber(*v) : QString(); };
+QByteArray ToolLibraryCsv::toCsv(const std::vector<ToolSpec>& tools) {
+  const auto opt = [](const std::optional<double>& v) { return v ? formatNumber(*v) : QString(); };
   const auto list = [](const std::optional<std::vector<double>>& v) { return v ? toothListText(*v) : QString(); };
-  const bool pitch = std::any_of(tools.begin(), tools.end(), [](const app::ToolSpec& t) { return t.pitch_deg; });
-  const bool runout = std::any_of(tools.begin(), tools.end(), [](const app::ToolSpec& t) { return t.runout_um; });
+  const bool pitch = std::any_of(tools.begin(), tools.end(), [](const ToolSpec& t) { return t.pitch_deg; });
+  const bool runout = std::any_of(tools.begin(), tools.end(), [](const ToolSpec& t) { return t.runout_um; });
   QStringList header = columns();
   if (!runout) header.removeAt(kRunout);
   if (!pitch) header.removeAt(kPitch);
   QStringList lines{header.join(',')};
-  for (const app::ToolSpec& t : tools) {
-    QStringList fields{quoteCsv(t.id), QString::number(t.teeth), app::formatNumber(t.diameter_mm),
-                       app::formatNumber(t.helix_deg)};
+  for (const ToolSpec& t : tools) {
+    QStringList fields{quoteCsv(t.id), QString::number(t.teeth), formatNumber(t.diameter_mm),
+                       formatNumber(t.helix_deg)};
     if (pitch) fields << list(t.pitch_deg);
     if (runout) fields << list(t.runout_um);
     fields << opt(t.Kt_N_mm2) << opt(t.Kr) << opt(t.radial_depth_mm) << opt(t.max_force_N);
     const QString head = fields.join(',');
-    const auto mode = [&](const char* axis, const app::ModeSpec& m) {
-      lines << QStringList{head, axis, app::formatNumber(m.freq_Hz), app::formatNumber(m.damping_pct),
-                           app::formatNumber(m.stiffness_N_per_um)}
+    const auto mode = [&](const char* axis, const ModeSpec& m) {
+      lines << QStringList{head, axis, formatNumber(m.freq_Hz), formatNumber(m.damping_pct),
+                           formatNumber(m.stiffness_N_per_um)}
                    .join(',');
     };
-    for (const app::ModeSpec& m : t.modes_x) mode("x", m);
-    for (const app::ModeSpec& m : t.modes_y) mode("y", m);
+    for (const ModeSpec& m : t.modes_x) mode("x", m);
+    for (const ModeSpec& m : t.modes_y) mode("y", m);
     if (t.modes_x.empty() && t.modes_y.empty()) lines << head + ",,,,";
   }
   return (lines.join('\n') + '\n').toUtf8();
@@ -332,33 +330,32 @@ ToolLibraryFile ToolLibraryCsv::fromCsv(const QByteArray& text) {
   return out;
 }
 
-QByteArray ToolLibraryCsv::toJson(const std::vector<app::ToolSpec>& tools) {
-  app::Project p;
+QByteArray ToolLibraryCsv::toJson(const std::vector<ToolSpec>& tools) {
+  Project p;
   p.name = "Tool library";
   p.tools = tools;
   p.document.insert("tools", QJsonArray());  // written even when empty: fromJson requires the key
-  return app::formatProjectJson(app::projectToJson(p));
+  return formatProjectJson(projectToJson(p));
 }
 
 ToolLibraryFile ToolLibraryCsv::fromJson(const QByteArray& text) {
   ToolLibraryFile out;
   try {
-    out.tools = app::toolsFromJson(text);
+    out.tools = toolsFromJson(text);
     out.lines.assign(out.tools.size(), 0);
-  } catch (const app::ProjectError& e) {
+  } catch (const ProjectError& e) {
     out.error = QString::fromStdString(e.what());
   }
   return out;
 }
 
-QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& file, bool replace,
-                              app::Project& merged) {
+QString ToolLibraryCsv::merge(const Project& base, const ToolLibraryFile& file, bool replace, Project& merged) {
   if (!file.ok()) return file.error;
-  app::Project p = base;
+  Project p = base;
   if (replace) p.tools.clear();
   const std::size_t offset = p.tools.size();
   QSet<QString> existing;
-  for (const app::ToolSpec& t : p.tools) existing.insert(t.id);
+  for (const ToolSpec& t : p.tools) existing.insert(t.id);
   for (std::size_t i = 0; i < file.tools.size(); ++i) {
     if (existing.contains(file.tools[i].id)) {
       const QString where = file.lines[i] > 0
@@ -368,7 +365,7 @@ QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& f
     }
     p.tools.push_back(file.tools[i]);
   }
-  QString error = validationError(p);
+  QString error = projectValidationError(p);
   if (!error.isEmpty()) {
     // Name the file's line when the rule concerns an imported tool.
     const QRegularExpressionMatch m = QRegularExpression(R"(tools\[(\d+)\])").match(error);
@@ -381,27 +378,18 @@ QString ToolLibraryCsv::merge(const app::Project& base, const ToolLibraryFile& f
   return {};
 }
 
-QString ToolLibraryCsv::validationError(const app::Project& project) {
-  try {
-    app::validateProject(project);
-  } catch (const app::ProjectError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
-}
-
 QString ToolLibraryCsv::writeFile(const QString& path, const QByteArray& bytes) {
-  const QString error = app::writeFileAtomically(path, bytes);
+  const QString error = writeFileAtomically(path, bytes);
   return error.isEmpty() ? QString() : QString("%1: cannot write (%2)").arg(path, error);
 }
 
 QString ToolLibraryCsv::readFile(const QString& path, QByteArray& bytes) {
   try {
-    bytes = app::readBoundedFile(path, app::kToolLibraryFileLimit);
+    bytes = readBoundedFile(path, kToolLibraryFileLimit);
   } catch (const InvalidInput& e) {
     return QString("%1: %2").arg(path, QString::fromStdString(e.what()));
   }
   return {};
 }
 
-}  // namespace mx::widgets
+}  // namespace mx::app

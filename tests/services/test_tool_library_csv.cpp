@@ -1,21 +1,20 @@
 // Tool library import/export: CSV and JSON round trips, the documented CSV layout, and all-or-nothing
 // import (a bad row changes nothing and is reported by line and column); files that are not regular or
 // over the size limit are refused.
-#include <QApplication>
+#include <QFileInfo>
 #include <QJsonArray>
-#include <QSignalSpy>
 #include <QTemporaryDir>
 
 #include "document/project.h"
+#include "services/tool_formats/tool_library_csv.h"
+#include "services/tool_formats/tool_library_transfer.h"
 #include "support/hostile_files.h"
 #include "test_registry.h"
-#include "tool_library_csv.h"
-#include "tool_library_editor.h"
 
 using mx::app::Project;
+using mx::app::ToolLibraryCsv;
+using mx::app::ToolLibraryFormat;
 using mx::app::ToolSpec;
-using mx::widgets::ToolLibraryCsv;
-using mx::widgets::ToolLibraryEditor;
 
 namespace {
 
@@ -44,6 +43,26 @@ const QByteArray kHeader =
 const QByteArray kGeometryHeader =
     "tool_id,teeth,diameter_mm,helix_deg,pitch_deg,runout_um,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,"
     "stiffness_N_per_um\n";
+
+// The window's and the CLI's import: the whole file read, then merged; "" or the reason.
+QString importInto(const Project& base, const QString& path, ToolLibraryFormat format, bool replace, Project& merged) {
+  try {
+    const mx::app::ImportedLibrary library = mx::app::readToolLibrary(path, format, {});
+    merged = mx::app::mergeImportedTools(base, library.tools, replace).project;
+  } catch (const mx::app::ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+QString exportTo(const Project& p, const QString& path, ToolLibraryFormat format) {
+  try {
+    mx::app::writeToolLibrary(p.tools, path, format);
+  } catch (const mx::app::ProjectError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
 
 }  // namespace
 
@@ -157,31 +176,35 @@ class TestToolLibraryCsv : public QObject {
     QCOMPARE(back.tools[1].runout_um->at(0), 0.1 + 0.2);
   }
 
-  void editorExportImportRoundTrip() {
+  void exportImportRoundTrip() {
     QTemporaryDir dir;
-    ToolLibraryEditor editor;
     const Project p = rubio();
-    editor.setProject(p);
     const QString path = dir.filePath("lib.csv");
-    QCOMPARE(editor.exportCsv(path), QString());
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QCOMPARE(editor.importCsv(path, true), QString());
-    QCOMPARE(spy.count(), 1);
-    const Project edited = spy.at(0).at(0).value<Project>();
+    QCOMPARE(exportTo(p, path, ToolLibraryFormat::Csv), QString());
+    Project edited;
+    QCOMPARE(importInto(p, path, ToolLibraryFormat::Csv, true, edited), QString());
     QCOMPARE(toolsJson(edited.tools), toolsJson(p.tools));
     QCOMPARE(edited.material->Kt_N_mm2, 600.0);  // the rest of the project is untouched
   }
 
   void appendAddsToTheLibrary() {
-    ToolLibraryEditor editor;
-    editor.setProject(rubio());
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QCOMPARE(editor.importCsv(MX_TEST_DATA_DIR "/library/tools.csv", false), QString());
-    QCOMPARE(spy.count(), 1);
-    const Project edited = spy.at(0).at(0).value<Project>();
+    Project edited;
+    QCOMPARE(importInto(rubio(), MX_TEST_DATA_DIR "/library/tools.csv", ToolLibraryFormat::Csv, false, edited),
+             QString());
     QCOMPARE(edited.tools.size(), std::size_t{5});
     QCOMPARE(edited.tools[0].id, QString("R1"));
     QCOMPARE(edited.tools[4].id, QString("Rigid-Y"));
+  }
+
+  // An id the project already has gets the first free suffix, as library-import does.
+  void appendRenamesATakenId() {
+    QTemporaryDir dir;
+    const QString path = writeText(dir, "r2.csv", kHeader + "R2,2,10,0,,,,x,1000,2,10\nR2-2,2,10,0,,,,x,1000,2,10\n");
+    Project edited;
+    QCOMPARE(importInto(rubio(), path, ToolLibraryFormat::Csv, false, edited), QString());
+    QCOMPARE(edited.tools.size(), std::size_t{4});
+    QCOMPARE(edited.tools[2].id, QString("R2-2"));
+    QCOMPARE(edited.tools[3].id, QString("R2-2-2"));
   }
 
   void badRowChangesNothing_data() {
@@ -205,9 +228,6 @@ class TestToolLibraryCsv : public QObject {
                                   << true << "line 3, column 8 (axis): 'z' must be x or y";
     QTest::newRow("duplicate id") << kHeader + good + "B,2,10,0,,,,x,1000,2,10\nA,2,10,0,,,,y,1000,2,10\n"
                                   << true << "line 4, column 1 (tool_id): 'A' duplicate tool id (first on line 2)";
-    QTest::newRow("id already in library")
-        << kHeader + "R2,2,10,0,,,,x,1000,2,10\n"
-        << false << "line 2, column 1 (tool_id): 'R2' duplicate tool id (already in the library)";
     QTest::newRow("teeth not integer") << kHeader + "A,2.5,10,0,,,,x,1000,2,10\n"
                                        << true << "line 2, column 2 (teeth): '2.5' must be an integer in [1, 100]";
     QTest::newRow("teeth above 100") << kHeader + "A,101,10,0,,,,x,1000,2,10\n"
@@ -264,16 +284,10 @@ class TestToolLibraryCsv : public QObject {
     QFETCH(QString, message);
     QTemporaryDir dir;
     const QString path = writeText(dir, "bad.csv", csv);
-    ToolLibraryEditor editor;
-    const Project p = rubio();
-    editor.setProject(p);
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    const QString error = editor.importCsv(path, replace);
-    QVERIFY2(error.startsWith(message), qPrintable(error));
-    QCOMPARE(spy.count(), 0);
-    QVERIFY(editor.errorText().contains(message));
-    QCOMPARE(toolsJson(editor.project().tools), toolsJson(p.tools));
-    QCOMPARE(editor.toolModel()->rowCount(), 2);
+    Project merged;
+    const QString error = importInto(rubio(), path, ToolLibraryFormat::Csv, replace, merged);
+    QVERIFY2(error.startsWith("bad.csv: " + message), qPrintable(error));
+    QVERIFY(merged.tools.empty());  // nothing merged
   }
 
   // A row that is fine alone but not in this project (the operation's radial depth exceeds its D).
@@ -281,28 +295,24 @@ class TestToolLibraryCsv : public QObject {
     Project p = rubio();
     p.operation->radial_immersion.reset();
     p.operation->radial_depth_mm = 12.0;
-    ToolLibraryEditor editor;
-    editor.setProject(p);
     QTemporaryDir dir;
     const QString path = writeText(dir, "small.csv", kHeader + "S8,2,8,0,,,,x,1000,2,10\n");
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    const QString error = editor.importCsv(path, false);
-    QVERIFY2(error.startsWith("line 2: operation.radial_depth_mm = 12: must be in (0, 8]"), qPrintable(error));
-    QCOMPARE(spy.count(), 0);
+    Project merged;
+    const QString error = importInto(p, path, ToolLibraryFormat::Csv, false, merged);
+    QVERIFY2(error.startsWith("the imported tools do not fit the project: operation.radial_depth_mm = 12: must be in "
+                              "(0, 8]"),
+             qPrintable(error));
   }
 
   void jsonRoundTrip() {
     QTemporaryDir dir;
-    ToolLibraryEditor editor;
     const Project p = rubio();
-    editor.setProject(p);
     const QString path = dir.filePath("lib.json");
-    QCOMPARE(editor.exportJson(path), QString());
+    QCOMPARE(exportTo(p, path, ToolLibraryFormat::Json), QString());
     QVERIFY(mx::app::loadProject(path).tools.size() == 2);  // the export is a loadable project file
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QCOMPARE(editor.importJson(path, true), QString());
-    QCOMPARE(spy.count(), 1);
-    QCOMPARE(toolsJson(spy.at(0).at(0).value<Project>().tools), toolsJson(p.tools));
+    Project edited;
+    QCOMPARE(importInto(p, path, ToolLibraryFormat::Json, true, edited), QString());
+    QCOMPARE(toolsJson(edited.tools), toolsJson(p.tools));
   }
 
   // An empty library exports a "tools" array, so that it imports again (as an empty library).
@@ -331,19 +341,17 @@ class TestToolLibraryCsv : public QObject {
     QFETCH(QString, message);
     QTemporaryDir dir;
     if (path.isEmpty()) path = writeText(dir, "bad.json", json);
-    ToolLibraryEditor editor;
-    editor.setProject(rubio());
-    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    const QString error = editor.importJson(path, false);
-    QVERIFY2(error.startsWith(message), qPrintable(error));
-    QCOMPARE(spy.count(), 0);
-    QCOMPARE(editor.project().tools.size(), std::size_t{2});
+    Project merged;
+    const QString error = importInto(rubio(), path, ToolLibraryFormat::Json, false, merged);
+    QVERIFY2(error.startsWith(QFileInfo(path).fileName() + ": " + message), qPrintable(error));
+    QVERIFY(merged.tools.empty());
   }
 
   void missingFileIsReported() {
-    ToolLibraryEditor editor;
-    QVERIFY(editor.importCsv("/nonexistent/lib.csv", true).contains("cannot be read"));
-    QVERIFY(!editor.exportCsv("/nonexistent/dir/lib.csv").isEmpty());
+    Project merged;
+    QVERIFY(
+        importInto(rubio(), "/nonexistent/lib.csv", ToolLibraryFormat::Csv, true, merged).contains("cannot be read"));
+    QVERIFY(!exportTo(rubio(), "/nonexistent/dir/lib.csv", ToolLibraryFormat::Csv).isEmpty());
   }
   // Import reads only a regular file of at most 16 MB, refused before it is read; export never
   // replaces a device, FIFO or folder.

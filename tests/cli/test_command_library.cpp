@@ -1,0 +1,182 @@
+// library-import and library-export: the documented JSON keys, the append with renamed ids, --tools,
+// the format told from the file, all-or-nothing (a bad library exits 2 and leaves the project's bytes
+// as they were), and export -> import returning the same tools in every format.
+#include <QDir>
+#include <QFile>
+
+#include "document/project.h"
+#include "support/cli_runner.h"
+#include "support/project_files.h"
+#include "test_registry.h"
+
+using namespace mx;
+
+namespace {
+
+const QString kRubio = test::projectsPath("rubio2006-tool-selection.mxproj");
+
+QString copyOf(const QTemporaryDir& dir, const QString& source, const QString& name) {
+  const QString path = dir.filePath(name);
+  QFile::copy(source, path);
+  QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+  return path;
+}
+
+QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
+  const QString path = dir.filePath(name);
+  QFile f(path);
+  f.open(QIODevice::WriteOnly);
+  f.write(text);
+  return path;
+}
+
+// A project with no tools, to import into.
+QString emptyProject(const QTemporaryDir& dir) {
+  app::Project p = app::loadProject(kRubio);
+  p.tools.clear();
+  p.expert.reset();
+  const QString path = dir.filePath("empty.mxproj");
+  app::saveProject(p, path);
+  return path;
+}
+
+const QByteArray kCsv =
+    "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,stiffness_N_per_um\n"
+    "R2,3,12,30,,,,x,900,2,5\n"
+    "E16,4,16,30,,,,x,720,2.5,4.2\n";
+
+}  // namespace
+
+class TestCommandLibrary : public QObject {
+  Q_OBJECT
+ private slots:
+  void importAppendsAndRenames() {
+    QTemporaryDir dir;
+    const QString project = copyOf(dir, kRubio, "p.mxproj");
+    const QString csv = writeText(dir, "lib.csv", kCsv);
+    const test::CliRun r = test::runCli({"library-import", csv, "--into", project});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json.value("imported").toInt(), 2);
+    QCOMPARE(r.json.value("tools").toArray(), QJsonArray({"R2-2", "E16"}));
+    QCOMPARE(r.json.value("renamed").toArray(), QJsonArray({QJsonObject{{"from", "R2"}, {"to", "R2-2"}}}));
+    QCOMPARE(r.json.value("skipped").toArray(), QJsonArray());
+    const app::Project after = app::loadProject(project);
+    QCOMPARE(after.tools.size(), std::size_t{4});
+    QCOMPARE(after.tools[2].id, QString("R2-2"));
+    QCOMPARE(after.tools[2].teeth, 3);
+    QCOMPARE(after.tools[3].modes_x.at(0).freq_Hz, 720.0);
+  }
+
+  void toolsSelectsById() {
+    QTemporaryDir dir;
+    const QString project = emptyProject(dir);
+    const QString csv = writeText(dir, "lib.csv", kCsv);
+    const test::CliRun r = test::runCli({"library-import", csv, "--into", project, "--tools", "E16"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json.value("tools").toArray(), QJsonArray({"E16"}));
+    QCOMPARE(app::loadProject(project).tools.size(), std::size_t{1});
+  }
+
+  // A refused import exits 2, names the problem, and leaves the project's bytes as they were.
+  void refusalLeavesTheProject_data() {
+    QTest::addColumn<QStringList>("extra");
+    QTest::addColumn<QByteArray>("library");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("bad cell") << QStringList() << QByteArray(kCsv + "X,2,10,0,,,,x,-3,2,5\n")
+                              << "lib.csv: line 4, column 9 (freq_Hz): '-3' must be in (0, 20000]";
+    QTest::newRow("unknown id") << QStringList{"--tools", "E16,Q9"} << kCsv
+                                << "lib.csv: tool 'Q9', --tools: the library has no tool of that id";
+    QTest::newRow("empty id in --tools") << QStringList{"--tools", "E16,,R2"} << kCsv
+                                         << "--tools = \"E16,,R2\": must be tool ids separated by commas";
+    QTest::newRow("unknown format") << QStringList{"--format", "mastercam"} << kCsv
+                                    << "--format = \"mastercam\": must be one of fusion, freecad, linuxcnc, csv, json";
+    QTest::newRow("teeth 0") << QStringList{"--teeth", "0"} << kCsv << "--teeth";
+    QTest::newRow("teeth 101") << QStringList{"--teeth", "101"} << kCsv << "--teeth";
+  }
+  void refusalLeavesTheProject() {
+    QFETCH(QStringList, extra);
+    QFETCH(QByteArray, library);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const QString project = copyOf(dir, kRubio, "p.mxproj");
+    const QByteArray before = test::readBytes(project);
+    const QString csv = writeText(dir, "lib.csv", library);
+    const test::CliRun r = test::runCli(QStringList{"library-import", csv, "--into", project} + extra);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QCOMPARE(test::readBytes(project), before);
+  }
+
+  // A project holds at most 100 tools: an import beyond them is refused whole.
+  void importBeyondOneHundredToolsIsRefused() {
+    QTemporaryDir dir;
+    const QString project = copyOf(dir, kRubio, "p.mxproj");
+    QByteArray csv =
+        "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,"
+        "stiffness_N_per_um\n";
+    for (int i = 0; i < 99; ++i) csv += QString("T%1,2,10,0,,,,x,1000,2,5\n").arg(i).toUtf8();
+    const QByteArray before = test::readBytes(project);
+    const test::CliRun r = test::runCli({"library-import", writeText(dir, "big.csv", csv), "--into", project});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("the imported tools do not fit the project: tools has 101 tools: at most 100 are allowed"),
+             qPrintable(r.err));
+    QCOMPARE(test::readBytes(project), before);
+  }
+
+  void formatIsToldFromTheFile() {
+    QTemporaryDir dir;
+    const QString project = emptyProject(dir);
+    // A MillExpert JSON library named .lib: its content says what it is.
+    const QString json = writeText(dir, "tools.lib", test::readBytes(kRubio));
+    const test::CliRun r = test::runCli({"library-import", json, "--into", project});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json.value("tools").toArray(), QJsonArray({"R1", "R2"}));
+    const test::CliRun unknown = test::runCli({"library-import", writeText(dir, "x.txt", "hello"), "--into", project});
+    QCOMPARE(unknown.code, 2);
+    QVERIFY2(unknown.err.contains("x.txt: cannot tell the library's format"), qPrintable(unknown.err));
+  }
+
+  // export -> import gives the project's tools back, in every format that carries MillExpert's data.
+  void exportImportRoundTrip_data() {
+    QTest::addColumn<QString>("format");
+    QTest::addColumn<QString>("name");
+    QTest::newRow("csv") << "csv"
+                         << "lib.csv";
+    QTest::newRow("json") << "json"
+                          << "lib.json";
+  }
+  void exportImportRoundTrip() {
+    QFETCH(QString, format);
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    const QString out = dir.filePath(name);
+    const test::CliRun exported = test::runCli({"library-export", kRubio, "--out", out, "--format", format});
+    QVERIFY2(exported.code == 0, qPrintable(exported.err));
+    QCOMPARE(exported.json.value("exported").toInt(), 2);
+    QCOMPARE(exported.json.value("format").toString(), format);
+    QCOMPARE(exported.json.value("files").toArray().at(0).toString(), out);
+    const QString project = emptyProject(dir);
+    const test::CliRun imported = test::runCli({"library-import", out, "--into", project, "--format", format});
+    QVERIFY2(imported.code == 0, qPrintable(imported.err));
+    QCOMPARE(app::loadProject(project).tools, app::loadProject(kRubio).tools);
+  }
+
+  void exportNeverReplacesTheProject() {
+    QTemporaryDir dir;
+    const QString project = copyOf(dir, kRubio, "p.mxproj");
+    const QByteArray before = test::readBytes(project);
+    const test::CliRun r = test::runCli({"library-export", project, "--out", project, "--format", "json"});
+    QCOMPARE(r.code, 2);
+    QCOMPARE(test::readBytes(project), before);
+  }
+
+  void exportFormatFromTheName() {
+    QTemporaryDir dir;
+    const test::CliRun r = test::runCli({"library-export", kRubio, "--out", dir.filePath("lib.xyz")});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("cannot tell the format from the name"), qPrintable(r.err));
+  }
+};
+
+MX_REGISTER_TEST(TestCommandLibrary)
+#include "test_command_library.moc"

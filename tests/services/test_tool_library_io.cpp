@@ -1,0 +1,174 @@
+// What every tool-library format shares: the MillExpert data a tool carries through a foreign format
+// (dynamicsPayload, withPayload), the side file, and messages that name the file, the tool and the field.
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include "document/project.h"
+#include "services/tool_formats/tool_library_io.h"
+#include "test_registry.h"
+
+using namespace mx::app;
+
+namespace {
+
+ToolSpec dynamicTool() {
+  ToolSpec t;
+  t.id = "T7";
+  t.teeth = 4;
+  t.diameter_mm = 16.0;
+  t.helix_deg = 30.0;
+  t.pitch_deg = std::vector<double>{80, 100, 80, 100};
+  t.runout_um = std::vector<double>{0, 8, 0, -5};
+  t.Kt_N_mm2 = 700.0;
+  t.Kr = 0.3;
+  t.radial_depth_mm = 4.0;
+  t.max_force_N = 2500.0;
+  t.modes_x = {{720.0, 2.5, 4.2, {}}, {1450.0, 1.2, 12.0, {}}};
+  t.modes_y = {{735.0, 2.4, 4.4, {}}};
+  t.type = "flat end mill";
+  t.flute_length_mm = 32.0;
+  return t;
+}
+
+// What a CAM format gives for the same tool: geometry, no dynamics.
+ToolSpec mappedTool() {
+  ToolSpec t;
+  t.id = "T7";
+  t.teeth = 4;
+  t.diameter_mm = 16.0;
+  t.type = "flat end mill";
+  t.flute_length_mm = 32.0;
+  return t;
+}
+
+QString errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ToolLibraryError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+}  // namespace
+
+class TestToolLibraryIo : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void payloadHoldsOnlyMillExpertData() {
+    const QJsonObject payload = dynamicsPayload(dynamicTool());
+    QCOMPARE(payload.keys(), QStringList({"Kr", "Kt_N_mm2", "helix_deg", "max_force_N", "modes_x", "modes_y",
+                                          "pitch_deg", "radial_depth_mm", "runout_um"}));
+    QCOMPARE(payload.value("modes_x").toArray().size(), 2);
+  }
+
+  // The carried data and the format's geometry give back the whole tool.
+  void payloadRestoresTheTool() {
+    const ToolSpec back = withPayload(mappedTool(), dynamicsPayload(dynamicTool()), "lib.tbl");
+    QCOMPARE(back, dynamicTool());
+  }
+
+  // The format's own geometry wins; a helix from the payload only when the format has none.
+  void formatGeometryWins() {
+    ToolSpec mapped = mappedTool();
+    mapped.helix_deg = 45.0;
+    mapped.type = "ball end mill";
+    const ToolSpec back = withPayload(mapped, dynamicsPayload(dynamicTool()), "lib.tbl");
+    QCOMPARE(back.helix_deg, 45.0);
+    QCOMPARE(back.type.value(), QString("ball end mill"));
+    QCOMPARE(back.modes_x, dynamicTool().modes_x);
+  }
+
+  void emptyPayloadKeepsTheToolRigid() {
+    const ToolSpec back = withPayload(mappedTool(), {}, "lib.tbl");
+    QCOMPARE(back, mappedTool());
+    QVERIFY(back.modes_x.empty() && back.modes_y.empty());
+  }
+
+  void badPayloadNamesFileToolAndField_data() {
+    QTest::addColumn<QJsonObject>("payload");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("damping") << QJsonObject{{"modes_x",
+                                             QJsonArray{QJsonObject{
+                                                 {"freq_Hz", 700}, {"damping_pct", 150}, {"stiffness_N_per_um", 3}}}}}
+                             << "tool.tbl: tool 'T7': modes_x[0].damping_pct = 150: must be in [0.001, 100)";
+    QTest::newRow("pitch per tooth") << QJsonObject{{"pitch_deg", QJsonArray{180, 180}}}
+                                     << "tool.tbl: tool 'T7': pitch_deg";
+    QTest::newRow("wrong type") << QJsonObject{{"Kt_N_mm2", "hard"}}
+                                << "tool.tbl: tool 'T7': Kt_N_mm2: expected a number";
+  }
+  void badPayloadNamesFileToolAndField() {
+    QFETCH(QJsonObject, payload);
+    QFETCH(QString, message);
+    const QString error = errorOf([&] { withPayload(mappedTool(), payload, "/shop/tool.tbl"); });
+    QVERIFY2(error.startsWith(message), qPrintable(error));
+  }
+
+  void sideFileCarriesEveryTool() {
+    ToolSpec other = dynamicTool();
+    other.id = "T8";
+    other.modes_y.clear();
+    const std::map<QString, QJsonObject> payloads =
+        readSideFile(writeSideFile({dynamicTool(), other}), "tool.millexpert.json");
+    QCOMPARE(payloads.size(), std::size_t{2});
+    QCOMPARE(withPayload(mappedTool(), payloads.at("T7"), "tool.tbl"), dynamicTool());
+    ToolSpec mapped8 = mappedTool();
+    mapped8.id = "T8";
+    QCOMPARE(withPayload(mapped8, payloads.at("T8"), "tool.tbl"), other);
+  }
+
+  void sideFilePathIsNamedAfterTheLibrary_data() {
+    QTest::addColumn<QString>("library");
+    QTest::addColumn<QString>("side");
+    QTest::newRow("tool.tbl") << "/shop/mill/tool.tbl"
+                              << "/shop/mill/tool.millexpert.json";
+    QTest::newRow("two dots") << "/shop/mill/haas.v2.tbl"
+                              << "/shop/mill/haas.v2.millexpert.json";
+    QTest::newRow("relative") << "tool.tbl"
+                              << "tool.millexpert.json";
+  }
+  void sideFilePathIsNamedAfterTheLibrary() {
+    QFETCH(QString, library);
+    QFETCH(QString, side);
+    QCOMPARE(sideFilePath(library), side);
+  }
+
+  void badSideFileIsRefused_data() {
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("syntax") << QByteArray("{") << "t.millexpert.json: JSON syntax error at offset 1";
+    QTest::newRow("format") << QByteArray(R"({"format": "other", "tools": []})")
+                            << "t.millexpert.json, format: \"other\": must be \"millexpert-tool-dynamics\"";
+    QTest::newRow("tools not array") << QByteArray(R"({"format": "millexpert-tool-dynamics", "tools": {}})")
+                                     << "t.millexpert.json, tools: must be an array of tools";
+    QTest::newRow("no id") << QByteArray(R"({"format": "millexpert-tool-dynamics", "tools": [{"Kr": 0.3}]})")
+                           << "t.millexpert.json, tools[0].id: must be a non-empty string";
+    QTest::newRow("repeated id")
+        << QByteArray(R"({"format": "millexpert-tool-dynamics", "tools": [{"id": "T1"}, {"id": "T1"}]})")
+        << "t.millexpert.json: tool 'T1', tools[1].id: repeats an earlier entry";
+  }
+  void badSideFileIsRefused() {
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, message);
+    const QString error = errorOf([&] { readSideFile(bytes, "t.millexpert.json"); });
+    QVERIFY2(error.startsWith(message), qPrintable(error));
+  }
+
+  void errorTextNamesWhatItKnows() {
+    QCOMPARE(toolLibraryError("/a/b/lib.json", "T1", "geometry.DC", "'-3' must be > 0"),
+             QString("lib.json: tool 'T1', geometry.DC: '-3' must be > 0"));
+    QCOMPARE(toolLibraryError("lib.json", {}, {}, "empty"), QString("lib.json: empty"));
+    QCOMPARE(toolLibraryError("lib.json", {}, "data", "must be an array"), QString("lib.json, data: must be an array"));
+  }
+
+  void importedToolIsValidated() {
+    ToolSpec t = mappedTool();
+    t.teeth = 101;
+    const QString error = errorOf([&] { validateImportedTool(t, "lib.json"); });
+    QCOMPARE(error, QString("lib.json: tool 'T7': teeth = 101: must be an integer in [1, 100]"));
+  }
+};
+
+MX_REGISTER_TEST(TestToolLibraryIo)
+#include "test_tool_library_io.moc"
