@@ -31,8 +31,8 @@ ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), war
       {"settling_time", "Settling time [s]:", "Time for the force to stay within the band around the reference"},
       {"jc", "Cost J_c [N\u00b7s]:",
        "Eq. 34: area between the continuous plant output and the linear interpolation of its samples"},
-      {"max_force", "Max. force [N]:", "Largest continuous plant force over the run"},
-      {"feed_range", "Feed range [mm/s]:", "Smallest and largest feed commanded (clamped to [0, f_max])"},
+      {"max_force", "Max. force [%1]:", "Largest continuous plant force over the run"},
+      {"feed_range", "Feed range [%1]:", "Smallest and largest feed commanded (clamped to [0, f_max])"},
   };
   auto* outer = new QVBoxLayout(this);
   outer->setContentsMargins(0, 0, 0, 0);
@@ -46,6 +46,7 @@ ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), war
     value->setToolTip(tr(r.tip));
     auto* label = new QLabel(tr(r.label), this);
     label->setToolTip(tr(r.tip));
+    labels_.insert(QString::fromLatin1(r.key), label);
     form->addRow(label, value);
     values_.insert(QString::fromLatin1(r.key), value);
   }
@@ -55,7 +56,25 @@ ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), war
                                   "font-weight: bold; }")
                               .arg(IndicatorGauge::alarmColor().name()));
   outer->addWidget(warning_);
+  relabel();
   clear();
+}
+
+void ControlMetricsPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  const auto apply = [this] {
+    relabel();
+    if (metrics_) setMetrics(ControlMetricsView(*metrics_));
+  };
+  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
+  apply();
+}
+
+void ControlMetricsPanel::relabel() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  labels_["max_force"]->setText(tr("Max. force [%1]:").arg(u.symbol(Quantity::Force)));
+  labels_["feed_range"]->setText(tr("Feed range [%1]:").arg(u.symbol(Quantity::Feed)));
 }
 
 QVector<QPair<double, double>> ControlMetricsPanel::depthSteps(const QVector<double>& depth_mm) {
@@ -67,6 +86,7 @@ QVector<QPair<double, double>> ControlMetricsPanel::depthSteps(const QVector<dou
 }
 
 void ControlMetricsPanel::clear() {
+  metrics_.reset();
   for (QLabel* label : std::as_const(values_)) label->setText(kMissing);
   overshoot_pct_.clear();
   has_metrics_ = false;
@@ -81,13 +101,16 @@ void ControlMetricsPanel::setDepthSteps(const QVector<QPair<double, double>>& fr
 
 void ControlMetricsPanel::setMetrics(const ControlMetricsView& m) {
   has_metrics_ = true;
+  metrics_ = m;
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const auto feed = [&u](double mm_s) { return u.fromBase(Quantity::Feed, perMinute(mm_s)); };
   overshoot_pct_ = m.overshoot_pct;
   showOvershoots();
   values_["settling_time"]->setText(num(m.settling_time_s));
   values_["jc"]->setText(num(m.jc_n_s));
-  values_["max_force"]->setText(num(m.max_force_n));
+  values_["max_force"]->setText(num(u.fromBase(Quantity::Force, m.max_force_n)));
   values_["feed_range"]->setText(std::isfinite(m.min_feed_mm_s) || std::isfinite(m.max_feed_mm_s)
-                                     ? tr("%1 to %2").arg(num(m.min_feed_mm_s), num(m.max_feed_mm_s))
+                                     ? tr("%1 to %2").arg(num(feed(m.min_feed_mm_s)), num(feed(m.max_feed_mm_s)))
                                      : kMissing);
   warning_->setText(
       tr("Unstable zero: H_\u03b2 has a zero outside the unit circle, so the controller does not "
@@ -107,7 +130,10 @@ void ControlMetricsPanel::showOvershoots() {
     QString line = tr("step %1: %2").arg(i + 1).arg(num(overshoot_pct_[i]));
     if (i < steps_.size()) {
       const auto [from, to] = steps_[i];
-      line += tr(" (%1 \u2192 %2 mm, %3)").arg(num(from), num(to), to < from ? tr("undershoot") : tr("overshoot"));
+      const ShopUnits& u = DisplayUnits::of(units_);
+      line += tr(" (%1 \u2192 %2 %3, %4)")
+                  .arg(num(u.fromBase(Quantity::Length, from)), num(u.fromBase(Quantity::Length, to)),
+                       u.symbol(Quantity::Length), to < from ? tr("undershoot") : tr("overshoot"));
     }
     lines << line;
   }

@@ -31,6 +31,30 @@ void setSeries(QCPGraph* graph, const QVector<double>& keys, const QVector<doubl
   graph->data()->set(data, true);
 }
 
+QVector<double> times(const QVector<double>& v, double factor) {
+  QVector<double> out(v);
+  for (double& x : out) x *= factor;
+  return out;
+}
+
+// The traces (N, mm, mm/s) in shop units: every conversion is a factor.
+ControlTraces inUnits(const ControlTraces& t, const ShopUnits& u) {
+  const double force = u.fromBase(Quantity::Force, 1.0);
+  const double depth = u.fromBase(Quantity::Length, 1.0);
+  const double feed = u.fromBase(Quantity::Feed, perMinute(1.0));
+  ControlTraces s = t;
+  for (auto [values, factor] : {std::pair{&s.reference_n, force},
+                                {&s.model_n, force},
+                                {&s.force_sampled_n, force},
+                                {&s.error_n, force},
+                                {&s.dense_force_n, force},
+                                {&s.feed_mm_s, feed},
+                                {&s.dense_feed_mm_s, feed},
+                                {&s.depth_mm, depth}})
+    *values = times(*values, factor);
+  return s;
+}
+
 void widen(const QCPGraph* graph, double& lo, double& hi) {
   for (const QCPGraphData& d : *graph->data()) {
     lo = std::min(lo, d.value);
@@ -54,12 +78,11 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   // Dense continuous traces: fast polylines keep a repaint in milliseconds.
   plot_->setPlottingHint(QCP::phFastPolylines, true);
 
-  QCPAxisRect* force = addRow(tr("Force F [N]"), 3);
+  QCPAxisRect* force = addRow(QString(), 3);
   force->axis(QCPAxis::atRight)->setVisible(true);
-  force->axis(QCPAxis::atRight)->setLabel(tr("Depth of cut b [mm]"));
   QCPAxis* depth_axis = force->axis(QCPAxis::atRight);
   QCPAxis* force_axis = force->axis(QCPAxis::atLeft);
-  QCPGraph* depth = addGraph(0, depth_axis, "depth", tr("Depth of cut b [mm] (right axis)"), QPen(kDepthColor, 1.5));
+  QCPGraph* depth = addGraph(0, depth_axis, "depth", QString(), QPen(kDepthColor, 1.5));
   depth->setLineStyle(QCPGraph::lsStepLeft);
   depth->setBrush(QColor(150, 150, 150, 40));
   addGraph(0, force_axis, "force continuous", tr("Plant F_p between samples"), QPen(QColor(31, 119, 180, 150), 1.0));
@@ -72,12 +95,12 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   sampled->setLineStyle(QCPGraph::lsNone);
   sampled->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
 
-  QCPAxisRect* error = addRow(tr("Error e [N]"), 0);
-  QCPGraph* e = addGraph(1, error->axis(QCPAxis::atLeft), "error", tr("Tracking error e [N]"), QPen(kErrorColor, 1.2));
+  QCPAxisRect* error = addRow(QString(), 0);
+  QCPGraph* e = addGraph(1, error->axis(QCPAxis::atLeft), "error", QString(), QPen(kErrorColor, 1.2));
   e->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 3));
   error->axis(QCPAxis::atLeft)->grid()->setZeroLinePen(QPen(QColor(90, 90, 90), 1.0));
 
-  QCPAxisRect* feed = addRow(tr("Feed f [mm/s]"), 0);
+  QCPAxisRect* feed = addRow(QString(), 0);
   QCPAxis* feed_axis = feed->axis(QCPAxis::atLeft);
   addGraph(2, feed_axis, "feed continuous", tr("Feed between samples"), QPen(QColor(44, 160, 44, 150), 1.0));
   QCPGraph* f = addGraph(2, feed_axis, "feed", tr("Control law f at the samples"), QPen(kFeedColor, 1.5));
@@ -95,7 +118,32 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
     fitRanges();
     plot_->replot(QCustomPlot::rpQueuedReplot);
   });
+  relabel();
   clear();
+}
+
+void ControlPlots::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_)
+    connect(units_, &DisplayUnits::changed, this, [this] {
+      relabel();
+      setTraces(ControlTraces(traces_));
+    });
+  relabel();
+  setTraces(ControlTraces(traces_));
+}
+
+// The axis labels and legend names that carry a shop unit.
+void ControlPlots::relabel() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString force = u.symbol(Quantity::Force), length = u.symbol(Quantity::Length);
+  rects_[0]->axis(QCPAxis::atLeft)->setLabel(tr("Force F [%1]").arg(force));
+  rects_[0]->axis(QCPAxis::atRight)->setLabel(tr("Depth of cut b [%1]").arg(length));
+  rects_[1]->axis(QCPAxis::atLeft)->setLabel(tr("Error e [%1]").arg(force));
+  rects_[2]->axis(QCPAxis::atLeft)->setLabel(tr("Feed f [%1]").arg(u.symbol(Quantity::Feed)));
+  setLegendName(0, graphs_["depth"], tr("Depth of cut b [%1] (right axis)").arg(length));
+  setLegendName(1, graphs_["error"], tr("Tracking error e [%1]").arg(force));
 }
 
 QCPAxisRect* ControlPlots::addRow(const QString& value_label, int legend_wrap) {
@@ -140,16 +188,21 @@ QCPGraph* ControlPlots::addGraph(int row, QCPAxis* value_axis, const QString& ke
   graph->setAdaptiveSampling(true);
   if (plot_->legend) graph->removeFromLegend(plot_->legend);
   graph->addToLegend(legends_[row]);
-  // Entries at their natural width, packed from the left instead of spread over the row.
+  setLegendName(row, graph, legend_name);
+  graphs_.insert(key, graph);
+  return graph;
+}
+
+// Entries at their natural width, packed from the left instead of spread over the row.
+void ControlPlots::setLegendName(int row, QCPGraph* graph, const QString& name) {
+  graph->setName(name);
   QCPLegend* legend = legends_[row];
   if (QCPPlottableLegendItem* item = legend->itemWithPlottable(graph)) {
     const QMargins m = item->margins();
     const int width = m.left() + legend->iconSize().width() + legend->iconTextPadding() +
-                      QFontMetrics(legend->font()).horizontalAdvance(legend_name) + m.right() + 4;
+                      QFontMetrics(legend->font()).horizontalAdvance(name) + m.right() + 4;
     item->setMaximumSize(width, QWIDGETSIZE_MAX);
   }
-  graphs_.insert(key, graph);
-  return graph;
 }
 
 void ControlPlots::rebuildThetaGraphs(const QStringList& names) {
@@ -171,7 +224,9 @@ void ControlPlots::rebuildThetaGraphs(const QStringList& names) {
   }
 }
 
-void ControlPlots::setTraces(const ControlTraces& t) {
+void ControlPlots::setTraces(const ControlTraces& traces) {
+  traces_ = traces;
+  const ControlTraces t = inUnits(traces, DisplayUnits::of(units_));
   setSeries(graphs_["reference"], t.t_s, t.reference_n);
   setSeries(graphs_["model"], t.t_s, t.model_n);
   setSeries(graphs_["force sampled"], t.t_s, t.force_sampled_n);
@@ -239,8 +294,9 @@ void ControlPlots::fitRanges() {
     t1 = t0 + 1.0;
   }
   QCPGraph* limit = graphs_["feed limit"];
+  const double feed_max = DisplayUnits::of(units_).fromBase(Quantity::Feed, perMinute(feed_max_mm_s_));
   if (feed_max_mm_s_ > 0.0)
-    limit->setData({t0, t1}, {feed_max_mm_s_, feed_max_mm_s_}, true);
+    limit->setData({t0, t1}, {feed_max, feed_max}, true);
   else
     limit->data()->clear();
   limit->setVisible(feed_max_mm_s_ > 0.0);
@@ -321,8 +377,9 @@ bool ControlPlots::savePng(const QString& path, int width, int height) {
 }
 
 bool ControlPlots::saveResponses(const ControlTraces& traces, double feed_max_mm_s, const QString& path, int width,
-                                 int height, const QString& title) {
+                                 int height, const QString& title, DisplayUnits* units) {
   ControlPlots exporter(Rows::Responses);
+  exporter.setUnits(units);
   exporter.resize(width, height);
   exporter.setFeedLimit(feed_max_mm_s);
   exporter.setTraces(traces);

@@ -7,13 +7,16 @@
 //   (3) feed, the control law [mm/s], at the samples and between them, with the feed limit and the changes of the
 //       programmed point (N, b) as vertical lines (the Pareto paper's Fig. 6, lower panel);
 //   (4) parameter estimates theta [-] (Rows::All only).
-// Each row has its legend above it. QCustomPlot stays behind this class.
+// Each row has its legend above it. Force, depth and feed are shown in the shop units of setUnits()
+// (the traces come in N, mm and mm/s). QCustomPlot stays behind this class.
 #include <QHash>
+#include <QPointer>
 #include <QStringList>
 #include <QVector>
 #include <QWidget>
 
 #include "control_data.h"
+#include "display_units.h"
 
 class QCustomPlot;
 class QCPAxis;
@@ -32,6 +35,7 @@ class ControlPlots : public QWidget {
 
   explicit ControlPlots(Rows rows = Rows::All, QWidget* parent = nullptr);
 
+  void setUnits(DisplayUnits* units);  // nullptr: metric
   void setTraces(const ControlTraces& traces);
   void setFeedLimit(double feed_max_mm_s);  // <= 0 or non-finite: no limit line
   void setTitle(const QString& title);      // empty: no title row
@@ -51,16 +55,20 @@ class ControlPlots : public QWidget {
   bool savePng(const QString& path, int width, int height);
   // Figures 9-12 style export of `traces` (force, error and feed) with an optional title.
   static bool saveResponses(const ControlTraces& traces, double feed_max_mm_s, const QString& path, int width,
-                            int height, const QString& title = {});
+                            int height, const QString& title = {}, DisplayUnits* units = nullptr);
 
  private:
   QCPAxisRect* addRow(const QString& value_label, int legend_wrap);
   QCPGraph* addGraph(int row, QCPAxis* value_axis, const QString& key, const QString& legend_name, const QPen& pen);
+  void setLegendName(int row, QCPGraph* graph, const QString& name);
+  void relabel();
   void rebuildThetaGraphs(const QStringList& names);
   void fitRanges();
   void syncTime(const QCPAxisRect* source);
 
   Rows rows_;
+  QPointer<DisplayUnits> units_;
+  ControlTraces traces_;  // as given (N, mm, mm/s)
   QCustomPlot* plot_;
   QCPMarginGroup* margin_group_;
   QVector<QCPAxisRect*> rects_;

@@ -17,11 +17,13 @@ namespace {
 
 struct FieldSpec {
   const char* key;
-  const char* label;
+  const char* label;  // %1: the shop unit of `quantity`
   const char* tip;
   double min, max;
-  bool min_open;         // min itself refused
-  double display_scale;  // displayed = value * scale
+  bool min_open;                                    // min itself refused
+  double display_scale;                             // displayed = value * scale (min and max are displayed values)
+  std::optional<Quantity> quantity = std::nullopt;  // shown in this shop unit: value * to_base is in base units
+  double to_base = 1.0;
 };
 
 // The limits are those of the engine's settings check.
@@ -40,10 +42,24 @@ constexpr FieldSpec kFields[] = {
      50.0, false, 1.0},
     {"tau_c_ms", "Cutting time constant \u03c4_c [ms] (0 = default)",
      "Time constant of the cutting process; 0 takes half a tooth period", 0.0, 1e4, false, 1.0},
-    {"feed_max_mm_s", "Feed limit f_max [mm/s]", "Feed-drive maximum; the control law is clamped to [0, f_max]", 0.0,
-     1e4, true, 1.0},
-    {"force_reference_n", "Force reference F_r [N]", "Force the controller holds (paper: 1200 N)", 0.0, 1e6, true, 1.0},
+    {"feed_max_mm_s", "Feed limit f_max [%1]", "Feed-drive maximum; the control law is clamped to [0, f_max]", 0.0, 1e4,
+     true, 1.0, Quantity::Feed, 60.0},  // mm/s, shown per minute
+    {"force_reference_n", "Force reference F_r [%1]", "Force the controller holds (paper: 1200 N)", 0.0, 1e6, true, 1.0,
+     Quantity::Force},
 };
+
+QString label(const FieldSpec& f, const ShopUnits& units) {
+  const QString text = ControlSettingsEditor::tr(f.label);
+  return f.quantity ? text.arg(units.symbol(*f.quantity)) : text;
+}
+
+// A settings value as displayed, and back.
+double shown(const FieldSpec& f, double value, const ShopUnits& units) {
+  return f.quantity ? units.fromBase(*f.quantity, value * f.to_base) : value * f.display_scale;
+}
+double fromShown(const FieldSpec& f, double displayed, const ShopUnits& units) {
+  return f.quantity ? units.toBase(*f.quantity, displayed) / f.to_base : displayed / f.display_scale;
+}
 
 const FieldSpec* spec(const QString& key) {
   for (const FieldSpec& f : kFields)
@@ -76,7 +92,7 @@ QStringList ControlSettingsEditor::fieldKeys() {
   return keys;
 }
 
-QString ControlSettingsEditor::format(const QString& key, double value) {
+QString ControlSettingsEditor::format(const QString& key, double value, const ShopUnits& units) {
   const FieldSpec* f = spec(key);
   if (!f) return {};
   if (key == "p0") {  // scientific, trailing zeros of the mantissa dropped: "1e+05", "2.5e+06"
@@ -87,26 +103,45 @@ QString ControlSettingsEditor::format(const QString& key, double value) {
     if (mantissa.endsWith(QLatin1Char('.'))) mantissa.chop(1);
     return mantissa + text.mid(e);
   }
-  return number(value * f->display_scale);
+  return number(shown(*f, value, units));
 }
 
-std::optional<double> ControlSettingsEditor::parse(const QString& key, const QString& text, QString* reason) {
+std::optional<double> ControlSettingsEditor::parse(const QString& key, const QString& text, QString* reason,
+                                                   const ShopUnits& units) {
   const FieldSpec* f = spec(key);
   auto refuse = [&](const QString& why) -> std::optional<double> {
     if (reason)
-      *reason =
-          tr("%1 = %2: %3").arg(f ? tr(f->label) : key, text.trimmed().isEmpty() ? tr("(empty)") : text.trimmed(), why);
+      *reason = tr("%1 = %2: %3")
+                    .arg(f ? label(*f, units) : key, text.trimmed().isEmpty() ? tr("(empty)") : text.trimmed(), why);
     return std::nullopt;
   };
   if (!f) return refuse(tr("unknown field"));
   bool ok = false;
-  double shown = QLocale::c().toDouble(text.trimmed(), &ok);
-  if (!ok) shown = QLocale().toDouble(text.trimmed(), &ok);
-  if (!ok || !std::isfinite(shown)) return refuse(tr("not a number"));
-  const bool below = f->min_open ? shown <= f->min : shown < f->min;
-  if (below || shown > f->max)
-    return refuse(tr("must be in %1%2, %3]").arg(f->min_open ? "(" : "[", number(f->min), number(f->max)));
-  return shown / f->display_scale;
+  double typed = QLocale::c().toDouble(text.trimmed(), &ok);
+  if (!ok) typed = QLocale().toDouble(text.trimmed(), &ok);
+  if (!ok || !std::isfinite(typed)) return refuse(tr("not a number"));
+  // The limits as displayed: converted for a shop-unit field.
+  const double lo = f->quantity ? shown(*f, f->min, units) : f->min;
+  const double hi = f->quantity ? shown(*f, f->max, units) : f->max;
+  const bool below = f->min_open ? typed <= lo : typed < lo;
+  if (below || typed > hi)
+    return refuse(tr("must be in %1%2, %3]").arg(f->min_open ? "(" : "[", number(lo), number(hi)));
+  return fromShown(*f, typed, units);
+}
+
+void ControlSettingsEditor::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  const auto apply = [this] {
+    for (const FieldSpec& f : kFields) labels_[QString::fromLatin1(f.key)]->setText(label(f, shopUnits()) + ":");
+    showSettings();
+  };
+  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
+  apply();
+}
+
+const ShopUnits& ControlSettingsEditor::shopUnits() const {
+  return DisplayUnits::of(units_);
 }
 
 ControlSettingsEditor::ControlSettingsEditor(QWidget* parent)
@@ -127,11 +162,12 @@ ControlSettingsEditor::ControlSettingsEditor(QWidget* parent)
     edit->setObjectName(QStringLiteral("control_") + key);
     edit->setToolTip(tr(f.tip));
     edit->setAlignment(Qt::AlignRight);
-    auto* label = new QLabel(tr(f.label) + ":", this);
-    label->setToolTip(tr(f.tip));
-    label->setBuddy(edit);
+    auto* name = new QLabel(label(f, shopUnits()) + ":", this);
+    name->setToolTip(tr(f.tip));
+    name->setBuddy(edit);
     if (key == "reset_fraction") form->addRow(tr("Covariance reset:"), reset_);
-    form->addRow(label, edit);
+    form->addRow(name, edit);
+    labels_.insert(key, name);
     fields_.insert(key, edit);
     connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
   }
@@ -158,7 +194,7 @@ void ControlSettingsEditor::setSettings(const ControllerSettingsView& s) {
 void ControlSettingsEditor::showSettings() {
   for (auto it = fields_.cbegin(); it != fields_.cend(); ++it) {
     if (errors_.contains(it.key())) continue;  // keeps the refused text for correction
-    it.value()->setText(format(it.key(), *member(settings_, it.key())));
+    it.value()->setText(format(it.key(), *member(settings_, it.key()), shopUnits()));
   }
   const QSignalBlocker block(reset_);
   reset_->setCurrentIndex(settings_.reset >= 0 && settings_.reset < reset_->count() ? settings_.reset : 0);
@@ -168,13 +204,13 @@ void ControlSettingsEditor::showSettings() {
 void ControlSettingsEditor::commit(const QString& key) {
   QLineEdit* edit = fields_.value(key);
   double* target = member(settings_, key);
-  if (edit->text() == format(key, *target)) {  // untouched: the shown value may be rounded
+  if (edit->text() == format(key, *target, shopUnits())) {  // untouched: the shown value may be rounded
     errors_.remove(key);
     showErrors();
     return;
   }
   QString reason;
-  const std::optional<double> value = parse(key, edit->text(), &reason);
+  const std::optional<double> value = parse(key, edit->text(), &reason, shopUnits());
   if (!value) {
     errors_.insert(key, reason);
     showErrors();
@@ -183,7 +219,7 @@ void ControlSettingsEditor::commit(const QString& key) {
   errors_.remove(key);
   const bool changed = *target != *value;
   *target = *value;
-  edit->setText(format(key, *value));
+  edit->setText(format(key, *value, shopUnits()));
   showErrors();
   if (changed) emit settingsEdited(settings_);
 }

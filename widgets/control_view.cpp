@@ -190,13 +190,20 @@ QString ControlView::statusText() const {
   return status_->text();
 }
 
+void ControlView::setUnits(DisplayUnits* units) {
+  units_ = units;
+  plots_->setUnits(units);
+  metrics_->setUnits(units);
+  settings_->setUnits(units);
+}
+
 bool ControlView::saveResponsePlots(const QString& path, int width, int height, const QString& title) {
   const QString shown = title.isEmpty()
                             ? tr("Discrete and continuous responses, tracking error and programmed control law, "
                                  "\u03b2 = %1")
                                   .arg(betaText(beta()))
                             : title;
-  return ControlPlots::saveResponses(traces_, settings().feed_max_mm_s, path, width, height, shown);
+  return ControlPlots::saveResponses(traces_, settings().feed_max_mm_s, path, width, height, shown, units_);
 }
 
 bool ControlView::saveJcPlot(const QString& path, int width, int height) {

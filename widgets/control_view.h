@@ -7,11 +7,13 @@
 //   right:  J_c(beta) with the unstable-zero region and the current beta, and the pole-zero map of H_beta.
 // The view never calls the engine: the main window reacts to betaChanged / settingsEdited /
 // workpieceEdited / sweepRequested, runs the engine and feeds the results back.
+#include <QPointer>
 #include <QString>
 #include <QVector>
 #include <QWidget>
 
 #include "control_data.h"
+#include "display_units.h"
 
 class QDoubleSpinBox;
 class QLabel;
@@ -34,7 +36,8 @@ class ControlView : public QWidget {
  public:
   explicit ControlView(QWidget* parent = nullptr);
 
-  void setBeta(double beta);  // slider [-1, 1] step 0.01 plus a spin box; no signal
+  void setBeta(double beta);           // slider [-1, 1] step 0.01 plus a spin box; no signal
+  void setUnits(DisplayUnits* units);  // the plots, metrics and settings in shop units; nullptr: metric
   double beta() const;
   int betaGesture() const;  // the beta slider drag that emits betaChanged, 0 outside a drag
   void setTraces(const ControlTraces& t);
@@ -90,6 +93,7 @@ class ControlView : public QWidget {
   JcCurvePlot* jc_;
   PoleZeroPlot* pole_zero_;
   ControlTraces traces_;
+  QPointer<DisplayUnits> units_;
   bool busy_ = false;
 };
 

@@ -1,8 +1,11 @@
 #pragma once
-// Display units for lengths (mm or inch). The engine stays SI and the project file in mm; only what
-// the views show and accept changes. One instance per main window, shared by its views.
+// The shop units of one main window (shop_units.h), shared by its views: they convert and label
+// through it and follow changed(). The engine stays SI and the project file shop-metric; only what the
+// views show and accept changes. The length accessors are the mm/inch part of it.
 #include <QObject>
 #include <QString>
+
+#include "shop_units.h"
 
 namespace mx::widgets {
 
@@ -12,23 +15,35 @@ class DisplayUnits : public QObject {
   enum class Length { Millimetre, Inch };
   explicit DisplayUnits(QObject* parent = nullptr) : QObject(parent) {}
 
-  Length length() const { return length_; }
-  void setLength(Length length) {
-    if (length == length_) return;
-    length_ = length;
+  const ShopUnits& shop() const { return shop_; }
+  void setShop(const ShopUnits& shop) {
+    if (shop == shop_) return;
+    shop_ = shop;
     emit changed();
   }
+  // The shop units of `units`, metric when there is none (a view without units shows the base units).
+  static const ShopUnits& of(const DisplayUnits* units) {
+    static const ShopUnits metric = ShopUnits::metric();
+    return units ? units->shop_ : metric;
+  }
+
+  Length length() const { return shop_.choice(Quantity::Length) == 1 ? Length::Inch : Length::Millimetre; }
+  void setLength(Length length) {
+    ShopUnits shop = shop_;
+    shop.setChoice(Quantity::Length, length == Length::Inch ? 1 : 0);
+    setShop(shop);
+  }
   // mm -> display value and back.
-  double fromMm(double mm) const { return length_ == Length::Inch ? mm / 25.4 : mm; }
-  double toMm(double value) const { return length_ == Length::Inch ? value * 25.4 : value; }
-  QString lengthSuffix() const { return length_ == Length::Inch ? QStringLiteral("in") : QStringLiteral("mm"); }
-  int lengthDecimals() const { return length_ == Length::Inch ? 5 : 4; }
+  double fromMm(double mm) const { return shop_.fromBase(Quantity::Length, mm); }
+  double toMm(double value) const { return shop_.toBase(Quantity::Length, value); }
+  QString lengthSuffix() const { return shop_.symbol(Quantity::Length); }
+  int lengthDecimals() const { return shop_.decimals(Quantity::Length); }
 
  signals:
   void changed();
 
  private:
-  Length length_ = Length::Millimetre;
+  ShopUnits shop_;
 };
 
 }  // namespace mx::widgets

@@ -72,6 +72,7 @@ QWidget* MachineOperationPanel::addNumber(const QString& path, double max, int d
                                           NumberField field) {
   field.box = new QDoubleSpinBox(this);
   field.box->setRange(0.0, max);  // 0 can be typed and is refused with its reason where it is invalid
+  field.max = max;
   field.box->setDecimals(decimals);
   field.box->setKeyboardTracking(false);
   field.box->setToolTip(tip);
@@ -101,7 +102,7 @@ QGroupBox* MachineOperationPanel::machineGroup() {
   auto* form = new QFormLayout(box);
   form->addRow(tr("Spindle power"),
                addNumber("machine.spindle_power_W", 1e6, 1, tr("Spindle power P [W] (> 0)"),
-                         {.suffix = " W",
+                         {.quantity = Quantity::Power,
                           .get = [](const app::Project& p) { return Opt(p.machine->spindle_power_W); },
                           .set = [](app::Project& p, Opt v) { machine(p).spindle_power_W = v.value_or(0.0); }}));
   form->addRow(tr("Max spindle speed"),
@@ -111,14 +112,13 @@ QGroupBox* MachineOperationPanel::machineGroup() {
                           .fallback = 12000.0,
                           .get = [](const app::Project& p) { return p.machine->max_spindle_rpm; },
                           .set = [](app::Project& p, Opt v) { machine(p).max_spindle_rpm = v; }}));
-  form->addRow(tr("Max feed rate"),
-               addNumber("machine.max_feed_mm_s", 1e5, 3, tr("Feed-drive limit [length/s] (> 0); optional"),
-                         {.enabled = new QCheckBox(this),
-                          .length = true,
-                          .suffix = " %1/s",
-                          .fallback = 100.0,
-                          .get = [](const app::Project& p) { return p.machine->max_feed_mm_s; },
-                          .set = [](app::Project& p, Opt v) { machine(p).max_feed_mm_s = v; }}));
+  form->addRow(tr("Max feed rate"), addNumber("machine.max_feed_mm_s", 1e5, 3, tr("Feed-drive limit (> 0); optional"),
+                                              {.enabled = new QCheckBox(this),
+                                               .quantity = Quantity::Feed,
+                                               .to_base = 60.0,  // mm/s -> mm/min
+                                               .fallback = 100.0,
+                                               .get = [](const app::Project& p) { return p.machine->max_feed_mm_s; },
+                                               .set = [](app::Project& p, Opt v) { machine(p).max_feed_mm_s = v; }}));
   return box;
 }
 
@@ -146,14 +146,12 @@ QGroupBox* MachineOperationPanel::operationGroup() {
                                          .set = [](app::Project& p, Opt v) { operation(p).radial_immersion = v; }}));
   form->addRow(useDepth_,
                addNumber("operation.radial_depth_mm", 1e4, 4, tr("Radial depth of cut a in (0, D] for every tool"),
-                         {.length = true,
-                          .suffix = " %1",
+                         {.quantity = Quantity::Length,
                           .get = [](const app::Project& p) { return p.operation->radial_depth_mm; },
                           .set = [](app::Project& p, Opt v) { operation(p).radial_depth_mm = v; }}));
   form->addRow(tr("Max feed per tooth"),
                addNumber("operation.max_feed_per_tooth_mm", 10.0, 4, tr("Largest admissible feed per tooth (> 0)"),
-                         {.length = true,
-                          .suffix = " %1/tooth",
+                         {.quantity = Quantity::ChipLoad,
                           .get = [](const app::Project& p) { return Opt(p.operation->max_feed_per_tooth_mm); },
                           .set = [](app::Project& p, Opt v) { operation(p).max_feed_per_tooth_mm = v.value_or(0); }}));
   return box;
@@ -219,18 +217,31 @@ void MachineOperationPanel::setUnits(DisplayUnits* units) {
   refresh();
 }
 
+double MachineOperationPanel::toDisplay(const NumberField& f, double value) const {
+  return f.quantity ? DisplayUnits::of(units_).fromBase(*f.quantity, value * f.to_base) : value;
+}
+
+double MachineOperationPanel::fromDisplay(const NumberField& f, double shown) const {
+  return f.quantity ? DisplayUnits::of(units_).toBase(*f.quantity, shown) / f.to_base : shown;
+}
+
 void MachineOperationPanel::refresh() {
   updating_ = true;
   const app::Project s = shown();
-  const QString unit = units_ ? units_->lengthSuffix() : QStringLiteral("mm");
+  const ShopUnits& units = DisplayUnits::of(units_);
   for (auto it = numbers_.begin(); it != numbers_.end(); ++it) {
     NumberField& f = it.value();
     const Opt v = f.get(s);
-    f.box->setSuffix(f.length ? f.suffix.arg(unit) : f.suffix);
-    if (f.length) f.box->setDecimals(units_ ? units_->lengthDecimals() : 4);
+    if (f.quantity) {
+      f.box->setSuffix(" " + units.symbol(*f.quantity));
+      f.box->setDecimals(units.decimals(*f.quantity));
+      f.box->setMaximum(toDisplay(f, f.max));
+    } else {
+      f.box->setSuffix(f.suffix);
+    }
     if (f.enabled) f.enabled->setChecked(v.has_value());
     f.box->setEnabled(v.has_value());
-    f.box->setValue(v ? (f.length ? toDisplay(*v) : *v) : (f.length ? toDisplay(f.fallback) : f.fallback));
+    f.box->setValue(toDisplay(f, v.value_or(f.fallback)));
   }
   milling_->setCurrentIndex(s.operation->milling == MillingDirection::Up ? 0 : 1);
   useDepth_->setChecked(s.operation->radial_depth_mm.has_value());
@@ -250,11 +261,11 @@ void MachineOperationPanel::commitNumber(const QString& path) {
   if (f.enabled) f.box->setEnabled(f.enabled->isChecked());
   const Opt current = f.get(shown());
   Opt wanted;
-  if (!f.enabled || f.enabled->isChecked()) wanted = f.length ? toMm(f.box->value()) : f.box->value();
+  if (!f.enabled || f.enabled->isChecked()) wanted = fromDisplay(f, f.box->value());
   if (current.has_value() == wanted.has_value()) {
     // Unchanged as shown (the box rounds to its decimals): keep the project's exact value.
     if (!wanted) return;
-    const double shownValue = f.length ? toDisplay(*current) : *current;
+    const double shownValue = toDisplay(f, *current);
     if (std::abs(shownValue - f.box->value()) <= 0.5 * std::pow(10.0, -f.box->decimals())) return;
   }
   app::Project edited = project_;

@@ -4,7 +4,8 @@
 // edited project, validates it (validateProject) and emits editRequested(), or refuses it in place
 // (no signal, the field returns to the project's value, the reason appears in red under the form
 // and in the field's tooltip, the field gets a red border). A section the project lacks is shown
-// with defaults and created by the first edit. Lengths follow the DisplayUnits (project in mm).
+// with defaults and created by the first edit. Power, feed rate, lengths and chip load follow the shop
+// units (DisplayUnits); the project stays in W, mm/s and mm.
 #include <QHash>
 #include <QPointer>
 #include <QWidget>
@@ -31,7 +32,7 @@ class MachineOperationPanel : public QWidget {
 
   void setProject(const app::Project& project);
   const app::Project& project() const { return project_; }
-  void setUnits(DisplayUnits* units);  // radial depth, feed per tooth and feed rate in mm or inch
+  void setUnits(DisplayUnits* units);  // spindle power, feed rate, radial depth and feed per tooth
 
   // The control of a project field, by its path: "machine.spindle_power_W", "machine.max_spindle_rpm",
   // "machine.max_feed_mm_s", "operation.milling", "operation.radial_immersion",
@@ -54,10 +55,12 @@ class MachineOperationPanel : public QWidget {
   // One numeric field: its spin box, an optional enabling check box, and access to the project.
   struct NumberField {
     QDoubleSpinBox* box = nullptr;
-    QCheckBox* enabled = nullptr;  // optional values only
-    bool length = false;           // shown in display length units ("%1" in the suffix is the unit)
+    QCheckBox* enabled = nullptr;                     // optional values only
+    std::optional<Quantity> quantity = std::nullopt;  // shown in its shop unit (the suffix is the unit)
+    double to_base = 1.0;                             // the project's value times this is in base units
     QString suffix = {};
     double fallback = 0.0;  // shown while an optional value is absent
+    double max = 0.0;       // the largest value the box takes, in project units
     std::function<std::optional<double>(const app::Project&)> get;
     std::function<void(app::Project&, std::optional<double>)> set;
   };
@@ -75,8 +78,9 @@ class MachineOperationPanel : public QWidget {
   void markError(const QString& path, const QString& reason);
   void refresh();
   app::Project shown() const;  // project_ with default sections filled in
-  double toDisplay(double mm) const { return units_ ? units_->fromMm(mm) : mm; }
-  double toMm(double v) const { return units_ ? units_->toMm(v) : v; }
+  // A project value of `f` as shown in its box, and back.
+  double toDisplay(const NumberField& f, double value) const;
+  double fromDisplay(const NumberField& f, double shown) const;
 
   app::Project project_;
   QPointer<DisplayUnits> units_;

@@ -17,17 +17,19 @@ const QString kMissing = QStringLiteral("\u2013");
 
 struct RowSpec {
   const char* key;
-  const char* label;
+  const char* label;  // %1: the shop unit of `quantity`
   const char* tip;
+  std::optional<Quantity> quantity = std::nullopt;
 };
 
 constexpr RowSpec kRows[] = {
-    {"peak_force_n", "Peak force [N]", "Largest cutting force magnitude over the last revolutions"},
-    {"peak_power_w", "Peak power [W]",
+    {"peak_force_n", "Peak force [%1]", "Largest cutting force magnitude over the last revolutions", Quantity::Force},
+    {"peak_power_w", "Peak power [%1]",
      "Peak cutting power over a tooth period, v * sum F_t (Pareto paper eq. 8), and the spindle power limit; "
-     "red when the limit is exceeded"},
-    {"feed_velocity_mm_s", "Feed velocity [mm/s]", "Table feed velocity s_t n_t N"},
-    {"mrr_cm3_s", "MRR [cm\u00b3/s]", "Material removal rate a b s_t n_t N (eq. 11)"},
+     "red when the limit is exceeded",
+     Quantity::Power},
+    {"feed_velocity_mm_s", "Feed rate [%1]", "Table feed rate s_t n_t N", Quantity::Feed},
+    {"mrr_cm3_s", "MRR [%1]", "Material removal rate a b s_t n_t N (eq. 11)", Quantity::RemovalRate},
     {"tol_min", "Tool life TOL [min]", "Tool life from the Taylor model (eq. 10)"},
     {"surf_um", "Roughness SURF [\u00b5m]", "Surface roughness (eq. 12)"},
     {"ros", "Robustness ROS [\u2013]",
@@ -51,6 +53,14 @@ QString verdictStyle(const QColor& color) {
 
 bool finite(std::optional<double> v) {
   return v && std::isfinite(*v);
+}
+
+std::optional<double> shown(const ShopUnits& units, Quantity q, std::optional<double> base) {
+  return base ? std::optional<double>(units.fromBase(q, *base)) : std::nullopt;
+}
+
+std::optional<double> scaled(std::optional<double> v, double factor) {
+  return v ? std::optional<double>(*v * factor) : std::nullopt;
 }
 
 }  // namespace
@@ -77,7 +87,8 @@ MonitoringPanel::MonitoringPanel(QWidget* parent)
   outer->addLayout(form);
   for (const RowSpec& r : kRows) {
     const QString tip = tr(r.tip);
-    auto* name = new QLabel(tr(r.label) + ":", this);
+    auto* name = new QLabel(this);
+    names_.insert(r.key, name);
     auto* value = new QLabel(this);
     value->setObjectName(QString("monitoring_%1").arg(r.key));
     value->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -95,7 +106,6 @@ MonitoringPanel::MonitoringPanel(QWidget* parent)
   outer->addWidget(verdict_);
 
   peaks_->setObjectName("monitoring_peaks");
-  peaks_->setHorizontalHeaderLabels({tr("Frequency [Hz]"), tr("Amplitude [N]"), tr("Kind"), tr("Harmonic [\u2013]")});
   peaks_->setToolTip(
       tr("Rule 17: the largest peaks of the force spectrum, by decreasing amplitude. Kind: a "
          "multiple k of the tooth-passing frequency (forced), of the spindle frequency (run-out), "
@@ -108,7 +118,25 @@ MonitoringPanel::MonitoringPanel(QWidget* parent)
   peaks_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   peaks_->horizontalHeader()->setStretchLastSection(true);
   outer->addWidget(peaks_, 1);
+  refreshUnits();
   clear();
+}
+
+void MonitoringPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &MonitoringPanel::refreshUnits);
+  refreshUnits();
+}
+
+void MonitoringPanel::refreshUnits() {
+  const ShopUnits& units = DisplayUnits::of(units_);
+  for (const RowSpec& r : kRows)
+    names_[r.key]->setText((r.quantity ? tr(r.label).arg(units.symbol(*r.quantity)) : tr(r.label)) + ":");
+  peaks_->setHorizontalHeaderLabels({tr("Frequency [Hz]"), tr("Amplitude [%1]").arg(units.symbol(Quantity::Force)),
+                                     tr("Kind"), tr("Harmonic [\u2013]")});
+  if (shown_values_) setValues(*shown_values_);
+  setPeaks(QVector<MonitoringPeak>(shown_peaks_));
 }
 
 QString MonitoringPanel::valueText(const QString& key) const {
@@ -128,10 +156,12 @@ void MonitoringPanel::setAlarm(QLabel* label, bool alarm) {
 }
 
 void MonitoringPanel::setValues(const MonitoringValues& v) {
+  shown_values_ = v;
+  const ShopUnits& units = DisplayUnits::of(units_);
   const std::pair<const char*, std::optional<double>> plain[] = {
-      {"peak_force_n", v.peak_force_n},
-      {"feed_velocity_mm_s", v.feed_velocity_mm_s},
-      {"mrr_cm3_s", v.mrr_cm3_s},
+      {"peak_force_n", shown(units, Quantity::Force, v.peak_force_n)},
+      {"feed_velocity_mm_s", shown(units, Quantity::Feed, scaled(v.feed_velocity_mm_s, 60.0))},
+      {"mrr_cm3_s", shown(units, Quantity::RemovalRate, scaled(v.mrr_cm3_s, 60.0))},
       {"tol_min", v.tol_min},
       {"surf_um", v.surf_um},
       {"ros", v.ros},
@@ -146,8 +176,11 @@ void MonitoringPanel::setValues(const MonitoringValues& v) {
 
   QLabel* power = values_["peak_power_w"];
   const bool has_limit = finite(v.power_limit_w) && *v.power_limit_w > 0.0;
-  QString text = formatNumber(v.peak_power_w);
-  if (has_limit) text += tr(" of %1 W").arg(formatNumber(v.power_limit_w));
+  QString text = formatNumber(shown(units, Quantity::Power, v.peak_power_w));
+  text += has_limit
+              ? tr(" of %1 %2")
+                    .arg(formatNumber(shown(units, Quantity::Power, v.power_limit_w)), units.symbol(Quantity::Power))
+              : QString();
   power->setText(text);
   setAlarm(power, has_limit && finite(v.peak_power_w) && *v.peak_power_w > *v.power_limit_w);
 
@@ -162,12 +195,14 @@ void MonitoringPanel::setValues(const MonitoringValues& v) {
 }
 
 void MonitoringPanel::setPeaks(const QVector<MonitoringPeak>& peaks) {
+  shown_peaks_ = peaks;
+  const ShopUnits& units = DisplayUnits::of(units_);
   peaks_->setRowCount(0);
   peaks_->setRowCount(static_cast<int>(peaks.size()));
   for (int row = 0; row < peaks_->rowCount(); ++row) {
     const MonitoringPeak& p = peaks[row];
-    const QString cells[] = {formatNumber(p.frequency_hz), formatNumber(p.amplitude_n), p.kind,
-                             p.harmonic > 0 ? QString::number(p.harmonic) : kMissing};
+    const QString cells[] = {formatNumber(p.frequency_hz), formatNumber(units.fromBase(Quantity::Force, p.amplitude_n)),
+                             p.kind, p.harmonic > 0 ? QString::number(p.harmonic) : kMissing};
     for (int col = 0; col < 4; ++col) {
       auto* item = new QTableWidgetItem(cells[col]);
       item->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
@@ -178,6 +213,8 @@ void MonitoringPanel::setPeaks(const QVector<MonitoringPeak>& peaks) {
 }
 
 void MonitoringPanel::clear() {
+  shown_values_.reset();
+  shown_peaks_.clear();
   for (QLabel* label : std::as_const(values_)) {
     label->setText(kMissing);
     setAlarm(label, false);

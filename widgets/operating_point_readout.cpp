@@ -36,6 +36,8 @@ OperatingPointReadout::OperatingPointReadout(QWidget* parent)
       {"speed", "Spindle speed N", "Spindle speed of the operating point"},
       {"depth", "Axial depth b", "Axial depth of cut of the operating point"},
       {"feed", "Feed per tooth s_t", "Feed per tooth used for power and MRR"},
+      {"surface_speed", "Surface speed v_c", "Cutting speed at the tool's diameter, v_c = \u03c0 D N"},
+      {"feed_rate", "Feed rate v_f", "Table feed rate v_f = s_t n_t N"},
       {"power", "Peak power P", "Peak cutting power over a tooth period, v * sum F_t (Pareto paper eq. 8)"},
       {"power_fraction", "P / P_spindle", "Peak power as a fraction of the spindle power"},
       {"force", "Peak force F", "Peak resultant cutting force over a tooth period (rigid tool)"},
@@ -68,6 +70,7 @@ QLabel* OperatingPointReadout::addRow(const QString& key, const QString& label, 
 }
 
 void OperatingPointReadout::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
   units_ = units;
   if (units_) connect(units_, &DisplayUnits::changed, this, &OperatingPointReadout::refresh);
   refresh();
@@ -123,24 +126,25 @@ QString OperatingPointReadout::text(const QString& field) const {
 
 void OperatingPointReadout::refresh() {
   const PointReadout& r = readout_;
-  const double f = units_ ? units_->fromMm(1.0) : 1.0;
-  const QString u = units_ ? units_->lengthSuffix() : QStringLiteral("mm");
-  const int dec = units_ ? units_->lengthDecimals() : 4;
-  auto len = [&](double mm) { return QString("%1 %2").arg(mm * f, 0, 'f', dec).arg(u); };
+  const ShopUnits& units = DisplayUnits::of(units_);
+  auto len = [&](double mm) { return units.format(Quantity::Length, mm); };
   values_["tool"]->setText(r.tool_id.isEmpty() ? "\u2014" : r.tool_id);
   values_["speed"]->setText(QString("%1 rpm").arg(r.speed_rpm, 0, 'f', 0));
   values_["depth"]->setText(len(r.depth_mm));
-  values_["feed"]->setText(QString("%1 %2/tooth").arg(r.feed_mm_per_tooth * f, 0, 'f', dec).arg(u));
-  values_["power"]->setText(QString("%1 W").arg(r.peak_power_w, 0, 'f', 1));
-  values_["power_fraction"]->setText(r.power_limit_w > 0 ? QString("%1 %").arg(100.0 * r.powerFraction(), 0, 'f', 1)
+  values_["feed"]->setText(units.format(Quantity::ChipLoad, r.feed_mm_per_tooth));
+  values_["surface_speed"]->setText(units.format(Quantity::SurfaceSpeed, r.surface_speed_m_min));
+  values_["feed_rate"]->setText(units.format(Quantity::Feed, r.feed_rate_mm_min));
+  values_["power"]->setText(units.format(Quantity::Power, r.peak_power_w));
+  values_["power_fraction"]->setText(r.power_limit_w > 0 ? tr("%1 % of %2")
+                                                               .arg(100.0 * r.powerFraction(), 0, 'f', 1)
+                                                               .arg(units.format(Quantity::Power, r.power_limit_w))
                                                          : tr("no spindle limit"));
-  values_["force"]->setText(QString("%1 N").arg(r.peak_force_n, 0, 'f', 1));
-  values_["force_fraction"]->setText(
-      r.force_limit_n > 0
-          ? QString("%1 % of %2 N").arg(100.0 * r.forceFraction(), 0, 'f', 1).arg(r.force_limit_n, 0, 'f', 0)
-          : tr("no tool force limit"));
-  const QString volume = u + QStringLiteral("\u00b3/s");  // "%2\u00b3" would read as placeholder %23
-  values_["mrr"]->setText(QString("%1 %2").arg(r.mrr_mm3_per_s * f * f * f, 0, 'f', f != 1.0 ? 4 : 1).arg(volume));
+  values_["force"]->setText(units.format(Quantity::Force, r.peak_force_n));
+  values_["force_fraction"]->setText(r.force_limit_n > 0 ? tr("%1 % of %2")
+                                                               .arg(100.0 * r.forceFraction(), 0, 'f', 1)
+                                                               .arg(units.format(Quantity::Force, r.force_limit_n))
+                                                         : tr("no tool force limit"));
+  values_["mrr"]->setText(units.format(Quantity::RemovalRate, cm3PerMinFromMm3PerS(r.mrr_mm3_per_s)));
   const bool valid = r.valid;
   values_["blim"]->setText(!valid ? "\u2014" : std::isfinite(r.blim_mm) ? len(r.blim_mm) : tr("none below the cap"));
   values_["dns"]->setText(valid ? QString("%1 rpm").arg(r.delta_ns_rpm, 0, 'f', 0) : "\u2014");

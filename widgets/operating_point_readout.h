@@ -1,9 +1,11 @@
 #pragma once
-// Live readouts of the operating point: speed, depth, feed per tooth, peak power and its fraction of
-// the spindle limit, MRR, b_lim at that speed, Delta N_s, ROS, the stable / marginal / unstable verdict
-// of the lobes, and the time-domain simulation of the same point. When the lobes and the simulation
-// disagree, a note under the verdict shows both and says that the verdict follows the lobes.
+// Live readouts of the operating point: speed, depth, feed per tooth, surface speed, feed rate, peak power and its
+// fraction of the spindle limit, MRR, b_lim at that speed, Delta N_s, ROS, the stable / marginal / unstable verdict of
+// the lobes, and the time-domain simulation of the same point. When the lobes and the simulation disagree, a note under
+// the verdict shows both and says that the verdict follows the lobes. Every value is shown in the window's shop units
+// (DisplayUnits) with its unit.
 #include <QLabel>
+#include <QPointer>
 #include <QWidget>
 
 #include "display_units.h"
@@ -27,7 +29,7 @@ class OperatingPointReadout : public QWidget {
   void refresh();
   QLabel* addRow(const QString& key, const QString& label, const QString& tooltip);
 
-  DisplayUnits* units_ = nullptr;
+  QPointer<DisplayUnits> units_;
   void refreshSimulation();
 
   PointReadout readout_;

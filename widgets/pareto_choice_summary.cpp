@@ -71,18 +71,26 @@ void ParetoChoiceSummaryPanel::setEconomicsAvailable(bool available) {
   }
 }
 
+void ParetoChoiceSummaryPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, [this] { setSummary(summary_); });
+  setSummary(summary_);
+}
+
 void ParetoChoiceSummaryPanel::setSummary(const std::optional<ParetoChoiceSummary>& s) {
+  summary_ = s;
   if (!s) {
     point_->setText(tr("\u2014"));
     binding_->setText(tr("\u2014"));
     return;
   }
-  QString text = tr("%1 rpm, depth %2 mm, %3 mm/tooth\nMRR %4 cm\u00b3/s, tool life %5 min, roughness %6 \u00b5m, "
-                    "ROS %7")
+  const ShopUnits& units = DisplayUnits::of(units_);
+  QString text = tr("%1 rpm, depth %2, %3\nMRR %4, tool life %5 min, roughness %6 \u00b5m, ROS %7")
                      .arg(s->speed_rpm, 0, 'f', 0)
-                     .arg(s->depth_mm, 0, 'f', 3)
-                     .arg(s->feed_mm_per_tooth, 0, 'f', 3)
-                     .arg(s->mrr_cm3_s, 0, 'g', 4)
+                     .arg(units.format(Quantity::Length, s->depth_mm))
+                     .arg(units.format(Quantity::ChipLoad, s->feed_mm_per_tooth))
+                     .arg(units.format(Quantity::RemovalRate, cm3PerMinFromCm3PerS(s->mrr_cm3_s)))
                      .arg(s->tol_min, 0, 'g', 4)
                      .arg(s->surf_um, 0, 'g', 4)
                      .arg(s->ros, 0, 'f', 3);

@@ -7,10 +7,13 @@
 //
 // Signals: objectiveChosen("weighted" | "min_cost" | "max_rate") and normalisationChosen("log" |
 // "minmax" | "max") once per user choice; the setters emit nothing.
+#include <QPointer>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 #include <optional>
+
+#include "display_units.h"
 
 class QComboBox;
 class QLabel;
@@ -35,6 +38,7 @@ class ParetoChoiceSummaryPanel : public QWidget {
   // min_cost and max_rate need pareto.economics: without it they are disabled in the combo box.
   void setEconomicsAvailable(bool available);
   void setSummary(const std::optional<ParetoChoiceSummary>& summary);
+  void setUnits(DisplayUnits* units);  // depth, feed per tooth and MRR in shop units; nullptr: metric
 
   QComboBox* objectiveCombo() const { return objective_; }
   QComboBox* normalisationCombo() const { return normalisation_; }
@@ -50,6 +54,8 @@ class ParetoChoiceSummaryPanel : public QWidget {
   QComboBox* normalisation_;
   QLabel* point_;
   QLabel* binding_;
+  QPointer<DisplayUnits> units_;
+  std::optional<ParetoChoiceSummary> summary_;
 };
 
 }  // namespace mx::widgets

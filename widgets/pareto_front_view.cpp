@@ -24,12 +24,12 @@ QCPRange paddedRange(double lo, double hi) {
 
 }  // namespace
 
-double ParetoFrontView::value(const ParetoPointView& p, Axis axis) {
+double ParetoFrontView::value(const ParetoPointView& p, Axis axis, const ShopUnits& units) {
   switch (axis) {
     case Axis::Tol:
       return p.tol;
     case Axis::Mrr:
-      return p.mrr_cm3_s;
+      return units.fromBase(Quantity::RemovalRate, cm3PerMinFromCm3PerS(p.mrr_cm3_s));
     case Axis::Surf:
       return p.surf;
     case Axis::Ros:
@@ -38,12 +38,12 @@ double ParetoFrontView::value(const ParetoPointView& p, Axis axis) {
   return 0.0;
 }
 
-QString ParetoFrontView::axisLabel(Axis axis) {
+QString ParetoFrontView::axisLabel(Axis axis, const ShopUnits& units) {
   switch (axis) {
     case Axis::Tol:
       return tr("TOL tool life [min]");
     case Axis::Mrr:
-      return tr("MRR removal rate [cm\u00b3/s]");
+      return tr("MRR removal rate [%1]").arg(units.symbol(Quantity::RemovalRate));
     case Axis::Surf:
       return tr("SURF roughness [\u00b5m]");
     case Axis::Ros:
@@ -58,14 +58,13 @@ QString ParetoFrontView::defaultToolTip() {
       "Click a point to move the operating point and the weights to it.");
 }
 
-QString ParetoFrontView::pointToolTip(const ParetoPointView& p) {
-  QString text = tr("N = %1 rpm, b = %2 mm, f_z = %3 mm/tooth\nTOL = %4 min, MRR = %5 cm\u00b3/s, "
-                    "SURF = %6 \u00b5m, ROS = %7")
+QString ParetoFrontView::pointToolTip(const ParetoPointView& p, const ShopUnits& units) {
+  QString text = tr("N = %1 rpm, b = %2, f_z = %3\nTOL = %4 min, MRR = %5, SURF = %6 \u00b5m, ROS = %7")
                      .arg(p.speed_rpm, 0, 'f', 0)
-                     .arg(p.depth_mm, 0, 'g', 4)
-                     .arg(p.feed_mm_per_tooth, 0, 'g', 4)
+                     .arg(units.format(Quantity::Length, p.depth_mm))
+                     .arg(units.format(Quantity::ChipLoad, p.feed_mm_per_tooth))
                      .arg(p.tol, 0, 'g', 4)
-                     .arg(p.mrr_cm3_s, 0, 'g', 4)
+                     .arg(units.format(Quantity::RemovalRate, cm3PerMinFromCm3PerS(p.mrr_cm3_s)))
                      .arg(p.surf, 0, 'g', 4)
                      .arg(p.ros, 0, 'g', 4);
   if (p.weights)
@@ -130,7 +129,7 @@ ParetoFrontView::ParetoFrontView(QWidget* parent) : QWidget(parent) {
   connect(plot_, &QCustomPlot::mousePress, this, &ParetoFrontView::onMousePress);
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* event) {
     const int i = nearestPoint(event->position());
-    plot_->setToolTip(i >= 0 ? pointToolTip(points_[i]) : defaultToolTip());
+    plot_->setToolTip(i >= 0 ? pointToolTip(points_[i], DisplayUnits::of(units_)) : defaultToolTip());
   });
 
   auto* layout = new QVBoxLayout(this);
@@ -143,7 +142,8 @@ QComboBox* ParetoFrontView::makeCombo(const QString& name, const QString& tip, A
   auto* combo = new QComboBox(this);
   combo->setObjectName(name);
   combo->setToolTip(tip);
-  for (Axis a : {Axis::Tol, Axis::Mrr, Axis::Surf, Axis::Ros}) combo->addItem(axisLabel(a), static_cast<int>(a));
+  for (Axis a : {Axis::Tol, Axis::Mrr, Axis::Surf, Axis::Ros})
+    combo->addItem(axisLabel(a, DisplayUnits::of(units_)), static_cast<int>(a));
   combo->setCurrentIndex(static_cast<int>(initial));
   connect(combo, &QComboBox::currentIndexChanged, this, [this] { rebuild(); });
   return combo;
@@ -164,6 +164,20 @@ void ParetoFrontView::setAxes(Axis x, Axis y, Axis colour) {
   x_combo_->setCurrentIndex(static_cast<int>(x));
   y_combo_->setCurrentIndex(static_cast<int>(y));
   colour_combo_->setCurrentIndex(static_cast<int>(colour));
+  rebuild();
+}
+
+void ParetoFrontView::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &ParetoFrontView::refreshUnits);
+  refreshUnits();
+}
+
+void ParetoFrontView::refreshUnits() {
+  const ShopUnits& units = DisplayUnits::of(units_);
+  for (QComboBox* combo : {x_combo_, y_combo_, colour_combo_})
+    combo->setItemText(static_cast<int>(Axis::Mrr), axisLabel(Axis::Mrr, units));
   rebuild();
 }
 
@@ -194,7 +208,7 @@ QString ParetoFrontView::yAxisLabel() const {
 QPointF ParetoFrontView::plottedValue(int index) const {
   if (index < 0 || index >= points_.size()) return {};
   const ParetoPointView& p = points_[index];
-  return {value(p, xAxis()), value(p, yAxis())};
+  return {value(p, xAxis(), DisplayUnits::of(units_)), value(p, yAxis(), DisplayUnits::of(units_))};
 }
 
 QPoint ParetoFrontView::pixelFor(int index) const {
@@ -205,17 +219,18 @@ QPoint ParetoFrontView::pixelFor(int index) const {
 
 void ParetoFrontView::rebuild() {
   const Axis ax = xAxis(), ay = yAxis(), ac = colourAxis();
-  plot_->xAxis->setLabel(axisLabel(ax));
-  plot_->yAxis->setLabel(axisLabel(ay));
-  scale_->axis()->setLabel(axisLabel(ac));
+  const ShopUnits& units = DisplayUnits::of(units_);
+  plot_->xAxis->setLabel(axisLabel(ax, units));
+  plot_->yAxis->setLabel(axisLabel(ay, units));
+  scale_->axis()->setLabel(axisLabel(ac, units));
   legend_graph_->setName(tr("Non-dominated set (%1 points)").arg(points_.size()));
 
   constexpr double inf = std::numeric_limits<double>::infinity();
   double xlo = inf, xhi = -inf, ylo = inf, yhi = -inf, clo = inf, chi = -inf;
   for (const ParetoPointView& p : points_) {
-    xlo = std::min(xlo, value(p, ax)), xhi = std::max(xhi, value(p, ax));
-    ylo = std::min(ylo, value(p, ay)), yhi = std::max(yhi, value(p, ay));
-    clo = std::min(clo, value(p, ac)), chi = std::max(chi, value(p, ac));
+    xlo = std::min(xlo, value(p, ax, units)), xhi = std::max(xhi, value(p, ax, units));
+    ylo = std::min(ylo, value(p, ay, units)), yhi = std::max(yhi, value(p, ay, units));
+    clo = std::min(clo, value(p, ac, units)), chi = std::max(chi, value(p, ac, units));
   }
   const QCPRange colourRange = clo < chi ? QCPRange(clo, chi) : paddedRange(clo, chi);
   scale_->setDataRange(colourRange);
@@ -223,10 +238,10 @@ void ParetoFrontView::rebuild() {
 
   QVector<QVector<double>> keys(kColourBins), vals(kColourBins);
   for (const ParetoPointView& p : points_) {
-    const double t = (value(p, ac) - colourRange.lower) / colourRange.size();
+    const double t = (value(p, ac, units) - colourRange.lower) / colourRange.size();
     const int b = std::clamp(static_cast<int>(std::floor(t * kColourBins)), 0, kColourBins - 1);
-    keys[b].push_back(value(p, ax));
-    vals[b].push_back(value(p, ay));
+    keys[b].push_back(value(p, ax, units));
+    vals[b].push_back(value(p, ay, units));
   }
   for (int b = 0; b < kColourBins; ++b) {
     const double mid = colourRange.lower + (b + 0.5) / kColourBins * colourRange.size();

@@ -1,16 +1,19 @@
 #pragma once
 // The Pareto-front view: a scatter of the non-dominated set with two objectives on the
-// axes and a third as the colour of the points, each chosen by the user from TOL [min], MRR [cm^3/s],
+// axes and a third as the colour of the points, each chosen by the user from TOL [min], MRR (shop units),
 // SURF [um] and ROS [-]. Clicking a point (the nearest one in pixel space within kPickRadiusPx) selects
 // it and emits pointActivated(); the caller moves the operating point and the weights to it.
 // The plot library stays behind this class.
 #include <QMetaType>
 #include <QPoint>
 #include <QPointF>
+#include <QPointer>
 #include <QVector>
 #include <QWidget>
 #include <array>
 #include <optional>
+
+#include "display_units.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -41,6 +44,7 @@ class ParetoFrontView : public QWidget {
 
   explicit ParetoFrontView(QWidget* parent = nullptr);
 
+  void setUnits(DisplayUnits* units);  // MRR, depth and feed per tooth in shop units; nullptr: metric
   void setPoints(const QVector<ParetoPointView>& points);
   const QVector<ParetoPointView>& points() const { return points_; }
 
@@ -54,9 +58,11 @@ class ParetoFrontView : public QWidget {
   void setSelectedIndex(int index);
   int selectedIndex() const { return selected_; }
 
-  static double value(const ParetoPointView& p, Axis axis);
-  static QString axisLabel(Axis axis);                    // e.g. "MRR removal rate [cm³/s]"
-  static QString pointToolTip(const ParetoPointView& p);  // shown when hovering a point
+  // The plotted value of an objective and its label, e.g. "MRR removal rate [cm³/min]", in `units`.
+  static double value(const ParetoPointView& p, Axis axis, const ShopUnits& units = ShopUnits::metric());
+  static QString axisLabel(Axis axis, const ShopUnits& units = ShopUnits::metric());
+  static QString pointToolTip(const ParetoPointView& p,  // shown when hovering a point
+                              const ShopUnits& units = ShopUnits::metric());
 
   // Tests: the plotted (x, y) of point `index`, and its pixel in plotWidget() coordinates (valid
   // after the plot has been laid out, i.e. after a replot); (0, 0) / (-1, -1) when out of range.
@@ -77,10 +83,12 @@ class ParetoFrontView : public QWidget {
   static QString defaultToolTip();
   QComboBox* makeCombo(const QString& name, const QString& tip, Axis initial);
   void rebuild();
+  void refreshUnits();
   void onMousePress(QMouseEvent* event);
   int nearestPoint(const QPointF& pixel) const;
 
   QVector<ParetoPointView> points_;
+  QPointer<DisplayUnits> units_;
   int selected_ = -1;
   QCustomPlot* plot_ = nullptr;
   QCPColorScale* scale_ = nullptr;

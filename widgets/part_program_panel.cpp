@@ -40,30 +40,49 @@ QString proposal(std::optional<double> original, std::optional<double> proposed,
 }
 
 struct ColumnSpec {
-  const char* title;  // %1: the feed unit
+  const char* title;  // %1: the shop unit of feed, %2 of length, %3 of force
   const char* tip;
 };
 constexpr ColumnSpec kColumns[PartProgramPanel::kColumnCount] = {
     {"Line", "Line number in the program file (1-based)"},
     {"Block", "The block as written in the program"},
-    {"F [%1]", "Programmed feed F [%1] of the block"},
+    {"F [%1]", "Programmed feed F of the block [%1] (converted from the program's unit)"},
     {"F new [%1]", "Proposed feed F [%1]; \"=\" keeps the programmed value; highlighted when changed"},
     {"S [rpm]", "Programmed spindle speed S [rpm]"},
     {"S new [rpm]", "Proposed spindle speed S [rpm]; \"=\" keeps the programmed value; highlighted when changed"},
-    {"Depth [mm]", "Axial depth of cut of the block [mm]"},
-    {"Predicted force [N]", "Predicted peak cutting force of the block with the proposed F and S [N]"},
+    {"Depth [%2]", "Axial depth of cut of the block [%2]"},
+    {"Predicted force [%3]", "Predicted peak cutting force of the block with the proposed F and S [%3]"},
     {"Reason", "Why F or S was changed; empty when unchanged"},
 };
 
-QString cellText(const PartProgramRow& r, int column, bool* changed) {
+// The shown values: feeds from the program's unit, depth and force from mm and N, into shop units.
+struct CellUnits {
+  ShopUnits units;
+  double program_feed_to_mm_min = 1.0;
+  std::optional<double> feed(std::optional<double> v) const {
+    return v ? std::optional<double>(units.fromBase(Quantity::Feed, *v * program_feed_to_mm_min)) : std::nullopt;
+  }
+  std::optional<double> shown(Quantity q, std::optional<double> v) const {
+    return v ? std::optional<double>(units.fromBase(q, *v)) : std::nullopt;
+  }
+};
+
+QString cellText(const PartProgramRow& r, int column, const CellUnits& u, bool* changed) {
   *changed = false;
   if (column == PartProgramPanel::kLine) return QString::number(r.line);
   if (column == PartProgramPanel::kBlock) return r.text;
-  if (column == PartProgramPanel::kNewFeed) return proposal(r.original_feed, r.new_feed, changed);
+  if (column == PartProgramPanel::kNewFeed) return proposal(u.feed(r.original_feed), u.feed(r.new_feed), changed);
   if (column == PartProgramPanel::kNewSpeed) return proposal(r.speed_rpm, r.new_speed_rpm, changed);
   *changed = column == PartProgramPanel::kReason && r.changed && !r.reason.isEmpty();
   if (column == PartProgramPanel::kReason) return r.reason;
-  const std::optional<double> plain[] = {{}, {}, r.original_feed, {}, r.speed_rpm, {}, r.depth_mm, r.predicted_force_n};
+  const std::optional<double> plain[] = {{},
+                                         {},
+                                         u.feed(r.original_feed),
+                                         {},
+                                         r.speed_rpm,
+                                         {},
+                                         u.shown(Quantity::Length, r.depth_mm),
+                                         u.shown(Quantity::Force, r.predicted_force_n)};
   return column >= 0 && column < PartProgramPanel::kReason ? number(plain[column]) : QString();
 }
 
@@ -82,10 +101,15 @@ class PartProgramTableModel : public QAbstractTableModel {
   void setRows(const QVector<PartProgramRow>& rows, const QString& feed_unit) {
     beginResetModel();
     rows_ = rows;
-    feed_unit_ = feed_unit;
+    units_.program_feed_to_mm_min = feed_unit == QLatin1String("in/min") ? 25.4 : 1.0;
     rebuildFilter();
     endResetModel();
     emit headerDataChanged(Qt::Horizontal, 0, PartProgramPanel::kColumnCount - 1);
+  }
+  void setShopUnits(const ShopUnits& units) {
+    units_.units = units;
+    emit headerDataChanged(Qt::Horizontal, 0, PartProgramPanel::kColumnCount - 1);
+    if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, PartProgramPanel::kColumnCount - 1));
   }
   void setChangedOnly(bool on) {
     if (on == changed_only_) return;
@@ -130,7 +154,7 @@ class PartProgramTableModel : public QAbstractTableModel {
     const int column = index.column();
     const bool text_column = column == PartProgramPanel::kBlock || column == PartProgramPanel::kReason;
     bool changed = false;
-    const QString text = cellText(r, column, &changed);
+    const QString text = cellText(r, column, units_, &changed);
     switch (role) {
       case Qt::DisplayRole:
         return text;
@@ -158,7 +182,10 @@ class PartProgramTableModel : public QAbstractTableModel {
                                                    : nullptr;
     if (!source) return {};
     const QString text = PartProgramPanel::tr(source);
-    return text.contains(QLatin1String("%1")) ? text.arg(feed_unit_) : text;
+    const ShopUnits& u = units_.units;
+    if (text.contains(QLatin1String("%1"))) return text.arg(u.symbol(Quantity::Feed));
+    if (text.contains(QLatin1String("%2"))) return text.arg(u.symbol(Quantity::Length));
+    return text.contains(QLatin1String("%3")) ? text.arg(u.symbol(Quantity::Force)) : text;
   }
 
  private:
@@ -171,7 +198,7 @@ class PartProgramTableModel : public QAbstractTableModel {
 
   QVector<PartProgramRow> rows_;
   QVector<int> visible_;
-  QString feed_unit_ = QStringLiteral("mm/min");
+  CellUnits units_;
   bool changed_only_ = false;
 };
 
@@ -277,6 +304,17 @@ PartProgramPanel::PartProgramPanel(QWidget* parent)
 }
 
 PartProgramPanel::~PartProgramPanel() = default;
+
+void PartProgramPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  const auto apply = [this] {
+    model_->setShopUnits(DisplayUnits::of(units_));
+    resizeColumns();
+  };
+  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
+  apply();
+}
 
 void PartProgramPanel::setProgram(const QString& path, const QVector<PartProgramRow>& rows,
                                   const QVector<PartProgramWarningView>& warnings, const QString& feed_unit,

@@ -4,11 +4,15 @@
 // cutting force per block; the parser warnings below; buttons to open a program and to export the
 // overridden program and the CSV (the main window shows the file dialogs and does the work).
 // Model/view: a private table model serves the rows on demand, so a program of 100 000 blocks is set
-// in milliseconds. Read-only. Unchanged proposals show "="; changed cells are highlighted.
+// in milliseconds. Read-only. Unchanged proposals show "="; changed cells are highlighted. Feeds, depth
+// and force are shown in the shop units of setUnits(), whatever the program's own unit (G20/G21).
+#include <QPointer>
 #include <QString>
 #include <QVector>
 #include <QWidget>
 #include <optional>
+
+#include "display_units.h"
 
 class QCheckBox;
 class QLabel;
@@ -49,6 +53,7 @@ class PartProgramPanel : public QWidget {
                   const QVector<PartProgramWarningView>& warnings, const QString& feed_unit /* "mm/min" or "in/min" */,
                   const QString& controller);
   void clear();
+  void setUnits(DisplayUnits* units);  // nullptr: metric
   void setStatus(const QString& text);
   const QVector<PartProgramRow>& rows() const;
   int changedCount() const { return changed_count_; }
@@ -62,7 +67,7 @@ class PartProgramPanel : public QWidget {
 
   // Additions.
   bool hasProgram() const { return has_program_; }
-  QString feedUnit() const { return feed_unit_; }
+  QString feedUnit() const { return feed_unit_; }  // the program's ("mm/min" or "in/min")
   // Selects and scrolls to the block of `line` (clears the changed-only filter when it hides it);
   // false when no block has that line.
   bool selectLine(int line);
@@ -84,6 +89,7 @@ class PartProgramPanel : public QWidget {
   void resizeColumns();
 
   PartProgramTableModel* model_;
+  QPointer<DisplayUnits> units_;
   QTableView* table_;
   QListWidget* warnings_;
   QLabel* header_label_;

@@ -10,6 +10,8 @@ struct PointReadout {
   double speed_rpm = 0.0;
   double depth_mm = 0.0;
   double feed_mm_per_tooth = 0.0;
+  double surface_speed_m_min = 0.0;  // v_c = pi D N
+  double feed_rate_mm_min = 0.0;     // v_f = s_t n_t N
   double peak_power_w = 0.0;
   double power_limit_w = 0.0;  // 0 = no machine section
   double mrr_mm3_per_s = 0.0;

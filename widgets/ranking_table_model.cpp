@@ -81,7 +81,7 @@ void RankingTableModel::unitsChanged() {
 }
 
 double RankingTableModel::value(const RankingRow& r, int column) const {
-  const double f = units_ ? units_->fromMm(1.0) : 1.0;
+  const ShopUnits& units = DisplayUnits::of(units_);
   switch (column) {
     case MinCost:
       return r.min_cost;
@@ -94,13 +94,13 @@ double RankingTableModel::value(const RankingRow& r, int column) const {
     case Speed:
       return r.speed_rpm;
     case Depth:
-      return r.depth_mm * f;
+      return units.fromBase(Quantity::Length, r.depth_mm);
     case Feed:
-      return r.feed_mm_per_tooth * f;
+      return units.fromBase(Quantity::ChipLoad, r.feed_mm_per_tooth);
     case Power:
-      return r.power_w;
+      return units.fromBase(Quantity::Power, r.power_w);
     case Mrr:
-      return r.mrr_mm3_min * f * f * f;
+      return units.fromBase(Quantity::RemovalRate, r.mrr_mm3_min / 1000.0);
     case Dns:
       return r.dns_rpm;
     case TimeCost:
@@ -114,24 +114,31 @@ double RankingTableModel::value(const RankingRow& r, int column) const {
   }
 }
 
+// The shop-unit quantity of a column, if it has one.
+std::optional<Quantity> RankingTableModel::quantity(int column) {
+  switch (column) {
+    case Depth:
+      return Quantity::Length;
+    case Feed:
+      return Quantity::ChipLoad;
+    case Power:
+      return Quantity::Power;
+    case Mrr:
+      return Quantity::RemovalRate;
+    default:
+      return std::nullopt;
+  }
+}
+
 QString RankingTableModel::text(const RankingRow& r, int column) const {
   const double v = value(r, column);
   if (!std::isfinite(v)) return QString::fromUtf8(kDash);
-  const bool inch = units_ && units_->length() == DisplayUnits::Length::Inch;
-  switch (column) {
-    case Speed:
-    case Dns:
-      return QString::number(v, 'f', 0);
-    case Depth:
-    case Feed:
-      return QString::number(v, 'f', units_ ? units_->lengthDecimals() : 4);
-    case Power:
-      return QString::number(v, 'f', 1);
-    case Mrr:
-      return QString::number(v, 'f', inch ? 3 : 0);
-    default:
-      return QString::number(v, 'f', 4);
+  if (const std::optional<Quantity> q = quantity(column)) {
+    const int decimals = DisplayUnits::of(units_).decimals(*q);
+    return QString::number(v, 'f', *q == Quantity::RemovalRate ? ShopUnits::readableDecimals(v, decimals) : decimals);
   }
+  if (column == Speed || column == Dns) return QString::number(v, 'f', 0);
+  return QString::number(v, 'f', 4);
 }
 
 QVariant RankingTableModel::data(const QModelIndex& index, int role) const {
@@ -172,7 +179,8 @@ QVariant RankingTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant RankingTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return role == Qt::DisplayRole ? QVariant(section + 1) : QVariant();
-  const QString u = units_ ? units_->lengthSuffix() : QStringLiteral("mm");
+  const ShopUnits& units = DisplayUnits::of(units_);
+  const QString u = units.symbol(Quantity::Length);
   struct Header {
     QString title;
     QString tip;
@@ -198,11 +206,11 @@ QVariant RankingTableModel::headerData(int section, Qt::Orientation orientation,
       case Depth:
         return {tr("b* [%1]").arg(u), tr("Axial depth of cut of q*")};
       case Feed:
-        return {tr("s_t* [%1/tooth]").arg(u), tr("Feed per tooth of q*")};
+        return {tr("s_t* [%1]").arg(units.symbol(Quantity::ChipLoad)), tr("Feed per tooth of q*")};
       case Power:
-        return {tr("P [W]"), tr("Peak cutting power at q*")};
+        return {tr("P [%1]").arg(units.symbol(Quantity::Power)), tr("Peak cutting power at q*")};
       case Mrr:
-        return {tr("MRR [%1/min]").arg(u + QStringLiteral("\u00b3")), tr("Material removal rate at q*")};
+        return {tr("MRR [%1]").arg(units.symbol(Quantity::RemovalRate)), tr("Material removal rate at q*")};
       case Dns:
         return {tr("\u0394N_s [rpm]"), tr("Spindle speed security change at q*: distance in speed to the lobes")};
       case TimeCost:

@@ -8,6 +8,7 @@
 #include <QIcon>
 #include <QPointer>
 #include <QVector>
+#include <optional>
 
 #include "display_units.h"
 #include "ranking_table.h"
@@ -54,6 +55,7 @@ class RankingTableModel : public QAbstractTableModel {
 
  private:
   double value(const RankingRow& row, int column) const;  // in display units
+  static std::optional<Quantity> quantity(int column);
   QString text(const RankingRow& row, int column) const;
   void unitsChanged();
 

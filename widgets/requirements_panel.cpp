@@ -18,7 +18,7 @@ namespace {
 
 struct ObjectiveSpec {
   const char* name;
-  const char* unit;
+  const char* unit;  // of RequirementView; MRR is shown in the shop unit instead
   const char* suffix;
   double max;
   int decimals;
@@ -26,9 +26,10 @@ struct ObjectiveSpec {
   const char* tip;
 };
 
+constexpr int kMrr = 1;
 constexpr ObjectiveSpec kObjectives[RequirementsPanel::kObjectiveCount] = {
     {"Tool life TOL", "min", " min", 1e6, 1, 1.0, "Tool life from the Taylor model (eq. 10), in minutes"},
-    {"MRR", "cm\u00b3/s", " cm\u00b3/s", 1e4, 4, 0.1, "Material removal rate a b s_t n_t N (eq. 11), in cm\u00b3/s"},
+    {"MRR", "cm\u00b3/s", " cm\u00b3/s", 1e4, 4, 0.1, "Material removal rate a b s_t n_t N (eq. 11)"},
     {"Roughness SURF", "\u00b5m", " \u00b5m", 1000.0, 3, 0.1, "Surface roughness (eq. 12), in \u00b5m"},
     {"Robustness ROS", "\u2013", "", 10.0, 3, 0.01,
      "Robustness: normalised distance to the stability boundary (eq. 13), dimensionless"},
@@ -51,6 +52,46 @@ QColor warningColor() {
 }
 
 }  // namespace
+
+double RequirementsPanel::toShown(int objective, double value) const {
+  if (objective != kMrr) return value;
+  return DisplayUnits::of(units_).fromBase(Quantity::RemovalRate, cm3PerMinFromCm3PerS(value));
+}
+
+// The spin box's value in RequirementView units; `stored` when the box still shows it (a unit
+// conversion would otherwise move a bound the user did not touch).
+double RequirementsPanel::fromShown(int objective, const QDoubleSpinBox* spin, double stored) const {
+  const int d = spin->decimals();
+  if (QString::number(spin->value(), 'f', d) == QString::number(toShown(objective, stored), 'f', d)) return stored;
+  if (objective != kMrr) return spin->value();
+  return cm3PerSFromCm3PerMin(DisplayUnits::of(units_).toBase(Quantity::RemovalRate, spin->value()));
+}
+
+QString RequirementsPanel::shownUnit(int objective) const {
+  return objective == kMrr ? DisplayUnits::of(units_).symbol(Quantity::RemovalRate) : unit(objective);
+}
+
+void RequirementsPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &RequirementsPanel::refreshUnits);
+  refreshUnits();
+}
+
+void RequirementsPanel::refreshUnits() {
+  const QSignalBlocker block(objective_);
+  objective_->setItemText(kMrr, QString("%1 [%2]").arg(tr(kObjectives[kMrr].name), shownUnit(kMrr)));
+  if (!validObjective(shown_objective_)) return;
+  const int objective = shown_objective_;
+  storeShownBounds();
+  shown_objective_ = -1;  // applyObjective() must not store them again
+  applyObjective(objective);
+}
+
+void RequirementsPanel::storeShownBounds() {
+  auto& b = bounds_[static_cast<std::size_t>(shown_objective_)];
+  b = {fromShown(shown_objective_, lo_, b[0]), fromShown(shown_objective_, hi_, b[1])};
+}
 
 QString RequirementsPanel::unit(int objective) {
   return validObjective(objective) ? QString::fromUtf8(kObjectives[objective].unit) : QString();
@@ -91,10 +132,10 @@ RequirementsPanel::RequirementsPanel(QWidget* parent)
          "bounds; only that objective's weight is changed (the others keep their "
          "proportions, Rule 13.2). A band the weights cannot reach is reported below."));
   objective_->setToolTip(
-      tr("The objective the requirement bounds: tool life TOL [min], MRR [cm\u00b3/s], "
+      tr("The objective the requirement bounds: tool life TOL [min], MRR (shop units), "
          "roughness SURF [\u00b5m] or robustness ROS [\u2013]."));
   for (int i = 0; i < kObjectiveCount; ++i) {
-    objective_->addItem(QString("%1 [%2]").arg(tr(kObjectives[i].name), QString::fromUtf8(kObjectives[i].unit)));
+    objective_->addItem(QString("%1 [%2]").arg(tr(kObjectives[i].name), shownUnit(i)));
     objective_->setItemData(i, tr(kObjectives[i].tip), Qt::ToolTipRole);
   }
   for (QDoubleSpinBox* spin : {lo_, hi_}) {
@@ -157,7 +198,9 @@ RequirementsPanel::RequirementsPanel(QWidget* parent)
 
 std::optional<RequirementView> RequirementsPanel::requirement() const {
   if (!enable_->isChecked()) return std::nullopt;
-  return RequirementView{shown_objective_, lo_->value(), hi_->value()};
+  const auto& b = bounds_[static_cast<std::size_t>(shown_objective_)];
+  return RequirementView{shown_objective_, fromShown(shown_objective_, lo_, b[0]),
+                         fromShown(shown_objective_, hi_, b[1])};
 }
 
 void RequirementsPanel::setRequirement(const std::optional<RequirementView>& r) {
@@ -174,8 +217,7 @@ void RequirementsPanel::setRequirement(const std::optional<RequirementView>& r) 
     double hi = std::isnan(r->hi) ? max : clampBound(r->hi);
     if (lo > hi) std::swap(lo, hi);
     // Keep the bounds of the objective shown so far, then load the new ones.
-    if (validObjective(shown_objective_))
-      bounds_[static_cast<std::size_t>(shown_objective_)] = {lo_->value(), hi_->value()};
+    if (validObjective(shown_objective_)) storeShownBounds();
     bounds_[static_cast<std::size_t>(objective)] = {lo, hi};
     objective_->setCurrentIndex(objective);
     shown_objective_ = -1;  // applyObjective() must not overwrite the bounds just set
@@ -185,21 +227,22 @@ void RequirementsPanel::setRequirement(const std::optional<RequirementView>& r) 
 }
 
 void RequirementsPanel::applyObjective(int objective) {
-  if (validObjective(shown_objective_))
-    bounds_[static_cast<std::size_t>(shown_objective_)] = {lo_->value(), hi_->value()};
+  if (validObjective(shown_objective_)) storeShownBounds();
   const ObjectiveSpec& s = spec(objective);
   const auto& b = bounds_[static_cast<std::size_t>(objective)];
-  const QString u = QString::fromUtf8(s.unit);
+  const QString u = shownUnit(objective);
+  const bool mrr = objective == kMrr;
   const QSignalBlocker blockLo(lo_);
   const QSignalBlocker blockHi(hi_);
   for (QDoubleSpinBox* spin : {lo_, hi_}) {
-    spin->setDecimals(s.decimals);
-    spin->setRange(0.0, s.max);
-    spin->setSingleStep(s.step);
-    spin->setSuffix(QString::fromUtf8(s.suffix));
+    // MRR: one decimal more than a readout, so that a typed bound keeps the resolution of cm³/s.
+    spin->setDecimals(mrr ? DisplayUnits::of(units_).decimals(Quantity::RemovalRate) + 1 : s.decimals);
+    spin->setRange(0.0, toShown(objective, s.max));
+    spin->setSingleStep(mrr ? 1.0 : s.step);
+    spin->setSuffix(u.isEmpty() || u == QStringLiteral("\u2013") ? QString() : " " + u);
   }
-  lo_->setValue(b[0]);
-  hi_->setValue(b[1]);
+  lo_->setValue(toShown(objective, b[0]));
+  hi_->setValue(toShown(objective, b[1]));
   lo_label_->setText(tr("Lower bound [%1]").arg(u));
   hi_label_->setText(tr("Upper bound [%1]").arg(u));
   shown_objective_ = objective;

@@ -7,10 +7,13 @@
 // Signals: requirementChanged() once per finished user edit (enable box toggled, objective chosen,
 // spin box edited: keyboard tracking is off). The bounds stay ordered: a lower bound typed above the
 // upper one moves the upper one to it, and the other way round. setRequirement() emits nothing.
+#include <QPointer>
 #include <QString>
 #include <QWidget>
 #include <array>
 #include <optional>
+
+#include "display_units.h"
 
 class QCheckBox;
 class QComboBox;
@@ -22,7 +25,7 @@ namespace mx::widgets {
 
 struct RequirementView {
   int objective = 1;          // 0 TOL [min], 1 MRR [cm³/s], 2 SURF [µm], 3 ROS [–]
-  double lo = 0.0, hi = 0.0;  // in those units
+  double lo = 0.0, hi = 0.0;  // in those units (the panel shows MRR in the shop unit)
   bool operator==(const RequirementView&) const = default;
 };
 
@@ -34,6 +37,7 @@ class RequirementsPanel : public QWidget {
 
   explicit RequirementsPanel(QWidget* parent = nullptr);
 
+  void setUnits(DisplayUnits* units);                  // MRR shown and typed in the shop unit; nullptr: metric
   std::optional<RequirementView> requirement() const;  // nullopt when the "Require" checkbox is off
   // No signal. An objective outside [0, 3] is clamped; the bounds are clamped to the objective's range
   // and ordered. nullopt unchecks the box and keeps the last bounds.
@@ -45,8 +49,9 @@ class RequirementsPanel : public QWidget {
   void clearStatus();
   void setAutoWeightsResult(int iterations, bool converged);  // status text for Rule 12
 
-  // Unit of an objective ("min", "cm³/s", "µm", "–"), the spin box suffix (empty for ROS) and the
-  // objective's name ("Tool life TOL"); empty strings outside [0, 3].
+  // Unit of an objective in RequirementView ("min", "cm³/s", "µm", "–"), the spin box suffix
+  // without shop units (empty for ROS) and the objective's name ("Tool life TOL"); empty strings
+  // outside [0, 3].
   static QString unit(int objective);
   static QString suffix(int objective);
   static QString objectiveName(int objective);
@@ -64,6 +69,11 @@ class RequirementsPanel : public QWidget {
 
  private:
   void applyObjective(int objective);  // ranges, decimals, suffixes, labels; no signal
+  void refreshUnits();
+  void storeShownBounds();  // the spin boxes into bounds_ of the shown objective
+  double toShown(int objective, double value) const;
+  double fromShown(int objective, const QDoubleSpinBox* spin, double stored) const;
+  QString shownUnit(int objective) const;
   void onBoundEdited(bool lower);
   void showStatus(const QString& text, const QString& style);
   void updateEnabled();
@@ -76,7 +86,9 @@ class RequirementsPanel : public QWidget {
   QLabel* hi_label_;
   QPushButton* auto_;
   QLabel* status_;
-  // The bounds last shown for each objective, restored when the user switches back to it.
+  QPointer<DisplayUnits> units_;
+  // The bounds last shown for each objective (RequirementView units), restored when the user switches
+  // back to it.
   std::array<std::array<double, 2>, kObjectiveCount> bounds_{};
   int shown_objective_ = -1;  // the objective whose bounds the spin boxes show; -1 before the first
 };

@@ -50,14 +50,16 @@ QCPGraph* addGraph(QCustomPlot* plot, QCPAxis* value_axis, const QString& name, 
   return graph;
 }
 
-// Graph data (t, v[i]) for the kept samples; `lo`/`hi` widen to the values seen.
-QVector<QCPGraphData> graphData(const RingBuffer<double>& t, const RingBuffer<double>& v, double& lo, double& hi) {
+// Graph data (t, factor v[i]) for the kept samples; `lo`/`hi` widen to the values seen.
+QVector<QCPGraphData> graphData(const RingBuffer<double>& t, const RingBuffer<double>& v, double& lo, double& hi,
+                                double factor = 1.0) {
   QVector<QCPGraphData> out(static_cast<qsizetype>(t.size()));
   for (std::size_t i = 0; i < t.size(); ++i) {
-    out[static_cast<qsizetype>(i)] = QCPGraphData(t[i], v[i]);
-    if (std::isfinite(v[i])) {
-      lo = std::min(lo, v[i]);
-      hi = std::max(hi, v[i]);
+    const double value = factor * v[i];
+    out[static_cast<qsizetype>(i)] = QCPGraphData(t[i], value);
+    if (std::isfinite(value)) {
+      lo = std::min(lo, value);
+      hi = std::max(hi, value);
     }
   }
   return out;
@@ -83,18 +85,15 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
       replot_timer_(new QTimer(this)) {
   motion_plot_->xAxis->setLabel(tr("Time t [s]"));
   motion_plot_->yAxis->setLabel(tr("Tool displacement [\u00b5m]"));
-  motion_plot_->yAxis2->setLabel(tr("Resultant force |F| [N]"));
   motion_plot_->yAxis2->setVisible(true);
   motion_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   // The force first, so that the displacements are drawn over it.
-  force_graph_ =
-      addGraph(motion_plot_, motion_plot_->yAxis2, tr("Resultant force |F| [N] (right axis)"), QPen(kForceColor, 1.0));
+  force_graph_ = addGraph(motion_plot_, motion_plot_->yAxis2, QString(), QPen(kForceColor, 1.0));
   x_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement x [\u00b5m]"), QPen(kXColor, 1.0));
   y_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement y [\u00b5m]"), QPen(kYColor, 1.0));
 
   power_plot_->xAxis->setLabel(tr("Time t [s]"));
-  power_plot_->yAxis->setLabel(tr("Spindle power P [W]"));
-  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power P [W]"), QPen(kPowerColor, 1.0));
+  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, QString(), QPen(kPowerColor, 1.0));
   limit_graph_ =
       addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power limit"), QPen(kLimitColor, 2.0, Qt::DashLine));
   limit_graph_->setAdaptiveSampling(false);
@@ -116,7 +115,31 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
   replot_timer_->setSingleShot(true);
   replot_timer_->setInterval(kReplotIntervalMs);
   connect(replot_timer_, &QTimer::timeout, this, &SimulationView::flushPlots);
+  relabel();
   clear();
+}
+
+void SimulationView::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  const auto apply = [this] {
+    relabel();
+    if (summary_ && !stale_) showSummaryValues(*summary_);
+    flushPlots();
+  };
+  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
+  apply();
+}
+
+// The axis labels and legend names that carry a shop unit.
+void SimulationView::relabel() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString force = u.symbol(Quantity::Force), power = u.symbol(Quantity::Power);
+  motion_plot_->yAxis2->setLabel(tr("Resultant force |F| [%1]").arg(force));
+  force_graph_->setName(tr("Resultant force |F| [%1] (right axis)").arg(force));
+  power_plot_->yAxis->setLabel(tr("Spindle power P [%1]").arg(power));
+  power_graph_->setName(tr("Spindle power P [%1]").arg(power));
+  spectrum_->setAmplitudeUnit(force);
 }
 
 QWidget* SimulationView::buildIndicatorPanel() {
@@ -157,6 +180,7 @@ QWidget* SimulationView::buildIndicatorPanel() {
 
 void SimulationView::clear() {
   replot_timer_->stop();
+  summary_.reset();
   stale_ = false;
   setPlotsGreyed(false);
   for (RingBuffer<double>* b : {&time_, &x_um_, &y_um_, &force_n_, &power_w_}) b->clear();
@@ -213,6 +237,7 @@ void SimulationView::appendChunk(const mx::gui::SimulationChunkData& chunk) {
 void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
   running_ = false;
   summary_shown_ = true;
+  summary_ = s;
   tooth_passing_hz_ = s.tooth_passing_hz;
   eta_gauge_->setThreshold(s.eta_threshold);
   eta_gauge_->setValue(s.eta);
@@ -239,29 +264,12 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
                              .arg(s.spindle_rpm, 0, 'f', 0)
                              .arg(s.evaluated_revolutions));
 
-  const QString power_limit = s.spindle_power_limit_w > 0.0
-                                  ? tr(" of %1 W limit%2")
-                                        .arg(s.spindle_power_limit_w, 0, 'f', 0)
-                                        .arg(s.power_limit_exceeded ? tr(": EXCEEDED") : QString())
-                                  : QString();
-  details_label_->setText(
-      tr("Tooth-passing frequency f_tp: %1 Hz\nChatter frequency f_c: %2\nA_chatter: %3 N    A_toothpass: %4 N\n"
-         "Peak force: %5 N\nPeak power: %6 W%7")
-          .arg(s.tooth_passing_hz, 0, 'f', 1)
-          .arg(s.chatter_frequency_hz ? tr("%1 Hz").arg(*s.chatter_frequency_hz, 0, 'f', 1) : tr("\u2013 (no chatter)"))
-          .arg(s.a_chatter_n, 0, 'g', 4)
-          .arg(s.a_toothpass_n, 0, 'g', 4)
-          .arg(s.peak_force_n, 0, 'f', 1)
-          .arg(s.peak_power_w, 0, 'f', 1)
-          .arg(power_limit));
-
   suggested_rpm_ = s.suggested_rpm.value_or(0.0);
   suggested_depth_mm_ = s.suggested_depth_mm.value_or(std::numeric_limits<double>::quiet_NaN());
   move_button_->setEnabled(suggested_rpm_ > 0.0);
   suggestion_label_->setText(s.suggestion_note);
+  showSummaryValues(s);
   if (suggested_rpm_ > 0.0 && s.suggested_depth_mm) {
-    move_button_->setText(
-        tr("Move to %1 rpm, b = %2 mm").arg(suggested_rpm_, 0, 'f', 0).arg(*s.suggested_depth_mm, 0, 'f', 3));
     move_button_->setToolTip(s.suggestion_note);
   } else if (suggested_rpm_ > 0.0) {
     move_button_->setText(tr("Move to %1 rpm").arg(suggested_rpm_, 0, 'f', 0));
@@ -276,8 +284,35 @@ void SimulationView::setSummary(const mx::gui::SimulationSummary& s) {
 
   spectrum_->setToothPassingHz(s.tooth_passing_hz);
   spectrum_->setChatterFrequency(s.chatter_frequency_hz);
-  spectrum_->setSpectrum({s.spectrum_hz, s.spectrum_n}, tr("last %1 revolutions").arg(s.evaluated_revolutions));
   scheduleReplot();
+}
+
+// What of the summary is in shop units: the details, the suggested depth and the spectrum.
+void SimulationView::showSummaryValues(const mx::gui::SimulationSummary& s) {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString power_limit = s.spindle_power_limit_w > 0.0
+                                  ? tr(" of %1 limit%2")
+                                        .arg(u.format(Quantity::Power, s.spindle_power_limit_w))
+                                        .arg(s.power_limit_exceeded ? tr(": EXCEEDED") : QString())
+                                  : QString();
+  details_label_->setText(
+      tr("Tooth-passing frequency f_tp: %1 Hz\nChatter frequency f_c: %2\nA_chatter: %3 %8    A_toothpass: %4 %8\n"
+         "Peak force: %5\nPeak power: %6%7")
+          .arg(s.tooth_passing_hz, 0, 'f', 1)
+          .arg(s.chatter_frequency_hz ? tr("%1 Hz").arg(*s.chatter_frequency_hz, 0, 'f', 1) : tr("\u2013 (no chatter)"))
+          .arg(u.fromBase(Quantity::Force, s.a_chatter_n), 0, 'g', 4)
+          .arg(u.fromBase(Quantity::Force, s.a_toothpass_n), 0, 'g', 4)
+          .arg(u.format(Quantity::Force, s.peak_force_n))
+          .arg(u.format(Quantity::Power, s.peak_power_w))
+          .arg(power_limit)
+          .arg(u.symbol(Quantity::Force)));
+  if (suggested_rpm_ > 0.0 && s.suggested_depth_mm)
+    move_button_->setText(tr("Move to %1 rpm, b = %2")
+                              .arg(suggested_rpm_, 0, 'f', 0)
+                              .arg(u.format(Quantity::Length, *s.suggested_depth_mm)));
+  QVector<double> amplitude = s.spectrum_n;
+  for (double& a : amplitude) a = u.fromBase(Quantity::Force, a);
+  spectrum_->setSpectrum({s.spectrum_hz, amplitude}, tr("last %1 revolutions").arg(s.evaluated_revolutions));
 }
 
 void SimulationView::setStatus(const QString& message) {
@@ -344,20 +379,23 @@ void SimulationView::flushPlots() {
   double lo = 0.0, hi = 0.0, f_lo = 0.0, f_hi = 0.0, p_lo = 0.0, p_hi = 0.0;
   x_graph_->data()->set(graphData(time_, x_um_, lo, hi), true);
   y_graph_->data()->set(graphData(time_, y_um_, lo, hi), true);
-  force_graph_->data()->set(graphData(time_, force_n_, f_lo, f_hi), true);
-  power_graph_->data()->set(graphData(time_, power_w_, p_lo, p_hi), true);
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const double force = u.fromBase(Quantity::Force, 1.0), power = u.fromBase(Quantity::Power, 1.0);
+  force_graph_->data()->set(graphData(time_, force_n_, f_lo, f_hi, force), true);
+  power_graph_->data()->set(graphData(time_, power_w_, p_lo, p_hi, power), true);
   const double t0 = time_.empty() ? 0.0 : time_.front();
   const double t1 = time_.empty() ? 1.0 : std::max(time_.back(), t0 + 1e-6);
   const double amplitude = std::max({std::abs(lo), std::abs(hi), 1e-3});
   motion_plot_->xAxis->setRange(t0, t1);
   motion_plot_->yAxis->setRange(-1.1 * amplitude, 1.1 * amplitude);
-  motion_plot_->yAxis2->setRange(0.0, std::max(f_hi, 1.0) * 1.1);
+  motion_plot_->yAxis2->setRange(0.0, std::max(f_hi, force) * 1.1);
   power_plot_->xAxis->setRange(t0, t1);
-  p_hi = std::max(p_hi, 1.0);
+  p_hi = std::max(p_hi, power);  // at least 1 W
   updatePowerLimit();
   // Keep the trace readable: the limit sets the range only when within 4x the peak.
-  const bool limit_in_range = power_limit_w_ > 0.0 && power_limit_w_ <= 4.0 * p_hi;
-  power_plot_->yAxis->setRange(0.0, 1.12 * (limit_in_range ? std::max(p_hi, power_limit_w_) : p_hi));
+  const double limit = power * power_limit_w_;
+  const bool limit_in_range = limit > 0.0 && limit <= 4.0 * p_hi;
+  power_plot_->yAxis->setRange(0.0, 1.12 * (limit_in_range ? std::max(p_hi, limit) : p_hi));
   if (running_ && spectrum_clock_.isValid() && spectrum_clock_.elapsed() >= kLiveSpectrumIntervalMs) {
     updateLiveSpectrum();
     spectrum_clock_.restart();
@@ -376,9 +414,12 @@ void SimulationView::updatePowerLimit() {
   double p_hi = 1.0;
   for (std::size_t i = 0; i < power_w_.size(); ++i) p_hi = std::max(p_hi, power_w_[i]);
   const bool above = power_limit_w_ > 4.0 * p_hi;
-  limit_graph_->setName(above ? tr("Spindle power limit %1 W (above the range)").arg(power_limit_w_, 0, 'f', 0)
-                              : tr("Spindle power limit %1 W").arg(power_limit_w_, 0, 'f', 0));
-  limit_graph_->setData({time_.front(), time_.back()}, {power_limit_w_, power_limit_w_}, true);
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString limit = u.format(Quantity::Power, power_limit_w_);
+  limit_graph_->setName(above ? tr("Spindle power limit %1 (above the range)").arg(limit)
+                              : tr("Spindle power limit %1").arg(limit));
+  const double shown = u.fromBase(Quantity::Power, power_limit_w_);
+  limit_graph_->setData({time_.front(), time_.back()}, {shown, shown}, true);
 }
 
 void SimulationView::updateLiveSpectrum() {
@@ -386,7 +427,8 @@ void SimulationView::updateLiveSpectrum() {
   if (n < 64) return;
   std::vector<double> signal(n);
   const std::size_t first = force_n_.size() - n;
-  for (std::size_t i = 0; i < n; ++i) signal[i] = force_n_[first + i];
+  const double force = DisplayUnits::of(units_).fromBase(Quantity::Force, 1.0);  // the spectrum is linear
+  for (std::size_t i = 0; i < n; ++i) signal[i] = force * force_n_[first + i];
   const double duration = time_.back() - time_[first];
   if (!(duration > 0.0)) return;
   const double rate = static_cast<double>(n - 1) / duration;

@@ -5,13 +5,17 @@
 //   (3) the force amplitude spectrum with the tooth-passing harmonics and the chatter frequency,
 // and the indicators eta and chip-thickness ratio against their thresholds, the verdict and a one-click
 // "Move to N rpm" for the Smith-Tlusty speed. Memory is bounded: each signal keeps the last
-// capacity() samples in a ring buffer; plots repaint at most ~30 Hz (rpQueuedReplot). QCustomPlot stays
-// behind this class.
+// capacity() samples in a ring buffer; plots repaint at most ~30 Hz (rpQueuedReplot). Force and power
+// are shown in the shop units of setUnits() (the data comes in N and W). QCustomPlot stays behind this
+// class.
 #include <QElapsedTimer>
+#include <QPointer>
 #include <QString>
 #include <QWidget>
 #include <cstddef>
+#include <optional>
 
+#include "display_units.h"
 #include "ring_buffer.h"
 #include "simulation_data.h"
 
@@ -34,6 +38,7 @@ class SimulationView : public QWidget {
 
   explicit SimulationView(QWidget* parent = nullptr, std::size_t capacity = kDefaultCapacity);
 
+  void setUnits(DisplayUnits* units);  // nullptr: metric
   // A new run: clears the plots and indicators. spindle_power_limit_w <= 0: no limit line.
   void beginRun(double spindle_power_limit_w, int teeth, double tooth_passing_hz);
   void appendChunk(const mx::gui::SimulationChunkData& chunk);
@@ -68,10 +73,14 @@ class SimulationView : public QWidget {
  private:
   void scheduleReplot();
   void flushPlots();
+  void relabel();
+  void showSummaryValues(const mx::gui::SimulationSummary& s);
   void updateLiveSpectrum();
   void updatePowerLimit();
   QWidget* buildIndicatorPanel();
 
+  QPointer<DisplayUnits> units_;
+  std::optional<mx::gui::SimulationSummary> summary_;
   RingBuffer<double> time_, x_um_, y_um_, force_n_, power_w_;
   QCustomPlot* motion_plot_;
   QCustomPlot* power_plot_;

@@ -107,6 +107,11 @@ void SpectrumPlot::setSpectrum(const SpectrumSeries& spectrum, const QString& la
   rebuildMarkers();
 }
 
+void SpectrumPlot::setAmplitudeUnit(const QString& symbol) {
+  plot_->yAxis->setLabel(tr("Force amplitude |F| [%1]").arg(symbol));
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
 void SpectrumPlot::setToothPassingHz(double hz) {
   tooth_passing_hz_ = hz > 0.0 && std::isfinite(hz) ? hz : 0.0;
   rebuildMarkers();

@@ -31,6 +31,7 @@ class SpectrumPlot : public QWidget {
 
   // `label` names the signal in the legend (e.g. "live, last 20 revolutions").
   void setSpectrum(const SpectrumSeries& spectrum, const QString& label);
+  void setAmplitudeUnit(const QString& symbol);        // the force unit of the amplitudes given ("N", "lbf")
   void setToothPassingHz(double hz);                   // 0: no harmonic markers
   void setChatterFrequency(std::optional<double> hz);  // nullopt: no chatter marker
   void clear();

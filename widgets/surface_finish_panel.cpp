@@ -29,16 +29,18 @@ const QColor kSpeedColor(148, 103, 189);
 
 struct SummarySpec {
   const char* key;
-  const char* label;
+  const char* label;  // %1: the shop unit of `quantity`
   const char* tip;
+  std::optional<Quantity> quantity = std::nullopt;
 };
 
 constexpr SummarySpec kSummary[] = {
     {"ra_desired_um", "Ra desired [\u00b5m]", "Desired arithmetic mean roughness Ra_d of the run"},
     {"ra_produced_um", "Ra produced [\u00b5m]", "Roughness Ra at the end of the run, with the machine-tool dynamics"},
-    {"fd_n", "F_d [N]", "Reference cutting force F_d that yields Ra_d (from the inverted roughness model)"},
-    {"f_final_n", "F [N]", "Cutting force at the end of the run"},
-    {"feed_final_mm_min", "f_a [mm/min]", "Feed at the end of the run, as set by the force controller"},
+    {"fd_n", "F_d [%1]", "Reference cutting force F_d that yields Ra_d (from the inverted roughness model)",
+     Quantity::Force},
+    {"f_final_n", "F [%1]", "Cutting force at the end of the run", Quantity::Force},
+    {"feed_final_mm_min", "f_a [%1]", "Feed at the end of the run, as set by the force controller", Quantity::Feed},
     {"speed_final_rpm", "n_a [rpm]", "Spindle speed at the end of the run"},
 };
 
@@ -92,10 +94,10 @@ SurfaceFinishPanel::SurfaceFinishPanel(QWidget* parent) : QWidget(parent), debou
   QCustomPlot* ra = makePlot(tr("Roughness Ra [\u00b5m]"),
                              tr("Surface roughness Ra: the model value and the value with the machine-tool dynamics "
                                 "(disturbance); dashed: the desired Ra_d."));
-  QCustomPlot* force = makePlot(tr("Cutting force F [N]"),
-                                tr("Cutting force F, and F with its dynamic (disturbance) component; dashed: the "
-                                   "reference F_d that yields Ra_d."));
-  QCustomPlot* feed = makePlot(tr("Feed f_a [mm/min]"), tr("Feed f_a commanded by the force controller."));
+  QCustomPlot* force =
+      makePlot(QString(), tr("Cutting force F, and F with its dynamic (disturbance) component; dashed: the "
+                             "reference F_d that yields Ra_d."));
+  QCustomPlot* feed = makePlot(QString(), tr("Feed f_a commanded by the force controller."));
   QCustomPlot* speed = makePlot(tr("Spindle speed n_a [rpm]"), tr("Spindle speed n_a."));
   auto add = [this](QCustomPlot* plot, const char* key, const QString& name, const QPen& pen) {
     QCPGraph* g = plot->addGraph();
@@ -107,10 +109,10 @@ SurfaceFinishPanel::SurfaceFinishPanel(QWidget* parent) : QWidget(parent), debou
   add(ra, "ra", tr("Ra [\u00b5m]"), QPen(kActualColor, 2.0));
   add(ra, "ra_dynamic", tr("Ra with machine-tool dynamics [\u00b5m]"), QPen(kDynamicColor, 1.0));
   add(ra, "ra_desired", tr("Desired Ra_d [\u00b5m]"), QPen(kReferenceColor, 2.0, Qt::DashLine));
-  add(force, "force", tr("F [N]"), QPen(kActualColor, 2.0));
-  add(force, "force_dynamic", tr("F with dynamic component [N]"), QPen(kDynamicColor, 1.0));
-  add(force, "fd", tr("Reference F_d [N]"), QPen(kReferenceColor, 2.0, Qt::DashLine));
-  add(feed, "feed", tr("Feed f_a [mm/min]"), QPen(kFeedColor, 2.0));
+  add(force, "force", QString(), QPen(kActualColor, 2.0));
+  add(force, "force_dynamic", QString(), QPen(kDynamicColor, 1.0));
+  add(force, "fd", tr("Reference F_d"), QPen(kReferenceColor, 2.0, Qt::DashLine));
+  add(feed, "feed", QString(), QPen(kFeedColor, 2.0));
   add(speed, "speed", tr("Spindle speed n_a [rpm]"), QPen(kSpeedColor, 2.0));
   grid->addWidget(ra, 0, 0);
   grid->addWidget(force, 0, 1);
@@ -122,7 +124,44 @@ SurfaceFinishPanel::SurfaceFinishPanel(QWidget* parent) : QWidget(parent), debou
   debounce_->setSingleShot(true);
   debounce_->setInterval(kDebounceMs);
   connect(debounce_, &QTimer::timeout, this, &SurfaceFinishPanel::runRequested);
+  relabel();
   clear();
+}
+
+void SurfaceFinishPanel::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &SurfaceFinishPanel::reshow);
+  reshow();
+}
+
+// The labels of the force and feed, in shop units.
+void SurfaceFinishPanel::relabel() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString force = u.symbol(Quantity::Force), feed = u.symbol(Quantity::Feed);
+  plots_[1]->yAxis->setLabel(tr("Cutting force F [%1]").arg(force));
+  plots_[2]->yAxis->setLabel(tr("Feed f_a [%1]").arg(feed));
+  graphs_["force"]->setName(tr("F [%1]").arg(force));
+  graphs_["force_dynamic"]->setName(tr("F with dynamic component [%1]").arg(force));
+  graphs_["feed"]->setName(tr("Feed f_a [%1]").arg(feed));
+  for (const SummarySpec& spec : kSummary)
+    summary_names_[QLatin1String(spec.key)]->setText(
+        (spec.quantity ? tr(spec.label).arg(u.symbol(*spec.quantity)) : tr(spec.label)) + ":");
+}
+
+// The run shown again after a change of units: the labels, the samples and the summary.
+void SurfaceFinishPanel::reshow() {
+  relabel();
+  const QVector<SurfaceFinishSample> samples = samples_;
+  const std::optional<SurfaceFinishSummary> summary = shown_summary_;
+  const QString status = status_label_->text();
+  const bool busy = busy_;
+  busy_ = true;  // clear() keeps the status text while busy
+  clear();
+  busy_ = busy;
+  appendSamples(samples);
+  if (summary) setSummary(*summary);
+  status_label_->setText(status);
 }
 
 QCustomPlot* SurfaceFinishPanel::makePlot(const QString& y_label, const QString& tooltip) {
@@ -198,7 +237,8 @@ QWidget* SurfaceFinishPanel::buildSummary() {
   grid->setHorizontalSpacing(2 * kSpacing);
   int column = 0;
   for (const SummarySpec& s : kSummary) {
-    auto* name = new QLabel(tr(s.label) + ":", box);
+    auto* name = new QLabel(box);
+    summary_names_.insert(QString::fromLatin1(s.key), name);
     auto* value = new QLabel(box);
     value->setObjectName(QStringLiteral("surfaceFinish_%1").arg(QLatin1String(s.key)));
     value->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -261,6 +301,8 @@ void SurfaceFinishPanel::userChanged() {
 }
 
 void SurfaceFinishPanel::clear() {
+  samples_.clear();
+  shown_summary_.reset();
   for (const char* key : {"ra", "ra_dynamic", "force", "force_dynamic", "feed", "speed"})
     graphs_[QLatin1String(key)]->data()->clear();
   for (Range& r : ranges_) r = Range{};
@@ -277,11 +319,18 @@ void SurfaceFinishPanel::clear() {
 
 void SurfaceFinishPanel::appendSamples(const QVector<SurfaceFinishSample>& samples) {
   if (samples.isEmpty()) return;
+  samples_ += samples;
+  const ShopUnits& u = DisplayUnits::of(units_);
   QCPGraph* g[] = {graphs_["ra"],   graphs_["ra_dynamic"], graphs_["force"], graphs_["force_dynamic"],
                    graphs_["feed"], graphs_["speed"]};
   for (const SurfaceFinishSample& s : samples) {
     if (!std::isfinite(s.t_s)) continue;
-    const double v[] = {s.ra_um, s.ra_dynamic_um, s.force_n, s.force_dynamic_n, s.feed_mm_min, s.speed_rpm};
+    const double v[] = {s.ra_um,
+                        s.ra_dynamic_um,
+                        u.fromBase(Quantity::Force, s.force_n),
+                        u.fromBase(Quantity::Force, s.force_dynamic_n),
+                        u.fromBase(Quantity::Feed, s.feed_mm_min),
+                        s.speed_rpm};
     constexpr int kPlotOf[] = {0, 0, 1, 1, 2, 3};
     for (int i = 0; i < 6; ++i) {
       if (!std::isfinite(v[i])) continue;
@@ -299,15 +348,23 @@ void SurfaceFinishPanel::appendSamples(const QVector<SurfaceFinishSample>& sampl
 
 void SurfaceFinishPanel::setSummary(const SurfaceFinishSummary& s) {
   summary_shown_ = true;
-  const double values[] = {s.ra_desired_um, s.ra_produced_um,    s.fd_n,
-                           s.f_final_n,     s.feed_final_mm_min, s.speed_final_rpm};  // kSummary order
+  shown_summary_ = s;
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const double values[] = {s.ra_desired_um,
+                           s.ra_produced_um,
+                           u.fromBase(Quantity::Force, s.fd_n),
+                           u.fromBase(Quantity::Force, s.f_final_n),
+                           u.fromBase(Quantity::Feed, s.feed_final_mm_min),
+                           s.speed_final_rpm};  // kSummary order
   for (std::size_t i = 0; i < std::size(kSummary); ++i)
     summary_[QLatin1String(kSummary[i].key)]->setText(format(values[i]));
   setReferences(std::isfinite(s.ra_desired_um) ? s.ra_desired_um : desiredRaUm(), s.fd_n);
   warning_label_->setVisible(s.feed_saturated);
   warning_label_->setText(s.feed_saturated ? tr("F_d not reachable within the feed limits: the feed saturated at "
-                                                "f_a = %1 mm/min with F = %2 N against F_d = %3 N.")
-                                                 .arg(format(s.feed_final_mm_min), format(s.f_final_n), format(s.fd_n))
+                                                "f_a = %1 with F = %2 against F_d = %3.")
+                                                 .arg(format(values[4]) + " " + u.symbol(Quantity::Feed),
+                                                      format(values[3]) + " " + u.symbol(Quantity::Force),
+                                                      format(values[2]) + " " + u.symbol(Quantity::Force))
                                            : QString());
   status_label_->setText(tr("Finished: Ra %1 \u00b5m produced for %2 \u00b5m desired.")
                              .arg(format(s.ra_produced_um), format(s.ra_desired_um)));
@@ -335,9 +392,11 @@ void SurfaceFinishPanel::updateRanges() {
   for (QCustomPlot* plot : std::as_const(plots_)) plot->xAxis->setRange(0.0, t1);
   QCPGraph* fd = graphs_["fd"];
   QCPGraph* ra_d = graphs_["ra_desired"];
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const double fd_shown = u.fromBase(Quantity::Force, fd_reference_);
   if (fd_shown_) {
-    fd->setData({0.0, t1}, {fd_reference_, fd_reference_}, true);
-    fd->setName(tr("Reference F_d = %1 N").arg(format(fd_reference_)));
+    fd->setData({0.0, t1}, {fd_shown, fd_shown}, true);
+    fd->setName(tr("Reference F_d = %1 %2").arg(format(fd_shown), u.symbol(Quantity::Force)));
     fd->addToLegend();
   } else {
     fd->data()->clear();
@@ -354,7 +413,7 @@ void SurfaceFinishPanel::updateRanges() {
     axis->setRange(lo * 1.1, hi * 1.1);
   };
   fit(plots_[0]->yAxis, ranges_[0], {ra_reference_}, kMaxRaUm);
-  fit(plots_[1]->yAxis, ranges_[1], {fd_shown_ ? fd_reference_ : 0.0}, 100.0);
+  fit(plots_[1]->yAxis, ranges_[1], {fd_shown_ ? fd_shown : 0.0}, 100.0);
   fit(plots_[2]->yAxis, ranges_[2], {}, 100.0);
   fit(plots_[3]->yAxis, ranges_[3], {}, 1000.0);
 }

@@ -8,10 +8,13 @@
 // behind this class; plots repaint through rpQueuedReplot.
 #include <QHash>
 #include <QLabel>
+#include <QPointer>
 #include <QString>
 #include <QVector>
 #include <QWidget>
 #include <optional>
+
+#include "display_units.h"
 
 class QCheckBox;
 class QCustomPlot;
@@ -46,8 +49,9 @@ class SurfaceFinishPanel : public QWidget {
   bool disturbanceOn() const;
   void setDisturbanceOn(bool on);  // no signal
   double durationS() const;
-  void setDurationS(double s);  // no signal; clamps to [1, 120] s, default 15
-  void clear();                 // clears plots and summary
+  void setDurationS(double s);         // no signal; clamps to [1, 120] s, default 15
+  void clear();                        // clears plots and summary
+  void setUnits(DisplayUnits* units);  // force and feed in shop units (the data: N, mm/min); nullptr: metric
 
   // Streams samples (non-finite values are skipped per signal); x axis [0, durationS] (widened when
   // a sample lies beyond it).
@@ -94,6 +98,8 @@ class SurfaceFinishPanel : public QWidget {
   void setReferences(double ra_d, std::optional<double> fd);  // the dashed Ra_d and F_d (nullopt: none) lines
   void updateRanges();
   void replotAll();
+  void relabel();
+  void reshow();
 
   QDoubleSpinBox* ra_spin_ = nullptr;
   QCheckBox* disturbance_box_ = nullptr;
@@ -102,6 +108,10 @@ class SurfaceFinishPanel : public QWidget {
   QLabel* status_label_ = nullptr;
   QLabel* warning_label_ = nullptr;
   QHash<QString, QLabel*> summary_;
+  QHash<QString, QLabel*> summary_names_;
+  QPointer<DisplayUnits> units_;
+  QVector<SurfaceFinishSample> samples_;  // of the run shown, as given
+  std::optional<SurfaceFinishSummary> shown_summary_;
   QVector<QCustomPlot*> plots_;
   QHash<QString, QCPGraph*> graphs_;
   QTimer* debounce_;

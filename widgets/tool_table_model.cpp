@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "document/project_rules.h"
-#include "range_delegate.h"
 #include "document/project_validation.h"
 #include "document/tooth_list_text.h"
+#include "range_delegate.h"
 
 namespace mx::widgets {
 
@@ -89,7 +89,7 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
     case RadialDepth:
       return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
     case MaxForce:
-      return opt(t.max_force_N);
+      return t.max_force_N ? QVariant(DisplayUnits::of(units_).fromBase(Quantity::Force, *t.max_force_N)) : QVariant();
     case ModesX:
       return static_cast<int>(t.modes_x.size());
     case ModesY:
@@ -132,7 +132,7 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
       r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"};
       break;
     case MaxForce:
-      r = {0, 1e7, 0, 100, "none"};
+      r = {0, DisplayUnits::of(units_).fromBase(Quantity::Force, 1e7), 0, 100, "none"};
       break;
     default:
       return {};
@@ -149,7 +149,7 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
     case D::SpecialTextRole:
       return QString(r.special);
     case D::SuffixRole:
-      if (column == MaxForce) return QStringLiteral(" N");
+      if (column == MaxForce) return " " + DisplayUnits::of(units_).symbol(Quantity::Force);
       return column == Diameter || column == RadialDepth ? " " + lengthUnit() : QString();
     default:
       return {};
@@ -186,12 +186,15 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
     case RadialDepth:
       return tr("Radial depth of cut a [%1] in (0, D]; empty = the operation's radial engagement").arg(lengthUnit());
     case MaxForce: {
+      const ShopUnits& units = DisplayUnits::of(units_);
       const double fallback = project_.toolForceLimitN(app::ToolSpec{});
-      return std::isfinite(fallback) ? tr("Allowable peak resultant force F_allow [N] in (0, 1e7] (Rule 3, tool "
-                                          "breakage); empty = the control section's breakage limit %1 N")
-                                           .arg(app::formatNumber(fallback))
-                                     : tr("Allowable peak resultant force F_allow [N] in (0, 1e7] (Rule 3, tool "
-                                          "breakage); empty = no limit");
+      const QString limit =
+          tr("Allowable peak resultant force F_allow [%1] in (0, %2] (Rule 3, tool breakage)")
+              .arg(units.symbol(Quantity::Force), app::formatNumber(units.fromBase(Quantity::Force, 1e7)));
+      return std::isfinite(fallback) ? tr("%1; empty = the control section's breakage limit %2 %3")
+                                           .arg(limit, app::formatNumber(units.fromBase(Quantity::Force, fallback)),
+                                                units.symbol(Quantity::Force))
+                                     : tr("%1; empty = no limit").arg(limit);
     }
     case ModesX:
       return tr("%n mode(s) in x; edit them in the mode tables below", nullptr, int(t.modes_x.size()));
@@ -247,7 +250,7 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
       case RadialDepth:
         return tr("radial depth [%1]").arg(unit);
       case MaxForce:
-        return tr("max force [N]");
+        return tr("max force [%1]").arg(DisplayUnits::of(units_).symbol(Quantity::Force));
       case ModesX:
         return tr("modes x");
       case ModesY:
@@ -316,6 +319,7 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
       break;
     case MaxForce:
       optional(t.max_force_N, false);
+      if (t.max_force_N) *t.max_force_N = DisplayUnits::of(units_).toBase(Quantity::Force, *t.max_force_N);
       break;
     default:
       return false;

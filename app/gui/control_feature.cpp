@@ -15,6 +15,7 @@ ControlFeature::ControlFeature(QMainWindow* window, const FeatureContext& contex
       document_(context.document()),
       runner_(new ControlRunner(context.enginePool(), this)),
       view_(new widgets::ControlView) {
+  view_->setUnits(context.units());
   setObjectName("controlFeature");
   QDockWidget* dock = makeFeatureDock(window, tr("Force control"), "controlDock", view_, DockContent::Scrolling);
   window->addDockWidget(Qt::BottomDockWidgetArea, dock);

@@ -334,7 +334,9 @@ void ExpertFeature::exportReportTo(const QString& path) {
                    "--c",
                    QString("%1,%2,%3").arg(c[0], 0, 'g', 17).arg(c[1], 0, 'g', 17).arg(c[2], 0, 'g', 17),
                    "--project-name",
-                   reportProjectName(context_.document())};
+                   reportProjectName(context_.document()),
+                   "--units",
+                   context_.units()->shop().toText()};  // the report in the window's shop units
   auto* process = new QProcess(this);
   connect(process, &QProcess::finished, this, [this, process, path, snapshot](int code, QProcess::ExitStatus status) {
     QFile::remove(snapshot);

@@ -118,16 +118,20 @@ void LobesFeature::connectSignals() {
   });
   connect(feed_spin_, &QDoubleSpinBox::editingFinished, this, [this] {
     app::PickedPoint p = context_.point();
-    p.feed_mm_per_tooth = context_.units()->toMm(feed_spin_->value());
+    p.feed_mm_per_tooth = context_.units()->shop().toBase(widgets::Quantity::ChipLoad, feed_spin_->value());
     emit pointRequested(p, 0);
   });
   connect(this, &LobesFeature::lobesShown, &context_, &FeatureContext::lobesShown);
   connect(context_.units(), &widgets::DisplayUnits::changed, this, [this] {
     const widgets::DisplayUnits& units = *context_.units();
-    feed_spin_->setSuffix(QString(" %1/tooth").arg(units.lengthSuffix()));
-    feed_spin_->setDecimals(units.lengthDecimals());
+    feed_spin_->setSuffix(" " + units.shop().symbol(widgets::Quantity::ChipLoad));
+    feed_spin_->setDecimals(units.shop().decimals(widgets::Quantity::ChipLoad));
+    feed_spin_->setRange(units.shop().fromBase(widgets::Quantity::ChipLoad, 0.001),
+                         units.shop().fromBase(widgets::Quantity::ChipLoad, 5.0));
     chart_->setLengthUnit(units.fromMm(1.0), units.lengthSuffix());
+    power_limit_feed_ = -1.0;  // the power-limit curve's label is in shop units: redrawn with the readout
     showPoint(context_.point());
+    showStatusPoint();
   });
 }
 
@@ -327,19 +331,20 @@ void LobesFeature::lowerInitialPoint(const PointJobResult& result) {
 }
 
 namespace {
-// "power limit 2745.3 W, 9 N·m at s_t = 0.100 mm/tooth": the limits that shape P_av(N).
-QString powerLimitLabel(const app::MachineSpec& m, double feed_mm_per_tooth) {
-  QString limits = QObject::tr("%1 W").arg(m.spindle_power_W);
+// "power limit 2745.3 W, 9 N·m at s_t = 0.1000 mm/tooth": the limits that shape P_av(N), in shop units.
+QString powerLimitLabel(const app::MachineSpec& m, double feed_mm_per_tooth, const widgets::ShopUnits& units) {
+  QString limits = units.format(widgets::Quantity::Power, m.spindle_power_W);
   if (m.max_torque_Nm) limits += QObject::tr(", %1 N\u00b7m").arg(*m.max_torque_Nm);
   if (m.spindle_curve) limits += QObject::tr(", power curve");
-  return QObject::tr("power limit %1 at s_t = %2 mm/tooth").arg(limits).arg(feed_mm_per_tooth, 0, 'f', 3);
+  return QObject::tr("power limit %1 at s_t = %2")
+      .arg(limits, units.format(widgets::Quantity::ChipLoad, feed_mm_per_tooth));
 }
 }  // namespace
 
 void LobesFeature::showPoint(const app::PickedPoint& point) {
   chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict_);  // recoloured when evaluated
   feed_spin_->blockSignals(true);
-  feed_spin_->setValue(context_.units()->fromMm(point.feed_mm_per_tooth));
+  feed_spin_->setValue(context_.units()->shop().fromBase(widgets::Quantity::ChipLoad, point.feed_mm_per_tooth));
   feed_spin_->blockSignals(false);
   requestReadout(point);
 }
@@ -364,7 +369,8 @@ void LobesFeature::onPointEvaluated(const PointJobResult& result) {
   if (result.power_limit_mm && result.evaluator == evaluator_) {
     const app::Project& p = context_.project();
     const double feed = result.point.feed_mm_per_tooth;
-    chart_->setPowerLimit(*result.power_limit_mm, p.machine ? powerLimitLabel(*p.machine, feed) : QString());
+    chart_->setPowerLimit(*result.power_limit_mm,
+                          p.machine ? powerLimitLabel(*p.machine, feed, context_.units()->shop()) : QString());
     lowerInitialPoint(result);
   }
   if (!result.readout) return;
@@ -384,13 +390,20 @@ void LobesFeature::showVerdict(const widgets::PointReadout& r) {
   const app::PickedPoint& point = context_.point();
   chart_->setOperatingPoint(point.speed_rpm, point.depth_mm, verdict_);
   readout_->setSimulation(context_.simulationCheck());
-  status_point_->setText(tr("Point: %1 rpm, b = %2 mm, s_t = %3 mm/tooth \u2014 %4")
-                             .arg(point.speed_rpm, 0, 'f', 0)
-                             .arg(point.depth_mm, 0, 'f', 3)
-                             .arg(point.feed_mm_per_tooth, 0, 'f', 3)
-                             .arg(readout_->text("verdict")));
+  showStatusPoint();
   context_.setReadout(r);
   emit readoutShown();
+}
+
+// "Point: 4200 rpm, b = 1.3900 mm, s_t = 0.1000 mm/tooth — STABLE", in shop units.
+void LobesFeature::showStatusPoint() {
+  const app::PickedPoint& point = context_.point();
+  const widgets::ShopUnits& units = context_.units()->shop();
+  status_point_->setText(tr("Point: %1 rpm, b = %2, s_t = %3 \u2014 %4")
+                             .arg(point.speed_rpm, 0, 'f', 0)
+                             .arg(units.format(widgets::Quantity::Length, point.depth_mm),
+                                  units.format(widgets::Quantity::ChipLoad, point.feed_mm_per_tooth),
+                                  readout_->text("verdict")));
 }
 
 void LobesFeature::showActiveTool() {

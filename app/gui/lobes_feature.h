@@ -63,6 +63,7 @@ class LobesFeature : public WindowFeature {
   void requestReadout(const app::PickedPoint& point);
   void onPointEvaluated(const PointJobResult& result);
   void showVerdict(const widgets::PointReadout& r);
+  void showStatusPoint();  // the status bar's point and verdict, in shop units
   void showActiveTool();
   void showModelLabel();    // the chart's title: the active tool's stability model
   void showMethodAdvice();  // where the ZOA is approximate for the active tool

@@ -70,6 +70,9 @@ MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& co
       surface_panel_(new widgets::SurfaceFinishPanel),
       program_panel_(new widgets::PartProgramPanel) {
   setObjectName("machiningFeature");
+  surface_panel_->setUnits(context.units());
+  program_panel_->setUnits(context.units());
+  units_ = context.units();
   addDocks();
   connectPanels();
 }
@@ -196,11 +199,11 @@ void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome ou
   double peak = 0.0;
   for (const FeedOverrideRow& f : override_->result.rows)
     if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
-  program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4 N")
+  program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4")
                                 .arg(override_->result.program.blocks.size())
                                 .arg(override_->result.changed_blocks)
                                 .arg(override_->result.warnings.size())
-                                .arg(peak, 0, 'f', 1));
+                                .arg(units_->shop().format(widgets::Quantity::Force, peak)));
   emit partProgramShown();
 }
 

@@ -49,6 +49,7 @@ class MachiningFeature : public WindowFeature {
   QMainWindow* window_;
   const app::ProjectDocument& document_;
   QThreadPool* pool_;
+  const widgets::DisplayUnits* units_ = nullptr;
   EngineChannel channel_;
   widgets::SurfaceFinishPanel* surface_panel_;
   widgets::PartProgramPanel* program_panel_;

@@ -14,6 +14,7 @@
 #include "lobes_feature.h"
 #include "machining_feature.h"
 #include "pareto_feature.h"
+#include "shop_units_settings.h"
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
 #include "tap_test_feature.h"
@@ -39,6 +40,7 @@ MainWindow::MainWindow(QWidget* parent)
   addFeature(new MachiningFeature(this, *context_));
   addFeature(new SupervisorFeature(this, *context_));
   buildActions();
+  units_.setShop(widgets::readShopUnits(QSettings()));  // the user's; the views follow its changed()
 
   connect(&doc_, &app::ProjectDocument::changed, this, &MainWindow::onProjectChanged);
   connect(&doc_, &app::ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);

@@ -11,6 +11,10 @@
 #include "display_units.h"
 #include "document/project_document.h"
 
+namespace mx::widgets {
+class ShopUnitsDialog;
+}
+
 namespace mx::gui {
 
 class EngineRunner;
@@ -29,6 +33,9 @@ class MainWindow : public QMainWindow {
   const app::Project* project() const { return &doc_.project(); }
   app::ProjectDocument* document() { return &doc_; }
   widgets::DisplayUnits* units() { return &units_; }
+  // Edit > Preferences...: the shop-units page, window-modal; accepting it applies the units and
+  // remembers them for the user (QSettings). Returns the open dialog (tests).
+  widgets::ShopUnitsDialog* openPreferences();
   void setQuiet(bool quiet) { quiet_ = quiet; }  // no modal dialogs (tests, scripts)
   void setRecoveryPolicy(RecoveryPolicy policy) { recovery_ = policy; }
 
@@ -65,6 +72,7 @@ class MainWindow : public QMainWindow {
   std::pair<const WindowFeature*, int> feature_gesture_{nullptr, 0};
   int document_gesture_ = 0;
   QMenu* recent_menu_ = nullptr;
+  widgets::ShopUnitsDialog* preferences_ = nullptr;
   bool quiet_ = false;
   RecoveryPolicy recovery_ = RecoveryPolicy::Ask;
 };

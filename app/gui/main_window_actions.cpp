@@ -1,6 +1,5 @@
 // MainWindow: the menus, the toolbar, their shortcuts, and the recent files. Features add their own
 // actions to the File and View menus and to the toolbar.
-#include <QActionGroup>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QMenuBar>
@@ -9,6 +8,8 @@
 #include <QUndoStack>
 
 #include "main_window.h"
+#include "shop_units_dialog.h"
+#include "shop_units_settings.h"
 #include "window_feature.h"
 
 namespace mx::gui {
@@ -50,6 +51,10 @@ void MainWindow::buildActions() {
   redo->setToolTip(tr("Redo"));
   edit->addAction(undo);
   edit->addAction(redo);
+  edit->addSeparator();
+  add(edit, tr("&Preferences..."), QKeySequence::Preferences,
+      tr("Shop units: mm or inch, m/min or SFM, mm/min or IPM, W, kW or hp, N or lbf, cm\u00b3/min or in\u00b3/min"),
+      [this] { openPreferences(); });
   bar->addSeparator();
   bar->addAction(undo);
   bar->addAction(redo);
@@ -58,25 +63,26 @@ void MainWindow::buildActions() {
   bar->addSeparator();
   for (WindowFeature* feature : features_) feature->addViewActions(view, bar);
   view->addSeparator();
-  auto* units = new QActionGroup(this);
-  QAction* mm = view->addAction(tr("Lengths in &mm"));
-  QAction* inch = view->addAction(tr("Lengths in &inch"));
-  for (QAction* a : {mm, inch}) {
-    a->setCheckable(true);
-    units->addAction(a);
-  }
-  mm->setChecked(true);
-  mm->setToolTip(tr("Show and enter lengths in millimetres"));
-  inch->setToolTip(tr("Show and enter lengths in inches (the project file stays in mm)"));
-  connect(mm, &QAction::triggered, this, [this] { units_.setLength(widgets::DisplayUnits::Length::Millimetre); });
-  connect(inch, &QAction::triggered, this, [this] { units_.setLength(widgets::DisplayUnits::Length::Inch); });
-  view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
 
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
   updateRecentMenu();
+}
+
+widgets::ShopUnitsDialog* MainWindow::openPreferences() {
+  if (!preferences_) {
+    preferences_ = new widgets::ShopUnitsDialog(this);
+    connect(preferences_, &QDialog::accepted, this, [this] {
+      units_.setShop(preferences_->shopUnits());
+      QSettings settings;
+      widgets::writeShopUnits(settings, units_.shop());
+    });
+  }
+  preferences_->setShopUnits(units_.shop());
+  preferences_->open();
+  return preferences_;
 }
 
 void MainWindow::addRecentFile(const QString& path) {

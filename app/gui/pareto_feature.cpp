@@ -90,6 +90,10 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       report_chatter_(new QPushButton(tr("Report chatter (Rule 16 / Rule 6)"))),
       chatter_hz_(new QDoubleSpinBox) {
   setObjectName("paretoFeature");
+  requirements_->setUnits(context.units());
+  summary_->setUnits(context.units());
+  front_view_->setUnits(context.units());
+  monitoring_->setUnits(context.units());
   buildDocks(window);
   rebuild_timer_.setSingleShot(true);
   rebuild_timer_.setInterval(120);

@@ -48,6 +48,8 @@ widgets::PointReadout PointEvaluator::evaluate(int tool, double speed_rpm, doubl
   const std::size_t i = static_cast<std::size_t>(tool);
   if (i < force_limits_n_.size() && std::isfinite(force_limits_n_[i])) r.force_limit_n = force_limits_n_[i];
   r.mrr_mm3_per_s = perf.mrr_m3_per_s * 1e9;
+  r.surface_speed_m_min = perf.cutting_speed_m_per_s * 60.0;
+  r.feed_rate_mm_min = feed * t.setup.teeth * speed_rpm;
   if (!boundary.covers(n)) {
     r.message = QObject::tr("%1 rpm is outside the computed lobes (%2-%3 rpm)")
                     .arg(speed_rpm, 0, 'f', 0)

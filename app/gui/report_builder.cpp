@@ -4,6 +4,9 @@
 
 namespace mx::gui {
 
+using widgets::perMinute;
+using widgets::Quantity;
+
 namespace {
 
 const char* kStyle =
@@ -30,12 +33,6 @@ QString perTooth(const std::optional<std::vector<double>>& values, const QString
 QString rpm(double rev_per_s) {
   return ReportBuilder::formatNumber(revPerSToRpm(rev_per_s), 0);
 }
-QString mm(double m) {
-  return ReportBuilder::formatNumber(m * 1e3, 3);
-}
-QString mrr(double m3_per_s) {
-  return ReportBuilder::formatNumber(m3_per_s * 1e9 * 60.0, 0);
-}
 QString weights(const double* v, std::size_t n) {
   QStringList parts;
   for (std::size_t i = 0; i < n; ++i) parts << QString::number(v[i], 'g', 6);
@@ -44,25 +41,44 @@ QString weights(const double* v, std::size_t n) {
 QString optional(const std::optional<double>& v, int decimals, const QString& absent = "no limit") {
   return v ? ReportBuilder::formatNumber(*v, decimals) : absent;
 }
-// "1000 rpm: 2000 W; 3000 rpm: 4000 W" (machine.spindle_curve).
-QString curveRows(const std::vector<app::SpindleCurveRowSpec>& rows) {
+// "1000 rpm: 2000 W; 3000 rpm: 4000 W" (machine.spindle_curve), in the shop unit of power.
+QString curveRows(const std::vector<app::SpindleCurveRowSpec>& rows, const widgets::ShopUnits& u) {
   QStringList parts;
   for (const app::SpindleCurveRowSpec& r : rows)
-    parts << QString("%1 rpm: %2 W")
-                 .arg(ReportBuilder::formatNumber(r.speed_rpm, 0), ReportBuilder::formatNumber(r.power_W, 1));
+    parts
+        << QString("%1 rpm: %2").arg(ReportBuilder::formatNumber(r.speed_rpm, 0), u.format(Quantity::Power, r.power_W));
   return parts.join("; ");
 }
 // NF1's P_av: one value, or the speed-dependent limit (torque line, power curve) of the point's speed.
-QString availablePowerMeaning(const SpindlePowerCurve& p) {
-  if (p.constant()) return "P<sub>av</sub> [W]";
-  return "P<sub>av</sub>(N) = min(P<sub>max</sub>, 2\u03c0N T<sub>max</sub>, curve) at the point's speed; "
-         "P<sub>max</sub> [W]";
+QString availablePowerMeaning(const SpindlePowerCurve& p, const QString& unit) {
+  if (p.constant()) return QString("P<sub>av</sub> [%1]").arg(unit);
+  return QString(
+             "P<sub>av</sub>(N) = min(P<sub>max</sub>, 2\u03c0N T<sub>max</sub>, curve) at the point's speed; "
+             "P<sub>max</sub> [%1]")
+      .arg(unit);
 }
 
 }  // namespace
 
-ReportBuilder::ReportBuilder(const ReportData& data, ReportFlavour flavour, ImageSource source)
-    : d_(data), flavour_(flavour), source_(std::move(source)) {}
+ReportBuilder::ReportBuilder(const ReportData& data, ReportFlavour flavour, ImageSource source,
+                             const widgets::ShopUnits& units)
+    : d_(data), flavour_(flavour), source_(std::move(source)), u_(units) {}
+
+QString ReportBuilder::length(double m) const {
+  return u_.number(Quantity::Length, m * 1e3);
+}
+QString ReportBuilder::chipLoad(double m) const {
+  return u_.number(Quantity::ChipLoad, m * 1e3);
+}
+QString ReportBuilder::power(double w) const {
+  return u_.number(Quantity::Power, w);
+}
+QString ReportBuilder::mrr(double m3_per_s) const {
+  return u_.number(Quantity::RemovalRate, m3_per_s * 1e6 * 60.0);  // cm³/min
+}
+QString ReportBuilder::unit(Quantity q) const {
+  return u_.symbol(q).toHtmlEscaped();
+}
 
 QString ReportBuilder::formatNumber(double value, int decimals) {
   return std::isfinite(value) ? QString::number(value, 'f', decimals) : QString("\u2014");
@@ -111,15 +127,18 @@ QString ReportBuilder::projectSection() const {
   if (p.machine) {
     const bool speed_dependent = p.machine->max_torque_Nm || p.machine->spindle_curve;
     rows << QStringList{speed_dependent ? "Spindle power P<sub>max</sub>" : "Spindle power P<sub>av</sub>",
-                        formatNumber(p.machine->spindle_power_W, 1), "W"};
+                        power(p.machine->spindle_power_W), unit(Quantity::Power)};
     if (p.machine->max_torque_Nm)
       rows << QStringList{"Spindle torque T<sub>max</sub> (P<sub>av</sub> \u2264 2\u03c0N T<sub>max</sub>)",
                           formatNumber(*p.machine->max_torque_Nm, 2), "N\u00b7m"};
     if (p.machine->spindle_curve)
-      rows << QStringList{"Spindle power curve (P<sub>av</sub> \u2264 curve)", curveRows(*p.machine->spindle_curve),
-                          "rpm: W"};
+      rows << QStringList{"Spindle power curve (P<sub>av</sub> \u2264 curve)", curveRows(*p.machine->spindle_curve, u_),
+                          "rpm: " + unit(Quantity::Power)};
     rows << QStringList{"Maximum spindle speed", optional(p.machine->max_spindle_rpm, 0), "rpm"};
-    rows << QStringList{"Maximum feed velocity", optional(p.machine->max_feed_mm_s, 1), "mm/s"};
+    rows << QStringList{"Maximum feed rate",
+                        p.machine->max_feed_mm_s ? u_.number(Quantity::Feed, perMinute(*p.machine->max_feed_mm_s))
+                                                 : QString("no limit"),
+                        unit(Quantity::Feed)};
   }
   if (p.material) {
     rows << QStringList{"Material", esc(p.material->name), ""};
@@ -131,19 +150,20 @@ QString ReportBuilder::projectSection() const {
     if (p.operation->radial_immersion)
       rows << QStringList{"Radial immersion a/D", formatNumber(*p.operation->radial_immersion, 3), "\u2013"};
     if (p.operation->radial_depth_mm)
-      rows << QStringList{"Radial depth of cut a", formatNumber(*p.operation->radial_depth_mm, 3), "mm"};
-    rows << QStringList{
-        "Maximum feed per tooth",
-        p.operation->max_feed_per_tooth_mm > 0 ? formatNumber(p.operation->max_feed_per_tooth_mm, 3) : "no limit",
-        "mm/tooth"};
+      rows << QStringList{"Radial depth of cut a", length(*p.operation->radial_depth_mm * 1e-3),
+                          unit(Quantity::Length)};
+    rows << QStringList{"Maximum feed per tooth",
+                        p.operation->max_feed_per_tooth_mm > 0 ? chipLoad(p.operation->max_feed_per_tooth_mm * 1e-3)
+                                                               : QString("no limit"),
+                        unit(Quantity::ChipLoad)};
   }
   const ExpertGrid& g = d_.settings.grid;
   rows << QStringList{"Speed grid",
                       QString("%1 to %2, step %3")
                           .arg(rpm(g.speed_from_rev_per_s), rpm(g.speed_to_rev_per_s), rpm(g.speed_step_rev_per_s)),
                       "rpm"};
-  rows << QStringList{"Depth grid", QString("b<sub>min</sub>/%1 steps").arg(g.depth_divisions), "mm"};
-  rows << QStringList{"Feed step", formatNumber(g.feed_step_m * 1e3, 3), "mm/tooth"};
+  rows << QStringList{"Depth grid", QString("b<sub>min</sub>/%1 steps").arg(g.depth_divisions), unit(Quantity::Length)};
+  rows << QStringList{"Feed step", chipLoad(g.feed_step_m), unit(Quantity::ChipLoad)};
   rows << QStringList{
       "Stability method",
       d_.settings.stability.method == StabilityMethod::ZeroOrder ? "zeroth-order approximation" : "semi-discretization",
@@ -158,7 +178,7 @@ QString ReportBuilder::projectSection() const {
       for (std::size_t m = 0; m < modes.size(); ++m) {
         QStringList row;
         if (first)
-          row << esc(t.id) << QString::number(t.teeth) << formatNumber(t.diameter_mm, 2) << formatNumber(t.helix_deg, 1)
+          row << esc(t.id) << QString::number(t.teeth) << length(t.diameter_mm * 1e-3) << formatNumber(t.helix_deg, 1)
               << perTooth(t.pitch_deg, "uniform") << perTooth(t.runout_um, "\u2013");
         else
           row << ""
@@ -177,8 +197,8 @@ QString ReportBuilder::projectSection() const {
     addModes("y", t.modes_y);
   }
   out += table("Candidate tools and their modes (per axis)",
-               {"Tool", "Teeth", "D [mm]", "Helix [deg]", "Pitch [deg]", "Runout [\u00b5m]", "Mode", "f [Hz]",
-                "\u03b6 [%]", "k [N/\u00b5m]"},
+               {"Tool", "Teeth", QString("D [%1]").arg(unit(Quantity::Length)), "Helix [deg]", "Pitch [deg]",
+                "Runout [\u00b5m]", "Mode", "f [Hz]", "\u03b6 [%]", "k [N/\u00b5m]"},
                tools);
 
   const CostWeights& w = d_.weights;
@@ -195,9 +215,10 @@ QString ReportBuilder::projectSection() const {
       {"c<sub>f</sub> = (c1f, c2f)", "frequency cost weights: R12h, R1ch (eq. 19)", weights(w.cf.data(), 2)},
       {"\u03b4 [1/s]", "lobe margin, Rule 1.1", formatNumber(d_.settings.stability.delta_per_s, 4)},
       {"\u03b1 [\u2013]", "depth margin, Rule 1.2", formatNumber(d_.settings.stability.alpha, 3)},
-      {"NF1 = 1/P<sub>av</sub>", availablePowerMeaning(nf.available_power),
-       formatNumber(nf.available_power.max_power_w, 1)},
-      {"NF2 = MRR<sub>max</sub>", "over all tools [mm\u00b3/min]", mrr(nf.max_mrr_m3_per_s)},
+      {"NF1 = 1/P<sub>av</sub>", availablePowerMeaning(nf.available_power, unit(Quantity::Power)),
+       power(nf.available_power.max_power_w)},
+      {"NF2 = MRR<sub>max</sub>", QString("over all tools [%1]").arg(unit(Quantity::RemovalRate)),
+       mrr(nf.max_mrr_m3_per_s)},
       {"NF3 = \u0394N<sub>s,max</sub>", "over all tools [rpm]", rpm(nf.max_speed_security)}};
   out += table("Weights, margins and normalisation factors", {"Symbol", "Meaning", "Value"}, rows3);
   return out;
@@ -208,21 +229,23 @@ QString ReportBuilder::rankingSection() const {
   QList<QStringList> rows;
   int rank = 0;
   for (const ToolChoice& t : r.tools)
-    rows << QStringList{QString::number(++rank),      esc(d_.toolId(t.tool)),  "<b>" + formatCost(t.min_cost) + "</b>",
-                        formatCost(t.terms.power),    formatCost(t.terms.mrr), formatCost(t.terms.speed_security),
-                        rpm(t.q.speed_rev_per_s),     mm(t.q.depth_m),         mm(t.q.feed_per_tooth_m),
-                        formatNumber(t.q.power_w, 1), mrr(t.q.mrr_m3_per_s),   rpm(t.q.speed_security)};
+    rows << QStringList{QString::number(++rank),   esc(d_.toolId(t.tool)),  "<b>" + formatCost(t.min_cost) + "</b>",
+                        formatCost(t.terms.power), formatCost(t.terms.mrr), formatCost(t.terms.speed_security),
+                        rpm(t.q.speed_rev_per_s),  length(t.q.depth_m),     chipLoad(t.q.feed_per_tooth_m),
+                        power(t.q.power_w),        mrr(t.q.mrr_m3_per_s),   rpm(t.q.speed_security)};
   QString out = "<h2>2 Ranking of the tools (Rule 4)</h2>\n";
   out += QString(
              "<p>Tools ranked by their minimum tool cost C (eq. 13) over the admissible space Q, at c = %1. "
              "q* = (N, b, s<sub>t</sub>) is each tool's cost-minimising point. Selected tool: <b>%2</b>.</p>\n")
              .arg(weights(r.c.data(), 3), esc(d_.selectedId()));
-  out +=
-      table(QString("Ranking of the candidate tools by minimum cost C (c = %1)").arg(weights(r.c.data(), 3)),
-            {"Rank", "Tool", "Min cost C [\u2013]", "c1 P/P<sub>av</sub> [\u2013]", "c2 MRR<sub>max</sub>/MRR [\u2013]",
-             "c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub> [\u2013]", "q* N [rpm]", "q* b [mm]",
-             "q* s<sub>t</sub> [mm/tooth]", "Peak power [W]", "MRR [mm\u00b3/min]", "\u0394N<sub>s</sub> [rpm]"},
-            rows);
+  out += table(
+      QString("Ranking of the candidate tools by minimum cost C (c = %1)").arg(weights(r.c.data(), 3)),
+      {"Rank", "Tool", "Min cost C [\u2013]", "c1 P/P<sub>av</sub> [\u2013]", "c2 MRR<sub>max</sub>/MRR [\u2013]",
+       "c3 \u0394N<sub>s,max</sub>/\u0394N<sub>s</sub> [\u2013]", "q* N [rpm]",
+       QString("q* b [%1]").arg(unit(Quantity::Length)), QString("q* s<sub>t</sub> [%1]").arg(unit(Quantity::ChipLoad)),
+       QString("Peak power [%1]").arg(unit(Quantity::Power)), QString("MRR [%1]").arg(unit(Quantity::RemovalRate)),
+       "\u0394N<sub>s</sub> [rpm]"},
+      rows);
   for (std::size_t t : r.excluded) out += "<p>Excluded (empty admissible space): " + esc(d_.toolId(t)) + "</p>\n";
   return out;
 }
@@ -252,13 +275,14 @@ QString ReportBuilder::selectionSection() const {
   QList<QStringList> rows{
       row("Spindle speed N", "rpm", rpm(sel.q.speed_rev_per_s),
           col2([](const RefinementCandidate& c) { return rpm(c.q.speed_rev_per_s); })),
-      row("Axial depth b", "mm", mm(sel.q.depth_m), col2([](const RefinementCandidate& c) { return mm(c.q.depth_m); })),
-      row("Feed per tooth s<sub>t</sub>", "mm/tooth", mm(sel.q.feed_per_tooth_m),
-          col2([](const RefinementCandidate& c) { return mm(c.q.feed_per_tooth_m); })),
-      row("Peak power P", "W", formatNumber(sel.q.power_w, 1),
-          col2([](const RefinementCandidate& c) { return formatNumber(c.q.power_w, 1); })),
-      row("MRR", "mm\u00b3/min", mrr(sel.q.mrr_m3_per_s),
-          col2([](const RefinementCandidate& c) { return mrr(c.q.mrr_m3_per_s); })),
+      row("Axial depth b", unit(Quantity::Length), length(sel.q.depth_m),
+          col2([this](const RefinementCandidate& c) { return length(c.q.depth_m); })),
+      row("Feed per tooth s<sub>t</sub>", unit(Quantity::ChipLoad), chipLoad(sel.q.feed_per_tooth_m),
+          col2([this](const RefinementCandidate& c) { return chipLoad(c.q.feed_per_tooth_m); })),
+      row("Peak power P", unit(Quantity::Power), power(sel.q.power_w),
+          col2([this](const RefinementCandidate& c) { return power(c.q.power_w); })),
+      row("MRR", unit(Quantity::RemovalRate), mrr(sel.q.mrr_m3_per_s),
+          col2([this](const RefinementCandidate& c) { return mrr(c.q.mrr_m3_per_s); })),
       row("\u0394N<sub>s</sub>", "rpm", rpm(sel.q.speed_security),
           col2([](const RefinementCandidate& c) { return rpm(c.q.speed_security); })),
       row("Tool cost C (eq. 13)", "\u2013", formatCost(t1.total()), chosen ? formatCost(t2.total()) : none),
@@ -306,8 +330,8 @@ QString ReportBuilder::selectionSection() const {
       const RefinementCandidate& c = ref->candidates[i];
       QStringList r{QString::number(i + 1),
                     rpm(c.q.speed_rev_per_s),
-                    mm(c.q.depth_m),
-                    mm(c.q.feed_per_tooth_m),
+                    length(c.q.depth_m),
+                    chipLoad(c.q.feed_per_tooth_m),
                     formatCost(c.cost),
                     formatCost(c.time_cost),
                     formatCost(c.frequency_cost),
@@ -319,7 +343,8 @@ QString ReportBuilder::selectionSection() const {
     }
     out +=
         table("Simulated candidate points (Rule 5), best first by C",
-              {"#", "N [rpm]", "b [mm]", "s<sub>t</sub> [mm/tooth]", "C [\u2013]", "C<sub>t</sub> [\u2013]",
+              {"#", "N [rpm]", QString("b [%1]").arg(unit(Quantity::Length)),
+               QString("s<sub>t</sub> [%1]").arg(unit(Quantity::ChipLoad)), "C [\u2013]", "C<sub>t</sub> [\u2013]",
                "C<sub>f</sub> [\u2013]", "C<sub>resultant</sub> [\u2013]", "t<sub>s</sub> [ms]", "M<sub>p</sub> [%]"},
               cands);
   }
@@ -335,16 +360,18 @@ QString ReportBuilder::figureSection() const {
   out +=
       figure(d_.lobe_image,
              QString("Stability lobes of tool %1: nominal (solid) and margined (dashed, \u03b4 = %2 1/s, \u03b1 = %3), "
-                     "with q* and q** marked. Spindle speed N in rpm, axial depth b in mm.")
+                     "with q* and q** marked. Spindle speed N in rpm, axial depth b in %4.")
                  .arg(esc(d_.selectedId()))
                  .arg(d_.settings.stability.delta_per_s)
-                 .arg(d_.settings.stability.alpha));
+                 .arg(d_.settings.stability.alpha)
+                 .arg(unit(Quantity::Length)));
   if (!d_.simulation_image.isEmpty())
     out +=
         figure(d_.simulation_image,
                QString("Time-domain simulation of q** (%1 revolutions from rest): tool displacement x, y in \u00b5m, "
-                       "resultant cutting force in N and cutting power in W against time in ms.")
-                   .arg(d_.simulation_revolutions));
+                       "resultant cutting force in %2 and cutting power in %3 against time in ms.")
+                   .arg(d_.simulation_revolutions)
+                   .arg(unit(Quantity::Force), unit(Quantity::Power)));
   out += figure(d_.sweep_image,
                 QString("Minimum tool cost C of every tool against c1 with c2 = 1 \u2212 c1 \u2212 c3 at c3 = %1 "
                         "(figure 4 of Rubio et al. 2006); the dashed line marks the weights used.")

@@ -1,5 +1,6 @@
 // millexpert-report: the expert report of a project as PDF and/or HTML, without the GUI.
 //   millexpert-report PROJECT [--pdf OUT.pdf] [--html OUT.html] [--embed-images] [--c c1,c2,c3]
+//                     [--units metric|inch|QUANTITY=UNIT,...]
 // Runs the expert system with simulation (Rules 4-6), the figure 4 sweep at the c3 in use, renders
 // the figures offscreen and writes the report (ReportWriter). Exit codes as millexpert-cli:
 // 0 ok; 1 computation failed (e.g. empty admissible space) or a file cannot be written;
@@ -37,6 +38,11 @@ int run(const QApplication& app) {
       {"html", "Write the report as HTML; figures in the sibling folder OUT_files/.", "OUT.html"},
       {"embed-images", "HTML: embed the figures as data: URIs instead of the sibling folder."},
       {"c", "Tool-cost weights c1,c2,c3 (power, MRR, Delta N_s); sum 1. Default: the project's.", "C1,C2,C3"},
+      {"units",
+       "Shop units of the report: metric (default), inch, or either followed by QUANTITY=UNIT items, e.g. "
+       "\"metric,power=kW\" (length mm|in, surface_speed m/min|ft/min, feed mm/min|in/min, chip_load "
+       "mm/tooth|in/tooth, power W|kW|hp, force N|lbf, mrr cm3/min|in3/min). The GUI passes its own.",
+       "UNITS"},
       {"project-name",
        "What the header and every footer name as the project file (default: PROJECT). The GUI writes its snapshot "
        "of the open project to a temporary file and names the project's own file here, or \"unsaved\".",
@@ -66,6 +72,12 @@ int run(const QApplication& app) {
     return fail(problem, mx::app::kExitBadInput);
 
   mx::gui::ReportOptions options;
+  if (parser.isSet("units")) {
+    QString why;
+    const std::optional<mx::widgets::ShopUnits> units = mx::widgets::ShopUnits::fromText(parser.value("units"), &why);
+    if (!units) return fail("--units: " + why, mx::app::kExitBadInput);
+    options.units = *units;
+  }
   if (parser.isSet("c")) {
     const std::vector<double> c = mx::app::parseWeightList("c", parser.value("c"), 3);
     options.c = std::array<double, 3>{c[0], c[1], c[2]};
@@ -75,7 +87,7 @@ int run(const QApplication& app) {
   options.image_dir = work.path();
   mx::gui::ReportData data = mx::gui::collectReportData(positional.front(), options);
   if (parser.isSet("project-name")) data.project_path = parser.value("project-name");
-  const mx::gui::ReportWriter writer(data);
+  const mx::gui::ReportWriter writer(data, options.units);
   if (parser.isSet("html"))
     writer.writeHtml(parser.value("html"),
                      parser.isSet("embed-images") ? mx::gui::HtmlImages::Embedded : mx::gui::HtmlImages::SiblingFolder);

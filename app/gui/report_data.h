@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "services/report_data.h"
+#include "shop_units.h"
 
 namespace mx::gui {
 
@@ -17,6 +18,7 @@ struct ReportOptions {
   double sweep_step = 0.025;
   int image_width = 1200;
   int image_height = 675;
+  widgets::ShopUnits units;  // of the figures' axes (the window's shop units; metric by default)
 };
 
 // Throws what app::computeReportData throws, or std::runtime_error when a figure cannot be written.

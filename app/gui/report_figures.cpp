@@ -50,6 +50,7 @@ bool ReportFigureRenderer::renderLobes(const LobeFigureInput& in, const QString&
   const int width = width_ * 4 / 5, height = height_ * 4 / 5;
   widgets::LobeChartView view;
   view.resize(width, height);
+  view.setLengthUnit(units_.fromBase(widgets::Quantity::Length, 1.0), units_.symbol(widgets::Quantity::Length));
   view.setSeries({in.series}, in.delta_per_s, in.alpha);
   view.setActiveTool(0);
   if (auto* plot = qobject_cast<QCustomPlot*>(view.plotWidget())) plot->replot();  // paint buffers for the overlay
@@ -77,22 +78,28 @@ bool ReportFigureRenderer::renderSimulation(const SimulationTrace& trace, double
 
   const std::size_t n = trace.size();
   const std::size_t stride = std::max<std::size_t>(1, (n + kMaxSamples - 1) / kMaxSamples);
+  using widgets::Quantity;
   QVector<double> t, x, y, f, p;
   for (std::size_t i = 0; i < n; i += stride) {
     t.push_back(trace.time_s[i] * 1e3);
     x.push_back(trace.x_m[i] * 1e6);
     y.push_back(trace.y_m[i] * 1e6);
-    f.push_back(trace.force_n[i]);
-    p.push_back(trace.power_w[i]);
+    f.push_back(units_.fromBase(Quantity::Force, trace.force_n[i]));
+    p.push_back(units_.fromBase(Quantity::Power, trace.power_w[i]));
   }
   addCurve(plot, rects[0], t, x, "x", QPen(QColor(31, 119, 180), 1.2));
   addCurve(plot, rects[0], t, y, "y", QPen(QColor(214, 39, 40), 1.2));
   addCurve(plot, rects[1], t, f, "resultant |F|", QPen(QColor(44, 120, 44), 1.2));
   addCurve(plot, rects[2], t, p, "cutting power", QPen(QColor(148, 103, 189), 1.2));
-  if (std::isfinite(power_limit_w) && power_limit_w > 0.0 && !t.isEmpty())
-    addCurve(plot, rects[2], {t.front(), t.back()}, {power_limit_w, power_limit_w},
-             QString("spindle limit %1 W").arg(power_limit_w, 0, 'f', 1), QPen(QColor(40, 40, 40), 1.5, Qt::DashLine));
-  const char* labels[] = {"Displacement [\u00b5m]", "Force [N]", "Power [W]"};
+  if (std::isfinite(power_limit_w) && power_limit_w > 0.0 && !t.isEmpty()) {
+    const double limit = units_.fromBase(Quantity::Power, power_limit_w);
+    addCurve(plot, rects[2], {t.front(), t.back()}, {limit, limit},
+             QString("spindle limit %1").arg(units_.format(Quantity::Power, power_limit_w)),
+             QPen(QColor(40, 40, 40), 1.5, Qt::DashLine));
+  }
+  const QString labels[] = {QString("Displacement [\u00b5m]"),
+                            QString("Force [%1]").arg(units_.symbol(Quantity::Force)),
+                            QString("Power [%1]").arg(units_.symbol(Quantity::Power))};
   for (int row = 0; row < 3; ++row) {
     rects[row]->axis(QCPAxis::atLeft)->setLabel(labels[row]);
     rects[row]->axis(QCPAxis::atBottom)->setLabel(row == 2 ? "Time t [ms]" : "");

@@ -3,13 +3,15 @@
 // q* and q** markers (widgets::LobeChartView), the time-domain simulation of q** (displacement,
 // resultant force and cutting power against time; QCustomPlot) and the seed's figure 4 sweep (minimum
 // tool cost of every tool against c1 at a fixed c3). Needs a QApplication (any platform, e.g.
-// offscreen). Every render* returns false when the image cannot be written.
+// offscreen). Depth, force and power are drawn in the given shop units. Every render* returns false when
+// the image cannot be written.
 #include <QString>
 #include <QStringList>
 #include <QVector>
 #include <vector>
 
 #include "lobe_chart_view.h"
+#include "shop_units.h"
 #include "simulation/simulation_types.h"
 
 namespace mx::gui {
@@ -35,10 +37,12 @@ struct SweepFigureInput {
 
 class ReportFigureRenderer {
  public:
-  explicit ReportFigureRenderer(int width = 1200, int height = 675) : width_(width), height_(height) {}
+  explicit ReportFigureRenderer(int width = 1200, int height = 675,
+                                const widgets::ShopUnits& units = widgets::ShopUnits::metric())
+      : width_(width), height_(height), units_(units) {}
 
   bool renderLobes(const LobeFigureInput& input, const QString& path) const;
-  // Displacement x, y [µm], resultant force [N] and power [W] (with the spindle limit, if finite)
+  // Displacement x, y [µm], resultant force and power (with the spindle limit, if finite)
   // against time [ms]; at most ~6000 samples per curve are drawn.
   bool renderSimulation(const SimulationTrace& trace, double power_limit_w, const QString& title,
                         const QString& path) const;
@@ -47,6 +51,7 @@ class ReportFigureRenderer {
  private:
   int width_;
   int height_;
+  widgets::ShopUnits units_;
 };
 
 }  // namespace mx::gui

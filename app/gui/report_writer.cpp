@@ -46,17 +46,20 @@ void ReportWriter::writeHtml(const QString& path, HtmlImages images) const {
   const QString folder_name = QFileInfo(folder).fileName();
   if (images == HtmlImages::SiblingFolder && !QDir().mkpath(folder))
     fail(QString("cannot create the folder '%1'").arg(folder));
-  const ReportBuilder builder(data_, ReportFlavour::Browser, [&](const QString& image) -> QString {
-    if (images == HtmlImages::Embedded)
-      return "data:image/png;base64," + QString::fromLatin1(readFile(image).toBase64());
-    const QString name = QFileInfo(image).fileName();
-    const QString target = QDir(folder).filePath(name);
-    if (QFileInfo(image).absoluteFilePath() != QFileInfo(target).absoluteFilePath()) {
-      QFile::remove(target);
-      if (!QFile::copy(image, target)) fail(QString("cannot copy the figure '%1' to '%2'").arg(image, target));
-    }
-    return folder_name + "/" + name;
-  });
+  const ReportBuilder builder(
+      data_, ReportFlavour::Browser,
+      [&](const QString& image) -> QString {
+        if (images == HtmlImages::Embedded)
+          return "data:image/png;base64," + QString::fromLatin1(readFile(image).toBase64());
+        const QString name = QFileInfo(image).fileName();
+        const QString target = QDir(folder).filePath(name);
+        if (QFileInfo(image).absoluteFilePath() != QFileInfo(target).absoluteFilePath()) {
+          QFile::remove(target);
+          if (!QFile::copy(image, target)) fail(QString("cannot copy the figure '%1' to '%2'").arg(image, target));
+        }
+        return folder_name + "/" + name;
+      },
+      units_);
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly)) fail(QString("cannot write '%1': %2").arg(path, file.errorString()));
   file.write(builder.html().toUtf8());
@@ -78,13 +81,17 @@ void ReportWriter::writePdf(const QString& path) const {
   QTextDocument doc;
   doc.setDefaultFont(QFont("DejaVu Sans", 9));
   doc.documentLayout()->setPaintDevice(&printer);
-  const ReportBuilder builder(data_, ReportFlavour::RichText, [&](const QString& image) -> QString {
-    QString name = "mx-report://" + QFileInfo(image).fileName();
-    QImage picture;
-    if (!picture.loadFromData(readFile(image), "PNG")) fail(QString("the figure '%1' is not a PNG image").arg(image));
-    doc.addResource(QTextDocument::ImageResource, QUrl(name), picture);
-    return name;
-  });
+  const ReportBuilder builder(
+      data_, ReportFlavour::RichText,
+      [&](const QString& image) -> QString {
+        QString name = "mx-report://" + QFileInfo(image).fileName();
+        QImage picture;
+        if (!picture.loadFromData(readFile(image), "PNG"))
+          fail(QString("the figure '%1' is not a PNG image").arg(image));
+        doc.addResource(QTextDocument::ImageResource, QUrl(name), picture);
+        return name;
+      },
+      units_);
   doc.setHtml(builder.html());
 
   const QRectF page = printer.pageLayout().paintRectPixels(printer.resolution());

@@ -8,6 +8,7 @@
 #include <QString>
 
 #include "report_data.h"
+#include "shop_units.h"
 
 namespace mx::gui {
 
@@ -15,7 +16,8 @@ enum class HtmlImages { SiblingFolder, Embedded };
 
 class ReportWriter {
  public:
-  explicit ReportWriter(const ReportData& data) : data_(data) {}
+  explicit ReportWriter(const ReportData& data, const widgets::ShopUnits& units = widgets::ShopUnits::metric())
+      : data_(data), units_(units) {}
 
   void writeHtml(const QString& path, HtmlImages images = HtmlImages::SiblingFolder) const;
   void writePdf(const QString& path) const;
@@ -25,6 +27,7 @@ class ReportWriter {
 
  private:
   const ReportData& data_;
+  widgets::ShopUnits units_;
 };
 
 }  // namespace mx::gui

@@ -17,6 +17,7 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
       runner_(new SimulationRunner(context.enginePool(), this)),
       view_(new widgets::SimulationView(window)) {
   setObjectName("simulationFeature");
+  view_->setUnits(context.units());
   window->addDockWidget(Qt::BottomDockWidgetArea,
                         makeFeatureDock(window, tr("Live simulation"), "simulationDock", view_));
   connect(runner_, &SimulationRunner::chunkReady, this, [this](quint64 g, const SimulationChunkData& chunk) {
@@ -47,12 +48,13 @@ void SimulationFeature::onPointOrToolChanged() {
   const app::PickedPoint& p = context_.point();
   if (context_.activeTool() == shown_tool_ && p == shown_point_) return;
   if (!view_->isStale() && !shown_tool_.isEmpty()) {
-    view_->setStale(context_.activeTool() != shown_tool_
-                        ? tr("the run is of tool %1; the active tool is %2").arg(shown_tool_, context_.activeTool())
-                        : tr("the run is of %1 rpm, %2 mm, %3 mm/tooth; the point moved")
-                              .arg(shown_point_.speed_rpm, 0, 'f', 0)
-                              .arg(shown_point_.depth_mm, 0, 'f', 3)
-                              .arg(shown_point_.feed_mm_per_tooth, 0, 'f', 3));
+    view_->setStale(
+        context_.activeTool() != shown_tool_
+            ? tr("the run is of tool %1; the active tool is %2").arg(shown_tool_, context_.activeTool())
+            : tr("the run is of %1 rpm, %2, %3; the point moved")
+                  .arg(shown_point_.speed_rpm, 0, 'f', 0)
+                  .arg(context_.units()->shop().format(widgets::Quantity::Length, shown_point_.depth_mm),
+                       context_.units()->shop().format(widgets::Quantity::ChipLoad, shown_point_.feed_mm_per_tooth)));
   }
   rerun_timer_.start();
 }

@@ -109,7 +109,7 @@ void compareWithCliPoint(Report& report, const widgets::PointReadout& r, const Q
                {"feed", jsonNumber(cli, "feed_per_tooth_mm")},
                {"power", jsonNumber(cli, "peak_power_W")},
                {"force", jsonNumber(cli, "peak_force_N")},
-               {"mrr", jsonNumber(cli, "MRR_mm3_s")},
+               {"mrr", jsonNumber(cli, "MRR_mm3_s") * 0.06},  // shown in cm^3/min (metric shop units)
                {"blim", blim},
                {"dns", jsonNumber(cli, "delta_Ns_rpm")},
                {"ros", ros},

@@ -7,7 +7,9 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QGuiApplication>
 #include <QImage>
+#include <QScreen>
 #include <QTest>
 #include <QTimer>
 #include <functional>
@@ -19,6 +21,7 @@
 #include "e2e_window.h"
 #include "machining_feature.h"
 #include "pareto_feature.h"
+#include "shop_units_dialog.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "support/window_features.h"
@@ -46,6 +49,8 @@ struct Shot {
   const char* program = "";         // open this part program (in projects/)
   bool sdm = false;                 // semi-discretization lobes
   const char* fit = "";             // fit the tap test of this direction
+  bool inch = false;                // the Inch shop units (in, SFM, IPM, in/tooth, hp, lbf, in³/min)
+  bool preferences = false;         // Edit > Preferences... open over the window (a grab of the screen)
 };
 
 const Shot kShots[] = {
@@ -74,6 +79,11 @@ const Shot kShots[] = {
      .supervise = "smc2"},
     {.file = "tap-test.png", .project = "tap-test-example.mxproj", .fit = "x"},
     {.file = "tap-test-lobes-sdm.png", .project = "tap-test-example.mxproj", .sdm = true, .fit = "y"},
+    {.file = "shop-units-inch.png", .project = "rubio2006-tool-selection.mxproj", .inch = true},
+    {.file = "shop-units-settings.png",
+     .project = "rubio2006-tool-selection.mxproj",
+     .inch = true,
+     .preferences = true},
 };
 
 QString projectFile(const char* relative) {
@@ -93,6 +103,8 @@ void raiseDocks(gui::MainWindow& window, const QString& names) {
 void takeShot(Report& report, const Shot& shot, const QDir& folder) {
   std::unique_ptr<gui::MainWindow> owner = showWindow();
   gui::MainWindow& window = *owner;
+  // Each shot in its own units, whatever an earlier run left in the settings.
+  window.units()->setShop(shot.inch ? widgets::ShopUnits::inch() : widgets::ShopUnits::metric());
   gui::LobesFeature* lobes = test::lobesOf(window);
   gui::SimulationFeature* simulation = test::simulationOf(window);
   gui::ParetoFeature* pareto = test::paretoOf(window);
@@ -191,7 +203,15 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
       kShotMs, QString("%1: %2").arg(shot.file, waits.join(", ")));
   QTest::qWait(300);  // the last repaints (queued replots) before the grab
 
-  const QImage image = window.grab().toImage();
+  widgets::ShopUnitsDialog* preferences = shot.preferences ? window.openPreferences() : nullptr;
+  if (preferences) {
+    preferences->move(window.geometry().center() - preferences->rect().center());
+    QTest::qWait(300);
+  }
+  // The dialog is a window of its own: the screen holds both.
+  const QImage image = preferences ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
+                                   : window.grab().toImage();
+  if (preferences) preferences->reject();
   const QString path = folder.filePath(shot.file);
   report.check(QString("%1.saved").arg(shot.file), image.save(path), path);
   report.check(QString("%1.size").arg(shot.file), image.size() == QSize(1920, 1080),

@@ -161,6 +161,32 @@ class TestReportExport : public QObject {
     QVERIFY(readText(html).contains("(0.3, 0.625, 0.075)"));
   }
 
+  // The report in the GUI's shop units (millexpert-report --units): every unit-bearing head and value
+  // converts; bad units exit 2 before any work.
+  void reportInShopUnits() {
+    const mx::widgets::ShopUnits inch = mx::widgets::ShopUnits::inch();
+    const QString path = dir_.filePath("inch.html");
+    ReportWriter(*data_, inch).writeHtml(path, HtmlImages::Embedded);
+    const QString html = readText(path);
+    for (const char* head : {"q* b [in]", "q* s<sub>t</sub> [in/tooth]", "Peak power [hp]", "MRR [in\u00b3/min]",
+                             "D [in]", "axial depth b in in."})
+      QVERIFY2(html.contains(QString::fromUtf8(head)), head);
+    QVERIFY(!html.contains("[mm/tooth]") && !html.contains("[W]"));
+    const mx::ExpertPoint& q = data_->result.ranking.selected().q;
+    QVERIFY(html.contains(">" + inch.number(mx::widgets::Quantity::Length, q.depth_m * 1e3) + "<"));
+    QVERIFY(html.contains(">" + inch.number(mx::widgets::Quantity::Power, q.power_w) + "<"));
+
+    QProcess bad;
+    bad.start(reportExecutable(), {kRubio, "--html", dir_.filePath("bad-units.html"), "--units", "power=PS"});
+    QVERIFY(bad.waitForFinished(30000));
+    QCOMPARE(bad.exitCode(), 2);
+    const QString message = QString::fromUtf8(bad.readAllStandardError());
+    QVERIFY2(message.startsWith("millexpert-report: --units: units item 'power=PS': unknown power unit 'PS' "
+                                "(allowed: W, kW, hp)"),
+             qPrintable(message));
+    QVERIFY(!QFileInfo::exists(dir_.filePath("bad-units.html")));
+  }
+
   // The report's outputs are checked before any work (document/output_file.h): never the project, each
   // other, or a device, FIFO or directory; the folder is unchanged afterwards.
   void cliRefusesOutputsThatWouldDestroyInputs_data() {

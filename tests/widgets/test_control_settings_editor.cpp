@@ -35,7 +35,7 @@ class TestControlSettingsEditor : public QObject {
     QCOMPARE(editor.field("xi")->text(), QString("0.75"));
     QCOMPARE(editor.field("tr_periods")->text(), QString("4"));
     QCOMPARE(editor.field("tau_c_ms")->text(), QString("0"));
-    QCOMPARE(editor.field("feed_max_mm_s")->text(), QString("30"));
+    QCOMPARE(editor.field("feed_max_mm_s")->text(), QString("1800"));  // 30 mm/s in mm/min
     QCOMPARE(editor.field("force_reference_n")->text(), QString("1200"));
     QCOMPARE(editor.resetCombo()->currentIndex(), 1);
     QVERIFY(editor.field("reset_fraction")->isEnabled());
@@ -121,7 +121,7 @@ class TestControlSettingsEditor : public QObject {
                                            "Cutting time constant \u03c4_c [ms] (0 = default) = -1: must be in "
                                            "[0, 10000]");
     QTest::newRow("f_max 0") << "feed_max_mm_s"
-                             << "0" << false << 0.0 << "Feed limit f_max [mm/s] = 0: must be in (0, 10000]";
+                             << "0" << false << 0.0 << "Feed limit f_max [mm/min] = 0: must be in (0, 600000]";
     QTest::newRow("F_r 1200") << "force_reference_n"
                               << "1200" << true << 1200.0 << "";
     QTest::newRow("F_r -5") << "force_reference_n"

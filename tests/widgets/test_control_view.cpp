@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QImage>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
@@ -14,7 +15,9 @@
 
 #include "control_metrics_panel.h"
 #include "control_plots.h"
+#include "control_settings_editor.h"
 #include "control_view.h"
+#include "display_units.h"
 #include "jc_curve_plot.h"
 #include "pole_zero_plot.h"
 #include "test_registry.h"
@@ -199,7 +202,7 @@ class TestControlView : public QObject {
     QCOMPARE(all.rowCount(), 4);
     QCOMPARE(all.valueAxisLabel(0), QString("Force F [N]"));
     QCOMPARE(all.valueAxisLabel(1), QString("Error e [N]"));
-    QCOMPARE(all.valueAxisLabel(2), QString("Feed f [mm/s]"));
+    QCOMPARE(all.valueAxisLabel(2), QString("Feed f [mm/min]"));
     QCOMPARE(all.valueAxisLabel(3), QString("Estimates \u03b8 [\u2013]"));
     QCOMPARE(all.valueAxisLabel(4), QString());
     QCOMPARE(all.timeAxisLabel(), QString("Time t [s]"));
@@ -280,7 +283,7 @@ class TestControlView : public QObject {
     QCOMPARE(p->valueText("settling_time"), QString("0.4321"));
     QCOMPARE(p->valueText("jc"), QString("3.142"));
     QCOMPARE(p->valueText("max_force"), QString("1834"));
-    QCOMPARE(p->valueText("feed_range"), QString("0 to 30.00"));
+    QCOMPARE(p->valueText("feed_range"), QString("0 to 1800"));  // 30 mm/s in mm/min
     QVERIFY(p->warningShown());
     QVERIFY(p->valueText("warning").startsWith("Unstable zero"));
     m.unstable_zero = false;
@@ -398,6 +401,39 @@ class TestControlView : public QObject {
     view.show();
     QTest::qWait(200);
     QVERIFY(view.grab().save(dir + "/control_view.png"));
+  }
+
+  // Shop units: the force rows, the depth and the feed axis relabel, the traces and metrics convert.
+  void followsShopUnits() {
+    DisplayUnits units;
+    ControlView view;
+    view.setUnits(&units);
+    ControlTraces t;
+    t.t_s = {0.0, 0.1, 0.2};
+    t.reference_n = t.model_n = t.force_sampled_n = {444.82216152605, 444.82216152605, 444.82216152605};
+    t.error_n = {0.0, 0.0, 0.0};
+    t.feed_mm_s = {25.4 / 60.0, 25.4 / 60.0, 25.4 / 60.0};  // 1 IPM
+    view.setTraces(t);
+    ControlMetricsView m;
+    m.max_force_n = 1834.0;
+    m.min_feed_mm_s = 0.0;
+    m.max_feed_mm_s = 25.4;
+    view.setMetrics(m);
+    units.setShop(ShopUnits::inch());
+    ControlPlots* p = view.plots();
+    QCOMPARE(p->valueAxisLabel(0), QString("Force F [lbf]"));
+    QCOMPARE(p->valueAxisLabel(1), QString("Error e [lbf]"));
+    QCOMPARE(p->valueAxisLabel(2), QString("Feed f [IPM]"));
+    const auto force = p->valueRange(0);
+    QVERIFY2(force.first < 100.0 && force.second > 100.0 && force.second < 200.0,
+             qPrintable(QString("%1 .. %2").arg(force.first).arg(force.second)));  // 100 lbf inside
+    const auto feed = p->valueRange(2);
+    // 1 IPM and the default feed limit f_max = 30 mm/s = 70.9 IPM on the axis.
+    QVERIFY2(feed.first < 1.0 && feed.second > 70.9 && feed.second < 100.0,
+             qPrintable(QString("%1 .. %2").arg(feed.first).arg(feed.second)));
+    QCOMPARE(view.metricsPanel()->valueText("max_force"), QString("412.3"));
+    QCOMPARE(view.metricsPanel()->valueText("feed_range"), QString("0 to 60.00"));
+    QCOMPARE(view.settingsEditor()->field("force_reference_n")->text(), QString("269.771"));  // 1200 N
   }
 };
 

@@ -154,7 +154,7 @@ class TestMachineOperationPanel : public QObject {
 
   void inchUnits() {
     mx::widgets::DisplayUnits units;
-    units.setLength(mx::widgets::DisplayUnits::Length::Inch);
+    units.setShop(mx::widgets::ShopUnits::inch());
     MachineOperationPanel panel;
     panel.setUnits(&units);
     panel.setProject(mx::app::loadProject(kRubio));

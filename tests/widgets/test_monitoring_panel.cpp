@@ -2,12 +2,14 @@
 // non-finite values, the power limit and its alarm, the Rule 15 chip-ratio alarm and verdict, and the
 // peak table.
 #include <QApplication>
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
 #include <cmath>
 #include <limits>
 
+#include "display_units.h"
 #include "indicator_gauge.h"
 #include "monitoring_panel.h"
 #include "test_registry.h"
@@ -86,8 +88,8 @@ class TestMonitoringPanel : public QObject {
     panel.setValues(v);
     QCOMPARE(panel.valueText("peak_force_n"), QString("812.3"));
     QCOMPARE(panel.valueText("peak_power_w"), QString("1520 of 15000 W"));
-    QCOMPARE(panel.valueText("feed_velocity_mm_s"), QString("23.20"));
-    QCOMPARE(panel.valueText("mrr_cm3_s"), QString("2.041"));
+    QCOMPARE(panel.valueText("feed_velocity_mm_s"), QString("1392"));  // 23.2 mm/s in mm/min
+    QCOMPARE(panel.valueText("mrr_cm3_s"), QString("122.5"));          // 2.0412 cm³/s in cm³/min
     QCOMPARE(panel.valueText("tol_min"), QString("38.71"));
     QCOMPARE(panel.valueText("surf_um"), QString("0.8123"));
     QCOMPARE(panel.valueText("ros"), QString("0.3456"));
@@ -260,6 +262,31 @@ class TestMonitoringPanel : public QObject {
       if (l->text().endsWith(':')) names << l->text();
     QCOMPARE(names.size(), kKeys.size());
     for (const QString& n : names) QVERIFY2(n.contains('[') && n.contains(']'), qPrintable(n));
+  }
+
+  // Shop units: force, power, feed rate and MRR convert, and the peak table names the force unit.
+  void followsShopUnits() {
+    mx::widgets::DisplayUnits units;
+    MonitoringPanel panel;
+    panel.setUnits(&units);
+    MonitoringValues v;
+    v.peak_force_n = 812.3;
+    v.peak_power_w = 2745.3;
+    v.power_limit_w = 7456.99872;
+    v.feed_velocity_mm_s = 25.4;  // 1524 mm/min
+    v.mrr_cm3_s = 3.0;            // 180 cm³/min
+    panel.setValues(v);
+    panel.setPeaks({{668.0, 44.482216152605, "chatter", 0}});
+    units.setShop(mx::widgets::ShopUnits::inch());
+    QCOMPARE(panel.valueText("peak_force_n"), QString("182.6"));
+    QCOMPARE(panel.valueText("peak_power_w"), QString("3.682 of 10.00 hp"));
+    QCOMPARE(panel.valueText("feed_velocity_mm_s"), QString("60.00"));
+    QCOMPARE(panel.valueText("mrr_cm3_s"), QString("10.98"));
+    QCOMPARE(panel.peakTable()->horizontalHeaderItem(1)->text(), QString("Amplitude [lbf]"));
+    QCOMPARE(panel.peakTable()->item(0, 1)->text(), QString("10.00"));
+    auto* label = qobject_cast<QLabel*>(panel.findChild<QFormLayout*>()->labelForField(panel.valueLabel("mrr_cm3_s")));
+    QVERIFY(label);
+    QCOMPARE(label->text(), QString::fromUtf8("MRR [in³/min]:"));
   }
 };
 

@@ -1,6 +1,7 @@
 // The operating-point readout: the lobes' verdict (stable, marginal, unstable, over a limit), the
 // simulation of the same point beside it, and a note, when the two disagree, that shows both and says
 // the verdict follows the lobes. Marginal points carry no note: there the two may differ.
+#include "display_units.h"
 #include "operating_point_readout.h"
 #include "test_registry.h"
 
@@ -82,6 +83,36 @@ class TestOperatingPointReadout : public QObject {
     w.setSimulation({});
     QCOMPARE(w.agreementNote(), QString());
     QCOMPARE(w.text("simulation"), QString("not run for this point"));
+  }
+
+  // Shop units: every value converts and names its unit, and follows a change of the units at once.
+  void followsShopUnits() {
+    PointReadout r = readout(true, false);
+    r.feed_mm_per_tooth = 0.1;
+    r.surface_speed_m_min = 376.99;
+    r.feed_rate_mm_min = 1598.0;
+    r.peak_power_w = 2745.3;
+    r.power_limit_w = 7456.99872;
+    r.peak_force_n = 812.3;
+    r.mrr_mm3_per_s = 3000.0;  // 180 cm³/min
+    mx::widgets::DisplayUnits units;
+    OperatingPointReadout w;
+    w.setUnits(&units);
+    w.setReadout(r);
+    QCOMPARE(w.text("power"), QString("2745.3 W"));
+    QCOMPARE(w.text("mrr"), QString::fromUtf8("180.00 cm³/min"));
+    QCOMPARE(w.text("surface_speed"), QString("377.0 m/min"));
+    QCOMPARE(w.text("feed_rate"), QString("1598.0 mm/min"));
+    units.setShop(mx::widgets::ShopUnits::inch());
+    QCOMPARE(w.text("power"), QString("3.682 hp"));
+    QCOMPARE(w.text("power_fraction"), QString("36.8 % of 10.000 hp"));
+    QCOMPARE(w.text("force"), QString("182.6 lbf"));
+    QCOMPARE(w.text("depth"), QString("0.03965 in"));
+    QCOMPARE(w.text("feed"), QString("0.00394 in/tooth"));
+    QCOMPARE(w.text("surface_speed"), QString("1237 SFM"));
+    QCOMPARE(w.text("feed_rate"), QString("62.91 IPM"));
+    QCOMPARE(w.text("mrr"), QString::fromUtf8("10.984 in³/min"));
+    QCOMPARE(w.text("blim"), QString("0.03713 in"));
   }
 };
 

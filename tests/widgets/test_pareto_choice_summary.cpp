@@ -58,7 +58,7 @@ class TestParetoChoiceSummary : public QObject {
     s.binding = {"Rule 11 requirement: MRR >= 0.2375 cm\u00b3/s", "feed per tooth 0.31 mm would break the maximum"};
     panel.setSummary(s);
     const QString text = panel.pointLabel()->text();
-    for (const char* part : {"1220 rpm", "depth 0.433 mm", "0.300 mm/tooth", "MRR 0.2376", "ROS 0.668",
+    for (const char* part : {"1220 rpm", "depth 0.4328 mm", "0.3000 mm/tooth", "MRR 14.26 cm³/min", "ROS 0.668",
                              "Cost per part 12.50", "time per part 10.75 min"})
       QVERIFY2(text.contains(QString::fromUtf8(part)), qPrintable(text));
     QCOMPARE(panel.bindingLabel()->text().count(QChar(0x2022)), 2);

@@ -48,8 +48,8 @@ class TestParetoFrontView : public QObject {
     view.setPoints(samplePoints());
     QCOMPARE(view.xAxis(), Axis::Mrr);
     QCOMPARE(view.yAxis(), Axis::Tol);
-    QCOMPARE(view.plottedValue(3), QPointF(7.0, 30.0));
-    QVERIFY(view.xAxisLabel().contains(QString::fromUtf8("[cm³/s]")));
+    QCOMPARE(view.plottedValue(3), QPointF(420.0, 30.0));  // 7 cm³/s in cm³/min
+    QVERIFY(view.xAxisLabel().contains(QString::fromUtf8("[cm³/min]")));
     QVERIFY(view.yAxisLabel().contains("[min]"));
     QVERIFY(view.colourScaleLabel().contains(QString::fromUtf8("[µm]")));
 
@@ -64,11 +64,11 @@ class TestParetoFrontView : public QObject {
     QVERIFY(view.yAxisLabel().contains(QString::fromUtf8("[\u2013]")));
 
     view.colourCombo()->setCurrentIndex(static_cast<int>(Axis::Mrr));
-    QVERIFY(view.colourScaleLabel().contains(QString::fromUtf8("[cm³/s]")));
+    QVERIFY(view.colourScaleLabel().contains(QString::fromUtf8("[cm³/min]")));
 
     view.setAxes(Axis::Tol, Axis::Mrr, Axis::Ros);
     QCOMPARE(view.xCombo()->currentIndex(), 0);
-    QCOMPARE(view.plottedValue(1), QPointF(50.0, 3.0));
+    QCOMPARE(view.plottedValue(1), QPointF(50.0, 180.0));
     QCOMPARE(view.plottedValue(7), QPointF());
   }
 

@@ -11,6 +11,7 @@
 #include <QSignalSpy>
 #include <QTableView>
 
+#include "display_units.h"
 #include "part_program_panel.h"
 #include "test_registry.h"
 
@@ -99,14 +100,9 @@ class TestPartProgramPanel : public QObject {
     QFETCH(QString, unit);
     PartProgramPanel panel;
     loadSample(panel, unit);
-    const QStringList want = {"Line",
-                              "Block",
-                              QString("F [%1]").arg(unit),
-                              QString("F new [%1]").arg(unit),
-                              "S [rpm]",
-                              "S new [rpm]",
-                              "Depth [mm]",
-                              "Predicted force [N]",
+    // Shown in the shop units (metric without DisplayUnits), whatever the program's unit.
+    const QStringList want = {"Line",    "Block",       QString("F [mm/min]"), QString("F new [mm/min]"),
+                              "S [rpm]", "S new [rpm]", "Depth [mm]",          "Predicted force [N]",
                               "Reason"};
     QAbstractItemModel* m = panel.table()->model();
     for (int c = 0; c < want.size(); ++c) {
@@ -298,6 +294,29 @@ class TestPartProgramPanel : public QObject {
     QVERIFY(clock.elapsed() < 3000);
     emit panel.warningList()->itemDoubleClicked(panel.warningList()->item(0));
     QCOMPARE(panel.selectedLine(), 50000);
+  }
+
+  // Shop units: F in IPM, depth in in and force in lbf, whatever the program's unit; an inch program
+  // (F in in/min) shows in mm/min with metric units.
+  void followsShopUnits() {
+    mx::widgets::DisplayUnits units;
+    PartProgramPanel panel;
+    panel.setUnits(&units);
+    loadSample(panel);
+    units.setShop(mx::widgets::ShopUnits::inch());
+    QAbstractItemModel* m = panel.table()->model();
+    QCOMPARE(m->headerData(PartProgramPanel::kFeed, Qt::Horizontal).toString(), QString("F [IPM]"));
+    QCOMPARE(m->headerData(PartProgramPanel::kDepth, Qt::Horizontal).toString(), QString("Depth [in]"));
+    QCOMPARE(m->headerData(PartProgramPanel::kForce, Qt::Horizontal).toString(), QString("Predicted force [lbf]"));
+    QCOMPARE(cell(panel, 3, PartProgramPanel::kFeed), QString("47.24"));     // 1200 mm/min
+    QCOMPARE(cell(panel, 3, PartProgramPanel::kNewFeed), QString("35.43"));  // 900 mm/min
+    QCOMPARE(cell(panel, 4, PartProgramPanel::kNewFeed), QString("="));
+    QCOMPARE(cell(panel, 3, PartProgramPanel::kDepth), QString("0.07874"));
+    QCOMPARE(cell(panel, 3, PartProgramPanel::kForce), QString("182.6"));
+    units.setShop(mx::widgets::ShopUnits::metric());
+    loadSample(panel, "in/min");
+    QCOMPARE(cell(panel, 3, PartProgramPanel::kFeed), QString("30480"));  // 1200 in/min
+    QCOMPARE(panel.feedUnit(), QString("in/min"));
   }
 };
 

@@ -78,7 +78,7 @@ class TestRankingTable : public QObject {
     QCOMPARE(cell(t, 0, Model::Depth), QString("0.5048"));
     QCOMPARE(cell(t, 0, Model::Feed), QString("0.2700"));
     QCOMPARE(cell(t, 0, Model::Power), QString("745.0"));
-    QCOMPARE(cell(t, 0, Model::Mrr), QString("123456"));
+    QCOMPARE(cell(t, 0, Model::Mrr), QString("123.46"));  // cm³/min
     QCOMPARE(cell(t, 0, Model::Dns), QString("1014"));
     QCOMPARE(t.model()->index(2, Model::MrrTerm).data(Model::ValueRole).toDouble(), 0.7 + 0.2);
     // Unknown q** costs are a dash; known ones are numbers.
@@ -93,7 +93,7 @@ class TestRankingTable : public QObject {
     QCOMPARE(header(Model::Depth), QString("b* [mm]"));
     QCOMPARE(header(Model::Feed), QString("s_t* [mm/tooth]"));
     QCOMPARE(header(Model::Power), QString("P [W]"));
-    QCOMPARE(header(Model::Mrr), QString("MRR [mm\u00b3/min]"));
+    QCOMPARE(header(Model::Mrr), QString("MRR [cm\u00b3/min]"));
     QCOMPARE(header(Model::Dns), QString("\u0394N_s [rpm]"));
     for (int c = 0; c < Model::ColumnCount; ++c)
       QVERIFY(!t.model()->headerData(c, Qt::Horizontal, Qt::ToolTipRole).toString().isEmpty());

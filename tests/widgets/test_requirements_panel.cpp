@@ -34,8 +34,8 @@ class TestRequirementsPanel : public QObject {
     QCOMPARE(panel.objectiveCombo()->count(), 4);
     QCOMPARE(panel.objectiveCombo()->currentIndex(), 1);  // MRR
     QCOMPARE(panel.loSpin()->value(), 0.0);
-    QCOMPARE(panel.hiSpin()->value(), 1e4);
-    QVERIFY(!panel.loSpin()->isEnabled());  // off: bounds greyed out
+    QCOMPARE(panel.hiSpin()->value(), 6e5);  // 1e4 cm³/s, shown in cm³/min
+    QVERIFY(!panel.loSpin()->isEnabled());   // off: bounds greyed out
     QVERIFY(panel.autoWeightsButton()->isEnabled());
     QVERIFY(panel.statusLabel()->text().isEmpty());
   }
@@ -53,7 +53,7 @@ class TestRequirementsPanel : public QObject {
     QTest::newRow("MRR lo == hi") << 1 << 3.0 << 3.0 << 1 << 3.0 << 3.0;
     QTest::newRow("SURF edges") << 2 << 0.001 << 1000.0 << 2 << 0.001 << 1000.0;
     QTest::newRow("ROS") << 3 << 0.25 << 10.0 << 3 << 0.25 << 10.0;
-    QTest::newRow("MRR rounded to 4 decimals") << 1 << 0.12344 << 1.0 << 1 << 0.1234 << 1.0;
+    QTest::newRow("MRR kept exact though shown in cm³/min") << 1 << 0.12344 << 1.0 << 1 << 0.12344 << 1.0;
     QTest::newRow("lo > hi swapped") << 2 << 5.0 << 1.5 << 2 << 1.5 << 5.0;
     QTest::newRow("clamped to range") << 3 << -1.0 << 20.0 << 3 << 0.0 << 10.0;
     QTest::newRow("infinite hi: maximum") << 1 << 1.0 << kInf << 1 << 1.0 << 1e4;
@@ -97,6 +97,7 @@ class TestRequirementsPanel : public QObject {
     QTest::addColumn<double>("value");
     QTest::addColumn<double>("wantLo");
     QTest::addColumn<double>("wantHi");
+    // MRR in cm³/s; the spin boxes show cm³/min (60 times as much).
     QTest::newRow("lo above hi moves hi") << true << 3.0 << 3.0 << 3.0;
     QTest::newRow("lo equal to hi") << true << 2.0 << 2.0 << 2.0;
     QTest::newRow("lo inside") << true << 1.5 << 1.5 << 2.0;
@@ -113,11 +114,11 @@ class TestRequirementsPanel : public QObject {
     RequirementsPanel panel;
     panel.setRequirement(RequirementView{1, 1.0, 2.0});
     QSignalSpy changed(&panel, &RequirementsPanel::requirementChanged);
-    (editLower ? panel.loSpin() : panel.hiSpin())->setValue(value);
+    (editLower ? panel.loSpin() : panel.hiSpin())->setValue(60.0 * value);
     QCOMPARE(changed.count(), 1);
     QCOMPARE(panel.requirement(), std::optional<RequirementView>(RequirementView{1, wantLo, wantHi}));
-    QCOMPARE(panel.loSpin()->value(), wantLo);
-    QCOMPARE(panel.hiSpin()->value(), wantHi);
+    QCOMPARE(panel.loSpin()->value(), 60.0 * wantLo);
+    QCOMPARE(panel.hiSpin()->value(), 60.0 * wantHi);
   }
 
   void typedBoundCommitsOnEditingFinished() {
@@ -126,8 +127,8 @@ class TestRequirementsPanel : public QObject {
     QSignalSpy changed(&panel, &RequirementsPanel::requirementChanged);
     QVERIFY(!panel.loSpin()->keyboardTracking());
     panel.loSpin()->selectAll();
-    QTest::keyClicks(panel.loSpin(), "2.5");
-    QCOMPARE(changed.count(), 0);  // still typing
+    QTest::keyClicks(panel.loSpin(), "150");  // cm³/min: 2.5 cm³/s
+    QCOMPARE(changed.count(), 0);             // still typing
     QTest::keyClick(panel.loSpin(), Qt::Key_Return);
     QCOMPARE(changed.count(), 1);
     QCOMPARE(panel.requirement(), std::optional<RequirementView>(RequirementView{1, 2.5, 2.5}));
@@ -176,8 +177,8 @@ class TestRequirementsPanel : public QObject {
     QFETCH(double, maximum);
     RequirementsPanel panel;
     panel.setRequirement(RequirementView{1, 1.5, 2.5});
-    QCOMPARE(panel.loSpin()->suffix(), QString(" cm\u00b3/s"));
-    QCOMPARE(panel.loSpin()->decimals(), 4);
+    QCOMPARE(panel.loSpin()->suffix(), QString(" cm\u00b3/min"));
+    QCOMPARE(panel.loSpin()->decimals(), 3);
     QSignalSpy changed(&panel, &RequirementsPanel::requirementChanged);
     panel.objectiveCombo()->setCurrentIndex(objective);
     QCOMPARE(changed.count(), 1);
@@ -202,7 +203,7 @@ class TestRequirementsPanel : public QObject {
     panel.objectiveCombo()->setCurrentIndex(1);
     QCOMPARE(changed.count(), 2);
     QCOMPARE(panel.requirement(), std::optional<RequirementView>(RequirementView{1, 1.5, 2.5}));
-    QCOMPARE(panel.loSpin()->suffix(), QString(" cm\u00b3/s"));
+    QCOMPARE(panel.loSpin()->suffix(), QString(" cm\u00b3/min"));
   }
 
   void status_data() {

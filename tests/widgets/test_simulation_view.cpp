@@ -121,7 +121,7 @@ class TestSimulationView : public QObject {
     shallower.suggested_depth_mm = 0.912;
     shallower.suggestion_note = "No speed in 800-5800 rpm is stable at 1.206 mm";
     view.setSummary(shallower);
-    QCOMPARE(view.suggestedSpeedText(), QString("Move to 3400 rpm, b = 0.912 mm"));
+    QCOMPARE(view.suggestedSpeedText(), QString("Move to 3400 rpm, b = 0.9120 mm"));
     QCOMPARE(view.suggestionNote(), shallower.suggestion_note);
     QTest::mouseClick(button, Qt::LeftButton);
     QCOMPARE(move.size(), 2);
