@@ -73,7 +73,8 @@ ToolSpec withPayload(const ToolSpec& mapped, const QJsonObject& payload, const Q
 
 QString sideFilePath(const QString& libraryPath) {
   const QFileInfo info(libraryPath);
-  return info.dir().filePath(info.completeBaseName() + ".millexpert.json");
+  const QString name = info.completeBaseName() + ".millexpert.json";
+  return libraryPath.contains(u'/') ? info.dir().filePath(name) : name;
 }
 
 QByteArray writeSideFile(const std::vector<ToolSpec>& tools) {
