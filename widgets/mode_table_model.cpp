@@ -3,8 +3,8 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-#include "range_delegate.h"
 #include "document/project_validation.h"
+#include "range_delegate.h"
 
 namespace mx::widgets {
 

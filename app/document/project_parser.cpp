@@ -138,8 +138,8 @@ std::vector<CuttingPresetSpec> readCuttingData(const ObjectReader& tool) {
     p.feed_mm_min = r.optionalNumber("feed_mm_min");
     p.axial_depth_mm = r.optionalNumber("axial_depth_mm");
     p.radial_depth_mm = r.optionalNumber("radial_depth_mm");
-    p.unknown = withoutKeys(r.object(), {"name", "speed_rpm", "surface_speed_m_min", "feed_per_tooth_mm",
-                                         "feed_mm_min", "axial_depth_mm", "radial_depth_mm"});
+    p.unknown = withoutKeys(r.object(), {"name", "speed_rpm", "surface_speed_m_min", "feed_per_tooth_mm", "feed_mm_min",
+                                         "axial_depth_mm", "radial_depth_mm"});
     presets.push_back(p);
   }
   return presets;
@@ -182,10 +182,11 @@ ToolSpec readTool(const ObjectReader& r) {
   t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
   t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
   readCamGeometry(r, t);
-  t.unknown = withoutKeys(r.object(), {"id", "teeth", "diameter_mm", "helix_deg", "pitch_deg", "runout_um", "Kt_N_mm2",
-                                       "Kr", "radial_depth_mm", "max_force_N", "modes_x", "modes_y", "frf_x", "frf_y",
-                                       "type", "flute_length_mm", "overall_length_mm", "stickout_mm",
-                                       "corner_radius_mm", "cutting_data", "origin"});
+  t.unknown = withoutKeys(
+      r.object(),
+      {"id",   "teeth",           "diameter_mm",       "helix_deg",   "pitch_deg",        "runout_um",    "Kt_N_mm2",
+       "Kr",   "radial_depth_mm", "max_force_N",       "modes_x",     "modes_y",          "frf_x",        "frf_y",
+       "type", "flute_length_mm", "overall_length_mm", "stickout_mm", "corner_radius_mm", "cutting_data", "origin"});
   return t;
 }
 
@@ -237,7 +238,9 @@ Project projectFromJson(const QJsonObject& root) {
   return p;
 }
 
-ToolSpec toolFromJson(const QJsonObject& object, const QString& path) { return readTool(ObjectReader(object, path)); }
+ToolSpec toolFromJson(const QJsonObject& object, const QString& path) {
+  return readTool(ObjectReader(object, path));
+}
 
 std::vector<ToolSpec> toolsFromJson(const QByteArray& text) {
   QJsonParseError parse{};

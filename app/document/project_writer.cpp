@@ -191,7 +191,9 @@ void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>
 
 }  // namespace
 
-QJsonObject toolToJson(const ToolSpec& tool) { return toolJson(tool); }
+QJsonObject toolToJson(const ToolSpec& tool) {
+  return toolJson(tool);
+}
 
 QJsonObject projectToJson(const Project& project) {
   QJsonObject root = project.document;

@@ -7,12 +7,12 @@
 #include <cstdint>
 
 #include "fuzz_check.h"
-#include "tool_checks.h"
 #include "services/tool_formats/tool_library_csv.h"
+#include "tool_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using mx::fuzz::require;
   using mx::app::ToolLibraryCsv;
+  using mx::fuzz::require;
   const auto file = ToolLibraryCsv::fromJson(QByteArray(reinterpret_cast<const char*>(data), qsizetype(size)));
   if (!file.ok()) {
     require(file.tools.empty(), "a refused file gives no tools");

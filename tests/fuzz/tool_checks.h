@@ -17,8 +17,8 @@ inline void requireFiniteTool(const app::ToolSpec& t) {
                         t.stickout_mm, t.corner_radius_mm})
     if (v) requireFinite(*v, what);
   for (const app::CuttingPresetSpec& p : t.cutting_data)
-    for (const auto& v : {p.speed_rpm, p.surface_speed_m_min, p.feed_per_tooth_mm, p.feed_mm_min, p.axial_depth_mm,
-                          p.radial_depth_mm})
+    for (const auto& v :
+         {p.speed_rpm, p.surface_speed_m_min, p.feed_per_tooth_mm, p.feed_mm_min, p.axial_depth_mm, p.radial_depth_mm})
       if (v) requireFinite(*v, what);
   for (const auto& list : {t.pitch_deg, t.runout_um})
     if (list)
