@@ -37,9 +37,9 @@ constexpr ColumnSpec kColumns[HistoryView::ColumnCount] = {
     {"w_SURF [\u2013]", "Pareto weight of the roughness (2006 point: c3)"},
     {"w_ROS [\u2013]", "Pareto weight of the robustness (empty for a 2006 point)"},
     {"Speed [rpm]", "Spindle speed N of the programmed point"},
-    {"Depth [mm]", "Axial depth of cut b of the programmed point"},
-    {"Feed [mm/tooth]", "Feed per tooth s_t of the programmed point"},
-    {"MRR [cm\u00b3/s]", "Material removal rate of the programmed point"},
+    {"Depth [%1]", "Axial depth of cut b of the programmed point"},  // %1: the shop unit of the column
+    {"Feed [%1]", "Feed per tooth s_t of the programmed point"},
+    {"MRR [%1]", "Material removal rate of the programmed point"},
     {"TOL [min]", "Tool life (Taylor model, eq. 10)"},
     {"SURF [\u00b5m]", "Surface roughness (eq. 12)"},
     {"ROS [\u2013]", "Robustness: normalised distance to the stability boundary (eq. 13)"},
@@ -58,7 +58,7 @@ HistoryView::HistoryView(QWidget* parent)
       tool_(new QComboBox(this)),
       material_(new QComboBox(this)),
       source_(new QComboBox(this)),
-      mrr_box_(new QCheckBox(tr("MRR [cm\u00b3/s]"), this)),
+      mrr_box_(new QCheckBox(this)),
       mrr_lo_(new QDoubleSpinBox(this)),
       mrr_hi_(new QDoubleSpinBox(this)),
       table_(new QTableWidget(0, ColumnCount, this)),
@@ -84,9 +84,7 @@ HistoryView::HistoryView(QWidget* parent)
   source_->setToolTip(
       tr("Show only the points chosen by the operator, the expert system (automatic), the "
          "operator rules (rule) or the chatter feedback (feedback)."));
-  mrr_box_->setToolTip(tr("Show only the points whose material removal rate lies in [lower, upper] cm\u00b3/s."));
-  mrr_lo_->setToolTip(tr("Lower MRR bound [cm\u00b3/s] (inclusive); above the upper bound it moves that bound."));
-  mrr_hi_->setToolTip(tr("Upper MRR bound [cm\u00b3/s] (inclusive); below the lower bound it moves that bound."));
+
   apply_->setToolTip(
       tr("Use the selected point's Pareto weights (TOL, MRR, SURF, ROS) for the next selection. "
          "Double-clicking a row does the same. Disabled for 2006 points (three cost weights)."));
@@ -101,19 +99,11 @@ HistoryView::HistoryView(QWidget* parent)
   for (const char* s : kSources) sources << QString::fromLatin1(s);
   setChoices(source_, sources);
   for (QDoubleSpinBox* spin : {mrr_lo_, mrr_hi_}) {
-    spin->setRange(0.0, 1e4);
-    spin->setDecimals(4);
-    spin->setSingleStep(0.1);
-    spin->setSuffix(QStringLiteral(" cm\u00b3/s"));
+    spin->setSingleStep(1.0);
     spin->setKeyboardTracking(false);
     spin->setEnabled(false);
   }
-  mrr_hi_->setValue(100.0);
-
-  QStringList headers;
-  for (const ColumnSpec& c : kColumns) headers << tr(c.header);
-  table_->setHorizontalHeaderLabels(headers);
-  for (int c = 0; c < ColumnCount; ++c) table_->horizontalHeaderItem(c)->setToolTip(tr(kColumns[c].tip));
+  refreshUnits();
   table_->setToolTip(
       tr("Programmed points, newest first. Select a row and press \"Apply these weights\", or "
          "double-click it, to reuse its weights."));
@@ -201,14 +191,68 @@ void HistoryView::setMaterialChoices(const QStringList& materials) {
   setChoices(material_, materials);
 }
 
+void HistoryView::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &HistoryView::refreshUnits);
+  refreshUnits();
+}
+
+// The headers, the MRR band and the rows in the shop units; the filter itself does not change.
+void HistoryView::refreshUnits() {
+  if (band_shown_) band_ = {mrrFromSpin(mrr_lo_, band_[0]), mrrFromSpin(mrr_hi_, band_[1])};  // in the old units
+  band_shown_ = true;
+  shown_units_ = DisplayUnits::of(units_);
+  const ShopUnits& u = shown_units_;
+  const QString mrr = u.symbol(Quantity::RemovalRate);
+  QStringList headers;
+  for (int c = 0; c < ColumnCount; ++c) {
+    const QString header = tr(kColumns[c].header);
+    headers << (c == DepthColumn  ? header.arg(u.symbol(Quantity::Length))
+                : c == FeedColumn ? header.arg(u.symbol(Quantity::ChipLoad))
+                : c == MrrColumn  ? header.arg(mrr)
+                                  : header);
+  }
+  table_->setHorizontalHeaderLabels(headers);
+  for (int c = 0; c < ColumnCount; ++c) table_->horizontalHeaderItem(c)->setToolTip(tr(kColumns[c].tip));
+  mrr_box_->setText(tr("MRR [%1]").arg(mrr));
+  mrr_box_->setToolTip(tr("Show only the points whose material removal rate lies in [lower, upper] %1.").arg(mrr));
+  mrr_lo_->setToolTip(tr("Lower MRR bound [%1] (inclusive); above the upper bound it moves that bound.").arg(mrr));
+  mrr_hi_->setToolTip(tr("Upper MRR bound [%1] (inclusive); below the lower bound it moves that bound.").arg(mrr));
+  for (QDoubleSpinBox* spin : {mrr_lo_, mrr_hi_}) {
+    const QSignalBlocker block(spin);
+    spin->setDecimals(u.decimals(Quantity::RemovalRate) + 1);
+    spin->setRange(0.0, shownMrr(kMaxMrrCm3S));
+    spin->setSuffix(" " + mrr);
+  }
+  {
+    const QSignalBlocker blockLo(mrr_lo_), blockHi(mrr_hi_);
+    mrr_lo_->setValue(shownMrr(band_[0]));
+    mrr_hi_->setValue(shownMrr(band_[1]));
+  }
+  setRows(QVector<HistoryRow>(rows_));
+}
+
+// In the units the band and the rows are shown in (those of the last refreshUnits()).
+double HistoryView::shownMrr(double cm3_s) const {
+  return shown_units_.fromBase(Quantity::RemovalRate, cm3PerMinFromCm3PerS(cm3_s));
+}
+
+// A bound in cm³/s: `stored` while the box still shows it (a unit conversion would move it).
+double HistoryView::mrrFromSpin(const QDoubleSpinBox* spin, double stored) const {
+  const int d = spin->decimals();
+  if (QString::number(spin->value(), 'f', d) == QString::number(shownMrr(stored), 'f', d)) return stored;
+  return cm3PerSFromCm3PerMin(shown_units_.toBase(Quantity::RemovalRate, spin->value()));
+}
+
 HistoryFilter HistoryView::filter() const {
   HistoryFilter f;
   f.tool = tool_->currentData().toString();
   f.material = material_->currentData().toString();
   f.source = source_->currentData().toString();
   if (mrr_box_->isChecked()) {
-    f.mrr_lo = mrr_lo_->value();
-    f.mrr_hi = mrr_hi_->value();
+    f.mrr_lo = mrrFromSpin(mrr_lo_, band_[0]);
+    f.mrr_hi = mrrFromSpin(mrr_hi_, band_[1]);
   }
   return f;
 }
@@ -226,8 +270,9 @@ void HistoryView::setFilter(const HistoryFilter& f) {
     mrr_lo_->setEnabled(band);
     mrr_hi_->setEnabled(band);
     if (band) {
-      mrr_lo_->setValue(std::min(*f.mrr_lo, *f.mrr_hi));
-      mrr_hi_->setValue(std::max(*f.mrr_lo, *f.mrr_hi));
+      band_ = {std::min(*f.mrr_lo, *f.mrr_hi), std::max(*f.mrr_lo, *f.mrr_hi)};
+      mrr_lo_->setValue(shownMrr(band_[0]));
+      mrr_hi_->setValue(shownMrr(band_[1]));
     }
   }
   last_filter_ = filter();
@@ -254,6 +299,7 @@ void HistoryView::setRows(const QVector<HistoryRow>& rows) {
   const bool had_selection = selected >= 0;
   const qint64 selected_id = had_selection ? rows_[selected].id : 0;
   rows_ = rows;
+  const ShopUnits& units = shown_units_;
   {
     const QSignalBlocker block(table_->selectionModel());
     table_->clearSelection();
@@ -269,9 +315,9 @@ void HistoryView::setRows(const QVector<HistoryRow>& rows) {
       for (int i = 0; i < std::min<int>(4, static_cast<int>(h.weights.size())); ++i)
         cells[WeightColumn0 + i] = fixed(h.weights[i], 3);
       cells[SpeedColumn] = fixed(h.speed_rpm, 0);
-      cells[DepthColumn] = fixed(h.depth_mm, 3);
-      cells[FeedColumn] = fixed(h.feed_mm_per_tooth, 4);
-      cells[MrrColumn] = MonitoringPanel::formatNumber(h.mrr_cm3_s);
+      cells[DepthColumn] = units.number(Quantity::Length, h.depth_mm);
+      cells[FeedColumn] = units.number(Quantity::ChipLoad, h.feed_mm_per_tooth);
+      cells[MrrColumn] = MonitoringPanel::formatNumber(shownMrr(h.mrr_cm3_s));
       cells[TolColumn] = MonitoringPanel::formatNumber(h.tol);
       cells[SurfColumn] = MonitoringPanel::formatNumber(h.surf);
       cells[RosColumn] = MonitoringPanel::formatNumber(h.ros);

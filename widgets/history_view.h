@@ -7,13 +7,18 @@
 // Signals: filterChanged() exactly once per user change of the filter widgets (combo chosen, MRR box
 // toggled, MRR bound edited while the box is checked); setFilter() and the set*Choices() emit nothing.
 // applyWeightsRequested() from the "Apply these weights" button or a double-click on a row, only for a
-// row whose weights are the four Pareto weights (TOL, MRR, SURF, ROS).
+// row whose weights are the four Pareto weights (TOL, MRR, SURF, ROS). Depth, feed per tooth and MRR
+// (table and band) are shown in the shop units of setUnits(); rows and filter stay in mm and cm³/s.
 #include <QMetaType>
+#include <QPointer>
 #include <QString>
 #include <QStringList>
 #include <QVector>
 #include <QWidget>
+#include <array>
 #include <optional>
+
+#include "display_units.h"
 
 class QCheckBox;
 class QComboBox;
@@ -58,7 +63,10 @@ class HistoryView : public QWidget {
     ColumnCount
   };
 
+  static constexpr double kMaxMrrCm3S = 1e4;  // the largest MRR bound
+
   explicit HistoryView(QWidget* parent = nullptr);
+  void setUnits(DisplayUnits* units);  // nullptr: metric
 
   void setRows(const QVector<HistoryRow>& rows);  // shown newest first as given; keeps the selection by id
   const QVector<HistoryRow>& rows() const { return rows_; }
@@ -94,7 +102,14 @@ class HistoryView : public QWidget {
   void emitIfChanged();
   void requestApply(int row);
   void updateButtons();
+  void refreshUnits();
+  double shownMrr(double cm3_s) const;
+  double mrrFromSpin(const QDoubleSpinBox* spin, double stored) const;
 
+  QPointer<DisplayUnits> units_;
+  std::array<double, 2> band_{0.0, 100.0};  // the MRR band last set or shown [cm³/s]
+  bool band_shown_ = false;                 // the spin boxes show band_ (after the first refreshUnits)
+  ShopUnits shown_units_;                   // the units the band and the rows are shown in
   QVector<HistoryRow> rows_;
   HistoryFilter last_filter_;
   QComboBox* tool_;

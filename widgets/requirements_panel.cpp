@@ -53,9 +53,10 @@ QColor warningColor() {
 
 }  // namespace
 
+// In the units the spin boxes show (those of the last applyObjective()).
 double RequirementsPanel::toShown(int objective, double value) const {
   if (objective != kMrr) return value;
-  return DisplayUnits::of(units_).fromBase(Quantity::RemovalRate, cm3PerMinFromCm3PerS(value));
+  return shown_units_.fromBase(Quantity::RemovalRate, cm3PerMinFromCm3PerS(value));
 }
 
 // The spin box's value in RequirementView units; `stored` when the box still shows it (a unit
@@ -64,11 +65,11 @@ double RequirementsPanel::fromShown(int objective, const QDoubleSpinBox* spin, d
   const int d = spin->decimals();
   if (QString::number(spin->value(), 'f', d) == QString::number(toShown(objective, stored), 'f', d)) return stored;
   if (objective != kMrr) return spin->value();
-  return cm3PerSFromCm3PerMin(DisplayUnits::of(units_).toBase(Quantity::RemovalRate, spin->value()));
+  return cm3PerSFromCm3PerMin(shown_units_.toBase(Quantity::RemovalRate, spin->value()));
 }
 
 QString RequirementsPanel::shownUnit(int objective) const {
-  return objective == kMrr ? DisplayUnits::of(units_).symbol(Quantity::RemovalRate) : unit(objective);
+  return objective == kMrr ? shown_units_.symbol(Quantity::RemovalRate) : unit(objective);
 }
 
 void RequirementsPanel::setUnits(DisplayUnits* units) {
@@ -79,11 +80,12 @@ void RequirementsPanel::setUnits(DisplayUnits* units) {
 }
 
 void RequirementsPanel::refreshUnits() {
+  if (validObjective(shown_objective_)) storeShownBounds();  // in the units shown so far
+  shown_units_ = DisplayUnits::of(units_);
   const QSignalBlocker block(objective_);
   objective_->setItemText(kMrr, QString("%1 [%2]").arg(tr(kObjectives[kMrr].name), shownUnit(kMrr)));
   if (!validObjective(shown_objective_)) return;
   const int objective = shown_objective_;
-  storeShownBounds();
   shown_objective_ = -1;  // applyObjective() must not store them again
   applyObjective(objective);
 }
@@ -236,7 +238,7 @@ void RequirementsPanel::applyObjective(int objective) {
   const QSignalBlocker blockHi(hi_);
   for (QDoubleSpinBox* spin : {lo_, hi_}) {
     // MRR: one decimal more than a readout, so that a typed bound keeps the resolution of cm³/s.
-    spin->setDecimals(mrr ? DisplayUnits::of(units_).decimals(Quantity::RemovalRate) + 1 : s.decimals);
+    spin->setDecimals(mrr ? shown_units_.decimals(Quantity::RemovalRate) + 1 : s.decimals);
     spin->setRange(0.0, toShown(objective, s.max));
     spin->setSingleStep(mrr ? 1.0 : s.step);
     spin->setSuffix(u.isEmpty() || u == QStringLiteral("\u2013") ? QString() : " " + u);

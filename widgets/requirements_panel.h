@@ -87,6 +87,7 @@ class RequirementsPanel : public QWidget {
   QPushButton* auto_;
   QLabel* status_;
   QPointer<DisplayUnits> units_;
+  ShopUnits shown_units_;  // the units the MRR bounds are shown in (DisplayUnits' after refreshUnits())
   // The bounds last shown for each objective (RequirementView units), restored when the user switches
   // back to it.
   std::array<std::array<double, 2>, kObjectiveCount> bounds_{};

@@ -94,6 +94,7 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
   summary_->setUnits(context.units());
   front_view_->setUnits(context.units());
   monitoring_->setUnits(context.units());
+  history_->setUnits(context.units());
   buildDocks(window);
   rebuild_timer_.setSingleShot(true);
   rebuild_timer_.setInterval(120);

@@ -14,6 +14,7 @@
 #include <QTableWidget>
 #include <limits>
 
+#include "display_units.h"
 #include "history_view.h"
 #include "test_registry.h"
 
@@ -59,7 +60,7 @@ class TestHistoryView : public QObject {
     HistoryView view;
     const QStringList want = {"Time",           "Tool",           "Material",        "Source",
                               "w_TOL [\u2013]", "w_MRR [\u2013]", "w_SURF [\u2013]", "w_ROS [\u2013]",
-                              "Speed [rpm]",    "Depth [mm]",     "Feed [mm/tooth]", "MRR [cm\u00b3/s]",
+                              "Speed [rpm]",    "Depth [mm]",     "Feed [mm/tooth]", "MRR [cm\u00b3/min]",
                               "TOL [min]",      "SURF [\u00b5m]", "ROS [\u2013]"};
     QCOMPARE(view.table()->columnCount(), want.size());
     for (int c = 0; c < want.size(); ++c) {
@@ -84,9 +85,9 @@ class TestHistoryView : public QObject {
                                                  "0.100",
                                                  "0.200",
                                                  "4540",
-                                                 "1.760",
+                                                 "1.7600",
                                                  "0.1100",
-                                                 "2.041",
+                                                 "122.5",
                                                  "38.71",
                                                  "0.8123",
                                                  "0.3456"};
@@ -100,9 +101,9 @@ class TestHistoryView : public QObject {
                                                             "0.075",
                                                             "",
                                                             "4540",
-                                                            "1.760",
+                                                            "1.7600",
                                                             "0.1100",
-                                                            "2.041",
+                                                            "122.5",  // 2.0412 cm³/s in cm³/min
                                                             kDash,
                                                             "0.8123",
                                                             "0.3456"};
@@ -184,11 +185,12 @@ class TestHistoryView : public QObject {
     HistoryFilter start;
     start.tool = "R1";
     view.setFilter(start);
+    // The band in cm³/s; the spin boxes show cm³/min (60 times as much).
     view.mrrLoSpin()->blockSignals(true);
-    view.mrrLoSpin()->setValue(1.0);
+    view.mrrLoSpin()->setValue(60.0);
     view.mrrLoSpin()->blockSignals(false);
     view.mrrHiSpin()->blockSignals(true);
-    view.mrrHiSpin()->setValue(3.0);
+    view.mrrHiSpin()->setValue(180.0);
     view.mrrHiSpin()->blockSignals(false);
     if (action == EditMrrLo || action == EditMrrHi) view.mrrBox()->setChecked(true);
     QSignalSpy changed(&view, &HistoryView::filterChanged);
@@ -207,10 +209,10 @@ class TestHistoryView : public QObject {
         view.mrrBox()->click();
         break;
       case EditMrrLo:
-        view.mrrLoSpin()->setValue(value);
+        view.mrrLoSpin()->setValue(60.0 * value);
         break;
       case EditMrrHi:
-        view.mrrHiSpin()->setValue(value);
+        view.mrrHiSpin()->setValue(60.0 * value);
         break;
     }
     HistoryFilter want;
@@ -360,14 +362,40 @@ class TestHistoryView : public QObject {
     QCOMPARE(view.statusLabel()->text(), status);
   }
 
+  // Shop units: the columns and the band convert, the filter stays in cm³/s and keeps its bounds.
+  void followsShopUnits() {
+    mx::widgets::DisplayUnits units;
+    HistoryView view;
+    view.setUnits(&units);
+    view.setRows(sampleRows());
+    HistoryFilter f;
+    f.mrr_lo = 0.12345;
+    f.mrr_hi = 2.5;
+    view.setFilter(f);
+    QSignalSpy changed(&view, &HistoryView::filterChanged);
+    units.setShop(mx::widgets::ShopUnits::inch());
+    QCOMPARE(changed.count(), 0);
+    QCOMPARE(view.filter(), f);
+    QCOMPARE(view.mrrLoSpin()->suffix(), QString::fromUtf8(" in³/min"));
+    QCOMPARE(view.mrrHiSpin()->value(), 9.1536);  // 2.5 cm³/s = 150 cm³/min, 4 decimals
+    QCOMPARE(view.table()->horizontalHeaderItem(HistoryView::DepthColumn)->text(), QString("Depth [in]"));
+    QCOMPARE(view.table()->item(0, HistoryView::DepthColumn)->text(), QString("0.06929"));
+    QCOMPARE(view.table()->item(0, HistoryView::FeedColumn)->text(), QString("0.00433"));
+    QCOMPARE(view.table()->item(0, HistoryView::MrrColumn)->text(), QString("7.474"));
+    view.mrrHiSpin()->setValue(6.1024);  // 100 cm³/min
+    QCOMPARE(changed.count(), 1);
+    QVERIFY(std::abs(*view.filter().mrr_hi - 6.1024 * 16.387064 / 60.0) < 1e-12);
+    QCOMPARE(*view.filter().mrr_lo, 0.12345);
+  }
+
   void everyControlHasATooltip() {
     HistoryView view;
     for (QWidget* w : std::initializer_list<QWidget*>{view.table(), view.applyButton(), view.refreshButton(),
                                                       view.toolCombo(), view.materialCombo(), view.sourceCombo(),
                                                       view.mrrBox(), view.mrrLoSpin(), view.mrrHiSpin()})
       QVERIFY2(!w->toolTip().isEmpty(), qPrintable(w->objectName()));
-    QCOMPARE(view.mrrLoSpin()->suffix(), QString(" cm\u00b3/s"));
-    QVERIFY(view.mrrBox()->text().contains("[cm\u00b3/s]"));
+    QCOMPARE(view.mrrLoSpin()->suffix(), QString(" cm\u00b3/min"));
+    QVERIFY(view.mrrBox()->text().contains("[cm\u00b3/min]"));
   }
 };
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "display_units.h"
 #include "indicator_gauge.h"
 #include "requirements_panel.h"
 #include "test_registry.h"
@@ -204,6 +205,28 @@ class TestRequirementsPanel : public QObject {
     QCOMPARE(changed.count(), 2);
     QCOMPARE(panel.requirement(), std::optional<RequirementView>(RequirementView{1, 1.5, 2.5}));
     QCOMPARE(panel.loSpin()->suffix(), QString(" cm\u00b3/min"));
+  }
+
+  // Shop units: the MRR bounds show in the unit chosen, and a change of units keeps them exactly.
+  void followsShopUnits() {
+    mx::widgets::DisplayUnits units;
+    RequirementsPanel panel;
+    panel.setUnits(&units);
+    const RequirementView r{1, 0.12345, 2.5};  // cm³/s
+    panel.setRequirement(r);
+    QCOMPARE(panel.hiSpin()->value(), 150.0);  // cm³/min
+    units.setShop(mx::widgets::ShopUnits::inch());
+    QCOMPARE(panel.loSpin()->suffix(), QString::fromUtf8(" in³/min"));
+    QCOMPARE(panel.hiSpin()->decimals(), 4);
+    QCOMPARE(panel.hiSpin()->value(), 9.1536);
+    QCOMPARE(panel.objectiveCombo()->itemText(1), QString::fromUtf8("MRR [in³/min]"));
+    QCOMPARE(panel.requirement(), std::optional<RequirementView>(r));
+    units.setShop(mx::widgets::ShopUnits::metric());
+    QCOMPARE(panel.requirement(), std::optional<RequirementView>(r));
+    QSignalSpy changed(&panel, &RequirementsPanel::requirementChanged);
+    panel.hiSpin()->setValue(60.0);  // 1 cm³/s
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(panel.requirement(), std::optional<RequirementView>(RequirementView{1, 0.12345, 1.0}));
   }
 
   void status_data() {
