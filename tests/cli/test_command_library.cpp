@@ -177,6 +177,9 @@ class TestCommandLibrary : public QObject {
     QTest::newRow("freecad") << "freecad"
                              << "shop"
                              << "shop/Library/shop.fctl";
+    QTest::newRow("freecad, the exported folder") << "freecad"
+                                                  << "shop"
+                                                  << "shop";
     QTest::newRow("linuxcnc") << "linuxcnc"
                               << "tool.tbl"
                               << "tool.tbl";

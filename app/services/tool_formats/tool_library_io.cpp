@@ -41,8 +41,11 @@ QString toolLibraryError(const QString& file, const QString& tool, const QString
 QJsonObject dynamicsPayload(const ToolSpec& tool) {
   const QJsonObject json = toolToJson(tool);
   QJsonObject payload;
-  for (const QString& key : ownedKeys())
-    if (json.contains(key)) payload.insert(key, json.value(key));
+  for (const QString& key : ownedKeys()) {
+    const QJsonValue value = json.value(key);
+    // A rigid axis (no modes) is what every format gives already.
+    if (!value.isUndefined() && !(value.isArray() && value.toArray().isEmpty())) payload.insert(key, value);
+  }
   if (tool.helix_deg != 0.0) payload.insert("helix_deg", json.value("helix_deg"));
   return payload;
 }

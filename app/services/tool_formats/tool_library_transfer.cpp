@@ -118,6 +118,7 @@ const QStringList& toolLibraryFormatNames() {
 }
 
 ToolLibraryFormat guessImportFormat(const QString& path) {
+  if (QFileInfo(path).isDir()) return ToolLibraryFormat::FreeCad;  // an exported Library/ + Bit/ folder
   const QByteArray bytes = readLibraryFile(path, kCamToolLibraryFileLimit);
   if (bytes.startsWith("PK\x03\x04")) return ToolLibraryFormat::Fusion;
   if (const std::optional<ToolLibraryFormat> json = jsonFormat(bytes)) return *json;
