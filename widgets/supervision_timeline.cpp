@@ -81,10 +81,8 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
   QCPAxis* t_top = signals_rect_->axis(QCPAxis::atBottom);
   QCPAxis* f_axis = signals_rect_->axis(QCPAxis::atLeft);
   QCPAxis* p_axis = signals_rect_->axis(QCPAxis::atRight);
-  f_axis->setLabel(tr("Force F_Y [N]"));
   f_axis->setLabelColor(kForce);
   p_axis->setVisible(true);
-  p_axis->setLabel(tr("Spindle power P [W]"));
   p_axis->setLabelColor(kPower.darker(130));
   auto add = [&](QCPAxis* value, const QString& name, const QPen& pen) {
     QCPGraph* g = plot_->addGraph(t_top, value);
@@ -95,10 +93,11 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
     g->addToLegend(legend);
     return g;
   };
-  force_ = add(f_axis, tr("F_Y = max |F_y| per revolution [N]"), QPen(kForce, 1.6));
-  reference_ = add(f_axis, tr("Force reference F_ref [N]"), QPen(kReference, 1.4, Qt::DashLine));
-  power_ = add(p_axis, tr("Spindle power P [W] (right axis)"), QPen(kPower, 1.6));
-  limit_ = add(p_axis, tr("Power limit [W] (right axis)"), QPen(kLimit, 1.6, Qt::DashLine));
+  force_ = add(f_axis, QString(), QPen(kForce, 1.6));
+  reference_ = add(f_axis, QString(), QPen(kReference, 1.4, Qt::DashLine));
+  power_ = add(p_axis, QString(), QPen(kPower, 1.6));
+  limit_ = add(p_axis, QString(), QPen(kLimit, 1.6, Qt::DashLine));
+  relabel();
 
   QCPAxis* t_axis = modules_rect_->axis(QCPAxis::atBottom);
   QCPAxis* m_axis = modules_rect_->axis(QCPAxis::atLeft);
@@ -116,6 +115,39 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
   event_marks_->addToLegend(legend);
   for (int i = 0; i < 12; ++i) moduleGraph(QString(QLatin1Char(kLetters[i])));
   clear();
+}
+
+void SupervisionTimeline::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  if (units_) connect(units_, &DisplayUnits::changed, this, &SupervisionTimeline::rescale);
+  rescale();
+}
+
+// The force and power axes and names in the shop units.
+void SupervisionTimeline::relabel() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const QString force = u.symbol(Quantity::Force), power = u.symbol(Quantity::Power);
+  signals_rect_->axis(QCPAxis::atLeft)->setLabel(tr("Force F_Y [%1]").arg(force));
+  signals_rect_->axis(QCPAxis::atRight)->setLabel(tr("Spindle power P [%1]").arg(power));
+  force_->setName(tr("F_Y = max |F_y| per revolution [%1]").arg(force));
+  reference_->setName(tr("Force reference F_ref [%1]").arg(force));
+  power_->setName(tr("Spindle power P [%1] (right axis)").arg(power));
+  limit_->setName(tr("Power limit [%1] (right axis)").arg(power));
+}
+
+// The plotted force and power are in display units: a change of units scales them in place.
+void SupervisionTimeline::rescale() {
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const double force = u.fromBase(Quantity::Force, 1.0), power = u.fromBase(Quantity::Power, 1.0);
+  for (auto [graph, ratio] : {std::pair{force_, force / force_scale_}, {power_, power / power_scale_}})
+    for (auto it = graph->data()->begin(); it != graph->data()->end(); ++it) it->value *= ratio;
+  force_scale_ = force;
+  power_scale_ = power;
+  relabel();
+  updateLimitLines();
+  fitRanges();
+  plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 QCPGraph* SupervisionTimeline::moduleGraph(const QString& module) {
@@ -160,8 +192,8 @@ void SupervisionTimeline::appendSeries(const SupervisionSeries& chunk) {
     if (!std::isfinite(t)) continue;
     const double f = i < chunk.force_y_n.size() ? chunk.force_y_n[i] : kNaN;
     const double p = i < chunk.power_w.size() ? chunk.power_w[i] : kNaN;
-    force_->addData(t, f);
-    power_->addData(t, p);
+    force_->addData(t, force_scale_ * f);
+    power_->addData(t, power_scale_ * p);
     if (std::isfinite(f)) force_max_ = std::max(force_max_, f);
     if (std::isfinite(p)) power_max_ = std::max(power_max_, p);
   }
@@ -181,12 +213,13 @@ void SupervisionTimeline::setSeries(const SupervisionSeries& all) {
 void SupervisionTimeline::updateLimitLines() {
   const int n = force_->dataCount();
   const double t0 = n ? force_->data()->constBegin()->key : 0.0, t1 = n ? (force_->data()->constEnd() - 1)->key : 1.0;
+  const double limit = power_scale_ * power_limit_w_, reference = force_scale_ * force_reference_n_;
   if (power_limit_w_ > 0)
-    limit_->setData({t0, t1}, {power_limit_w_, power_limit_w_}, true);
+    limit_->setData({t0, t1}, {limit, limit}, true);
   else
     limit_->data()->clear();
   if (force_reference_n_ > 0)
-    reference_->setData({t0, t1}, {force_reference_n_, force_reference_n_}, true);
+    reference_->setData({t0, t1}, {reference, reference}, true);
   else
     reference_->data()->clear();
 }
@@ -259,7 +292,8 @@ void SupervisionTimeline::fitRanges() {
   signals_rect_->axis(QCPAxis::atBottom)->setRange(t0, t1 + 0.01 * (t1 - t0));
   modules_rect_->axis(QCPAxis::atBottom)->setRange(t0, t1 + 0.01 * (t1 - t0));
   syncing_ = false;
-  const double f_hi = std::max(force_max_, force_reference_n_), p_hi = std::max(power_max_, power_limit_w_);
+  const double f_hi = force_scale_ * std::max(force_max_, force_reference_n_);
+  const double p_hi = power_scale_ * std::max(power_max_, power_limit_w_);
   signals_rect_->axis(QCPAxis::atLeft)->setRange(0, f_hi > 0 ? 1.12 * f_hi : 1.0);
   signals_rect_->axis(QCPAxis::atRight)->setRange(0, p_hi > 0 ? 1.12 * p_hi : 1.0);
 }
@@ -290,6 +324,14 @@ bool SupervisionTimeline::eventFilter(QObject* watched, QEvent* event) {
     }
   }
   return QWidget::eventFilter(watched, event);
+}
+
+QString SupervisionTimeline::valueAxisLabel(bool power) const {
+  return signals_rect_->axis(power ? QCPAxis::atRight : QCPAxis::atLeft)->label();
+}
+
+double SupervisionTimeline::valueAxisUpper(bool power) const {
+  return signals_rect_->axis(power ? QCPAxis::atRight : QCPAxis::atLeft)->range().upper;
 }
 
 QString SupervisionTimeline::eventToolTipAt(double t_s, double tolerance_s) const {

@@ -1,16 +1,18 @@
 #pragma once
 // The supervised run on a shared time axis t [s]:
-//   top:    F_Y [N] (left axis) with the force reference F_ref (dashed), spindle power P [W] (right
-//           axis) with the power limit (dashed red);
+//   top:    F_Y (left axis) with the force reference F_ref (dashed), spindle power P (right axis) with
+//           the power limit (dashed red), in the shop units of setUnits() (the series come in N and W);
 //   bottom: module activity, one row per Table 1 letter A-L (a bar where the module is active), and an
 //           "Events" row of markers (hover for the time, type and detail); each event also draws a
 //           thin vertical line across both rows.
 // Dragging or wheel-zooming pans/zooms the time axis of both rows; a double click fits the data.
 // QCustomPlot stays behind this class.
 #include <QHash>
+#include <QPointer>
 #include <QVector>
 #include <QWidget>
 
+#include "display_units.h"
 #include "supervision_data.h"
 
 class QCustomPlot;
@@ -25,6 +27,7 @@ class SupervisionTimeline : public QWidget {
  public:
   explicit SupervisionTimeline(QWidget* parent = nullptr);
 
+  void setUnits(DisplayUnits* units);  // nullptr: metric
   void clear();
   void appendSeries(const SupervisionSeries& chunk);  // streaming, rpQueuedReplot
   void setSeries(const SupervisionSeries& all);
@@ -39,6 +42,8 @@ class SupervisionTimeline : public QWidget {
   QStringList moduleRows() const;                    // row labels, top to bottom ("A feedrate routine", …)
   double activeTimeOf(const QString& module) const;  // total span length [s]
   QPair<double, double> timeRange() const;
+  QString valueAxisLabel(bool power) const;                      // the force (left) or power (right) axis label
+  double valueAxisUpper(bool power) const;                       // the top of that axis, in display units
   QString eventToolTipAt(double t_s, double tolerance_s) const;  // empty when no event there
   static QString moduleCaption(const QString& letter);           // "A feedrate routine"
 
@@ -50,6 +55,8 @@ class SupervisionTimeline : public QWidget {
   void updateLimitLines();
   void fitRanges();
   void syncTime(QCPAxisRect* source);
+  void relabel();
+  void rescale();
 
   QCustomPlot* plot_;
   QCPAxisRect* signals_rect_;
@@ -64,6 +71,8 @@ class SupervisionTimeline : public QWidget {
   QVector<ModuleSpan> spans_;
   QVector<SupervisionEventView> events_;
   QVector<QCPItemStraightLine*> event_lines_;
+  QPointer<DisplayUnits> units_;
+  double force_scale_ = 1.0, power_scale_ = 1.0;  // display units per N and per W of the plotted data
   double power_limit_w_ = 0, force_reference_n_ = 0;
   double force_max_ = 0, power_max_ = 0;
   bool syncing_ = false;

@@ -70,23 +70,18 @@ QCustomPlot* SupervisorComparison::makePlot(const QString& controller) {
       0, 0, new QCPTextElement(plot, controllerCaption(controller), QFont(font().family(), 10, QFont::Bold)));
   QCPAxisRect* rect = plot->axisRect();
   rect->axis(QCPAxis::atBottom)->setLabel(tr("Time t [s]"));
-  rect->axis(QCPAxis::atLeft)->setLabel(tr("F_Y [N]"));
   rect->axis(QCPAxis::atLeft)->setLabelColor(kForce);
   rect->axis(QCPAxis::atRight)->setVisible(true);
-  rect->axis(QCPAxis::atRight)->setLabel(tr("Power P [W]"));
   rect->axis(QCPAxis::atRight)->setLabelColor(kPower.darker(130));
   for (QCPAxis* a : rect->axes()) {
     a->setLabelFont(small);
     a->setTickLabelFont(small);
   }
   QCPGraph* force = plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-  force->setName(tr("F_Y [N]"));
   force->setPen(QPen(kForce, 1.3));
   QCPGraph* power = plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atRight));
-  power->setName(tr("Power P [W]"));
   power->setPen(QPen(kPower, 1.3));
   QCPGraph* limit = plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atRight));
-  limit->setName(tr("Power limit [W]"));
   limit->setPen(QPen(kLimit, 1.5, Qt::DashLine));
   // The legend in a row of its own between the title and the axes, so it never hides a trace.
   plot->legend->setVisible(true);
@@ -106,6 +101,16 @@ QCustomPlot* SupervisorComparison::makePlot(const QString& controller) {
   return plot;
 }
 
+void SupervisorComparison::setUnits(DisplayUnits* units) {
+  if (units_) disconnect(units_, nullptr, this, nullptr);
+  units_ = units;
+  const auto apply = [this] {
+    for (int column = 0; column < columns_.size(); ++column) showResult(column);
+  };
+  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
+  apply();
+}
+
 void SupervisorComparison::setResult(const QString& controller, const SupervisionSeries& series,
                                      const SupervisionMetricsView& metrics) {
   results_.insert(controller, Result{series, metrics});
@@ -118,17 +123,28 @@ void SupervisorComparison::showResult(int column) {
   const auto it = results_.constFind(controller);
   const bool has = it != results_.constEnd();
   const SupervisionSeries s = has ? it->series : SupervisionSeries{};
+  // Force and power in the shop units (the series: N and W).
+  const ShopUnits& u = DisplayUnits::of(units_);
+  const double fu = u.fromBase(Quantity::Force, 1.0), pu = u.fromBase(Quantity::Power, 1.0);
+  const QString force = u.symbol(Quantity::Force), power = u.symbol(Quantity::Power);
+  plot->axisRect()->axis(QCPAxis::atLeft)->setLabel(tr("F_Y [%1]").arg(force));
+  plot->axisRect()->axis(QCPAxis::atRight)->setLabel(tr("Power P [%1]").arg(power));
+  plot->graph(0)->setName(tr("F_Y [%1]").arg(force));
+  plot->graph(1)->setName(tr("Power P [%1]").arg(power));
+  plot->graph(2)->setName(tr("Power limit [%1]").arg(power));
   const qsizetype n = std::min({s.t_s.size(), s.force_y_n.size(), s.power_w.size()});
   QVector<double> t(s.t_s.begin(), s.t_s.begin() + n), f(s.force_y_n.begin(), s.force_y_n.begin() + n),
       p(s.power_w.begin(), s.power_w.begin() + n);
+  for (double& v : f) v *= fu;
+  for (double& v : p) v *= pu;
   plot->graph(0)->setData(t, f, true);
   plot->graph(1)->setData(t, p, true);
   const double t0 = n ? t.front() : 0.0, t1 = n && t.back() > t0 ? t.back() : t0 + 1.0;
   if (s.power_limit_w > 0)
-    plot->graph(2)->setData({t0, t1}, {s.power_limit_w, s.power_limit_w}, true);
+    plot->graph(2)->setData({t0, t1}, {pu * s.power_limit_w, pu * s.power_limit_w}, true);
   else
     plot->graph(2)->data()->clear();
-  double f_hi = s.force_reference_n, p_hi = s.power_limit_w;
+  double f_hi = fu * s.force_reference_n, p_hi = pu * s.power_limit_w;
   for (qsizetype i = 0; i < n; ++i) {
     if (std::isfinite(f[i])) f_hi = std::max(f_hi, f[i]);
     if (std::isfinite(p[i])) p_hi = std::max(p_hi, p[i]);

@@ -1,13 +1,15 @@
 #pragma once
 // Side-by-side comparison of the supervisory controllers: one small plot per controller
-// (columns none | SMC I | SMC II: F_Y [N] on the left axis, spindle power P [W] on the right with the
-// power limit dashed) above a metrics table (rows: max power [% of limit], force overshoot [%],
-// chatter detected, chatter time [s], passes, cycle time [s]; columns: the controllers). Values over
-// the limit and detected chatter are shown in red. QCustomPlot stays behind this class.
+// (columns none | SMC I | SMC II: F_Y on the left axis, spindle power P on the right with the power
+// limit dashed, in the shop units of setUnits(); the series come in N and W) above a metrics table (rows: max power [%
+// of limit], force overshoot [%], chatter detected, chatter time [s], passes, cycle time [s]; columns: the
+// controllers). Values over the limit and detected chatter are shown in red. QCustomPlot stays behind this class.
 #include <QHash>
+#include <QPointer>
 #include <QStringList>
 #include <QWidget>
 
+#include "display_units.h"
 #include "supervision_data.h"
 
 class QCustomPlot;
@@ -22,6 +24,7 @@ class SupervisorComparison : public QWidget {
   explicit SupervisorComparison(QWidget* parent = nullptr);
 
   // controller in none/smc1/smc2 -> column 0/1/2 (another name gets a column of its own)
+  void setUnits(DisplayUnits* units);  // nullptr: metric
   void setResult(const QString& controller, const SupervisionSeries& series, const SupervisionMetricsView& metrics);
   void clear();
   int resultCount() const;
@@ -43,6 +46,7 @@ class SupervisorComparison : public QWidget {
   QCustomPlot* makePlot(const QString& controller);
   void showResult(int column);
 
+  QPointer<DisplayUnits> units_;
   QHBoxLayout* plots_layout_;
   QTableWidget* table_;
   QStringList columns_;

@@ -20,6 +20,9 @@ SupervisorFeature::SupervisorFeature(QMainWindow* window, const FeatureContext& 
       runner_(new SupervisionRunner(context.enginePool(), this)),
       view_(new widgets::SupervisorView) {
   setObjectName("supervisorFeature");
+  units_ = context.units();
+  view_->timeline()->setUnits(context.units());
+  view_->comparison()->setUnits(context.units());
   QDockWidget* dock = makeFeatureDock(window, tr("Supervisor"), "supervisorDock", view_, DockContent::Scrolling);
   window->addDockWidget(Qt::BottomDockWidgetArea, dock);
   if (auto* program = window->findChild<QDockWidget*>("partProgramDock")) window->tabifyDockWidget(program, dock);
@@ -93,11 +96,11 @@ void SupervisorFeature::onFinished(const SupervisionOutcome& o) {
   view_->timeline()->setSeries(supervisionSeriesOf(r.series, request_->scenario, r.metrics.reference_force_N));
   view_->timeline()->setModuleSpans(moduleSpans(r.modules, r.metrics.cycle_time_s));
   view_->setMetrics(supervisionMetricsOf(o.controller, r.metrics));
-  view_->setStatus(tr("%1: %2 pass(es), cycle %3 s, F_ref %4 N")
+  view_->setStatus(tr("%1: %2 pass(es), cycle %3 s, F_ref %4")
                        .arg(o.controller)
                        .arg(r.metrics.passes)
                        .arg(r.metrics.cycle_time_s, 0, 'f', 2)
-                       .arg(r.metrics.reference_force_N, 0, 'f', 1));
+                       .arg(units_->shop().format(widgets::Quantity::Force, r.metrics.reference_force_N)));
   emit supervisionFinished();
 }
 

@@ -53,6 +53,7 @@ class SupervisorFeature : public WindowFeature {
 
   enum class Shown { None, Run, Comparison };
   const app::ProjectDocument& document_;
+  const widgets::DisplayUnits* units_ = nullptr;
   SupervisionRunner* runner_;
   widgets::SupervisorView* view_;
   std::optional<app::SupervisorRequest> request_;

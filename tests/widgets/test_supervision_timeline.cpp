@@ -6,6 +6,7 @@
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "display_units.h"
 #include "supervision_timeline.h"
 #include "test_registry.h"
 
@@ -106,6 +107,26 @@ class TestSupervisionTimeline : public QObject {
     const QString path = dir.filePath("supervision_timeline.png");
     QVERIFY(view.saveImage(path, 1400, 900));
     QCOMPARE(QImage(path).size(), QSize(1400, 900));
+  }
+
+  // Shop units: the force and power axes relabel and their data scale in place, both ways.
+  void followsShopUnits() {
+    DisplayUnits units;
+    SupervisionTimeline view;
+    view.setUnits(&units);
+    view.setSeries(series(0.0, 12.0));
+    QCOMPARE(view.valueAxisLabel(false), QString("Force F_Y [N]"));
+    QCOMPARE(view.valueAxisLabel(true), QString("Spindle power P [W]"));
+    const double force_top = view.valueAxisUpper(false), power_top = view.valueAxisUpper(true);
+    units.setShop(ShopUnits::inch());
+    QCOMPARE(view.valueAxisLabel(false), QString("Force F_Y [lbf]"));
+    QCOMPARE(view.valueAxisLabel(true), QString("Spindle power P [hp]"));
+    QCOMPARE(view.valueAxisUpper(false), force_top / 4.4482216152605);
+    QCOMPARE(view.valueAxisUpper(true), power_top / 745.699872);
+    view.appendSeries(series(12.0, 13.0));  // a streamed chunk in N and W joins in lbf and hp
+    units.setShop(ShopUnits::metric());
+    QCOMPARE(view.valueAxisUpper(false), force_top);
+    QCOMPARE(view.valueAxisUpper(true), power_top);
   }
 };
 
