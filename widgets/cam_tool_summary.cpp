@@ -3,6 +3,8 @@
 #include <QObject>
 #include <QStringList>
 
+#include "count_text.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -44,7 +46,8 @@ QString camToolSummary(const app::ToolSpec& tool, const DisplayUnits* units) {
   addLength(parts, QObject::tr("overall"), tool.overall_length_mm, units);
   addLength(parts, QObject::tr("stickout"), tool.stickout_mm, units);
   addLength(parts, QObject::tr("corner radius"), tool.corner_radius_mm, units);
-  if (!tool.cutting_data.empty()) parts << QObject::tr("%n cutting preset(s)", nullptr, int(tool.cutting_data.size()));
+  if (!tool.cutting_data.empty())
+    parts << countText(qsizetype(tool.cutting_data.size()), "cutting preset", "cutting presets");
   if (tool.origin) parts << QObject::tr("from %1").arg(sourceName(tool.origin->format));
   return parts.join(QStringLiteral(" · "));
 }

@@ -11,6 +11,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 
+#include "count_text.h"
 #include "document/project_rules.h"
 
 namespace mx::widgets {
@@ -23,7 +24,7 @@ enum Column { kId, kType, kDiameter, kTeeth, kFluteLength, kStickout, kPresets, 
 QString dynamicsText(const app::ToolSpec& t) {
   if (t.hasFrf()) return QObject::tr("tap test");
   const std::size_t modes = t.modes_x.size() + t.modes_y.size();
-  return modes == 0 ? QObject::tr("none (rigid)") : QObject::tr("%n mode(s)", nullptr, int(modes));
+  return modes == 0 ? QObject::tr("none (rigid)") : countText(qsizetype(modes), "mode", "modes");
 }
 
 }  // namespace
@@ -145,11 +146,10 @@ ToolImportDialog::ToolImportDialog(const QString& fileName, const std::vector<ap
   setObjectName("toolImportDialog");
   setWindowTitle(tr("Import tools from %1").arg(fileName));
   table_->setModel(model_);
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setStretchLastSection(true);
-  table_->horizontalHeader()->setDefaultSectionSize(120);
   table_->verticalHeader()->hide();
-  table_->setMinimumSize(900, 360);
+  table_->setMinimumSize(1100, 360);
   auto* all = new QPushButton(tr("Select all"), this);
   auto* none = new QPushButton(tr("Select none"), this);
   connect(all, &QPushButton::clicked, this, [this] { setAllChecked(true); });
@@ -169,8 +169,8 @@ ToolImportDialog::ToolImportDialog(const QString& fileName, const std::vector<ap
   selection->addWidget(summary_, 1);
   layout->addLayout(selection);
   if (!skipped.isEmpty()) {
-    layout->addWidget(
-        new QLabel(tr("Left out: %n tool(s) that are not milling cutters", nullptr, int(skipped.size())), this));
+    layout->addWidget(new QLabel(
+        tr("Left out: %1 that are not milling cutters").arg(countText(skipped.size(), "tool", "tools")), this));
     auto* list = new QPlainTextEdit(skipped.join('\n'), this);
     list->setReadOnly(true);
     list->setMaximumHeight(90);

@@ -5,6 +5,7 @@
 #include <QInputDialog>
 #include <QMessageBox>
 
+#include "count_text.h"
 #include "engine_task.h"
 #include "tool_import_dialog.h"
 
@@ -56,10 +57,10 @@ QString renamedText(const std::vector<app::RenamedTool>& renamed) {
 }
 
 QString summaryText(const QString& file, const app::LibraryMerge& merge, const app::ImportedLibrary& library) {
-  QString text = QObject::tr("%n tool(s) from %1", nullptr, int(merge.ids.size())).arg(file);
+  QString text = QObject::tr("%1 from %2").arg(widgets::countText(merge.ids.size(), "tool", "tools"), file);
   if (!merge.renamed.empty()) text += QObject::tr("; renamed: %1").arg(renamedText(merge.renamed));
   if (!library.skipped.empty())
-    text += QObject::tr("; %n left out (not milling cutters)", nullptr, int(library.skipped.size()));
+    text += QObject::tr("; %1 left out (not milling cutters)").arg(qsizetype(library.skipped.size()));
   return text;
 }
 
@@ -183,7 +184,8 @@ void ToolLibraryTransfer::chooseExport() {
   if (!error.isEmpty()) {
     QMessageBox::warning(dialog_parent_, tr("Export failed"), error);
   } else {
-    emit statusMessage(tr("Exported %n tool(s) to %1", nullptr, int(context_.project().tools.size())).arg(path));
+    emit statusMessage(tr("Exported %1 to %2")
+                           .arg(widgets::countText(qsizetype(context_.project().tools.size()), "tool", "tools"), path));
   }
 }
 

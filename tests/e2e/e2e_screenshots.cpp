@@ -7,9 +7,11 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QImage>
 #include <QScreen>
+#include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
 #include <functional>
@@ -27,6 +29,9 @@
 #include "support/window_features.h"
 #include "tap_test_feature.h"
 #include "tap_test_panel.h"
+#include "tool_import_dialog.h"
+#include "tool_library_editor.h"
+#include "tool_library_transfer.h"
 
 namespace mx::e2e {
 
@@ -51,6 +56,7 @@ struct Shot {
   const char* fit = "";             // fit the tap test of this direction
   bool inch = false;                // the Inch shop units (in, SFM, IPM, in/tooth, hp, lbf, in³/min)
   bool preferences = false;         // Edit > Preferences... open over the window (a grab of the screen)
+  const char* library = "";         // imported (in projects/), then its import dialog open over the window
 };
 
 const Shot kShots[] = {
@@ -84,6 +90,10 @@ const Shot kShots[] = {
      .project = "rubio2006-tool-selection.mxproj",
      .inch = true,
      .preferences = true},
+    {.file = "tool-import.png",
+     .project = "rubio2006-tool-selection.mxproj",
+     .docks = "toolsDock",
+     .library = "libraries/fusion-endmills.json"},
 };
 
 QString projectFile(const char* relative) {
@@ -98,6 +108,28 @@ void raiseDocks(gui::MainWindow& window, const QString& names) {
     if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
       window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
   }
+}
+
+// Imports every tool of `library` into the window's project, selects the first one imported, and
+// opens the import dialog on the same library (as Import library... shows it).
+QDialog* importDialog(Report& report, gui::MainWindow& window, const QString& library) {
+  gui::ToolLibraryTransfer* transfer = test::editorsOf(window)->libraryTransfer();
+  QSignalSpy finished(transfer, &gui::ToolLibraryTransfer::importFinished);
+  app::ImportedLibrary read;
+  transfer->importFile(library, std::nullopt, {}, [&read](const QString&, const app::ImportedLibrary& l) {
+    read = l;
+    return std::optional<gui::ToolLibraryTransfer::Choice>(gui::ToolLibraryTransfer::Choice{});
+  });
+  waitFor([&finished] { return finished.count() > 0; }, kShotMs, "the tool-library import");
+  report.check("tool-import.imported", finished.at(0).at(0).toString().isEmpty(), finished.at(0).at(0).toString());
+  if (!read.tools.empty()) test::editorsOf(window)->toolEditor()->selectTool(read.tools.front().id);
+  QStringList skipped;
+  for (const app::SkippedTool& t : read.skipped) skipped << QString("%1: %2").arg(t.name, t.reason);
+  auto* dialog = new widgets::ToolImportDialog(QFileInfo(library).fileName(), read.tools, skipped,
+                                               int(window.project()->tools.size()), window.units(), &window);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->show();
+  return dialog;
 }
 
 void takeShot(Report& report, const Shot& shot, const QDir& folder) {
@@ -203,15 +235,16 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
       kShotMs, QString("%1: %2").arg(shot.file, waits.join(", ")));
   QTest::qWait(300);  // the last repaints (queued replots) before the grab
 
-  widgets::ShopUnitsDialog* preferences = shot.preferences ? window.openPreferences() : nullptr;
-  if (preferences) {
-    preferences->move(window.geometry().center() - preferences->rect().center());
+  QDialog* dialog = shot.preferences ? window.openPreferences() : nullptr;
+  if (*shot.library) dialog = importDialog(report, window, projectFile(shot.library));
+  if (dialog) {
+    dialog->move(window.geometry().center() - dialog->rect().center());
     QTest::qWait(300);
   }
   // The dialog is a window of its own: the screen holds both.
-  const QImage image = preferences ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
-                                   : window.grab().toImage();
-  if (preferences) preferences->reject();
+  const QImage image = dialog ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
+                              : window.grab().toImage();
+  if (dialog) dialog->reject();
   const QString path = folder.filePath(shot.file);
   report.check(QString("%1.saved").arg(shot.file), image.save(path), path);
   report.check(QString("%1.size").arg(shot.file), image.size() == QSize(1920, 1080),

@@ -68,7 +68,7 @@ class TestToolLibraryTransfer : public QObject {
     QString summary;
     QCOMPARE(runImport(w, writeText(dir, "lib.csv", kCsv), Transfer::Choice{{}, false}, &summary), QString());
     QCOMPARE(toolIds(w), QStringList({"R1", "R2", "R2-2", "E16"}));
-    QCOMPARE(summary, QString("2 tool(s) from lib.csv; renamed: R2 → R2-2"));
+    QCOMPARE(summary, QString("2 tools from lib.csv; renamed: R2 → R2-2"));
     w.document()->undoStack()->undo();
     QCOMPARE(toolIds(w), QStringList({"R1", "R2"}));
   }

@@ -37,7 +37,7 @@ class TestCamToolSummary : public QObject {
   void metric() {
     QCOMPARE(mx::widgets::camToolSummary(camTool(), nullptr),
              QString("bull nose end mill · flute length 25.4 mm · overall 76.2 mm · stickout 38.1 mm · corner radius "
-                     "0.508 mm · 1 cutting preset(s) · from Fusion 360"));
+                     "0.508 mm · 1 cutting preset · from Fusion 360"));
     QCOMPARE(mx::widgets::cuttingPresetsText(camTool(), nullptr),
              QString("Aluminium: 12000 rpm, 478.8 m/min, 0.08 mm/tooth, ap 6.35 mm"));
   }
@@ -48,7 +48,7 @@ class TestCamToolSummary : public QObject {
     QCOMPARE(
         mx::widgets::camToolSummary(camTool(), &units),
         QString("bull nose end mill · flute length 1 in · overall 3 in · stickout 1.5 in · corner radius 0.02 in · "
-                "1 cutting preset(s) · from Fusion 360"));
+                "1 cutting preset · from Fusion 360"));
     QCOMPARE(mx::widgets::cuttingPresetsText(camTool(), &units),
              QString("Aluminium: 12000 rpm, 478.8 m/min, 0.08 mm/tooth, ap 0.25 in"));
   }
