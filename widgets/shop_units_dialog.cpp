@@ -58,7 +58,7 @@ ShopUnitsDialog::ShopUnitsDialog(QWidget* parent)
 // "hp (1 hp = 745.699872 W)": the exact factor to the base unit, so that the page documents itself.
 QString ShopUnitsDialog::itemText(Quantity q, const UnitSpec& unit) {
   const UnitSpec& base = ShopUnits::choices(q).front();
-  const QString symbol = QString::fromUtf8(unit.symbol);
+  QString symbol = QString::fromUtf8(unit.symbol);
   if (unit.base_per_unit == 1.0) return symbol;
   return tr("%1 (1 %1 = %2 %3)")
       .arg(symbol, QString::number(unit.base_per_unit, 'g', 15), QString::fromUtf8(base.symbol));

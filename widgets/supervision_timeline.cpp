@@ -141,7 +141,7 @@ void SupervisionTimeline::rescale() {
   const ShopUnits& u = DisplayUnits::of(units_);
   const double force = u.fromBase(Quantity::Force, 1.0), power = u.fromBase(Quantity::Power, 1.0);
   for (auto [graph, ratio] : {std::pair{force_, force / force_scale_}, {power_, power / power_scale_}})
-    for (auto it = graph->data()->begin(); it != graph->data()->end(); ++it) it->value *= ratio;
+    for (QCPGraphData& point : *graph->data()) point.value *= ratio;
   force_scale_ = force;
   power_scale_ = power;
   relabel();
