@@ -185,6 +185,7 @@ void ToolLibraryEditor::showTapTests(const app::ToolSpec* tool) {
 void ToolLibraryEditor::setUnits(DisplayUnits* units) {
   tools_->setUnits(units);
   units_ = units;
+  picture_->setUnits(units);
   if (units) connect(units, &DisplayUnits::changed, this, [this] { showCamData(project().findTool(currentToolId())); });
 }
 

@@ -31,13 +31,15 @@ QString listText(const std::vector<double>& values, double factor, const QString
   return items.join(", ");
 }
 
-// The text beside the end view: the tool, its pitch, helix and runout, each with its unit. runout_gain:
-// how many times larger the drawn runout is than the true one on the drawn diameter's scale.
-QStringList description(const MillingSetup& c, double runout_gain) {
+}  // namespace
+
+QStringList toolCaption(const MillingSetup& c, double runout_gain, const DisplayUnits* units) {
   const QString teeth = c.teeth == 1 ? QObject::tr("1 tooth") : QObject::tr("%1 teeth").arg(c.teeth);
-  QStringList lines{QObject::tr("%1: %2, D = %3 mm")
+  const double diameter_mm = c.diameter_m * 1e3;
+  QStringList lines{QObject::tr("%1: %2, D = %3 %4")
                         .arg(QString::fromStdString(c.tool_id), teeth)
-                        .arg(c.diameter_m * 1e3, 0, 'g', 4)};
+                        .arg(units ? units->fromMm(diameter_mm) : diameter_mm, 0, 'g', 4)
+                        .arg(units ? units->lengthSuffix() : QStringLiteral("mm"))};
   lines << (c.uniformPitch() ? QObject::tr("uniform pitch %1").arg(degrees(c.toothPitchRad() * kDegPerRad))
                              : QObject::tr("pitch: %1").arg(listText(c.pitch_rad, kDegPerRad, QChar(0x00b0))));
   lines << (c.helix_rad != 0.0 ? QObject::tr("helix %1 (blue: lag at z = R)").arg(degrees(c.helix_rad * kDegPerRad))
@@ -49,6 +51,8 @@ QStringList description(const MillingSetup& c, double runout_gain) {
   lines << QObject::tr("rotation: clockwise");
   return lines;
 }
+
+namespace {
 
 // The helix lag of each edge at height R above the tip, drawn as an arc behind the tooth.
 void drawHelixLag(QPainter& p, const MillingSetup& c, const QRectF& circle) {
@@ -100,6 +104,12 @@ ToolPictureWidget::ToolPictureWidget(QWidget* parent) : QWidget(parent) {
 
 void ToolPictureWidget::setTool(const app::ToolSpec& tool) {
   cutter_ = app::cutterGeometryOf(tool);
+  update();
+}
+
+void ToolPictureWidget::setUnits(const DisplayUnits* units) {
+  units_ = units;
+  if (units) connect(units, &DisplayUnits::changed, this, qOverload<>(&QWidget::update));
   update();
 }
 
@@ -155,7 +165,7 @@ void ToolPictureWidget::paintEvent(QPaintEvent*) {
   }
   const QRectF text(side + 6, 4, width() - side - 10, height() - 8);
   p.drawText(text, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
-             description(c, scale * c.diameter_m / (2.0 * radius)).join("\n"));
+             toolCaption(c, scale * c.diameter_m / (2.0 * radius), units_).join("\n"));
 }
 
 }  // namespace mx::widgets

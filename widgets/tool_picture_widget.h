@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "display_units.h"
 #include "document/project.h"
 
 namespace mx::widgets {
@@ -24,13 +25,18 @@ std::vector<ToothMark> toothMarks(const MillingSetup& cutter, QPointF centre, do
 // The scale that draws the largest |runout| as `max_px`; 0 without runout.
 double runoutScalePxPerM(const MillingSetup& cutter, double max_px);
 
+// The text beside the end view: the tool, D (in `units`, mm when null), its pitch, helix and runout,
+// each with its unit. runout_gain: how many times larger the drawn runout is than the true one.
+QStringList toolCaption(const MillingSetup& cutter, double runout_gain, const DisplayUnits* units);
+
 class ToolPictureWidget : public QWidget {
   Q_OBJECT
  public:
   explicit ToolPictureWidget(QWidget* parent = nullptr);
 
   void setTool(const app::ToolSpec& tool);
-  void clear();  // no tool selected
+  void clear();                              // no tool selected
+  void setUnits(const DisplayUnits* units);  // the diameter in mm or inch; nullptr = mm
   const std::optional<MillingSetup>& cutter() const { return cutter_; }
   QSize sizeHint() const override { return {360, 180}; }
   QSize minimumSizeHint() const override { return {260, 160}; }
@@ -40,6 +46,7 @@ class ToolPictureWidget : public QWidget {
 
  private:
   std::optional<MillingSetup> cutter_;
+  const DisplayUnits* units_ = nullptr;
 };
 
 }  // namespace mx::widgets

@@ -42,6 +42,17 @@ bool near(QPointF a, QPointF b) {
 class TestToolPictureWidget : public QObject {
   Q_OBJECT
  private slots:
+  // The diameter in the caption follows the display unit.
+  void captionDiameterInTheDisplayUnit() {
+    ToolPictureWidget picture;
+    picture.setTool(tool(3, std::nullopt, std::nullopt));
+    const MillingSetup& cutter = *picture.cutter();
+    QCOMPARE(mx::widgets::toolCaption(cutter, 1.0, nullptr).front(), QString("V4: 3 teeth, D = 16 mm"));
+    mx::widgets::DisplayUnits inch;
+    inch.setShop(mx::widgets::ShopUnits::inch());
+    QCOMPARE(mx::widgets::toolCaption(cutter, 1.0, &inch).front(), QString("V4: 3 teeth, D = 0.6299 in"));
+  }
+
   void teethSitAtTheirPitchAngles_data() {
     QTest::addColumn<int>("teeth");
     QTest::addColumn<QVector<double>>("pitch");     // empty: uniform
