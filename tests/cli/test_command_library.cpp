@@ -11,6 +11,8 @@
 
 using namespace mx;
 
+using mx::test::writeText;
+
 namespace {
 
 const QString kRubio = test::projectsPath("rubio2006-tool-selection.mxproj");
@@ -19,14 +21,6 @@ QString copyOf(const QTemporaryDir& dir, const QString& source, const QString& n
   const QString path = dir.filePath(name);
   QFile::copy(source, path);
   QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
-  return path;
-}
-
-QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  const QString path = dir.filePath(name);
-  QFile f(path);
-  f.open(QIODevice::WriteOnly);
-  f.write(text);
   return path;
 }
 

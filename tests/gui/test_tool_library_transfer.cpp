@@ -6,6 +6,7 @@
 #include <QTemporaryDir>
 
 #include "main_window.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -14,20 +15,14 @@
 using namespace mx;
 using Transfer = gui::ToolLibraryTransfer;
 
+using mx::test::writeText;
+
 namespace {
 
 const QByteArray kCsv =
     "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,stiffness_N_per_um\n"
     "R2,3,12,30,,,,x,900,2,5\n"
     "E16,4,16,30,,,,x,720,2.5,4.2\n";
-
-QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  const QString path = dir.filePath(name);
-  QFile f(path);
-  f.open(QIODevice::WriteOnly);
-  f.write(text);
-  return path;
-}
 
 bool open(gui::MainWindow& w) {
   w.setQuiet(true);

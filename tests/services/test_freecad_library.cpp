@@ -14,6 +14,8 @@
 using namespace mx;
 using app::ToolSpec;
 
+using mx::test::newTool;
+
 namespace {
 
 QString freeCadData(const QString& relative) {
@@ -65,15 +67,6 @@ QByteArray bit(const QString& parameters, const QString& extra = {}) {
   return QString(R"({"version": 2, "name": "Bad", "shape": "endmill.fcstd", "parameter": {%1}%2})")
       .arg(parameters, extra)
       .toUtf8();
-}
-
-ToolSpec newTool(const QString& id, const QString& type, double diameter, int teeth) {
-  ToolSpec tool;
-  tool.id = id;
-  tool.type = type;
-  tool.diameter_mm = diameter;
-  tool.teeth = teeth;
-  return tool;
 }
 
 }  // namespace

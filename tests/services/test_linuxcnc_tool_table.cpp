@@ -12,6 +12,8 @@
 using namespace mx;
 using app::ToolSpec;
 
+using mx::test::newTool;
+
 namespace {
 
 QString linuxCncData(const QString& name) {
@@ -31,15 +33,6 @@ app::ImportedLibrary reimport(const app::LinuxCncExport& files, bool with_side_f
 
 QStringList tableLines(const QByteArray& table) {
   return QString::fromUtf8(table).split('\n', Qt::SkipEmptyParts);
-}
-
-ToolSpec newTool(const QString& id, const QString& type, double diameter, int teeth) {
-  ToolSpec tool;
-  tool.id = id;
-  tool.type = type;
-  tool.diameter_mm = diameter;
-  tool.teeth = teeth;
-  return tool;
 }
 
 QString tableRefusal(const QByteArray& table, const app::ToolImportOptions& options = {},

@@ -9,12 +9,15 @@
 #include "services/tool_formats/tool_library_csv.h"
 #include "services/tool_formats/tool_library_transfer.h"
 #include "support/hostile_files.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using mx::app::Project;
 using mx::app::ToolLibraryCsv;
 using mx::app::ToolLibraryFormat;
 using mx::app::ToolSpec;
+
+using mx::test::writeText;
 
 namespace {
 
@@ -26,14 +29,6 @@ QJsonArray toolsJson(const std::vector<ToolSpec>& tools) {
 
 Project rubio() {
   return mx::app::loadProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
-}
-
-QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  QString path = dir.filePath(name);
-  QFile f(path);
-  f.open(QIODevice::WriteOnly);
-  f.write(text);
-  return path;
 }
 
 const QByteArray kHeader =

@@ -5,6 +5,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QString>
+#include <QTemporaryDir>
 #include <QtGlobal>
 
 namespace mx::test {
@@ -20,6 +21,14 @@ inline QByteArray readBytes(const QString& path) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) qFatal("cannot open %s", qPrintable(path));
   return f.readAll();
+}
+
+// Writes `bytes` to `name` in `dir`; returns its path.
+inline QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
+  const QString path = dir.filePath(name);
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) qFatal("cannot write %s", qPrintable(path));
+  return path;
 }
 
 inline QJsonObject readJson(const QString& path) {

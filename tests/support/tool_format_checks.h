@@ -11,6 +11,16 @@
 
 namespace mx::test {
 
+// A tool as a CAM library gives it: no dynamics.
+inline app::ToolSpec newTool(const QString& id, const QString& type, double diameter, int teeth) {
+  app::ToolSpec tool;
+  tool.id = id;
+  tool.type = type;
+  tool.diameter_mm = diameter;
+  tool.teeth = teeth;
+  return tool;
+}
+
 inline QByteArray toolText(const app::ToolSpec& tool) {
   return QJsonDocument(app::toolToJson(tool)).toJson(QJsonDocument::Compact);
 }
