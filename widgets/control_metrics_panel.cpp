@@ -61,14 +61,11 @@ ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), war
 }
 
 void ControlMetricsPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
   const auto apply = [this] {
     relabel();
     if (metrics_) setMetrics(ControlMetricsView(*metrics_));
   };
-  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
-  apply();
+  followUnits(this, units_, units, apply);
 }
 
 void ControlMetricsPanel::relabel() {

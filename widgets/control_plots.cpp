@@ -123,15 +123,10 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
 }
 
 void ControlPlots::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_)
-    connect(units_, &DisplayUnits::changed, this, [this] {
-      relabel();
-      setTraces(ControlTraces(traces_));
-    });
-  relabel();
-  setTraces(ControlTraces(traces_));
+  followUnits(this, units_, units, [this] {
+    relabel();
+    setTraces(ControlTraces(traces_));
+  });
 }
 
 // The axis labels and legend names that carry a shop unit.

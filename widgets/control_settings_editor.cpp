@@ -130,14 +130,11 @@ std::optional<double> ControlSettingsEditor::parse(const QString& key, const QSt
 }
 
 void ControlSettingsEditor::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
   const auto apply = [this] {
     for (const FieldSpec& f : kFields) labels_[QString::fromLatin1(f.key)]->setText(label(f, shopUnits()) + ":");
     showSettings();
   };
-  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
-  apply();
+  followUnits(this, units_, units, apply);
 }
 
 const ShopUnits& ControlSettingsEditor::shopUnits() const {

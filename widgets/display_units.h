@@ -4,6 +4,7 @@
 // views show and accept changes. The length accessors are the mm/inch part of it.
 #include <QObject>
 #include <QString>
+#include <type_traits>
 
 #include "shop_units.h"
 
@@ -45,5 +46,20 @@ class DisplayUnits : public QObject {
  private:
   ShopUnits shop_;
 };
+
+// Points `current` at `units` and runs `refresh` (a member function of `receiver`, or a callable) now
+// and after every change of them; the receiver's connections to the previous units are dropped.
+// nullptr units: metric, and no updates.
+template <class Receiver, class Pointer, class Refresh>  // Pointer: DisplayUnits* or QPointer<DisplayUnits>
+void followUnits(Receiver* receiver, Pointer& current, DisplayUnits* units, Refresh refresh) {
+  if (current) QObject::disconnect(current, nullptr, receiver, nullptr);
+  current = units;
+  if (current) QObject::connect(current, &DisplayUnits::changed, receiver, refresh);
+  if constexpr (std::is_member_function_pointer_v<Refresh>) {
+    (receiver->*refresh)();
+  } else {
+    refresh();
+  }
+}
 
 }  // namespace mx::widgets

@@ -192,10 +192,7 @@ void HistoryView::setMaterialChoices(const QStringList& materials) {
 }
 
 void HistoryView::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &HistoryView::refreshUnits);
-  refreshUnits();
+  followUnits(this, units_, units, &HistoryView::refreshUnits);
 }
 
 // The headers, the MRR band and the rows in the shop units; the filter itself does not change.

@@ -211,10 +211,7 @@ void MachineOperationPanel::setProject(const app::Project& project) {
 }
 
 void MachineOperationPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &MachineOperationPanel::refresh);
-  refresh();
+  followUnits(this, units_, units, &MachineOperationPanel::refresh);
 }
 
 double MachineOperationPanel::toDisplay(const NumberField& f, double value) const {

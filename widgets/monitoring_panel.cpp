@@ -123,10 +123,7 @@ MonitoringPanel::MonitoringPanel(QWidget* parent)
 }
 
 void MonitoringPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &MonitoringPanel::refreshUnits);
-  refreshUnits();
+  followUnits(this, units_, units, &MonitoringPanel::refreshUnits);
 }
 
 void MonitoringPanel::refreshUnits() {

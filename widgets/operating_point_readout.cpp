@@ -70,10 +70,7 @@ QLabel* OperatingPointReadout::addRow(const QString& key, const QString& label, 
 }
 
 void OperatingPointReadout::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &OperatingPointReadout::refresh);
-  refresh();
+  followUnits(this, units_, units, &OperatingPointReadout::refresh);
 }
 
 void OperatingPointReadout::setReadout(const PointReadout& readout) {

@@ -72,10 +72,7 @@ void ParetoChoiceSummaryPanel::setEconomicsAvailable(bool available) {
 }
 
 void ParetoChoiceSummaryPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, [this] { setSummary(summary_); });
-  setSummary(summary_);
+  followUnits(this, units_, units, [this] { setSummary(summary_); });
 }
 
 void ParetoChoiceSummaryPanel::setSummary(const std::optional<ParetoChoiceSummary>& s) {

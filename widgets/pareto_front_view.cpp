@@ -168,10 +168,7 @@ void ParetoFrontView::setAxes(Axis x, Axis y, Axis colour) {
 }
 
 void ParetoFrontView::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &ParetoFrontView::refreshUnits);
-  refreshUnits();
+  followUnits(this, units_, units, &ParetoFrontView::refreshUnits);
 }
 
 void ParetoFrontView::refreshUnits() {

@@ -306,14 +306,11 @@ PartProgramPanel::PartProgramPanel(QWidget* parent)
 PartProgramPanel::~PartProgramPanel() = default;
 
 void PartProgramPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
   const auto apply = [this] {
     model_->setShopUnits(DisplayUnits::of(units_));
     resizeColumns();
   };
-  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
-  apply();
+  followUnits(this, units_, units, apply);
 }
 
 void PartProgramPanel::setProgram(const QString& path, const QVector<PartProgramRow>& rows,

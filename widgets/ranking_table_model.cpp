@@ -69,10 +69,7 @@ void RankingTableModel::setRanking(const QVector<RankingRow>& rows, const QStrin
 }
 
 void RankingTableModel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &RankingTableModel::unitsChanged);
-  unitsChanged();
+  followUnits(this, units_, units, &RankingTableModel::unitsChanged);
 }
 
 void RankingTableModel::unitsChanged() {

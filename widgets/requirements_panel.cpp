@@ -73,10 +73,7 @@ QString RequirementsPanel::shownUnit(int objective) const {
 }
 
 void RequirementsPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &RequirementsPanel::refreshUnits);
-  refreshUnits();
+  followUnits(this, units_, units, &RequirementsPanel::refreshUnits);
 }
 
 void RequirementsPanel::refreshUnits() {

@@ -120,15 +120,12 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
 }
 
 void SimulationView::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
   const auto apply = [this] {
     relabel();
     if (summary_ && !stale_) showSummaryValues(*summary_);
     flushPlots();
   };
-  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
-  apply();
+  followUnits(this, units_, units, apply);
 }
 
 // The axis labels and legend names that carry a shop unit.

@@ -118,10 +118,7 @@ SupervisionTimeline::SupervisionTimeline(QWidget* parent) : QWidget(parent), plo
 }
 
 void SupervisionTimeline::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &SupervisionTimeline::rescale);
-  rescale();
+  followUnits(this, units_, units, &SupervisionTimeline::rescale);
 }
 
 // The force and power axes and names in the shop units.

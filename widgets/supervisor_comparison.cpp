@@ -102,13 +102,10 @@ QCustomPlot* SupervisorComparison::makePlot(const QString& controller) {
 }
 
 void SupervisorComparison::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
   const auto apply = [this] {
     for (int column = 0; column < columns_.size(); ++column) showResult(column);
   };
-  if (units_) connect(units_, &DisplayUnits::changed, this, apply);
-  apply();
+  followUnits(this, units_, units, apply);
 }
 
 void SupervisorComparison::setResult(const QString& controller, const SupervisionSeries& series,

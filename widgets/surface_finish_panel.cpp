@@ -129,10 +129,7 @@ SurfaceFinishPanel::SurfaceFinishPanel(QWidget* parent) : QWidget(parent), debou
 }
 
 void SurfaceFinishPanel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &SurfaceFinishPanel::reshow);
-  reshow();
+  followUnits(this, units_, units, &SurfaceFinishPanel::reshow);
 }
 
 // The labels of the force and feed, in shop units.

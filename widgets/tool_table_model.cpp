@@ -37,10 +37,7 @@ void ToolTableModel::setProject(const app::Project& project) {
 }
 
 void ToolTableModel::setUnits(DisplayUnits* units) {
-  if (units_) disconnect(units_, nullptr, this, nullptr);
-  units_ = units;
-  if (units_) connect(units_, &DisplayUnits::changed, this, &ToolTableModel::refreshAll);
-  refreshAll();
+  followUnits(this, units_, units, &ToolTableModel::refreshAll);
 }
 
 void ToolTableModel::refreshAll() {
