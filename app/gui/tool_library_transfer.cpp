@@ -78,7 +78,7 @@ ToolLibraryTransfer::ToolLibraryTransfer(FeatureContext& context, QWidget* dialo
 }
 
 void ToolLibraryTransfer::importFile(const QString& path, std::optional<app::ToolLibraryFormat> format,
-                                     const app::ToolImportOptions& options, Chooser choose) {
+                                     const app::ToolImportOptions& options, const Chooser& choose) {
   const quint64 generation = ++generation_;
   running_ = true;
   runEngineTask<app::ImportedLibrary>(

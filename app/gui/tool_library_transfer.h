@@ -31,7 +31,7 @@ class ToolLibraryTransfer : public QObject {
   // Reads `path` on the engine thread, then asks `choose` (the dialog when null) and requests the
   // merged project. Ends with importFinished (error "" on success, or "cancelled").
   void importFile(const QString& path, std::optional<app::ToolLibraryFormat> format,
-                  const app::ToolImportOptions& options, Chooser choose = {});
+                  const app::ToolImportOptions& options, const Chooser& choose = {});
   // Writes the project's tools; "" or the reason.
   QString exportFile(const QString& path, app::ToolLibraryFormat format) const;
   bool importRunning() const { return running_; }

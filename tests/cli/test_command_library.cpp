@@ -18,7 +18,7 @@ namespace {
 const QString kRubio = test::projectsPath("rubio2006-tool-selection.mxproj");
 
 QString copyOf(const QTemporaryDir& dir, const QString& source, const QString& name) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile::copy(source, path);
   QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
   return path;
@@ -29,7 +29,7 @@ QString emptyProject(const QTemporaryDir& dir) {
   app::Project p = app::loadProject(kRubio);
   p.tools.clear();
   p.expert.reset();
-  const QString path = dir.filePath("empty.mxproj");
+  QString path = dir.filePath("empty.mxproj");
   app::saveProject(p, path);
   return path;
 }

@@ -35,7 +35,7 @@ Transfer* transferOf(const gui::MainWindow& w) {
 }
 
 // Runs one import with `choice` and returns importFinished's error ("" on success).
-QString runImport(gui::MainWindow& w, const QString& path, std::optional<Transfer::Choice> choice,
+QString runImport(gui::MainWindow& w, const QString& path, const std::optional<Transfer::Choice>& choice,
                   QString* summary = nullptr) {
   QSignalSpy finished(transferOf(w), &Transfer::importFinished);
   transferOf(w)->importFile(path, std::nullopt, {},

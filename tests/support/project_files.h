@@ -25,7 +25,7 @@ inline QByteArray readBytes(const QString& path) {
 
 // Writes `bytes` to `name` in `dir`; returns its path.
 inline QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) qFatal("cannot write %s", qPrintable(path));
   return path;

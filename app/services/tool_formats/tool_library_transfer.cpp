@@ -83,7 +83,7 @@ ImportedLibrary fromLinuxCnc(const QString& path, const ToolImportOptions& optio
 QString uniqueId(const QString& id, const QSet<QString>& taken) {
   if (!taken.contains(id)) return id;
   for (int n = 2;; ++n) {
-    const QString candidate = QString("%1-%2").arg(id).arg(n);
+    QString candidate = QString("%1-%2").arg(id).arg(n);
     if (!taken.contains(candidate)) return candidate;
   }
 }
