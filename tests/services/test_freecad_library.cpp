@@ -547,7 +547,8 @@ class TestFreecadLibrary : public QObject {
     QFile plain(dir.filePath("plain"));
     QVERIFY(plain.open(QIODevice::WriteOnly));
     plain.close();
-    QVERIFY(app::writeFreeCadFolder(files, plain.fileName()).endsWith("': not a folder"));
+    // The path is quoted, and shortened past 80 characters (a deep TMPDIR): only the reason is compared.
+    QVERIFY(app::writeFreeCadFolder(files, plain.fileName()).endsWith(": not a folder"));
     QVERIFY(QDir(dir.path()).mkpath("out/Bit/T1.fctb"));
     const QString problem = app::writeFreeCadFolder(files, dir.filePath("out"));
     QVERIFY2(problem.startsWith("Bit/T1.fctb: ") && problem.contains("directory"), qPrintable(problem));
