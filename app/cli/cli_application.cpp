@@ -24,7 +24,7 @@ const char* kUsage =
     "  weights-sweep  minimum tool cost against the weights (--c3 V | --simplex STEP)\n"
     "  history   Rule 14 learning database, newest first ([--tool ID] [--db FILE] [--add-json JSON])\n"
     "  pareto    Pareto expert system ([--w tol,mrr,surf,ros] [--fine] [--require mrr_cm3_s=LO:HI] [--auto-weights])\n"
-    "  sdnrp     Cus & Zuperl force/roughness control (--ra UM [--seconds 15] [--csv FILE])\n"
+    "  sdnrp     Cus & Zuperl force/roughness control (--ra UM [--seconds 15] [--csv FILE] [--no-control])\n"
     "  override  optimise a G-code program: override PROGRAM.nc PROJECT --out OUT.nc [--csv FILE]\n"
     "  supervise supervisory control of face milling (--controller none|smc1|smc2 [--csv FILE])\n"
     "  control   adaptive force control under beta-FROH (--beta B [--csv FILE] | --sweep-beta FROM:TO:STEP)\n"

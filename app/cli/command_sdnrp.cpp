@@ -1,10 +1,17 @@
-// millexpert-cli sdnrp PROJECT --ra UM [--seconds 15] [--csv FILE] [--no-disturbance] [--seed N]
+// millexpert-cli sdnrp PROJECT --ra UM [--seconds 15] [--csv FILE] [--no-disturbance] [--seed N] [--no-control]
 // Cus & Zuperl (2008): the SDNRP loop that holds the cutting force at F_d = K1(Ra) so that the produced
 // roughness meets the desired Ra (engine/sdnrp; the project's "sdnrp" section, sdnrp_request.h).
 // Prints {"Ra_desired","Fd_N","F_final_N","feed_final_mm_min","speed_final_rpm","Ra_produced"} (um, N,
 // mm/min, rpm) plus "feed_saturated" (F_d not reachable within the feed limits), "disturbance",
 // "seed" and "seconds". --csv: the six console signals of the paper's section 5 every 10 ms.
+// --no-control: the paper's run without SDNRP (Figs 12 and 14): feed and speed held at the loop's
+// initial ones, same plant, drives and disturbance. Both runs also print "control", the held or starting
+// "initial_feed_mm_min" and "initial_speed_rpm", and the spread of the measured force and of its Ra,
+// {"min","max","mean","std","rms_error"} (rms_error about F_d and Ra_desired), over the whole run
+// ("F_spread_N", "Ra_spread_um") and over the final second ("F_final_spread_N", "Ra_final_spread_um").
 // Exit 2: bad project or flags (Ra outside 0.25..2.5 um); exit 1: the simulation failed.
+#include <QJsonObject>
+
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_support.h"
@@ -26,6 +33,14 @@ void writeSignals(const QString& path, const SdnrpResult& r) {
   });
 }
 
+QJsonObject spreadJson(const SdnrpSpread& s, double scale) {
+  return {{"min", s.min * scale},
+          {"max", s.max * scale},
+          {"mean", s.mean * scale},
+          {"std", s.std * scale},
+          {"rms_error", s.rms_error * scale}};
+}
+
 }  // namespace
 
 int runSdnrpCommand(const QStringList& arguments) {
@@ -38,6 +53,7 @@ int runSdnrpCommand(const QStringList& arguments) {
       {"csv", "Write the six signals (every 10 ms) to FILE.", "FILE"},
       {"no-disturbance", "Switch the unmodelled-dynamics disturbance off."},
       {"seed", "Seed of the disturbance generator.", "N"},
+      {"no-control", "Run without SDNRP: feed and speed held at the initial ones (the paper's Figs 12 and 14)."},
   });
   const QString path = parseSubcommand(parser, arguments);
   const std::optional<double> ra = numberOption(parser, "ra", 0.25, 2.5);
@@ -49,6 +65,7 @@ int runSdnrpCommand(const QStringList& arguments) {
   if (seconds) s.duration_s = *seconds;
   if (seed) s.disturbance.seed = static_cast<std::uint64_t>(*seed);
   if (parser.isSet("no-disturbance")) s.disturbance.enabled = false;
+  if (parser.isSet("no-control")) s.control = false;
   SdnrpResult r;
   try {
     r = SdnrpSimulator(s).run();
@@ -67,7 +84,14 @@ int runSdnrpCommand(const QStringList& arguments) {
              {"feed_saturated", r.feed_saturated},
              {"disturbance", s.disturbance.enabled},
              {"seed", static_cast<qint64>(s.disturbance.seed)},
-             {"seconds", s.duration_s}});
+             {"seconds", s.duration_s},
+             {"control", r.control},
+             {"initial_feed_mm_min", r.initial_feed_m_per_s * 60e3},
+             {"initial_speed_rpm", r.initial_speed_rev_per_s * 60.0},
+             {"F_spread_N", spreadJson(r.force_run, 1.0)},
+             {"Ra_spread_um", spreadJson(r.ra_run, 1e6)},
+             {"F_final_spread_N", spreadJson(r.force_final, 1.0)},
+             {"Ra_final_spread_um", spreadJson(r.ra_final, 1e6)}});
   return kExitOk;
 }
 

@@ -18,6 +18,24 @@ void requirePositive(const char* field, double v, const char* unit) {
 constexpr double kMmMin = 1e-3 / 60.0;  // 1 mm/min in m/s
 constexpr double kRpm = 1.0 / 60.0;     // 1 rpm in rev/s
 
+// Sums of the deviation from the target, so that a constant signal gives std = 0 up to rounding.
+struct SpreadSum {
+  double target = 0.0, lo = 0.0, hi = 0.0, sum = 0.0, sum_sq = 0.0;
+  long long n = 0;
+  void add(double v) {
+    lo = n == 0 ? v : std::min(lo, v);
+    hi = n == 0 ? v : std::max(hi, v);
+    sum += v - target;
+    sum_sq += (v - target) * (v - target);
+    ++n;
+  }
+  SdnrpSpread spread(double scale) const {
+    const double m = static_cast<double>(n), d = sum / m, ms = sum_sq / m;
+    return {lo * scale, hi * scale, (target + d) * scale, std::sqrt(std::max(0.0, ms - d * d)) * scale,
+            std::sqrt(ms) * scale};
+  }
+};
+
 }  // namespace
 
 SdnrpSimulator::SdnrpSimulator(SdnrpSettings s) : settings_(s) {
@@ -72,21 +90,24 @@ SdnrpResult SdnrpSimulator::run(const JobControl& job) const {
   const double n0 = s.initial_speed_rev_per_s == s.initial_speed_rev_per_s ? s.initial_speed_rev_per_s / kRpm : n_c;
   r.initial_feed_m_per_s = f0 * kMmMin;
   r.initial_speed_rev_per_s = n0 * kRpm;
+  r.control = s.control;
+  // Without SDNRP the commands stay at the starting point, so the drives rest there (derivatives 0).
+  const double n_cmd = s.control ? n_c : n0;
 
   // state: f_a, f_a', n_a, x (integral); bumpless start: f_c(0) = f0
   using State = std::array<double, 4>;
   State y{f0, 0.0, n0, f0 - f_ff};
   auto force = [](double n, double f) { return SdnrpModels::cuttingForce(std::max(n, 0.0), std::max(f, 1.0)); };
-  auto command = [&](double x) { return std::clamp(f_ff + x, f_min, f_max); };
+  auto command = [&](double x) { return s.control ? std::clamp(f_ff + x, f_min, f_max) : f0; };
   auto deriv = [&](const State& q, double dist) {
     const double F_meas = force(q[2], q[0]) + dist;
     const double e = Fd - F_meas;
     const double gain = SdnrpModels::cuttingForceFeedSensitivity(std::max(q[0], f_min));
-    double dx = lambda * e / std::max(gain, 1e-6);
+    double dx = s.control ? lambda * e / std::max(gain, 1e-6) : 0.0;
     const double raw = f_ff + q[3];
     if ((raw >= f_max && dx > 0.0) || (raw <= f_min && dx < 0.0)) dx = 0.0;  // anti-windup
     const double fc = command(q[3]);
-    return State{q[1], w * w * (fc - q[0]) - 2.0 * zeta * w * q[1], (n_c - q[2]) / tau_s, dx};
+    return State{q[1], w * w * (fc - q[0]) - 2.0 * zeta * w * q[1], (n_cmd - q[2]) / tau_s, dx};
   };
 
   UnmodelledDynamics disturbance(s.disturbance);
@@ -98,6 +119,7 @@ SdnrpResult SdnrpSimulator::run(const JobControl& job) const {
   r.samples.reserve(static_cast<std::size_t>(steps / out_every + 2));
   double sum_F = 0.0, sum_f = 0.0, sum_n = 0.0, sum_ra = 0.0;
   long long in_window = 0;
+  SpreadSum force_run{Fd}, force_final{Fd}, ra_run{ra_d}, ra_final{ra_d};
 
   for (long long k = 0; k <= steps; ++k) {
     const double t = static_cast<double>(k) * dt;
@@ -114,14 +136,19 @@ SdnrpResult SdnrpSimulator::run(const JobControl& job) const {
       smp.feed_m_per_s = y[0] * kMmMin;
       smp.speed_rev_per_s = y[2] * kRpm;
       smp.feed_command_m_per_s = command(y[3]) * kMmMin;
-      smp.speed_command_rev_per_s = n_c * kRpm;
+      smp.speed_command_rev_per_s = n_cmd * kRpm;
       r.samples.push_back(smp);
     }
+    const double ra_meas = SdnrpModels::roughness(std::min(F_meas, 292.0));
+    force_run.add(F_meas);
+    ra_run.add(ra_meas);
     if (k > steps - window_steps) {
       sum_F += F_meas;
       sum_f += y[0];
       sum_n += y[2];
-      sum_ra += SdnrpModels::roughness(std::min(F_meas, 292.0));
+      sum_ra += ra_meas;
+      force_final.add(F_meas);
+      ra_final.add(ra_meas);
       ++in_window;
     }
     if (k == steps) break;
@@ -149,7 +176,11 @@ SdnrpResult SdnrpSimulator::run(const JobControl& job) const {
   r.speed_final_rev_per_s = sum_n / m * kRpm;
   r.ra_produced_m = sum_ra / m * 1e-6;
   const double raw = f_ff + y[3];
-  r.feed_saturated = raw >= f_max || raw <= f_min;
+  r.feed_saturated = s.control && (raw >= f_max || raw <= f_min);
+  r.force_run = force_run.spread(1.0);
+  r.force_final = force_final.spread(1.0);
+  r.ra_run = ra_run.spread(1e-6);
+  r.ra_final = ra_final.spread(1e-6);
   job.report(1.0);
   return r;
 }

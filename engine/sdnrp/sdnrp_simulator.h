@@ -13,6 +13,10 @@
 //   F = K4(n_a, f_a),  F_meas = F + disturbance (UnmodelledDynamics),  Ra = K5(F), Ra_dyn = K5(F_meas)
 // Integrated with RK4 at a fixed step (disturbance held over a step). The drive models are ours: the
 // paper's Figs 1 and 3 (Heller servo-drive data) were lost in extraction; see docs/sdnrp-gcode-notes.md.
+// control = false is the paper's run "without application of SDNRP" (Figs 12 and 14): the commands are
+// held at the loop's own starting point (f_c = f_a(0), n_c = n_a(0): the initial cutting conditions of
+// Table 1 / Table 2, or f_ff and n_c when unset), so the same plant, drives and disturbance (same seed)
+// act on a constant feed and speed, and the disturbance reaches F and Ra unopposed.
 // API in SI units (Ra in m, feed in m/s, speed in rev/s); the GP models run in the paper's units.
 #include <limits>
 #include <vector>
@@ -42,6 +46,7 @@ struct SdnrpSettings {
   double min_speed_rev_per_s = 500.0 / 60.0;
   double max_speed_rev_per_s = 6000.0 / 60.0;
   double integral_rate_per_s = 2.0;  // lambda
+  bool control = true;               // false: no SDNRP, feed and speed held at the initial ones
   SdnrpDriveSettings drives;
   UnmodelledDynamicsSettings disturbance;
 };
@@ -59,6 +64,13 @@ struct SdnrpSample {
   double speed_command_rev_per_s = 0.0;
 };
 
+// Spread of a signal over an interval, sampled at every integration step.
+struct SdnrpSpread {
+  double min = 0.0, max = 0.0, mean = 0.0;
+  double std = 0.0;        // about the mean
+  double rms_error = 0.0;  // about the target (F_d, Ra_d): what the loop is there to remove
+};
+
 struct SdnrpResult {
   std::vector<SdnrpSample> samples;
   double ra_desired_m = 0.0;
@@ -71,7 +83,11 @@ struct SdnrpResult {
   double speed_command_rev_per_s = 0.0;       // clamped K3(F_d)
   double initial_feed_m_per_s = 0.0;
   double initial_speed_rev_per_s = 0.0;
-  bool feed_saturated = false;  // f_c on a limit at the end: F_d not reachable
+  bool feed_saturated = false;  // f_c on a limit at the end: F_d not reachable (false without control)
+  bool control = true;          // the loop ran (SdnrpSettings::control)
+  // Measured force F + disturbance [N] and Ra = K5(F + disturbance) [m], over the whole run and over
+  // the final window.
+  SdnrpSpread force_run, force_final, ra_run, ra_final;
 };
 
 class SdnrpSimulator {

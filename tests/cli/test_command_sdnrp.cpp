@@ -1,13 +1,17 @@
 // millexpert-cli sdnrp and override: the fixed JSON keys; the SDNRP loop holds F at F_d
 // (2 %) and Ra at the desired value (10 %) with the disturbance, exactly without it; the override
 // writes a program that differs from the input only in F/S words and comments, with a header, and the
-// CSV table; the adaptive controller is used when the project has a control section; bad input exits 2.
+// CSV table; the adaptive controller is used when the project has a control section; bad input exits 2;
+// --no-control holds feed and speed at the initial ones (F = K4 of them without the disturbance) and
+// prints the same keys, with "control" and the spreads that show what the loop removes.
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "sdnrp/gp_models.h"
 #include "support/cli_runner.h"
 #include "support/hostile_files.h"
 #include "support/json_mutation.h"
@@ -76,6 +80,47 @@ class TestCliSdnrp : public QObject {
     const mx::test::CliRun badSection = mx::test::runCli({"sdnrp", p});
     QCOMPARE(badSection.code, 2);
     QVERIFY(badSection.err.contains("sdnrp.disturbance.sigma_N = -1: must be in [0, 1e4]"));
+  }
+
+  void sdnrpNoControl() {
+    // Sim 5 of the project: f = 430.41 mm/min, n = 1571 rpm held, F = K4(1571, 430.41) = 225.38 N.
+    const double F = mx::SdnrpModels::cuttingForce(1571.0, 430.41);
+    const mx::test::CliRun exact = mx::test::runCli({"sdnrp", kSdnrp, "--no-control", "--no-disturbance"});
+    QCOMPARE(exact.code, 0);
+    QCOMPARE(exact.json["control"].toBool(true), false);
+    QCOMPARE_LE(std::abs(exact.json["F_final_N"].toDouble() - F), 1e-9 * F);
+    QCOMPARE_LE(std::abs(exact.json["Ra_produced"].toDouble() - mx::SdnrpModels::roughness(F)), 1e-9);
+    QCOMPARE_LE(std::abs(exact.json["feed_final_mm_min"].toDouble() - 430.41), 1e-9);
+    QCOMPARE_LE(std::abs(exact.json["speed_final_rpm"].toDouble() - 1571.0), 1e-9);
+    const QJsonObject flat = exact.json["F_spread_N"].toObject();
+    QCOMPARE(flat["min"].toDouble(), flat["max"].toDouble());
+    QCOMPARE_LE(flat["std"].toDouble(), 1e-6);
+
+    const mx::test::CliRun off = mx::test::runCli({"sdnrp", kSdnrp, "--no-control"});
+    const mx::test::CliRun on = mx::test::runCli({"sdnrp", kSdnrp});
+    QCOMPARE(off.code, 0);
+    QCOMPARE(on.code, 0);
+    QCOMPARE(off.json.keys(), on.json.keys());  // the same keys, the controlled ones unchanged
+    for (const char* key :
+         {"Ra_desired", "Fd_N", "F_final_N", "feed_final_mm_min", "speed_final_rpm", "Ra_produced", "feed_saturated",
+          "disturbance", "seed", "seconds", "control", "initial_feed_mm_min", "initial_speed_rpm", "F_spread_N",
+          "Ra_spread_um", "F_final_spread_N", "Ra_final_spread_um"})
+      QVERIFY2(off.json.contains(key), key);
+    for (const char* key : {"F_spread_N", "Ra_spread_um", "F_final_spread_N", "Ra_final_spread_um"})
+      QCOMPARE(off.json[key].toObject().keys(), (QStringList{"max", "mean", "min", "rms_error", "std"}));
+    QCOMPARE(on.json["control"].toBool(false), true);
+    QCOMPARE(off.json["initial_feed_mm_min"].toDouble(), 430.41);
+    QCOMPARE(off.json["initial_speed_rpm"].toDouble(), 1571.0);
+    QCOMPARE(off.json["feed_saturated"].toBool(true), false);
+    // The measured force scatters about K4 of the held point (sigma 3 N), far from F_d = 188 N; the loop
+    // brings its rms error about F_d from 37.6 to 3.0 N and Ra's from 1.17 to 0.046 um (final second).
+    const QJsonObject f_off = off.json["F_final_spread_N"].toObject(), f_on = on.json["F_final_spread_N"].toObject();
+    QCOMPARE_LE(std::abs(off.json["F_spread_N"].toObject()["mean"].toDouble() - F), 0.3);
+    QCOMPARE_LT(f_on["rms_error"].toDouble(), f_off["rms_error"].toDouble() / 10.0);
+    const QJsonObject ra_off = off.json["Ra_final_spread_um"].toObject();
+    const QJsonObject ra_on = on.json["Ra_final_spread_um"].toObject();
+    QCOMPARE_LT(ra_on["rms_error"].toDouble(), ra_off["rms_error"].toDouble() / 20.0);
+    QCOMPARE_LT(ra_on["max"].toDouble(), ra_off["min"].toDouble());  // the two Ra bands do not overlap
   }
 
   void overrideChangesOnlyFeedsAndComments_data() {
