@@ -3,7 +3,8 @@
 // of the reading notes; the sweep flags exactly the betas below the threshold and its best beta is
 // the argmin of J_c over the others; --csv has one row per sample; bad input exits 2 naming the field; the
 // spindle sampling period reproduces the figure 9 run key by key, Rule 4 saves samples, and the Pareto case's
-// programme (Fig. 6) reports each point's settled feed beside the analytic 600 N feed and Table 4's.
+// programme (Fig. 6) reports each point's settled feed beside the analytic 600 N feed and Table 4's; --beta-study
+// prints one row per tau_c with both readings of eq. 34.
 #include <QFile>
 #include <QJsonArray>
 #include <QTemporaryDir>
@@ -155,6 +156,62 @@ class TestCliControl : public QObject {
     QVERIFY(r.json["spindle_revolutions"].toDouble() > r.json["samples"].toInt());
   }
 
+  // --beta-study: the keys, one row per tau_c, the paper's -0.6 at tau_c = T/6 (within 0.01), each reading's best
+  // beta the argmin of its J_c over the stable-zero betas, and no match with figure 13 at these tau_c.
+  void betaStudy() {
+    const double T = 60.0 / 715.0;
+    const QString taus = QString("%1,%2").arg(T / 8.0 * 1e3, 0, 'g', 17).arg(T / 6.0 * 1e3, 0, 'g', 17);
+    const mx::test::CliRun r =
+        mx::test::runCli({"control", kProject, "--beta-study", "--tau-c-ms", taus, "--sweep-beta=-1:1:0.1"});
+    QCOMPARE(r.code, 0);
+    for (const char* key : {"sampling_period_s", "default_tau_c_ms", "paper", "beta", "rows", "matches_paper",
+                            "tau_c_at_paper_threshold_ms", "tau_c_near_paper_threshold_ms"})
+      QVERIFY2(r.json.contains(key), key);
+    QCOMPARE_LE(std::abs(r.json["default_tau_c_ms"].toDouble() - T / 8.0 * 1e3), 1e-9);
+    QCOMPARE(r.json["paper"].toObject()["threshold_beta"].toDouble(), -0.6);
+    QCOMPARE(r.json["paper"].toObject()["best_beta"].toDouble(), -0.3);
+    const QJsonArray beta = r.json["beta"].toArray(), rows = r.json["rows"].toArray();
+    QCOMPARE(beta.size(), 21);
+    QCOMPARE(rows.size(), 2);
+    QCOMPARE_LE(std::abs(rows[0].toObject()["tau_c_over_T"].toDouble() - 0.125), 1e-12);
+    QCOMPARE_LE(std::abs(rows[1].toObject()["threshold_beta"].toDouble() - (-0.6)), 0.01);
+    for (const auto& row_value : rows) {
+      const QJsonObject row = row_value.toObject();
+      for (const char* key : {"tau_c_ms", "tau_c_over_T", "threshold_beta", "first_order_threshold_beta",
+                              "threshold_near_paper", "unstable_zero", "readings"})
+        QVERIFY2(row.contains(key), key);
+      QVERIFY(row["threshold_near_paper"].toBool());
+      const QJsonArray readings = row["readings"].toArray(), unstable = row["unstable_zero"].toArray();
+      QCOMPARE(readings.size(), 2);
+      QCOMPARE(readings[0].toObject()["reading"].toString(), QString("plant_samples"));
+      QCOMPARE(readings[1].toObject()["reading"].toString(), QString("reference_model"));
+      for (const auto& reading_value : readings) {
+        const QJsonObject reading = reading_value.toObject();
+        for (const char* key : {"best_beta", "best_Jc", "near_paper", "isolated_minimum", "Jc"})
+          QVERIFY2(reading.contains(key), key);
+        const QJsonArray jc = reading["Jc"].toArray();
+        QCOMPARE(jc.size(), beta.size());
+        double best = INFINITY, best_beta = 0.0;
+        for (qsizetype i = 0; i < beta.size(); ++i) {
+          QCOMPARE(unstable[i].toBool(), beta[i].toDouble() < row["threshold_beta"].toDouble());
+          if (!unstable[i].toBool() && jc[i].toDouble() < best) {
+            best = jc[i].toDouble();
+            best_beta = beta[i].toDouble();
+          }
+        }
+        QCOMPARE(reading["best_beta"].toDouble(), best_beta);
+        QCOMPARE(reading["best_Jc"].toDouble(), best);
+        QCOMPARE(reading["near_paper"].toBool(), std::abs(best_beta - (-0.3)) <= 0.15);
+      }
+    }
+    QVERIFY(r.json["matches_paper"].isArray());
+    QVERIFY(r.json["matches_paper"].toArray().isEmpty());
+    // the tau_c of -0.6 exactly lies in the interval whose thresholds round to -0.6
+    const QJsonArray near = r.json["tau_c_near_paper_threshold_ms"].toArray();
+    const double at = r.json["tau_c_at_paper_threshold_ms"].toDouble();
+    QVERIFY(near[0].toDouble() < at && at < near[1].toDouble());
+  }
+
   void badInput_data() {
     QTest::addColumn<QStringList>("mutations");
     QTest::addColumn<QStringList>("flags");
@@ -164,6 +221,16 @@ class TestCliControl : public QObject {
     QTest::newRow("sweep order") << QStringList{} << QStringList{"--sweep-beta", "0.5:0:0.1"} << "FROM <= TO";
     QTest::newRow("sweep of 10000 runs") << QStringList{} << QStringList{"--sweep-beta", "-1:1:0.0002"}
                                          << "at most 400 steps (each a closed-loop run)";
+    QTest::newRow("tau_c zero") << QStringList{} << QStringList{"--beta-study", "--tau-c-ms", "0"}
+                                << "--tau-c-ms = '0': expected a comma-separated list or FROM:TO:STEP of 1 to 50 "
+                                   "values, each in (0, 10000] ms";
+    QTest::newRow("tau_c without study") << QStringList{} << QStringList{"--tau-c-ms", "10"}
+                                         << "--tau-c-ms: needs --beta-study";
+    QTest::newRow("study with beta") << QStringList{} << QStringList{"--beta-study", "--beta", "0"}
+                                     << "--beta: not allowed with --beta-study";
+    QTest::newRow("study too long") << QStringList{}
+                                    << QStringList{"--beta-study", "--sweep-beta", "-1:1:0.005", "--tau-c-ms", "1:50:1"}
+                                    << "closed-loop runs: at most 4000";
     QTest::newRow("no section") << QStringList{"-control"} << QStringList{} << "section 'control' is missing";
     QTest::newRow("negative depth") << QStringList{"control/workpiece/1/depth_mm=-1"} << QStringList{}
                                     << "control.workpiece[1].depth_mm = -1: must be in [0, 1000]";
