@@ -26,6 +26,8 @@ const QColor kDynamicColor(255, 127, 14);
 const QColor kReferenceColor(214, 39, 40);
 const QColor kFeedColor(44, 160, 44);
 const QColor kSpeedColor(148, 103, 189);
+const QColor kBaselineColor(90, 90, 90);
+const char* const kBaselineGraphs[] = {"ra_baseline", "force_baseline", "feed_baseline", "speed_baseline"};
 
 struct SummarySpec {
   const char* key;
@@ -42,7 +44,12 @@ constexpr SummarySpec kSummary[] = {
     {"f_final_n", "F [%1]", "Cutting force at the end of the run", Quantity::Force},
     {"feed_final_mm_min", "f_a [%1]", "Feed at the end of the run, as set by the force controller", Quantity::Feed},
     {"speed_final_rpm", "n_a [rpm]", "Spindle speed at the end of the run"},
+    {"ra_baseline_um", "Ra no SDNRP [\u00b5m]",
+     "Roughness Ra at the end of the run without SDNRP (feed and speed held at the initial ones), with the "
+     "machine-tool dynamics"},
+    {"f_baseline_n", "F no SDNRP [%1]", "Cutting force at the end of the run without SDNRP", Quantity::Force},
 };
+constexpr std::size_t kRunSummaryCount = 6;  // the entries of the run with SDNRP
 
 QString format(double v) {
   return MonitoringPanel::formatNumber(v);
@@ -106,14 +113,20 @@ SurfaceFinishPanel::SurfaceFinishPanel(QWidget* parent) : QWidget(parent), debou
     graphs_.insert(QString::fromLatin1(key), g);
     return g;
   };
-  add(ra, "ra", tr("Ra [\u00b5m]"), QPen(kActualColor, 2.0));
-  add(ra, "ra_dynamic", tr("Ra with machine-tool dynamics [\u00b5m]"), QPen(kDynamicColor, 1.0));
+  add(ra, "ra", tr("Ra, SDNRP [\u00b5m]"), QPen(kActualColor, 2.0));
+  add(ra, "ra_dynamic", tr("Ra with machine-tool dynamics, SDNRP [\u00b5m]"), QPen(kDynamicColor, 1.0));
   add(ra, "ra_desired", tr("Desired Ra_d [\u00b5m]"), QPen(kReferenceColor, 2.0, Qt::DashLine));
   add(force, "force", QString(), QPen(kActualColor, 2.0));
   add(force, "force_dynamic", QString(), QPen(kDynamicColor, 1.0));
   add(force, "fd", tr("Reference F_d"), QPen(kReferenceColor, 2.0, Qt::DashLine));
   add(feed, "feed", QString(), QPen(kFeedColor, 2.0));
-  add(speed, "speed", tr("Spindle speed n_a [rpm]"), QPen(kSpeedColor, 2.0));
+  add(speed, "speed", tr("Spindle speed n_a, SDNRP [rpm]"), QPen(kSpeedColor, 2.0));
+  // The run without SDNRP (Figs 12 and 14 of Cus & Zuperl): what the machine feels, dashed.
+  const QPen baseline(kBaselineColor, 1.0, Qt::DashLine);
+  add(ra, "ra_baseline", tr("Ra with machine-tool dynamics, no SDNRP (constant feed) [\u00b5m]"), baseline);
+  add(force, "force_baseline", QString(), baseline);
+  add(feed, "feed_baseline", QString(), baseline);
+  add(speed, "speed_baseline", tr("Spindle speed n_a, no SDNRP (constant) [rpm]"), baseline);
   grid->addWidget(ra, 0, 0);
   grid->addWidget(force, 0, 1);
   grid->addWidget(feed, 1, 0);
@@ -138,9 +151,11 @@ void SurfaceFinishPanel::relabel() {
   const QString force = u.symbol(Quantity::Force), feed = u.symbol(Quantity::Feed);
   plots_[1]->yAxis->setLabel(tr("Cutting force F [%1]").arg(force));
   plots_[2]->yAxis->setLabel(tr("Feed f_a [%1]").arg(feed));
-  graphs_["force"]->setName(tr("F [%1]").arg(force));
-  graphs_["force_dynamic"]->setName(tr("F with dynamic component [%1]").arg(force));
-  graphs_["feed"]->setName(tr("Feed f_a [%1]").arg(feed));
+  graphs_["force"]->setName(tr("F, SDNRP [%1]").arg(force));
+  graphs_["force_dynamic"]->setName(tr("F with dynamic component, SDNRP [%1]").arg(force));
+  graphs_["feed"]->setName(tr("Feed f_a, SDNRP [%1]").arg(feed));
+  graphs_["force_baseline"]->setName(tr("F with dynamic component, no SDNRP (constant feed) [%1]").arg(force));
+  graphs_["feed_baseline"]->setName(tr("Feed f_a, no SDNRP (constant) [%1]").arg(feed));
   for (const SummarySpec& spec : kSummary)
     summary_names_[QLatin1String(spec.key)]->setText(
         (spec.quantity ? tr(spec.label).arg(u.symbol(*spec.quantity)) : tr(spec.label)) + ":");
@@ -151,6 +166,8 @@ void SurfaceFinishPanel::reshow() {
   relabel();
   const QVector<SurfaceFinishSample> samples = samples_;
   const std::optional<SurfaceFinishSummary> summary = shown_summary_;
+  const QVector<SurfaceFinishSample> baseline = baseline_;
+  const std::optional<SurfaceFinishSummary> baseline_summary = baseline_summary_;
   const QString status = status_label_->text();
   const bool busy = busy_;
   busy_ = true;  // clear() keeps the status text while busy
@@ -158,6 +175,7 @@ void SurfaceFinishPanel::reshow() {
   busy_ = busy;
   appendSamples(samples);
   if (summary) setSummary(*summary);
+  if (baseline_summary) setBaseline(baseline, *baseline_summary);
   status_label_->setText(status);
 }
 
@@ -194,6 +212,14 @@ QWidget* SurfaceFinishPanel::buildControls() {
       tr("Adds the dynamic component of the machine tool (vibration) to the cutting force "
          "and the roughness; the controller has to reject it."));
   row->addWidget(disturbance_box_);
+  compare_box_ = new QCheckBox(tr("Compare with constant feed (no SDNRP)"), box);
+  compare_box_->setObjectName(QStringLiteral("surfaceFinishCompare"));
+  compare_box_->setChecked(true);
+  compare_box_->setToolTip(
+      tr("Also runs the same cut without the SDNRP loop (feed and speed held at the initial cutting "
+         "conditions, same disturbance) and draws it dashed: the paper's force and roughness \"without "
+         "application of SDNRP\"."));
+  row->addWidget(compare_box_);
   duration_spin_ = addSpin(row, tr("Duration [s]:"), "surfaceFinishDuration",
                            {kMinDurationS, kMaxDurationS, 1, 1.0, kDefaultDurationS},
                            tr("Simulated machining time, %1 to %2 s.").arg(kMinDurationS).arg(kMaxDurationS));
@@ -214,6 +240,7 @@ QWidget* SurfaceFinishPanel::buildControls() {
     userChanged();
   });
   connect(disturbance_box_, &QCheckBox::toggled, this, &SurfaceFinishPanel::userChanged);
+  connect(compare_box_, &QCheckBox::toggled, this, &SurfaceFinishPanel::userChanged);
   connect(duration_spin_, &QDoubleSpinBox::valueChanged, this, [this] {
     updateRanges();
     replotAll();
@@ -293,6 +320,16 @@ void SurfaceFinishPanel::setDurationS(double s) {
   programmatic_ = false;
 }
 
+bool SurfaceFinishPanel::compareOn() const {
+  return compare_box_->isChecked();
+}
+
+void SurfaceFinishPanel::setCompareOn(bool on) {
+  programmatic_ = true;
+  compare_box_->setChecked(on);
+  programmatic_ = false;
+}
+
 void SurfaceFinishPanel::userChanged() {
   if (!programmatic_) debounce_->start();  // restarts: one request after the last change
 }
@@ -300,8 +337,12 @@ void SurfaceFinishPanel::userChanged() {
 void SurfaceFinishPanel::clear() {
   samples_.clear();
   shown_summary_.reset();
+  baseline_.clear();
+  baseline_summary_.reset();
   for (const char* key : {"ra", "ra_dynamic", "force", "force_dynamic", "feed", "speed"})
     graphs_[QLatin1String(key)]->data()->clear();
+  for (const char* key : kBaselineGraphs) graphs_[QLatin1String(key)]->data()->clear();
+  showBaselineLegend(false);
   for (Range& r : ranges_) r = Range{};
   sample_count_ = 0;
   last_t_ = 0.0;
@@ -347,13 +388,13 @@ void SurfaceFinishPanel::setSummary(const SurfaceFinishSummary& s) {
   summary_shown_ = true;
   shown_summary_ = s;
   const ShopUnits& u = DisplayUnits::of(units_);
-  const double values[] = {s.ra_desired_um,
-                           s.ra_produced_um,
-                           u.fromBase(Quantity::Force, s.fd_n),
-                           u.fromBase(Quantity::Force, s.f_final_n),
-                           u.fromBase(Quantity::Feed, s.feed_final_mm_min),
-                           s.speed_final_rpm};  // kSummary order
-  for (std::size_t i = 0; i < std::size(kSummary); ++i)
+  const double values[kRunSummaryCount] = {s.ra_desired_um,
+                                           s.ra_produced_um,
+                                           u.fromBase(Quantity::Force, s.fd_n),
+                                           u.fromBase(Quantity::Force, s.f_final_n),
+                                           u.fromBase(Quantity::Feed, s.feed_final_mm_min),
+                                           s.speed_final_rpm};  // kSummary order
+  for (std::size_t i = 0; i < kRunSummaryCount; ++i)
     summary_[QLatin1String(kSummary[i].key)]->setText(format(values[i]));
   setReferences(std::isfinite(s.ra_desired_um) ? s.ra_desired_um : desiredRaUm(), s.fd_n);
   warning_label_->setVisible(s.feed_saturated);
@@ -363,8 +404,75 @@ void SurfaceFinishPanel::setSummary(const SurfaceFinishSummary& s) {
                                                       format(values[3]) + " " + u.symbol(Quantity::Force),
                                                       format(values[2]) + " " + u.symbol(Quantity::Force))
                                            : QString());
-  status_label_->setText(tr("Finished: Ra %1 \u00b5m produced for %2 \u00b5m desired.")
-                             .arg(format(s.ra_produced_um), format(s.ra_desired_um)));
+  finishedStatus();
+}
+
+void SurfaceFinishPanel::finishedStatus() {
+  if (!shown_summary_) return;
+  const SurfaceFinishSummary& s = *shown_summary_;
+  QString text = tr("Finished: Ra %1 \u00b5m produced for %2 \u00b5m desired")
+                     .arg(format(s.ra_produced_um), format(s.ra_desired_um));
+  if (baseline_summary_)
+    text += tr("; without SDNRP (constant feed) %1 \u00b5m").arg(format(baseline_summary_->ra_produced_um));
+  status_label_->setText(text + ".");
+}
+
+void SurfaceFinishPanel::setBaseline(const QVector<SurfaceFinishSample>& samples, const SurfaceFinishSummary& summary) {
+  clearBaseline();
+  baseline_ = samples;
+  baseline_summary_ = summary;
+  const ShopUnits& u = DisplayUnits::of(units_);
+  QCPGraph* g[] = {graphs_["ra_baseline"], graphs_["force_baseline"], graphs_["feed_baseline"],
+                   graphs_["speed_baseline"]};
+  for (const SurfaceFinishSample& s : samples) {
+    if (!std::isfinite(s.t_s)) continue;
+    // What the machine feels: F and Ra with the dynamic component (Figs 12 and 14).
+    const double v[] = {s.ra_dynamic_um, u.fromBase(Quantity::Force, s.force_dynamic_n),
+                        u.fromBase(Quantity::Feed, s.feed_mm_min), s.speed_rpm};
+    for (int i = 0; i < 4; ++i) {
+      if (!std::isfinite(v[i])) continue;
+      g[i]->addData(s.t_s, v[i]);
+      ranges_[i].add(v[i]);
+    }
+    last_t_ = std::max(last_t_, s.t_s);
+  }
+  summary_["ra_baseline_um"]->setText(format(summary.ra_produced_um));
+  summary_["f_baseline_n"]->setText(format(u.fromBase(Quantity::Force, summary.f_final_n)));
+  showBaselineLegend(true);
+  finishedStatus();
+  updateRanges();
+  replotAll();
+}
+
+// The ranges are rebuilt from the run with SDNRP alone.
+void SurfaceFinishPanel::clearBaseline() {
+  if (!baseline_summary_ && baseline_.isEmpty()) return;
+  baseline_.clear();
+  baseline_summary_.reset();
+  for (const char* key : kBaselineGraphs) graphs_[QLatin1String(key)]->data()->clear();
+  for (const char* key : {"ra_baseline_um", "f_baseline_n"}) summary_[QLatin1String(key)]->setText(kMissing);
+  showBaselineLegend(false);
+  const QVector<SurfaceFinishSample> samples = samples_;
+  const std::optional<SurfaceFinishSummary> summary = shown_summary_;
+  const QString status = status_label_->text();
+  const bool busy = busy_;
+  busy_ = true;  // clear() keeps the status text while busy
+  clear();
+  busy_ = busy;
+  appendSamples(samples);
+  if (summary) setSummary(*summary);
+  status_label_->setText(status);
+  finishedStatus();
+}
+
+void SurfaceFinishPanel::showBaselineLegend(bool shown) {
+  for (const char* key : kBaselineGraphs) {
+    QCPGraph* g = graphs_[QLatin1String(key)];
+    if (shown)
+      g->addToLegend();
+    else
+      g->removeFromLegend();
+  }
 }
 
 void SurfaceFinishPanel::setBusy(bool busy) {
@@ -427,6 +535,28 @@ QString SurfaceFinishPanel::summaryText(const QString& key) const {
 int SurfaceFinishPanel::graphDataCount(const QString& graph) const {
   const QCPGraph* g = graphs_.value(graph, nullptr);
   return g ? g->dataCount() : -1;
+}
+
+Qt::PenStyle SurfaceFinishPanel::graphPenStyle(const QString& graph) const {
+  const QCPGraph* g = graphs_.value(graph, nullptr);
+  return g ? g->pen().style() : Qt::NoPen;
+}
+
+int SurfaceFinishPanel::graphPlot(const QString& graph) const {
+  const QCPGraph* g = graphs_.value(graph, nullptr);
+  return g ? static_cast<int>(plots_.indexOf(g->parentPlot())) : -1;
+}
+
+double SurfaceFinishPanel::valueAxisUpper(int plot) const {
+  return plot >= 0 && plot < plots_.size() ? plots_[plot]->yAxis->range().upper : 0.0;
+}
+
+std::optional<std::pair<double, double>> SurfaceFinishPanel::graphValueRange(const QString& graph) const {
+  const QCPGraph* g = graphs_.value(graph, nullptr);
+  if (!g || g->dataCount() == 0) return std::nullopt;
+  bool found = false;
+  const QCPRange r = g->getValueRange(found);
+  return found ? std::optional(std::pair(r.lower, r.upper)) : std::nullopt;
 }
 
 QString SurfaceFinishPanel::graphName(const QString& graph) const {

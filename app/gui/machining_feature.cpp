@@ -5,6 +5,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <cmath>
+#include <optional>
 
 #include "document/output_file.h"
 #include "engine_task.h"
@@ -51,6 +52,28 @@ QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult
     rows.append(row);
   }
   return rows;
+}
+
+// The SDNRP run and, when compared, the same run without SDNRP.
+struct SurfaceFinishRuns {
+  SdnrpResult controlled;
+  std::optional<SdnrpResult> baseline;
+};
+
+// Shop units on the panel: Ra in um, feed in mm/min, speed in rpm.
+QVector<widgets::SurfaceFinishSample> panelSamples(const SdnrpResult& v) {
+  QVector<widgets::SurfaceFinishSample> samples;
+  samples.reserve(static_cast<qsizetype>(v.samples.size()));
+  for (const SdnrpSample& x : v.samples)
+    samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N, x.feed_m_per_s * 60e3,
+                    x.speed_rev_per_s * 60.0});
+  return samples;
+}
+
+widgets::SurfaceFinishSummary panelSummary(const SdnrpResult& v) {
+  return {
+      v.ra_desired_m * 1e6,  v.fd_N,          v.f_final_N, v.feed_final_m_per_s * 60e3, v.speed_final_rev_per_s * 60.0,
+      v.ra_produced_m * 1e6, v.feed_saturated};
 }
 
 // A device, FIFO or directory chosen in the dialog is refused, not replaced (document/output_file.h).
@@ -134,30 +157,35 @@ void MachiningFeature::runSurfaceFinish() {
   s.ra_desired_m = surface_panel_->desiredRaUm() * 1e-6;
   s.disturbance.enabled = surface_panel_->disturbanceOn();
   s.duration_s = surface_panel_->durationS();
+  const bool compare = surface_panel_->compareOn();
   const quint64 generation = ++sdnrp_generation_;
   surface_panel_->setBusy(true);
-  runEngineTask<SdnrpResult>(
-      channel_, pool_, [s] { return SdnrpSimulator(s).run(); },
-      [this, generation](TaskResult<SdnrpResult> r) {
+  runEngineTask<SurfaceFinishRuns>(
+      channel_, pool_,
+      [s, compare] {
+        SurfaceFinishRuns runs{SdnrpSimulator(s).run(), std::nullopt};
+        if (compare) {
+          SdnrpSettings held = s;  // same plant, drives, disturbance and seed
+          held.control = false;
+          runs.baseline = SdnrpSimulator(held).run();
+        }
+        return runs;
+      },
+      [this, generation](TaskResult<SurfaceFinishRuns> r) {
         if (generation != sdnrp_generation_) return;
         surface_panel_->setBusy(false);
         if (r.value)
-          showSurfaceFinish(*r.value);
+          showSurfaceFinish(r.value->controlled, r.value->baseline ? &*r.value->baseline : nullptr);
         else
           emit errorRaised(tr("Surface finish"), r.error);
       });
 }
 
-// Shop units on the panel: Ra in um, feed in mm/min, speed in rpm.
-void MachiningFeature::showSurfaceFinish(const SdnrpResult& v) {
+void MachiningFeature::showSurfaceFinish(const SdnrpResult& v, const SdnrpResult* baseline) {
   surface_panel_->clear();
-  QVector<widgets::SurfaceFinishSample> samples;
-  for (const SdnrpSample& x : v.samples)
-    samples.append({x.t_s, x.ra_m * 1e6, x.ra_dynamic_m * 1e6, x.force_N, x.force_dynamic_N, x.feed_m_per_s * 60e3,
-                    x.speed_rev_per_s * 60.0});
-  surface_panel_->appendSamples(samples);
-  surface_panel_->setSummary({v.ra_desired_m * 1e6, v.fd_N, v.f_final_N, v.feed_final_m_per_s * 60e3,
-                              v.speed_final_rev_per_s * 60.0, v.ra_produced_m * 1e6, v.feed_saturated});
+  surface_panel_->appendSamples(panelSamples(v));
+  surface_panel_->setSummary(panelSummary(v));
+  if (baseline) surface_panel_->setBaseline(panelSamples(*baseline), panelSummary(*baseline));
   emit surfaceFinishShown();
 }
 

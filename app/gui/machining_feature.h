@@ -29,7 +29,9 @@ class MachiningFeature : public WindowFeature {
   // The panel takes sdnrp.ra_um, disturbance and duration; an open program is overridden again when
   // the inputs of its controllers changed.
   void projectChanged(const app::Project& project, Features recompute) override;
-  void runSurfaceFinish();                         // SDNRP with the panel's Ra, disturbance, duration
+  // SDNRP with the panel's Ra, disturbance, duration; with "Compare" also the same run without SDNRP
+  // (SdnrpSettings::control = false), both in one engine task.
+  void runSurfaceFinish();
   void openPartProgram(const QString& path);       // override with the project's controller
   bool exportPartProgram(const QString& path);     // the optimised program
   bool exportPartProgramCsv(const QString& path);  // the per-block feed-override table
@@ -37,13 +39,13 @@ class MachiningFeature : public WindowFeature {
   widgets::PartProgramPanel* programPanel() const { return program_panel_; }
 
  signals:
-  void surfaceFinishShown();  // an SDNRP run arrived
+  void surfaceFinishShown();  // an SDNRP run (and its baseline without SDNRP, when compared) arrived
   void partProgramShown();    // an override of the opened program arrived
 
  private:
   void addDocks();
   void connectPanels();
-  void showSurfaceFinish(const SdnrpResult& result);
+  void showSurfaceFinish(const SdnrpResult& result, const SdnrpResult* baseline);
   void showOverride(const QString& path, app::OverrideOutcome outcome);
 
   QMainWindow* window_;

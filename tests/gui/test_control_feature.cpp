@@ -2,8 +2,9 @@
 // drives the closed loop on the engine thread and its result reaches the view (traces, metrics equal
 // to an independent engine run, pole-zero map, J_c sweep); a beta change is one undoable edit of
 // control.beta; an invalid workpiece is refused with the project unchanged; the surface-finish panel
-// runs the SDNRP loop; a part program is overridden and exported (only F/S words and comments change);
-// a tool-table edit re-runs the control view, which then agrees with the CLI on the saved project; a
+// runs the SDNRP loop and, compared, the same cut without SDNRP (dashed, equal to an engine run with
+// control off; constant feed; gone when not compared); a part program is overridden and exported (only F/S words and
+// comments change); a tool-table edit re-runs the control view, which then agrees with the CLI on the saved project; a
 // drag of the beta slider is one undo step.
 #include <QApplication>
 #include <QFile>
@@ -11,6 +12,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 
 #include "control/closed_loop.h"
@@ -24,7 +26,9 @@
 #include "main_window.h"
 #include "monitoring_panel.h"
 #include "part_program_panel.h"
+#include "sdnrp/sdnrp_simulator.h"
 #include "services/control_request.h"
+#include "services/sdnrp_request.h"
 #include "support/cli_runner.h"
 #include "support/window_features.h"
 #include "surface_finish_panel.h"
@@ -161,6 +165,51 @@ class TestControlFeature : public QObject {
     QVERIFY(shown.wait(30000));
     QCOMPARE(panel->sampleCount(), 1501);  // 15 s every 10 ms, t = 0 included
     QVERIFY(!panel->summaryText("f_final_n").isEmpty());
+  }
+
+  void surfaceFinishComparesWithoutSdnrp() {
+    gui::MainWindow window;
+    QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
+    widgets::SurfaceFinishPanel* panel = machining(window)->surfacePanel();
+    QVERIFY(panel->compareOn());
+    QSignalSpy shown(machining(window), &gui::MachiningFeature::surfaceFinishShown);
+    machining(window)->runSurfaceFinish();
+    QVERIFY(shown.wait(30000));
+    QCOMPARE(panel->sampleCount(), 1501);
+    QCOMPARE(panel->baselineSampleCount(), 1501);
+    for (const char* g : {"ra_baseline", "force_baseline", "feed_baseline", "speed_baseline"}) {
+      QCOMPARE(panel->graphDataCount(g), 1501);
+      QVERIFY2(panel->graphInLegend(g), g);
+      QCOMPARE(panel->graphPenStyle(g), Qt::DashLine);
+    }
+    // The project's initial cutting conditions (Table 1: 430.41 mm/min, 1571 rpm) held all along.
+    QCOMPARE(panel->graphValueRange("feed_baseline")->first, 430.41);
+    QCOMPARE(panel->graphValueRange("feed_baseline")->second, 430.41);
+    QCOMPARE(panel->graphValueRange("speed_baseline")->second, 1571.0);
+    // The baseline is the engine's run without control, same settings and seed.
+    SdnrpSettings s = app::sdnrpSettingsFromProject(*window.project());
+    s.control = false;
+    const SdnrpResult direct = SdnrpSimulator(s).run();
+    QCOMPARE(panel->summaryText("ra_baseline_um"), widgets::MonitoringPanel::formatNumber(direct.ra_produced_m * 1e6));
+    QCOMPARE(panel->summaryText("f_baseline_n"), widgets::MonitoringPanel::formatNumber(direct.f_final_N));
+    double lo = direct.samples.front().force_dynamic_N, hi = lo;
+    for (const SdnrpSample& x : direct.samples) {
+      lo = std::min(lo, x.force_dynamic_N);
+      hi = std::max(hi, x.force_dynamic_N);
+    }
+    QCOMPARE(panel->graphValueRange("force_baseline")->first, lo);
+    QCOMPARE(panel->graphValueRange("force_baseline")->second, hi);
+    // Without SDNRP F scatters about K4(1571, 430.41) = 225 N; with it F settles at F_d = 188 N.
+    QVERIFY(panel->graphValueRange("force_baseline")->first > 210.0);
+    QVERIFY(panel->graphValueRange("force_dynamic")->first < 190.0);
+
+    panel->setCompareOn(false);
+    shown.clear();
+    machining(window)->runSurfaceFinish();
+    QVERIFY(shown.wait(30000));
+    QCOMPARE(panel->sampleCount(), 1501);
+    QCOMPARE(panel->baselineSampleCount(), 0);
+    QVERIFY(!panel->graphInLegend("force_baseline"));
   }
 
   void partProgramOverrideAndExport() {

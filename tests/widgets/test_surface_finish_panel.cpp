@@ -1,6 +1,7 @@
 // The SDNRP surface-finish panel: the Ra, disturbance and duration controls (clamping, no signal from
 // the setters, one debounced runRequested after user changes, Run), the streamed plots, the summary
-// with units and the feed-saturation warning.
+// with units and the feed-saturation warning; the run without SDNRP drawn dashed beside the run, named
+// in the legends, in the axis ranges and the summary, and cleared on its own.
 #include <QApplication>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -20,8 +21,8 @@ using mx::widgets::SurfaceFinishSummary;
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const QString kDash = QStringLiteral("\u2013");
-const QStringList kSummaryKeys = {"ra_desired_um",   "fd_n",          "f_final_n", "feed_final_mm_min",
-                                  "speed_final_rpm", "ra_produced_um"};
+const QStringList kSummaryKeys = {"ra_desired_um",   "fd_n",           "f_final_n",      "feed_final_mm_min",
+                                  "speed_final_rpm", "ra_produced_um", "ra_baseline_um", "f_baseline_n"};
 const QStringList kDataGraphs = {"ra", "ra_dynamic", "force", "force_dynamic", "feed", "speed"};
 
 QVector<SurfaceFinishSample> ramp(int n, double t0, double dt) {
@@ -262,6 +263,86 @@ class TestSurfaceFinishPanel : public QObject {
     for (QWidget* w : {static_cast<QWidget*>(panel.raSpin()), static_cast<QWidget*>(panel.disturbanceBox()),
                        static_cast<QWidget*>(panel.durationSpin()), static_cast<QWidget*>(panel.runButton())})
       QVERIFY(!w->toolTip().isEmpty());
+  }
+
+  void baselineBesideTheRun() {
+    SurfaceFinishPanel panel;
+    QVERIFY(panel.compareOn());  // compared by default
+    QVERIFY(!panel.compareBox()->toolTip().isEmpty());
+    QSignalSpy spy(&panel, &SurfaceFinishPanel::runRequested);
+    panel.setCompareOn(false);
+    QVERIFY(!panel.compareOn());
+    QCOMPARE(spy.count(), 0);  // no signal from the setter
+    const QStringList baseline = {"ra_baseline", "force_baseline", "feed_baseline", "speed_baseline"};
+    for (const QString& g : baseline) {
+      QCOMPARE(panel.graphDataCount(g), 0);
+      QVERIFY2(!panel.graphInLegend(g), qPrintable(g));
+    }
+    panel.appendSamples(ramp(20, 0.0, 0.5));  // F 400..429 N
+    SurfaceFinishSummary s;
+    s.ra_desired_um = 0.81;
+    s.fd_n = 410.0;
+    s.f_final_n = 410.1;
+    s.ra_produced_um = 0.812;
+    panel.setSummary(s);
+    // Without SDNRP: constant feed 430.41 mm/min and speed 1571 rpm, F 500..519 N with the disturbance.
+    QVector<SurfaceFinishSample> held;
+    for (int i = 0; i < 20; ++i) held.push_back({0.5 * i, 1.9, 1.95 + 0.01 * i, 480.0, 500.0 + i, 430.41, 1571.0});
+    SurfaceFinishSummary b = s;
+    b.f_final_n = 509.5;
+    b.ra_produced_um = 1.9723;
+    panel.setBaseline(held, b);
+    QCOMPARE(panel.baselineSampleCount(), 20);
+    const int plot[] = {0, 1, 2, 3};
+    for (int i = 0; i < baseline.size(); ++i) {
+      const QString& g = baseline[i];
+      QCOMPARE(panel.graphDataCount(g), 20);
+      QVERIFY2(panel.graphInLegend(g), qPrintable(g));
+      QCOMPARE(panel.graphPenStyle(g), Qt::DashLine);
+      QVERIFY2(panel.graphName(g).contains("no SDNRP") && panel.graphName(g).contains('['), qPrintable(g));
+      QCOMPARE(panel.graphPlot(g), plot[i]);
+    }
+    for (const QString& g : kDataGraphs) {
+      QCOMPARE(panel.graphPenStyle(g), Qt::SolidLine);
+      QVERIFY2(panel.graphName(g).contains("SDNRP") && !panel.graphName(g).contains("no SDNRP"), qPrintable(g));
+    }
+    QCOMPARE(panel.graphPlot("ra"), 0);
+    QCOMPARE(panel.graphPlot("nope"), -1);
+    QCOMPARE(panel.graphPenStyle("nope"), Qt::NoPen);
+    // the measured (dynamic) F and Ra are drawn, the feed and speed as held
+    QCOMPARE(panel.graphValueRange("force_baseline")->first, 500.0);
+    QCOMPARE(panel.graphValueRange("force_baseline")->second, 519.0);
+    QCOMPARE(panel.graphValueRange("ra_baseline")->second, 1.95 + 0.01 * 19);
+    QCOMPARE(panel.graphValueRange("feed_baseline")->first, 430.41);
+    QCOMPARE(panel.graphValueRange("feed_baseline")->second, 430.41);
+    QCOMPARE(panel.graphValueRange("speed_baseline")->first, 1571.0);
+    QVERIFY(!panel.graphValueRange("nope"));
+    QCOMPARE(panel.valueAxisUpper(1), 519.0 * 1.1);  // the axes hold both runs
+    QCOMPARE(panel.valueAxisUpper(0), (1.95 + 0.01 * 19) * 1.1);
+    QCOMPARE(panel.summaryText("ra_baseline_um"), QString("1.972"));
+    QCOMPARE(panel.summaryText("f_baseline_n"), QString("509.5"));
+    QCOMPARE(panel.summaryText("ra_produced_um"), QString("0.8120"));
+    QVERIFY2(panel.statusText().contains("without SDNRP (constant feed) 1.972 \u00b5m"),
+             qPrintable(panel.statusText()));
+
+    panel.clearBaseline();  // the run stays
+    QCOMPARE(panel.baselineSampleCount(), 0);
+    QCOMPARE(panel.sampleCount(), 20);
+    QCOMPARE(panel.graphDataCount("force"), 20);
+    for (const QString& g : baseline) {
+      QCOMPARE(panel.graphDataCount(g), 0);
+      QVERIFY(!panel.graphInLegend(g));
+    }
+    QCOMPARE(panel.valueAxisUpper(1), 429.0 * 1.1);
+    QCOMPARE(panel.summaryText("ra_baseline_um"), kDash);
+    QCOMPARE(panel.summaryText("ra_produced_um"), QString("0.8120"));
+    QVERIFY(!panel.statusText().contains("without SDNRP"));
+
+    panel.setBaseline(held, b);
+    panel.clear();  // clears both
+    QCOMPARE(panel.baselineSampleCount(), 0);
+    QCOMPARE(panel.graphDataCount("force_baseline"), 0);
+    QCOMPARE(panel.summaryText("f_baseline_n"), kDash);
   }
 
   void showsAt1080p() {
