@@ -38,5 +38,10 @@ for b in -0.3 0 0.3 1; do
   "$plot" "$out/control-beta-$name.png" --control "$p" --beta="$b"
 done
 "$plot" "$out/control-jc.png" --control "$p" --jc=-1:1:0.02
+# The beta-FROH study: J_c(beta) for T/16, T/8 (default), T/6 (threshold -0.6), 19 ms (the reference-model
+# reading's isolated dip at -0.35), T/2 and T (T = 60/715 s), both readings of eq. 34.
+"$cli" control "$p" --beta-study --tau-c-ms 5.2448,10.4895,13.9860,19,41.958,83.916 --sweep-beta=-1:1:0.05 \
+  > "$tmp/beta-study.json"
+"$plot" "$out/control-beta-study.png" --beta-study "$tmp/beta-study.json"
 rm -rf "$tmp"
 echo "plots written to $out/"
