@@ -32,6 +32,10 @@ struct SupervisionMetricsView {
   std::optional<double> chatter_time_s;
   int passes = 0;
   double cycle_time_s = 0;
+  // The force controller's restarts at contact: the longest settling into the 2 % band; unsettled counts
+  // the restarts that never settled; no restart: neither.
+  std::optional<double> longest_settling_s;
+  int unsettled = 0;
 };
 
 }  // namespace mx::widgets

@@ -12,15 +12,23 @@ namespace mx::widgets {
 
 namespace {
 const QColor kForce(31, 119, 180), kPower(255, 127, 14), kLimit(214, 39, 40), kBad(190, 20, 20);
+
+// "0.39", "0.39 (1 never)" when some restarts never settled, "never", or a dash without a restart.
+QString settlingText(const SupervisionMetricsView& m) {
+  if (!m.longest_settling_s && m.unsettled == 0) return QStringLiteral("\u2013");
+  if (!m.longest_settling_s) return SupervisorComparison::tr("never");
+  const QString t = QString::number(*m.longest_settling_s, 'f', 2);
+  return m.unsettled == 0 ? t : SupervisorComparison::tr("%1 (%2 never)").arg(t).arg(m.unsettled);
 }
+}  // namespace
 
 SupervisorComparison::SupervisorComparison(QWidget* parent)
     : QWidget(parent), plots_layout_(new QHBoxLayout), table_(new QTableWidget(this)) {
   setObjectName(QStringLiteral("supervisorComparison"));
   table_->setRowCount(static_cast<int>(metricKeys().size()));
   table_->setVerticalHeaderLabels({tr("Max. spindle power [% of limit]"), tr("Force overshoot over F_ref [%]"),
-                                   tr("Chatter detected"), tr("Chatter detected at t [s]"), tr("Passes executed"),
-                                   tr("Cycle time [s]")});
+                                   tr("Force settling after contact [s]"), tr("Chatter detected"),
+                                   tr("Chatter detected at t [s]"), tr("Passes executed"), tr("Cycle time [s]")});
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -36,8 +44,13 @@ SupervisorComparison::SupervisorComparison(QWidget* parent)
 }
 
 QStringList SupervisorComparison::metricKeys() {
-  return {QStringLiteral("max_power_pct_of_limit"), QStringLiteral("overshoot_pct"), QStringLiteral("chatter_detected"),
-          QStringLiteral("chatter_time_s"),         QStringLiteral("passes"),        QStringLiteral("cycle_time_s")};
+  return {QStringLiteral("max_power_pct_of_limit"),
+          QStringLiteral("overshoot_pct"),
+          QStringLiteral("settling_s"),
+          QStringLiteral("chatter_detected"),
+          QStringLiteral("chatter_time_s"),
+          QStringLiteral("passes"),
+          QStringLiteral("cycle_time_s")};
 }
 
 QString SupervisorComparison::controllerCaption(const QString& controller) {
@@ -157,7 +170,10 @@ void SupervisorComparison::showResult(int column) {
     auto* item = new QTableWidgetItem(has ? metricText(controller, keys[row]) : QStringLiteral("\u2013"));
     item->setTextAlignment(Qt::AlignCenter);
     const SupervisionMetricsView& m = has ? it->metrics : SupervisionMetricsView{};
-    const bool bad = has && ((row == 0 && m.max_power_pct_of_limit > 100.0) || (row == 2 && m.chatter_detected));
+    const bool bad =
+        has && ((keys[row] == QLatin1String("max_power_pct_of_limit") && m.max_power_pct_of_limit > 100.0) ||
+                (keys[row] == QLatin1String("chatter_detected") && m.chatter_detected) ||
+                (keys[row] == QLatin1String("settling_s") && m.unsettled > 0));
     if (bad) {
       item->setForeground(kBad);
       QFont bold = item->font();
@@ -174,6 +190,7 @@ QString SupervisorComparison::metricText(const QString& controller, const QStrin
   const SupervisionMetricsView& m = it->metrics;
   if (key == QLatin1String("max_power_pct_of_limit")) return QString::number(m.max_power_pct_of_limit, 'f', 0);
   if (key == QLatin1String("overshoot_pct")) return QString::number(m.overshoot_pct, 'f', 0);
+  if (key == QLatin1String("settling_s")) return settlingText(m);
   if (key == QLatin1String("chatter_detected")) return m.chatter_detected ? tr("yes") : tr("no");
   if (key == QLatin1String("chatter_time_s"))
     return m.chatter_time_s ? QString::number(*m.chatter_time_s, 'f', 2) : QStringLiteral("\u2013");

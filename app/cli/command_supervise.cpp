@@ -1,4 +1,5 @@
-// millexpert-cli supervise PROJECT --controller none|smc1|smc2 [--csv FILE]
+// millexpert-cli supervise PROJECT --controller none|smc1|smc2 [--csv FILE] [--time-constant-ms MS]
+//   [--reset-feed current|model]
 // Landers & Ulsoy's supervisory machining control of a face-milling operation: the controller's
 // Grafcet chart (the project's supervisor.charts, docs/grafcet.md) run by the Grafcet interpreter, the
 // machining modules A-L on their periods, and the face-milling process of the appendix (A1-A12).
@@ -6,6 +7,10 @@
 //   "passes", "cycle_time_s", "events": [{"t_s", "type", "detail"}...]} plus "reference_force_N",
 //   "max_F_Y_N", "final_program_mm", "steady_max_power_pct_of_limit", "tds_chatter_s", "run_seconds".
 // chatter_time_s is null without chatter. --csv: t, F_y, F_Y, power, feed, depth, pass every 2 ms.
+// "model_controller": {"time_constant_ms", "reset_feed"} are module L's (SMC I), from the project's
+// supervisor.model_controller or the flags; "force_transients": [{"t_s", "peak_F_Y_N", "overshoot_pct",
+// "settling_s"}], one per restart of a force controller (L* or K*), settling_s (2 % band) null if it never
+// settles.
 // --marginal-depth instead prints the appendix's depth search for marginal stability of the project's
 // process: {"marginal_depth_mm", "stable_depth_mm", "unstable_depth_mm", "bracketed",
 // "trials": [{"depth_mm", "indicator", "chatter"}]} (feed per tooth of the programmed feed).
@@ -56,6 +61,16 @@ int printMarginalDepth(const Project& project) {
   return kExitOk;
 }
 
+void applyModelControllerFlags(const QCommandLineParser& parser, SupervisionScenario& s) {
+  if (const std::optional<double> ms = numberOption(parser, "time-constant-ms", 1.0, 1e5))
+    s.force_time_constant_s = *ms * 1e-3;
+  if (!parser.isSet("reset-feed")) return;
+  const QString name = parser.value("reset-feed");
+  if (name != "current" && name != "model")
+    throw CliError(QString("--reset-feed = %1: must be current or model").arg(name), kExitBadInput);
+  s.force_reset_feed = parseResetFeed(name.toStdString());
+}
+
 }  // namespace
 
 int runSuperviseCommand(const QStringList& arguments) {
@@ -66,12 +81,15 @@ int runSuperviseCommand(const QStringList& arguments) {
       {"controller", "none, smc1 or smc2 (required).", "NAME"},
       {"csv", "Write the force and power history to FILE.", "FILE"},
       {"marginal-depth", "Print the depth of marginal stability of the process instead (appendix)."},
+      {"time-constant-ms", "Module L's closed-loop force time constant [ms], 1..100000. Default: the project's.", "MS"},
+      {"reset-feed", "Where module L restarts at contact: current or model. Default: the project's.", "NAME"},
   });
   const QString path = parseSubcommand(parser, arguments);
   const Project project = OutputPaths().outputOption(parser, "csv").loadProject(path);
   if (parser.isSet("marginal-depth")) return printMarginalDepth(project);
   const QString controller = requiredOption(parser, "controller");
-  const SupervisorRequest request = supervisorRequestFromProject(project, controller);
+  SupervisorRequest request = supervisorRequestFromProject(project, controller);
+  applyModelControllerFlags(parser, request.scenario);
   SupervisionResult r;
   try {
     GrafcetInterpreter logic(request.chart);
@@ -88,6 +106,15 @@ int runSuperviseCommand(const QStringList& arguments) {
     events.append(QJsonObject{
         {"t_s", e.t_s}, {"type", QString::fromStdString(e.type)}, {"detail", QString::fromStdString(e.detail)}});
   for (double d : r.final_program_m) program.append(d * 1e3);
+  QJsonArray transients;
+  for (const ForceTransient& t : m.force_transients)
+    transients.append(QJsonObject{{"t_s", t.t_s},
+                                  {"peak_F_Y_N", t.peak_F_Y_N},
+                                  {"overshoot_pct", t.overshoot_pct},
+                                  {"settling_s", t.settling_s >= 0.0 ? QJsonValue(t.settling_s) : QJsonValue()}});
+  const QJsonObject model_controller{
+      {"time_constant_ms", request.scenario.force_time_constant_s * 1e3},
+      {"reset_feed", QString::fromStdString(resetFeedName(request.scenario.force_reset_feed))}};
   printJson({{"controller", controller},
              {"max_power_pct_of_limit", m.max_power_pct_of_limit},
              {"overshoot_pct", m.overshoot_pct},
@@ -101,6 +128,8 @@ int runSuperviseCommand(const QStringList& arguments) {
              {"steady_max_power_pct_of_limit", m.steady_max_power_pct_of_limit},
              {"tds_chatter_s", m.tds_chatter_s},
              {"final_program_mm", program},
+             {"model_controller", model_controller},
+             {"force_transients", transients},
              {"run_seconds", m.run_seconds}});
   return kExitOk;
 }

@@ -145,6 +145,13 @@ struct SupervisorPassesSpec {  // pass depths [mm] per controller
   bool operator==(const SupervisorPassesSpec&) const = default;
 };
 
+// Module L, the model-based force loop (engine/control/model_based_force_loop.h).
+struct SupervisorModelControllerSpec {
+  std::optional<double> time_constant_ms;  // closed-loop force time constant
+  std::optional<QString> reset_feed;       // "current" or "model"
+  bool operator==(const SupervisorModelControllerSpec&) const = default;
+};
+
 struct SupervisorEventSpec {
   double t_s = 0.0;
   QString type;         // "feed_hold_on", "feed_hold_off" or "chatter"
@@ -192,6 +199,7 @@ struct SupervisorSection {
   std::optional<double> reference_force_N;
   std::optional<double> power_margin;
   std::optional<double> chatter_threshold_N;
+  std::optional<SupervisorModelControllerSpec> model_controller;
   std::optional<std::vector<SupervisorEventSpec>> events;
   std::optional<SupervisorChartsSpec> charts;
   bool operator==(const SupervisorSection&) const = default;

@@ -151,6 +151,9 @@ SupervisorSection readSupervisor(const ObjectReader& r) {
   s.reference_force_N = r.optionalNumber("reference_force_N");
   s.power_margin = r.optionalNumber("power_margin");
   s.chatter_threshold_N = r.optionalNumber("chatter_threshold_N");
+  s.model_controller = readOptional<SupervisorModelControllerSpec>(r, "model_controller", [](const ObjectReader& m) {
+    return SupervisorModelControllerSpec{m.optionalNumber("time_constant_ms"), m.optionalString("reset_feed")};
+  });
   if (auto events = r.optionalArray("events")) {
     std::vector<SupervisorEventSpec> list;
     for (qsizetype i = 0; i < events->size(); ++i) {

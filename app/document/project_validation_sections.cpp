@@ -148,6 +148,12 @@ void validateSupervisor(const SupervisorSection& s) {
   checkField("supervisor.reference_force_N", s.reference_force_N, {1e-3, 1e7, "in (0, 1e7]"});
   checkField("supervisor.power_margin", s.power_margin, {0.05, 1.0, "in [0.05, 1]"});
   checkField("supervisor.chatter_threshold_N", s.chatter_threshold_N, {1e-3, 1e6, "in (0, 1e6]"});
+  if (s.model_controller) {
+    checkField("supervisor.model_controller.time_constant_ms", s.model_controller->time_constant_ms,
+               {1.0, 1e5, "in [1, 1e5]"});
+    checkOneOf("supervisor.model_controller.reset_feed", s.model_controller->reset_feed, {"current", "model"},
+               "current or model");
+  }
   if (s.events) {
     for (std::size_t i = 0; i < s.events->size(); ++i) {
       const QString path = indexPath("supervisor.events", static_cast<qsizetype>(i));

@@ -161,6 +161,10 @@ void writeSupervisor(QJsonObject& o, const SupervisorSection& s) {
   putOptional(o, "reference_force_N", s.reference_force_N);
   putOptional(o, "power_margin", s.power_margin);
   putOptional(o, "chatter_threshold_N", s.chatter_threshold_N);
+  putObject(o, "model_controller", s.model_controller, [](QJsonObject& m, const SupervisorModelControllerSpec& v) {
+    putOptional(m, "time_constant_ms", v.time_constant_ms);
+    putString(m, "reset_feed", v.reset_feed);
+  });
   if (s.events) {
     QJsonArray out;
     for (const SupervisorEventSpec& event : *s.events) {

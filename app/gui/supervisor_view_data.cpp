@@ -58,6 +58,13 @@ widgets::SupervisionMetricsView supervisionMetricsOf(const QString& controller, 
   if (m.chatter_time_s >= 0.0) v.chatter_time_s = m.chatter_time_s;
   v.passes = m.passes;
   v.cycle_time_s = m.cycle_time_s;
+  for (const ForceTransient& t : m.force_transients) {
+    if (t.settling_s < 0.0) {
+      ++v.unsettled;
+    } else {
+      v.longest_settling_s = std::max(v.longest_settling_s.value_or(0.0), t.settling_s);
+    }
+  }
   return v;
 }
 

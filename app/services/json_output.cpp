@@ -53,6 +53,7 @@ const QSet<QString>& documentedNullKeys() {
       "reselected",             // pareto --feedback: no re-selection
       "csv",                    // override: no --csv given
       "chatter_time_s",         // supervise: no chatter detected
+      "settling_s",             // supervise: a force transient that never settles
       "followed",               // pareto: message-only advice has no bound to follow
   };
   return keys;

@@ -51,6 +51,11 @@ SupervisorRequest supervisorRequestFrom(const SupervisorSection& s, const Projec
   if (s.reference_force_N) sc.reference_force_N = *s.reference_force_N;
   sc.power_margin = s.power_margin.value_or(sc.power_margin);
   sc.chatter_detector.threshold_N = s.chatter_threshold_N.value_or(sc.chatter_detector.threshold_N);
+  if (s.model_controller) {
+    if (s.model_controller->time_constant_ms) sc.force_time_constant_s = *s.model_controller->time_constant_ms * 1e-3;
+    if (s.model_controller->reset_feed)
+      sc.force_reset_feed = parseResetFeed(s.model_controller->reset_feed->toStdString());
+  }
   if (project.machine) {
     // P_av at the supervised spindle speed (torque-limited below the base speed).
     sc.limits.spindle_power_limit_W = availablePowerW(project.machine, sc.process.spindle_speed_rpm);

@@ -12,6 +12,7 @@
 //     "reference_force_N": 450,              optional; default from the spindle power limit
 //     "power_margin": 0.95,                  F_ref keeps the mean power at this fraction of the limit
 //     "chatter_threshold_N": 40,             automatic chatter detector (E)
+//     "model_controller": {"time_constant_ms": 200, "reset_feed": "current"},   module L's loop
 //     "events": [{"t_s": 20, "type": "feed_hold_on"}, {"t_s": 21, "type": "feed_hold_off"},
 //                {"t_s": 5, "type": "chatter"}],   timed operator events
 //     "charts": {"none": {...}, "smc1": {...}, "smc2": {...}}   Grafcet charts (docs/grafcet.md)

@@ -170,29 +170,43 @@ void AdaptiveForceController::run(MachiningContext& ctx) {
   ctx.override_valid = true;
 }
 
+ModelBasedForceLoop ModelBasedForceModule::makeLoop(const MachiningContext& ctx) const {
+  ModelBasedForceLoopSettings s;
+  s.controller.model = settings_.model;
+  s.controller.reference_force_N = ctx.reference_force_N;
+  s.controller.teeth = ctx.teeth;
+  s.controller.max_feed_rate_m_per_s = ctx.limits.max_feed_rate_m_per_s;
+  s.controller.max_feed_per_tooth_m = ctx.limits.max_feed_per_tooth_m;
+  s.period_s = period();
+  s.time_constant_s = settings_.time_constant_s;
+  s.reset_feed = settings_.reset_feed;
+  return ModelBasedForceLoop(s);
+}
+
+void ModelBasedForceModule::reset(MachiningContext& ctx) {
+  loop_.emplace(makeLoop(ctx));
+  loop_->reset(ctx.commanded_feed_m_per_s, ctx.currentDepth(), ctx.spindle_rev_per_s);
+  ctx.override_valid = false;
+}
+
 void ModelBasedForceModule::run(MachiningContext& ctx) {
-  ModelBasedForceSettings s;
-  s.model = model_;
-  s.reference_force_N = ctx.reference_force_N;
-  s.teeth = ctx.teeth;
-  s.max_feed_rate_m_per_s = ctx.limits.max_feed_rate_m_per_s;
-  s.max_feed_per_tooth_m = ctx.limits.max_feed_per_tooth_m;
-  const ModelBasedForceController controller(s);
-  ctx.override_feed_m_per_s = controller.feed(ctx.currentDepth(), ctx.spindle_rev_per_s).feed_rate_m_per_s;
+  // The loop reads F_Y of the revolution just measured (I) and sets the feed for the next one.
+  if (!loop_) reset(ctx);
+  ctx.override_feed_m_per_s = loop_->update(ctx.F_Y_N, ctx.spindle_rev_per_s);
   ctx.override_valid = true;
 }
 
 std::vector<std::unique_ptr<MachiningModule>> makeStandardModules(ChatterDetectorSettings chatter,
-                                                                  PowerLawForceModel model) {
+                                                                  ModelBasedForceModuleSettings force) {
   std::vector<std::unique_ptr<MachiningModule>> m;
   m.push_back(std::make_unique<OperatorInputMonitor>());
   m.push_back(std::make_unique<OperatorChatterDetector>());
   m.push_back(std::make_unique<ForceSignalProcessor>());
   m.push_back(std::make_unique<ContactMonitor>());
   m.push_back(std::make_unique<AutomaticChatterDetector>(chatter));
-  m.push_back(std::make_unique<ParameterEstimator>(model.feed_exponent));
-  m.push_back(std::make_unique<AdaptiveForceController>(model.feed_exponent));
-  m.push_back(std::make_unique<ModelBasedForceModule>(model));
+  m.push_back(std::make_unique<ParameterEstimator>(force.model.feed_exponent));
+  m.push_back(std::make_unique<AdaptiveForceController>(force.model.feed_exponent));
+  m.push_back(std::make_unique<ModelBasedForceModule>(force));
   m.push_back(std::make_unique<ChatterSuppressionRoutine>());
   m.push_back(std::make_unique<FeedHold>());
   m.push_back(std::make_unique<FeedrateRoutine>());

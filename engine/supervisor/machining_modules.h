@@ -9,10 +9,11 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "control/model_based_force_controller.h"
+#include "control/model_based_force_loop.h"
 #include "control/rls_estimator.h"
 
 namespace mx {
@@ -194,20 +195,30 @@ class AdaptiveForceController : public MachiningModule {  // K, 40 ms
   double a_;
 };
 
+// The loop's own parameters; the model, reference force, teeth and limits come from the context.
+struct ModelBasedForceModuleSettings {
+  PowerLawForceModel model;
+  double time_constant_s = 0.2;  // closed-loop force time constant
+  ResetFeed reset_feed = ResetFeed::Model;
+};
+
 class ModelBasedForceModule : public MachiningModule {  // L, 40 ms
  public:
-  explicit ModelBasedForceModule(PowerLawForceModel model = {})
-      : MachiningModule('L', "model-based force controller", 0.040), model_(model) {}
+  explicit ModelBasedForceModule(ModelBasedForceModuleSettings settings = {})
+      : MachiningModule('L', "model-based force controller", 0.040), settings_(settings) {}
   void run(MachiningContext& ctx) override;
-  void reset(MachiningContext& ctx) override { ctx.override_valid = false; }
+  void reset(MachiningContext& ctx) override;  // L* at contact: the loop restarts (ResetFeed)
   void deactivate(MachiningContext& ctx) override { ctx.override_valid = false; }
 
  private:
-  PowerLawForceModel model_;
+  ModelBasedForceLoop makeLoop(const MachiningContext& ctx) const;
+
+  ModelBasedForceModuleSettings settings_;
+  std::optional<ModelBasedForceLoop> loop_;
 };
 
 // All twelve modules, in the order the scheduler runs them within a tick (signal chain first, feed last).
 std::vector<std::unique_ptr<MachiningModule>> makeStandardModules(ChatterDetectorSettings chatter = {},
-                                                                  PowerLawForceModel model = {});
+                                                                  ModelBasedForceModuleSettings force = {});
 
 }  // namespace mx

@@ -1,6 +1,7 @@
 #include "supervisor/supervision_metrics.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mx {
 
@@ -32,8 +33,28 @@ void SupervisionMetricsAccumulator::addDetectorSignal(double t_s, bool chatter_s
   }
 }
 
-void SupervisionMetricsAccumulator::addContactForce(double F_Y_N) {
+void SupervisionMetricsAccumulator::startForceTransient(double t_s) {
+  metrics_.force_transients.push_back({t_s, 0.0, -100.0, -1.0});
+  inside_band_since_ = -1.0;
+}
+
+void SupervisionMetricsAccumulator::addContactForce(double t_s, double F_Y_N) {
   metrics_.max_F_Y_N = std::max(metrics_.max_F_Y_N, F_Y_N);
+  if (metrics_.force_transients.empty()) return;
+  ForceTransient& tr = metrics_.force_transients.back();
+  const double F_ref = settings_.reference_force_N;
+  if (F_Y_N > tr.peak_F_Y_N) {
+    tr.peak_F_Y_N = F_Y_N;
+    tr.overshoot_pct = 100.0 * (F_Y_N - F_ref) / F_ref;
+  }
+  // Settled once F_Y has stayed in the band for the hold time; the exit from the part comes later.
+  if (tr.settling_s >= 0.0) return;
+  if (std::abs(F_Y_N - F_ref) > settings_.settling_band * F_ref) {
+    inside_band_since_ = -1.0;
+    return;
+  }
+  if (inside_band_since_ < 0.0) inside_band_since_ = t_s;
+  if (t_s - inside_band_since_ >= settings_.settling_hold_s - 1e-9) tr.settling_s = inside_band_since_ - tr.t_s;
 }
 
 SupervisionMetrics SupervisionMetricsAccumulator::finish(double cycle_time_s, double run_seconds) const {

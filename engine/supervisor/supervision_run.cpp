@@ -64,6 +64,8 @@ void validateSupervisionScenario(const SupervisionScenario& s) {
           "scan_period_s", s.scan_period_s, "in [sample_period_s, 1]");
   require(std::isfinite(s.record_period_s) && s.record_period_s > 0.0, "record_period_s", s.record_period_s, "> 0");
   require(std::isfinite(s.max_time_s) && s.max_time_s > 0.0, "max_time_s", s.max_time_s, "> 0");
+  require(std::isfinite(s.force_time_constant_s) && s.force_time_constant_s >= 1e-3 && s.force_time_constant_s <= 100.0,
+          "force_time_constant_s", s.force_time_constant_s, "in [0.001, 100]");
   for (const auto& e : s.events) require(std::isfinite(e.t_s) && e.t_s >= 0.0, "events.t_s", e.t_s, ">= 0");
 }
 
@@ -174,7 +176,8 @@ SupervisedRun::SupervisedRun(const SupervisionScenario& sc, SupervisorLogic& log
       period_(proc_.spindlePeriod()),
       clock_(sampleClock(sc, proc_, part_.teeth)),
       ctx_(context()),
-      scheduler_(makeStandardModules(sc.chatter_detector, sc.force_model)),
+      scheduler_(
+          makeStandardModules(sc.chatter_detector, {sc.force_model, sc.force_time_constant_s, sc.force_reset_feed})),
       events_(sc.events),
       power_(clock_.samples_per_tooth),
       regen_(clock_.samples_per_rev),
@@ -255,7 +258,7 @@ void SupervisedRun::sample(std::size_t k) {
   if ((sample_ - 1) % clock_.samples_per_scan == 0) scan(o);
   tickModules();
   if (ctx_.replanned) replan(k, o);
-  if (ctx_.b) metrics_.addContactForce(ctx_.F_Y_N);
+  if (ctx_.b) metrics_.addContactForce(t_, ctx_.F_Y_N);
   if (sample_ % clock_.record_every == 0)
     res_.series.push_back({t_, o.fy_N, ctx_.F_Y_N, power, proc_.feedRate(), proc_.depth(), ctx_.current_pass + 1});
   if (t_ > sc_.max_time_s)
@@ -302,6 +305,9 @@ void SupervisedRun::scan(const FaceMillingOutput& o) {
   if (!out.stable && last_stable_) res_.events.push_back({t_, "logic_unstable", "no stable situation in this scan"});
   last_stable_ = out.stable;
   scheduler_.applyScan(out, ctx_);
+  // A restart at contact (step 3), not the initialisation of step 1.
+  for (const std::string& impulse : out.impulse_actions)
+    if (ctx_.b && (impulse == "L*" || impulse == "K*")) metrics_.startForceTransient(t_);
   if (out.active_steps != last_steps_) {
     last_steps_ = out.active_steps;
     res_.steps.push_back({t_, last_steps_});

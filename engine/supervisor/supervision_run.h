@@ -37,8 +37,10 @@ struct SupervisionScenario {
   double programmed_feed_m_per_s = 10e-3;
   MachiningLimits limits;
   double reference_force_N = std::numeric_limits<double>::quiet_NaN();  // NaN: derived from the power limit
-  double power_margin = 0.95;      // F_ref keeps the mean cutting power at this fraction of the limit
-  PowerLawForceModel force_model;  // F_Y = 0.76 d^0.65 f^0.63 kN (SMC I's model; a for SMC II)
+  double power_margin = 0.95;                     // F_ref keeps the mean cutting power at this fraction of the limit
+  PowerLawForceModel force_model;                 // F_Y = 0.76 d^0.65 f^0.63 kN (SMC I's model; a for SMC II)
+  double force_time_constant_s = 0.2;             // module L's closed-loop force time constant (not given)
+  ResetFeed force_reset_feed = ResetFeed::Model;  // where module L restarts at contact
   ChatterDetectorSettings chatter_detector;
   double scan_period_s = 0.010;               // supervisor scan (not given by the paper; = the fastest module)
   double sample_period_s = 5e-4;              // force sampling (Table 1)

@@ -1,8 +1,9 @@
 // millexpert-cli supervise on projects/landers-face-milling.mxproj, whose charts are rebuilt
 // from the paper's rules: the fixed JSON keys; the paper's claims (the baseline violates the power limit
 // and chatters; SMC I never chatters and holds power; SMC II detects chatter, re-plans to two 1 mm
-// passes and holds power in steady state; SMC I overshoots less than SMC II); the operator's feed hold
-// during the second pass; bad charts and flags exit 2 naming the element.
+// passes and holds power in steady state; SMC I overshoots at most half as much as SMC II); module L's
+// settings and force transients; the operator's feed hold during the second pass; bad charts and flags
+// exit 2 naming the element.
 #include <QJsonArray>
 #include <QTemporaryDir>
 
@@ -63,8 +64,35 @@ class TestCliSupervise : public QObject {
     QCOMPARE(r["passes"].toInt(), 2);
     QVERIFY(r["steady_max_power_pct_of_limit"].toDouble() <= 110.0);
   }
-  void smc1OvershootsLessThanSmc2() {
-    QVERIFY(runs_["smc1"]["overshoot_pct"].toDouble() < runs_["smc2"]["overshoot_pct"].toDouble());
+  // Paper: 28 % (SMC I) against 113 % (SMC II).
+  void smc1OvershootsAtMostHalfOfSmc2() {
+    QVERIFY(2.0 * runs_["smc1"]["overshoot_pct"].toDouble() <= runs_["smc2"]["overshoot_pct"].toDouble());
+  }
+  // Module L restarts at each contact: the pass entries and the re-contact after the operator's hold.
+  void modelControllerAndTransients() {
+    const QJsonObject r = runs_["smc1"];
+    QCOMPARE(r["model_controller"].toObject(), (QJsonObject{{"time_constant_ms", 200.0}, {"reset_feed", "model"}}));
+    const QJsonArray transients = r["force_transients"].toArray();
+    QCOMPARE(transients.size(), 3);
+    double peak = 0.0;
+    for (const auto& t : transients) {
+      const QJsonObject o = t.toObject();
+      QVERIFY(o.contains("settling_s"));
+      QVERIFY(o["t_s"].toDouble() > 0.0);
+      peak = std::max(peak, o["overshoot_pct"].toDouble());
+    }
+    QCOMPARE(peak, r["overshoot_pct"].toDouble());
+    QVERIFY(transients[0].toObject()["settling_s"].toDouble() > 0.0);
+  }
+  // The bumpless restart takes over at the programmed 10 mm/s, above the model's 7.6 mm/s for F_ref:
+  // the re-contact after the hold overshoots more than with the model's feed.
+  void bumplessRestartOvershootsMore() {
+    const mx::test::CliRun r = mx::test::runCli(
+        {"supervise", kProject, "--controller", "smc1", "--reset-feed", "current", "--time-constant-ms", "400"}, 300000);
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["model_controller"].toObject(),
+             (QJsonObject{{"time_constant_ms", 400.0}, {"reset_feed", "current"}}));
+    QVERIFY(r.json["overshoot_pct"].toDouble() > runs_["smc1"]["overshoot_pct"].toDouble() + 5.0);
   }
   // The appendix's search: 1 mm (SMC I's passes) stable, 2 mm (one pass) unstable.
   void marginalDepth() {
@@ -108,6 +136,24 @@ class TestCliSupervise : public QObject {
                                 << "section 'supervisor' is missing";
     QTest::newRow("pass depth") << QStringList{"supervisor/passes_mm/smc1/0=50"} << "smc1"
                                 << "supervisor.passes_mm.smc1[0] = 50: must be a depth in (0, 20] mm";
+    QTest::newRow("time constant") << QStringList{"supervisor/model_controller/time_constant_ms=0.5"} << "smc1"
+                                   << "supervisor.model_controller.time_constant_ms = 0.5";
+    QTest::newRow("reset feed") << QStringList{"supervisor/model_controller/reset_feed=\"warm\""} << "smc1"
+                                << "supervisor.model_controller.reset_feed = 'warm'";
+  }
+  void badFlags_data() {
+    QTest::addColumn<QStringList>("flags");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("time constant 0") << QStringList{"--time-constant-ms", "0"} << "--time-constant-ms";
+    QTest::newRow("time constant text") << QStringList{"--time-constant-ms", "fast"} << "--time-constant-ms";
+    QTest::newRow("reset feed") << QStringList{"--reset-feed", "warm"} << "--reset-feed = warm: must be current or model";
+  }
+  void badFlags() {
+    QFETCH(QStringList, flags);
+    QFETCH(QString, message);
+    const mx::test::CliRun r = mx::test::runCli(QStringList{"supervise", kProject, "--controller", "smc1"} + flags);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
   }
   void badInput() {
     QFETCH(QStringList, mutations);

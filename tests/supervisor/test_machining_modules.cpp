@@ -137,12 +137,29 @@ class TestMachiningModules : public QObject {
     MachiningContext c = context();
     c.passes_m = {1e-3, 1e-3};
     ModelBasedForceModule l;
+    l.reset(c);  // L* at contact: the loop restarts from the model's feed for F_ref at 1 mm
+    QVERIFY(!c.override_valid);
+    c.F_Y_N = 150.0;  // at the reference: the feed stays
     l.run(c);
     QVERIFY(c.override_valid);
-    const double f_mm = c.override_feed_m_per_s / (4 * 25.0) * 1e3;
-    QVERIFY(std::abs(760.0 * std::pow(f_mm, 0.63) - 150.0) < 0.5);
-    l.reset(c);
+    const double f0 = c.override_feed_m_per_s;
+    QVERIFY(std::abs(760.0 * std::pow(f0 / (4 * 25.0) * 1e3, 0.63) - 150.0) < 1e-9);
+    // 20 % over the reference: ln f drops by (1 - p)/a ln 1.2, p = exp(-40 ms / 200 ms).
+    c.F_Y_N = 180.0;
+    l.run(c);
+    const double p = std::exp(-0.2);
+    QVERIFY(std::abs(std::log(c.override_feed_m_per_s / f0) + (1.0 - p) / 0.63 * std::log(1.2)) < 1e-12);
+    l.deactivate(c);
     QVERIFY(!c.override_valid);
+  }
+  void modelBasedControllerRestartsBumplessly() {
+    MachiningContext c = context();
+    c.commanded_feed_m_per_s = 10e-3;
+    ModelBasedForceModule l({PowerLawForceModel{}, 0.2, ResetFeed::Current});
+    l.reset(c);
+    c.F_Y_N = 150.0;
+    l.run(c);
+    QCOMPARE(c.override_feed_m_per_s, 10e-3);  // the programmed feed the axis was moving at
   }
 };
 

@@ -48,13 +48,38 @@ class TestSupervisionMetrics : public QObject {
   void overshoot() {
     SupervisionMetricsAccumulator m(settings());
     QCOMPARE(m.current().reference_force_N, 200.0);
-    for (double f : {150.0, 230.0, 210.0}) m.addContactForce(f);
+    for (double f : {150.0, 230.0, 210.0}) m.addContactForce(0.0, f);
     QCOMPARE(m.finish(1.0, 0.0).max_F_Y_N, 230.0);
     QCOMPARE(m.finish(1.0, 0.0).overshoot_pct, 15.0);
 
     SupervisionMetricsAccumulator low(settings());
-    low.addContactForce(150.0);
+    low.addContactForce(0.0, 150.0);
     QCOMPARE(low.finish(1.0, 0.0).overshoot_pct, -25.0);
+  }
+
+  // A restart of the force controller opens a transient: its peak, overshoot and the time until F_Y
+  // enters the 2 % band (196..204 N) for 0.4 s; the exit from the part afterwards does not undo it.
+  void forceTransients() {
+    SupervisionMetricsAccumulator m(settings());
+    m.addContactForce(0.0, 500.0);  // before any restart: the overall maximum only
+    m.startForceTransient(1.0);
+    m.addContactForce(1.0, 150.0);
+    m.addContactForce(1.1, 260.0);  // peak: 30 % over 200 N
+    m.addContactForce(1.2, 201.0);  // in the band, but leaves it again
+    m.addContactForce(1.3, 190.0);
+    for (int i = 0; i <= 10; ++i) m.addContactForce(1.5 + 0.05 * i, 203.0);  // 1.5 .. 2.0 s inside
+    m.addContactForce(2.1, 40.0);                                              // the tool leaves the part
+    m.startForceTransient(3.0);
+    m.addContactForce(3.0, 180.0);  // never settles
+    const SupervisionMetrics f = m.finish(4.0, 0.0);
+    QCOMPARE(f.max_F_Y_N, 500.0);
+    QCOMPARE(f.force_transients.size(), std::size_t(2));
+    QCOMPARE(f.force_transients[0].t_s, 1.0);
+    QCOMPARE(f.force_transients[0].peak_F_Y_N, 260.0);
+    QCOMPARE(f.force_transients[0].overshoot_pct, 30.0);
+    QCOMPARE(f.force_transients[0].settling_s, 0.5);
+    QCOMPARE(f.force_transients[1].overshoot_pct, -10.0);
+    QCOMPARE(f.force_transients[1].settling_s, -1.0);
   }
 
   void passesCounted() {

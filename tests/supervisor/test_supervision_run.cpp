@@ -162,6 +162,25 @@ class TestSupervisionRun : public QObject {
                         [](const auto& m) { return m.active.find('L') != std::string::npos; }));
   }
 
+  // Module L reads F_Y: the integral action removes the static law's error (it predicts about 6 % more
+  // force than the process at 1 mm), so F_Y settles on F_ref, where the open-loop inversion stayed 2.8 %
+  // under it. Each contact restarts L (L*), and each restart settles into the 2 % band.
+  void smc1TracksTheReference() {
+    const SupervisionResult r = run(SupervisionController::SmcI);
+    double sum = 0.0;
+    int n = 0;
+    for (const auto& s : r.series)
+      if (s.t_s > 5.0 && s.t_s < 12.0) sum += s.F_Y_N, ++n;
+    QVERIFY(n > 1000);
+    QVERIFY2(std::abs(sum / n / r.metrics.reference_force_N - 1.0) < 0.005,
+             qPrintable(QString("mean F_Y %1 N, F_ref %2 N").arg(sum / n).arg(r.metrics.reference_force_N)));
+    QCOMPARE(r.metrics.force_transients.size(), std::size_t(2));  // one contact per pass
+    for (const ForceTransient& t : r.metrics.force_transients) {
+      QVERIFY(t.settling_s >= 0.0 && t.settling_s < 2.0);
+      QVERIFY(t.overshoot_pct < 20.0);
+    }
+  }
+
   void smc2AndOvershoot() {
     const SupervisionResult r2 = run(SupervisionController::SmcII);
     QVERIFY(r2.metrics.detector_fired && r2.metrics.chatter_detected);
@@ -171,7 +190,8 @@ class TestSupervisionRun : public QObject {
     QCOMPARE(r2.metrics.passes, 2);
     QVERIFY(r2.metrics.steady_max_power_pct_of_limit <= 100.0);
     const SupervisionResult r1 = run(SupervisionController::SmcI);
-    QVERIFY(r1.metrics.overshoot_pct < r2.metrics.overshoot_pct);  // paper: 28 % vs 113 %
+    // Paper: 28 % against 113 %, i.e. process knowledge at least halves the overshoot.
+    QVERIFY(2.0 * r1.metrics.overshoot_pct <= r2.metrics.overshoot_pct);
   }
 
   void feedHold() {

@@ -83,6 +83,38 @@ class TestSupervisorComparison : public QObject {
     QCOMPARE(view.metricsTable()->item(0, 1)->text(), QStringLiteral("\u2013"));
   }
 
+  // The force controller's settling: the longest over its restarts; restarts that never settled are
+  // counted and shown in red; without a restart (no force controller) a dash.
+  void settlingRow_data() {
+    QTest::addColumn<QVector<double>>("settlings");  // -1: never settled
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<bool>("red");
+    QTest::newRow("no restart") << QVector<double>{} << QStringLiteral("\u2013") << false;
+    QTest::newRow("two settled") << QVector<double>{0.39, 0.2} << QStringLiteral("0.39") << false;
+    QTest::newRow("one never") << QVector<double>{0.39, -1.0} << QStringLiteral("0.39 (1 never)") << true;
+    QTest::newRow("all never") << QVector<double>{-1.0, -1.0} << QStringLiteral("never") << true;
+  }
+  void settlingRow() {
+    QFETCH(QVector<double>, settlings);
+    QFETCH(QString, text);
+    QFETCH(bool, red);
+    SupervisionMetricsView m = metrics("smc1", 94.7, 10.5, std::nullopt, 2, 37.1);
+    for (double s : settlings) {
+      if (s < 0.0) {
+        ++m.unsettled;
+      } else {
+        m.longest_settling_s = std::max(m.longest_settling_s.value_or(0.0), s);
+      }
+    }
+    SupervisorComparison view;
+    view.setResult("smc1", run(620, -1, 99, 10), m);
+    QCOMPARE(view.metricText("smc1", "settling_s"), text);
+    const int row = static_cast<int>(SupervisorComparison::metricKeys().indexOf("settling_s"));
+    QCOMPARE(view.metricsTable()->verticalHeaderItem(row)->text(), QStringLiteral("Force settling after contact [s]"));
+    QCOMPARE(view.metricsTable()->item(row, 1)->text(), text);
+    QCOMPARE(view.metricsTable()->item(row, 1)->foreground().color() == QColor(190, 20, 20), red);
+  }
+
   void exportsAPng() {
     SupervisorComparison view;
     view.setResult("none", run(1390, 0.6, 99, 6), metrics("none", 224.0, 0, std::nullopt, 1, 5.9));
