@@ -88,7 +88,8 @@ class TestCliSupervise : public QObject {
   // the re-contact after the hold overshoots more than with the model's feed.
   void bumplessRestartOvershootsMore() {
     const mx::test::CliRun r = mx::test::runCli(
-        {"supervise", kProject, "--controller", "smc1", "--reset-feed", "current", "--time-constant-ms", "400"}, 300000);
+        {"supervise", kProject, "--controller", "smc1", "--reset-feed", "current", "--time-constant-ms", "400"},
+        300000);
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["model_controller"].toObject(),
              (QJsonObject{{"time_constant_ms", 400.0}, {"reset_feed", "current"}}));
@@ -146,7 +147,8 @@ class TestCliSupervise : public QObject {
     QTest::addColumn<QString>("message");
     QTest::newRow("time constant 0") << QStringList{"--time-constant-ms", "0"} << "--time-constant-ms";
     QTest::newRow("time constant text") << QStringList{"--time-constant-ms", "fast"} << "--time-constant-ms";
-    QTest::newRow("reset feed") << QStringList{"--reset-feed", "warm"} << "--reset-feed = warm: must be current or model";
+    QTest::newRow("reset feed") << QStringList{"--reset-feed", "warm"}
+                                << "--reset-feed = warm: must be current or model";
   }
   void badFlags() {
     QFETCH(QStringList, flags);

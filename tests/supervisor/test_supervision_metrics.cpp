@@ -68,7 +68,7 @@ class TestSupervisionMetrics : public QObject {
     m.addContactForce(1.2, 201.0);  // in the band, but leaves it again
     m.addContactForce(1.3, 190.0);
     for (int i = 0; i <= 10; ++i) m.addContactForce(1.5 + 0.05 * i, 203.0);  // 1.5 .. 2.0 s inside
-    m.addContactForce(2.1, 40.0);                                              // the tool leaves the part
+    m.addContactForce(2.1, 40.0);                                            // the tool leaves the part
     m.startForceTransient(3.0);
     m.addContactForce(3.0, 180.0);  // never settles
     const SupervisionMetrics f = m.finish(4.0, 0.0);
