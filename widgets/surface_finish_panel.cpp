@@ -186,10 +186,23 @@ QCustomPlot* SurfaceFinishPanel::makePlot(const QString& y_label, const QString&
   plot->setToolTip(tooltip + tr(" Wheel zooms, drag pans."));
   plot->xAxis->setLabel(tr("Time t [s]"));
   plot->yAxis->setLabel(y_label);
+  // The legend above the axes, two entries a line, so that it hides no curve: a strip of the legend and
+  // a spacer (a legend alone would cap the width of the column at its own).
+  plot->axisRect()->insetLayout()->take(plot->legend);
+  plot->axisRect()->insetLayout()->simplify();
+  plot->plotLayout()->insertRow(0);
+  auto* strip = new QCPLayoutGrid;
+  plot->plotLayout()->addElement(0, 0, strip);
+  plot->plotLayout()->setRowStretchFactor(0, 0.001);
+  strip->addElement(0, 0, plot->legend);
+  strip->addElement(0, 1, new QCPLayoutElement(plot));
   plot->legend->setVisible(true);
   plot->legend->setFont(QFont(font().family(), 9));
-  plot->legend->setBrush(QColor(255, 255, 255, 210));
-  plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+  plot->legend->setBorderPen(Qt::NoPen);
+  plot->legend->setBrush(Qt::NoBrush);
+  plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+  plot->legend->setWrap(2);
+  plot->legend->setColumnSpacing(24);
   plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plots_.push_back(plot);
   return plot;

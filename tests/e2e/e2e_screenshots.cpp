@@ -12,6 +12,7 @@
 #include <QImage>
 #include <QScreen>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QTest>
 #include <QTimer>
 #include <functional>
@@ -50,6 +51,7 @@ struct Shot {
   const char* docks = "";           // raised, comma separated object names
   bool pareto = false;              // move to the Pareto choice and simulate it
   const char* supervise = "";       // run the supervisor with this controller
+  bool compare = false;             // compare the three supervisory controllers
   bool sdnrp = false;               // run the surface-finish loop
   const char* program = "";         // open this part program (in projects/)
   bool sdm = false;                 // semi-discretization lobes
@@ -83,6 +85,10 @@ const Shot kShots[] = {
      .project = "landers-face-milling.mxproj",
      .docks = "supervisorDock",
      .supervise = "smc2"},
+    {.file = "supervisor-compare.png",
+     .project = "landers-face-milling.mxproj",
+     .docks = "supervisorDock",
+     .compare = true},
     {.file = "tap-test.png", .project = "tap-test-example.mxproj", .fit = "x"},
     {.file = "tap-test-lobes-sdm.png", .project = "tap-test-example.mxproj", .sdm = true, .fit = "y"},
     {.file = "shop-units-inch.png", .project = "rubio2006-tool-selection.mxproj", .inch = true},
@@ -148,6 +154,7 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
   QSignalSpy lobes_shown(lobes, &gui::LobesFeature::lobesShown);
   QSignalSpy simulated(simulation, &gui::SimulationFeature::simulationShown);
   QSignalSpy supervised(supervisor, &gui::SupervisorFeature::supervisionFinished);
+  QSignalSpy compared(supervisor, &gui::SupervisorFeature::comparisonResult);
   QSignalSpy surface(machining, &gui::MachiningFeature::surfaceFinishShown);
   QSignalSpy program(machining, &gui::MachiningFeature::partProgramShown);
   QSignalSpy fitted(tap_test, &gui::TapTestFeature::fitShown);
@@ -200,6 +207,10 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
     view->speedCombo()->setCurrentIndex(view->speedCombo()->count() - 1);  // as fast as possible
     supervisor->start();
   }
+  if (shot.compare) {
+    supervisor->view()->tabs()->setCurrentIndex(1);
+    supervisor->compare();
+  }
   if (*shot.program) machining->openPartProgram(projectFile(shot.program));
 
   QStringList waits = {"lobes"};
@@ -207,6 +218,9 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
   if (*shot.supervise) {
     waits << "the supervised run";
     ready.emplace_back([&] { return supervised.count() > 0; });
+  } else if (shot.compare) {
+    waits << "the three supervised runs";
+    ready.emplace_back([&] { return compared.count() >= 3; });
   } else if (!fit.isEmpty()) {
     waits << "the tap-test fit";
     ready.emplace_back([&] {
