@@ -164,6 +164,11 @@ void SurfaceFinishPanel::relabel() {
 // The run shown again after a change of units: the labels, the samples and the summary.
 void SurfaceFinishPanel::reshow() {
   relabel();
+  replayShown();
+}
+
+// Clears the plots and shows the kept run and its baseline (if any) again, with the same status text.
+void SurfaceFinishPanel::replayShown() {
   const QVector<SurfaceFinishSample> samples = samples_;
   const std::optional<SurfaceFinishSummary> summary = shown_summary_;
   const QVector<SurfaceFinishSample> baseline = baseline_;
@@ -465,16 +470,7 @@ void SurfaceFinishPanel::clearBaseline() {
   for (const char* key : kBaselineGraphs) graphs_[QLatin1String(key)]->data()->clear();
   for (const char* key : {"ra_baseline_um", "f_baseline_n"}) summary_[QLatin1String(key)]->setText(kMissing);
   showBaselineLegend(false);
-  const QVector<SurfaceFinishSample> samples = samples_;
-  const std::optional<SurfaceFinishSummary> summary = shown_summary_;
-  const QString status = status_label_->text();
-  const bool busy = busy_;
-  busy_ = true;  // clear() keeps the status text while busy
-  clear();
-  busy_ = busy;
-  appendSamples(samples);
-  if (summary) setSummary(*summary);
-  status_label_->setText(status);
+  replayShown();
   finishedStatus();
 }
 

@@ -119,6 +119,7 @@ class SurfaceFinishPanel : public QWidget {
   void replotAll();
   void relabel();
   void reshow();
+  void replayShown();
   void showBaselineLegend(bool shown);
   void finishedStatus();
 
