@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/invalid_input.h"
-#include "model/cutting_coefficient_fit.h"
+#include "cutting_data/coefficient_fit.h"
 #include "model/cutting_force.h"
 #include "test_registry.h"
 
@@ -51,7 +51,7 @@ double relative(double got, double want) {
 }
 }  // namespace
 
-class TestCuttingCoefficientFit : public QObject {
+class TestCoefficientFit : public QObject {
   Q_OBJECT
  private slots:
   // Altintas (2.5): Fx = -N a K_rc c / 4 - N a K_re / pi, Fy = N a K_tc c / 4 + N a K_te / pi,
@@ -185,5 +185,5 @@ class TestCuttingCoefficientFit : public QObject {
   }
 };
 
-MX_REGISTER_TEST(TestCuttingCoefficientFit)
-#include "test_cutting_coefficient_fit.moc"
+MX_REGISTER_TEST(TestCoefficientFit)
+#include "test_coefficient_fit.moc"

@@ -1,4 +1,4 @@
-#include "model/cutting_coefficient_fit.h"
+#include "cutting_data/coefficient_fit.h"
 
 #include <algorithm>
 #include <cmath>
