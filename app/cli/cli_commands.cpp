@@ -27,6 +27,8 @@ const CliCommand* findCommand(const QString& name) {
        &runLibraryImportCommand},
       {"library-export", "write a project's tools as a Fusion 360, FreeCAD, LinuxCNC, CSV or JSON tool library",
        &runLibraryExportCommand},
+      {"coefficients", "cutting coefficients (K_tc, K_rc, K_ac, edge) from test cuts, average-force method",
+       &runCoefficientsCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

@@ -30,5 +30,6 @@ int runFrfFitCommand(const QStringList& arguments);
 int runFrfExportCommand(const QStringList& arguments);
 int runLibraryImportCommand(const QStringList& arguments);
 int runLibraryExportCommand(const QStringList& arguments);
+int runCoefficientsCommand(const QStringList& arguments);
 
 }  // namespace mx::app

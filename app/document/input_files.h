@@ -16,6 +16,8 @@ inline constexpr InputFileLimit kToolLibraryFileLimit{16 * kMegabyte, "a tool li
 // A CAM or controller tool library (Fusion 360, FreeCAD, LinuxCNC): a shop's whole library, thousands
 // of tools with their holders and presets, a few kB each.
 inline constexpr InputFileLimit kCamToolLibraryFileLimit{64 * kMegabyte, "a CAM tool library"};
+// Test-cut forces (mean forces per cut, or a dynamometer record of one cut: 1 h at 10 kHz is ~100 MB).
+inline constexpr InputFileLimit kTestCutFileLimit{256 * kMegabyte, "a test-cut file"};
 // The lobes JSON that millexpert-plot draws.
 inline constexpr InputFileLimit kPlotInputFileLimit{64 * kMegabyte, "a lobes JSON file"};
 

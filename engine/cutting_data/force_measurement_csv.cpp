@@ -77,6 +77,13 @@ void readRows(std::string_view bytes, const std::string& source, std::string_vie
 
 }  // namespace
 
+bool isForceRecordCsv(std::string_view bytes) {
+  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  TextLines lines(bytes);
+  TextLine line;
+  return lines.nextNonBlank(line) && fields(line.text).front() == "time_s";
+}
+
 std::vector<TestCut> readMeanForcesCsv(std::string_view bytes, const std::string& source) {
   std::vector<TestCut> cuts;
   readRows(bytes, source, kMeanForcesHeader, [&](int n, const std::vector<std::string_view>& f) {

@@ -20,6 +20,9 @@ inline constexpr std::string_view kForceRecordHeader = "time_s,Fx_N,Fy_N,Fz_N";
 // finite and within 1e7 N.
 std::vector<TestCut> readMeanForcesCsv(std::string_view bytes, const std::string& source_name);
 
+// True when the first non-blank line starts with the field time_s: a record; else a mean-forces file.
+bool isForceRecordCsv(std::string_view bytes);
+
 struct ForceRecord {
   std::vector<double> t_s, fx_n, fy_n, fz_n;
 };
