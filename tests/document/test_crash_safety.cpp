@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <memory>
 #include <random>
 
@@ -24,7 +25,8 @@ namespace {
 
 constexpr int kKills = 40;
 constexpr unsigned kSeed = 20240501;
-constexpr int kMaxDelayUs = 40000;  // after "ready"; one write takes a few ms
+constexpr int kMaxDelayUs = 40000;  // after "ready"; one write takes a few ms (release build)
+constexpr int kDelayWrites = 3;     // ... or over this many writes of the build at hand (sanitizers)
 const QString kProject = MX_PROJECTS_DIR "/library-20-tools.mxproj";
 
 struct Tally {
@@ -76,11 +78,20 @@ class TestCrashSafety : public QObject {
   template <typename Check>
   Tally killLoop(const QString& mode, const QString& project, const QString& written, const QByteArray (&variants)[2],
                  Check check) {
-    std::mt19937 random(kSeed);
-    std::uniform_int_distribution<int> delay_us(0, kMaxDelayUs);
     const QString folder = QFileInfo(written).absolutePath();
     const QStringList expected{QFileInfo(project).fileName(), QFileInfo(written).fileName()};
     Tally tally;
+    std::unique_ptr<QProcess> calibration(startWriter(mode, project));
+    const qint64 write_us = test::calibrateWriteMicros(*calibration, folder, kDelayWrites, 60000);
+    if (write_us < 0) {
+      tally.failure = "document_writer did not complete its first writes: " +
+                      QString::fromLocal8Bit(calibration->readAllStandardError());
+      return tally;
+    }
+    const auto max_delay_us = static_cast<int>(std::max<qint64>(kMaxDelayUs, kDelayWrites * write_us));
+    removeStrays(folder, expected);  // what the calibration's kill left; each kill below reads the file anew
+    std::mt19937 random(kSeed);
+    std::uniform_int_distribution<int> delay_us(0, max_delay_us);
     while (tally.kills < kKills) {
       const QByteArray before = test::readBytes(written);
       std::unique_ptr<QProcess> writer(startWriter(mode, project));

@@ -103,4 +103,19 @@ inline KillOutcome stopAndKill(QProcess& process, const QString& folder, const Q
   return outcome;
 }
 
+// The mean time of one write [us] of a writer that prints "ready", then "begin k" and "end k" around its
+// k-th write, measured over its first `writes` writes; the writer is killed afterwards. -1 when it did not
+// get there within `timeout_ms`. The kill loops draw their delays over a few writes, so that the kills land
+// inside the writes however slow the build (sanitizers) or the machine is.
+inline qint64 calibrateWriteMicros(QProcess& process, const QString& folder, int writes, int timeout_ms) {
+  QByteArray seen;
+  if (!waitForLine(process, seen, "ready", timeout_ms)) return -1;
+  QElapsedTimer clock;
+  clock.start();
+  const bool done = waitForLine(process, seen, "end " + QByteArray::number(writes - 1), timeout_ms);
+  const qint64 us = clock.nsecsElapsed() / 1000 / writes;
+  stopAndKill(process, folder, seen);
+  return done ? us : -1;
+}
+
 }  // namespace mx::test
