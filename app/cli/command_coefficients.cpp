@@ -9,6 +9,7 @@
 // confidence intervals of the same keys; 0 with two cuts) and "cuts". Kt_N_mm2 is K_tc and Kr is K_rc / K_tc:
 // the material fields. Exit 2: a bad file (the message names the line) or flag; exit 1: no fit.
 #include <QJsonArray>
+#include <algorithm>
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
@@ -62,21 +63,22 @@ double perRecord(const QCommandLineParser& parser, const QString& name, int reco
 
 std::vector<TestCut> readCuts(const QCommandLineParser& parser, const QStringList& files) {
   std::vector<std::string> contents;
-  int records = 0;
+  std::vector<bool> is_record;
   for (const QString& file : files) {
     try {
       contents.push_back(readBoundedFile(file, kTestCutFileLimit).toStdString());
     } catch (const InvalidInput& e) {
       throw CliError(QString("%1: %2").arg(file, e.what()), kExitBadInput);
     }
-    records += isForceRecordCsv(contents.back());
+    is_record.push_back(isForceRecordCsv(contents.back()));
   }
+  const auto records = static_cast<int>(std::count(is_record.begin(), is_record.end(), true));
   std::vector<TestCut> cuts;
   int record = 0;
   for (std::size_t i = 0; i < contents.size(); ++i) {
     const std::string source = files[static_cast<qsizetype>(i)].toStdString();
     try {
-      if (isForceRecordCsv(contents[i])) {
+      if (is_record[i]) {
         const double rpm = perRecord(parser, "speed", record, records, 1e-3, 1e6);
         const double feed_mm = perRecord(parser, "feed", record, records, 1e-6, 10.0);
         ++record;

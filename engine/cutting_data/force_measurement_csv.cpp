@@ -53,8 +53,7 @@ double force(std::string_view text, const std::string& source, int line, const c
 // Rows of four numbers after the expected header; `row` gets (line number, the four fields).
 template <typename Row>
 void readRows(std::string_view bytes, const std::string& source, std::string_view header, Row row) {
-  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
-  TextLines lines(bytes);
+  TextLines lines(withoutBom(bytes));
   TextLine line;
   if (!lines.nextNonBlank(line)) fail(source, 0, "the file is empty: expected the header " + std::string(header));
   if (trimmed(line.text) != header) {
@@ -78,8 +77,7 @@ void readRows(std::string_view bytes, const std::string& source, std::string_vie
 }  // namespace
 
 bool isForceRecordCsv(std::string_view bytes) {
-  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
-  TextLines lines(bytes);
+  TextLines lines(withoutBom(bytes));
   TextLine line;
   return lines.nextNonBlank(line) && fields(line.text).front() == "time_s";
 }

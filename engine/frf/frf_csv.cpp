@@ -12,11 +12,6 @@
 namespace mx {
 namespace {
 
-std::string_view withoutBom(std::string_view s) {
-  constexpr std::string_view kBom = "\xef\xbb\xbf";
-  return s.substr(0, kBom.size()) == kBom ? s.substr(kBom.size()) : s;
-}
-
 std::string_view trimmed(std::string_view s) {
   s = s.substr(skipBlanks(s, 0));
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);

@@ -12,9 +12,7 @@
 namespace mx {
 
 std::optional<FrfFormat> detectFrfFormat(std::string_view bytes) {
-  constexpr std::string_view kBom = "\xef\xbb\xbf";
-  if (bytes.substr(0, kBom.size()) == kBom) bytes.remove_prefix(kBom.size());
-  TextLines lines(bytes);
+  TextLines lines(withoutBom(bytes));
   TextLine l;
   if (!lines.nextNonBlank(l)) return std::nullopt;
   if (l.text.find(',') != std::string_view::npos) return FrfFormat::Csv;  // readFrfCsv names a wrong header

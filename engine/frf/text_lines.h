@@ -7,6 +7,12 @@
 
 namespace mx {
 
+// `s` without a leading UTF-8 byte order mark, which spreadsheet programs put before a CSV's header.
+inline std::string_view withoutBom(std::string_view s) {
+  constexpr std::string_view kBom = "\xef\xbb\xbf";
+  return s.substr(0, kBom.size()) == kBom ? s.substr(kBom.size()) : s;
+}
+
 struct TextLine {
   std::string_view text;  // without the line end and trailing blanks
   int number = 0;         // 1-based
