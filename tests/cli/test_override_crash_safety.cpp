@@ -1,7 +1,8 @@
 // Crash safety of the override export (docs/reliability.md, "Crash safety"): `millexpert-cli override
 // PROGRAM PROJECT --out OUT` is killed with SIGKILL while it writes OUT. The write is a small part of a
 // run, so each kill is aimed: the test polls the process's open files until it holds one in OUT's folder
-// (the temporary file of the atomic write), then waits a random 0-6 ms (fixed seed) and kills it. Runs
+// (the temporary file of the atomic write), then waits a random time (fixed seed) up to 1.5 times as long
+// as the write was measured to take in three complete runs of the build at hand, and kills it. Runs
 // alternate between two spindle speeds, so consecutive outputs differ. After every kill OUT is
 // byte-identical to its content before the run or to the complete new output (its "(date: ...)" header
 // line aside, which changes by the second).
@@ -11,7 +12,9 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <random>
+#include <vector>
 
 #include "support/kill_loop.h"
 #include "support/project_files.h"
@@ -23,7 +26,8 @@ namespace {
 
 constexpr int kKills = 40;
 constexpr unsigned kSeed = 20240501;
-constexpr int kMaxDelayUs = 6000;
+constexpr int kCalibrationRuns = 3;
+constexpr qint64 kMinMaxDelayUs = 200;
 const QString kProgram = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
 const QString kProject = MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj";
 const QStringList kSpeeds{"3000", "4500"};
@@ -42,6 +46,22 @@ QByteArray dateless(const QByteArray& text) {
 class TestOverrideCrashSafety : public QObject {
   Q_OBJECT
 
+  // The median time [us] for which complete runs hold the output's temporary file open; -1 when one
+  // never does.
+  static qint64 medianWriteMicros(const QString& folder, const QString& out) {
+    std::vector<qint64> times;
+    for (int run = 0; run < kCalibrationRuns; ++run) {
+      QProcess cli;
+      cli.start(MX_CLI_PATH, overrideArgs(out, run));
+      times.push_back(test::measureOpenMicros(cli, folder, 60000));
+      cli.waitForFinished(60000);
+      QFile::remove(out);
+      if (times.back() < 0) return -1;
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  }
+
  private slots:
   void killedExportsLeaveTheOldOrTheNewProgram() {
     QTemporaryDir dir;
@@ -57,10 +77,12 @@ class TestOverrideCrashSafety : public QObject {
     }
     QVERIFY(dateless(refs[0]) != dateless(refs[1]));
     const QString folder = dir.filePath("out"), out = folder + "/program.nc";
+    const qint64 write_us = medianWriteMicros(folder, out);
+    QVERIFY2(write_us >= 0, "override --out never held its output's temporary file open");
     QVERIFY(QFile::copy(dir.filePath("ref/1.nc"), out));
 
     std::mt19937 random(kSeed);
-    std::uniform_int_distribution<int> delay_us(0, kMaxDelayUs);
+    std::uniform_int_distribution<qint64> delay_us(0, std::max(kMinMaxDelayUs, write_us * 3 / 2));
     int runs = 0, kills = 0, in_write = 0, old_kept = 0, new_written = 0, finished = 0, stray = 0;
     QElapsedTimer clock;
     clock.start();
@@ -92,9 +114,10 @@ class TestOverrideCrashSafety : public QObject {
         if (name != "program.nc") stray += QFile::remove(folder + "/" + name) ? 1 : 0;
     }
     qInfo(
-        "override --out: %d runs, %d kills, %d with the output's temporary file open: old program kept %d, new "
-        "program %d; %d runs finished first; stray temporary files %d; %lld ms",
-        runs, kills, in_write, old_kept, new_written, finished, stray, static_cast<long long>(clock.elapsed()));
+        "override --out: write %lld us; %d runs, %d kills, %d with the output's temporary file open: old program "
+        "kept %d, new program %d; %d runs finished first; stray temporary files %d; %lld ms",
+        static_cast<long long>(write_us), runs, kills, in_write, old_kept, new_written, finished, stray,
+        static_cast<long long>(clock.elapsed()));
     QCOMPARE(kills, kKills);
     QVERIFY2(in_write >= kKills / 2, qPrintable(QString("%1 kills during the write").arg(in_write)));
   }

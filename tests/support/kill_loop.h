@@ -57,6 +57,18 @@ inline bool waitForOpenFileBelow(QProcess& process, const QString& folder, int t
   return false;
 }
 
+// How long [us] `process` holds a file open below `folder`, from the first poll that sees one to the
+// first that sees none; -1 when it holds none within `timeout_ms`. The process runs on to its end.
+inline qint64 measureOpenMicros(QProcess& process, const QString& folder, int timeout_ms) {
+  if (!waitForOpenFileBelow(process, folder, timeout_ms)) return -1;
+  QElapsedTimer clock;
+  clock.start();
+  const qint64 pid = process.processId();
+  while (!openFilesBelow(pid, folder).isEmpty() && !hasEnded(pid)) {
+  }
+  return clock.nsecsElapsed() / 1000;
+}
+
 // Busy-waits `us` microseconds: QThread::usleep oversleeps by the scheduler's slack, which would
 // shift every kill time by the same amount.
 inline void spinFor(qint64 us) {
