@@ -46,7 +46,11 @@ app::MachineSpec MachineOperationPanel::defaultMachine() {
   return m;
 }
 app::MaterialSpec MachineOperationPanel::defaultMaterial() {
-  return {QStringLiteral("Aluminium"), 600.0, 0.3};
+  app::MaterialSpec m;
+  m.name = QStringLiteral("Aluminium");
+  m.Kt_N_mm2 = 600.0;
+  m.Kr = 0.3;
+  return m;
 }
 app::OperationSpec MachineOperationPanel::defaultOperation() {
   return {MillingDirection::Up, 1.0, std::nullopt, 0.1};

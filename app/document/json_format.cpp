@@ -39,6 +39,12 @@ const QStringList& keyOrder() {
                                  "runout_um",
                                  "Kt_N_mm2",
                                  "Kr",
+                                 "Kte_N_mm",
+                                 "Kre_N_mm",
+                                 "Ka_N_mm2",
+                                 "Kae_N_mm",
+                                 "process_damping_N_per_m",
+                                 "library",  // material
                                  "max_force_N",
                                  "modes_x",
                                  "modes_y",

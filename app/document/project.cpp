@@ -14,6 +14,7 @@ namespace mx::app {
 namespace {
 
 constexpr double kPaPerNPerMm2 = 1e6;    // 1 N/mm^2 = 1e6 N/m^2
+constexpr double kNPerMPerNPerMm = 1e3;  // 1 N/mm = 1e3 N/m
 constexpr double kNPerMPerNPerUm = 1e6;  // 1 N/um = 1e6 N/m
 constexpr double kMPerMm = 1e-3;
 
@@ -72,6 +73,15 @@ MillingSetup Project::setupFor(const QString& toolId) const {
   MillingSetup s = cutterGeometryOf(*tool);
   s.tangential_coefficient_pa = tool->Kt_N_mm2.value_or(material ? material->Kt_N_mm2 : 0.0) * kPaPerNPerMm2;
   s.radial_ratio = tool->Kr.value_or(material ? material->Kr : 0.0);
+  // The tool's value, else the material's, else 0 (a material given by K_t and K_r alone).
+  auto coefficient = [&](const std::optional<double>& on_tool, std::optional<double> MaterialSpec::*field) {
+    return on_tool.value_or(material ? (*material.*field).value_or(0.0) : 0.0);
+  };
+  s.tangential_edge_n_per_m = coefficient(tool->Kte_N_mm, &MaterialSpec::Kte_N_mm) * kNPerMPerNPerMm;
+  s.radial_edge_n_per_m = coefficient(tool->Kre_N_mm, &MaterialSpec::Kre_N_mm) * kNPerMPerNPerMm;
+  s.axial_coefficient_pa = coefficient(tool->Ka_N_mm2, &MaterialSpec::Ka_N_mm2) * kPaPerNPerMm2;
+  s.axial_edge_n_per_m = coefficient(tool->Kae_N_mm, &MaterialSpec::Kae_N_mm) * kNPerMPerNPerMm;
+  s.process_damping_n_per_m = material ? material->process_damping_N_per_m.value_or(0.0) : 0.0;
   s.modes_x = toModalAxis(tool->modes_x);
   s.modes_y = toModalAxis(tool->modes_y);
   s.direction = operation->milling;

@@ -73,8 +73,12 @@ struct ToolSpec {
   // one radial edge offset per tooth. Absent: uniform pitch, no runout.
   std::optional<std::vector<double>> pitch_deg;
   std::optional<std::vector<double>> runout_um;
-  std::optional<double> Kt_N_mm2;         // overrides material.Kt_N_mm2
-  std::optional<double> Kr;               // overrides material.Kr
+  std::optional<double> Kt_N_mm2;  // overrides material.Kt_N_mm2
+  std::optional<double> Kr;        // overrides material.Kr
+  std::optional<double> Kte_N_mm;  // override the material's edge and axial coefficients
+  std::optional<double> Kre_N_mm;
+  std::optional<double> Ka_N_mm2;
+  std::optional<double> Kae_N_mm;
   std::optional<double> radial_depth_mm;  // overrides the operation's radial engagement
   std::optional<double> max_force_N;      // F_allow: allowable peak resultant force (Rule 3, breakage)
   std::vector<ModeSpec> modes_x;
@@ -113,10 +117,19 @@ struct MachineSpec {
   bool operator==(const MachineSpec&) const = default;
 };
 
+// The work material (docs/project-file.md, "material"): the cutting coefficients K_tc (Kt_N_mm2) and
+// K_rc / K_tc (Kr) of the seeds, and optionally the edge and axial coefficients and the process damping
+// C_i; absent ones are 0. `library` names the entry of resources/materials.json it was copied from.
 struct MaterialSpec {
   QString name;
   double Kt_N_mm2 = 0.0;
   double Kr = 0.0;
+  std::optional<double> Kte_N_mm;
+  std::optional<double> Kre_N_mm;
+  std::optional<double> Ka_N_mm2;
+  std::optional<double> Kae_N_mm;
+  std::optional<double> process_damping_N_per_m;
+  std::optional<QString> library;
   bool operator==(const MaterialSpec&) const = default;
 };
 

@@ -70,6 +70,12 @@ MaterialSpec readMaterial(const ObjectReader& r) {
   m.name = r.string("name");
   m.Kt_N_mm2 = r.number("Kt_N_mm2", rules::kPositive);
   m.Kr = r.number("Kr", rules::kNonNegative);
+  m.Kte_N_mm = r.optionalNumber("Kte_N_mm");
+  m.Kre_N_mm = r.optionalNumber("Kre_N_mm");
+  m.Ka_N_mm2 = r.optionalNumber("Ka_N_mm2");
+  m.Kae_N_mm = r.optionalNumber("Kae_N_mm");
+  m.process_damping_N_per_m = r.optionalNumber("process_damping_N_per_m");
+  m.library = r.optionalString("library");
   return m;
 }
 
@@ -175,6 +181,10 @@ ToolSpec readTool(const ObjectReader& r) {
   t.runout_um = r.optionalNumbers("runout_um");
   t.Kt_N_mm2 = r.optionalNumber("Kt_N_mm2");
   t.Kr = r.optionalNumber("Kr");
+  t.Kte_N_mm = r.optionalNumber("Kte_N_mm");
+  t.Kre_N_mm = r.optionalNumber("Kre_N_mm");
+  t.Ka_N_mm2 = r.optionalNumber("Ka_N_mm2");
+  t.Kae_N_mm = r.optionalNumber("Kae_N_mm");
   t.radial_depth_mm = r.optionalNumber("radial_depth_mm");
   t.max_force_N = r.optionalNumber("max_force_N");
   t.frf_x = readFrfRef(r, "frf_x");
@@ -182,11 +192,31 @@ ToolSpec readTool(const ObjectReader& r) {
   t.modes_x = readAxisModes(r, "modes_x", t.frf_x.has_value());
   t.modes_y = readAxisModes(r, "modes_y", t.frf_y.has_value());
   readCamGeometry(r, t);
-  t.unknown = withoutKeys(
-      r.object(),
-      {"id",   "teeth",           "diameter_mm",       "helix_deg",   "pitch_deg",        "runout_um",    "Kt_N_mm2",
-       "Kr",   "radial_depth_mm", "max_force_N",       "modes_x",     "modes_y",          "frf_x",        "frf_y",
-       "type", "flute_length_mm", "overall_length_mm", "stickout_mm", "corner_radius_mm", "cutting_data", "origin"});
+  t.unknown = withoutKeys(r.object(), {"id",
+                                       "teeth",
+                                       "diameter_mm",
+                                       "helix_deg",
+                                       "pitch_deg",
+                                       "runout_um",
+                                       "Kt_N_mm2",
+                                       "Kr",
+                                       "Kte_N_mm",
+                                       "Kre_N_mm",
+                                       "Ka_N_mm2",
+                                       "Kae_N_mm",
+                                       "radial_depth_mm",
+                                       "max_force_N",
+                                       "modes_x",
+                                       "modes_y",
+                                       "frf_x",
+                                       "frf_y",
+                                       "type",
+                                       "flute_length_mm",
+                                       "overall_length_mm",
+                                       "stickout_mm",
+                                       "corner_radius_mm",
+                                       "cutting_data",
+                                       "origin"});
   return t;
 }
 

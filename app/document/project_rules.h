@@ -44,6 +44,10 @@ inline constexpr NumberRule kCurvePowerW{B::Closed, 0.0, B::Closed, 1e6, false};
 inline constexpr NumberRule kFeedMmS{B::Open, 0.0, B::Closed, 1e5, false};
 inline constexpr NumberRule kCuttingPressureNmm2{B::Open, 0.0, B::Closed, 1e5, false};  // Kt
 inline constexpr NumberRule kForceRatio{B::Closed, 0.0, B::Closed, 10.0, false};        // Kr
+inline constexpr NumberRule kAxialPressureNmm2{B::Closed, 0.0, B::Closed, 1e5, false};  // Ka
+inline constexpr NumberRule kEdgeForceNmm{B::Closed, 0.0, B::Closed, 1e4, false};       // Kte, Kre, Kae
+// Process damping C_i: measured values are 1e4 .. 1e7 N/m; above 1e9 the damping is unphysical.
+inline constexpr NumberRule kProcessDampingNm{B::Closed, 0.0, B::Closed, 1e9, false};
 inline constexpr NumberRule kFeedPerToothMm{B::Open, 0.0, B::Closed, 10.0, false};
 inline constexpr NumberRule kDiameterMm{B::Open, 0.0, B::Closed, 1000.0, false};
 // A mode's frequency, damping and stiffness: above 20 kHz no lobe of a milling speed range is

@@ -49,6 +49,11 @@ void validateMachine(const MachineSpec& m) {
 void validateMaterial(const MaterialSpec& m) {
   checkNumber("material.Kt_N_mm2", m.Kt_N_mm2, rules::kCuttingPressureNmm2);
   checkNumber("material.Kr", m.Kr, rules::kForceRatio);
+  checkOptional("material.Kte_N_mm", m.Kte_N_mm, rules::kEdgeForceNmm);
+  checkOptional("material.Kre_N_mm", m.Kre_N_mm, rules::kEdgeForceNmm);
+  checkOptional("material.Ka_N_mm2", m.Ka_N_mm2, rules::kAxialPressureNmm2);
+  checkOptional("material.Kae_N_mm", m.Kae_N_mm, rules::kEdgeForceNmm);
+  checkOptional("material.process_damping_N_per_m", m.process_damping_N_per_m, rules::kProcessDampingNm);
 }
 
 void validateOperation(const OperationSpec& op) {
@@ -142,6 +147,10 @@ void validateTool(const QString& path, const ToolSpec& t) {
   validateToolGeometry(path, t);
   checkOptional(path + ".Kt_N_mm2", t.Kt_N_mm2, rules::kCuttingPressureNmm2);
   checkOptional(path + ".Kr", t.Kr, rules::kForceRatio);
+  checkOptional(path + ".Kte_N_mm", t.Kte_N_mm, rules::kEdgeForceNmm);
+  checkOptional(path + ".Kre_N_mm", t.Kre_N_mm, rules::kEdgeForceNmm);
+  checkOptional(path + ".Ka_N_mm2", t.Ka_N_mm2, rules::kAxialPressureNmm2);
+  checkOptional(path + ".Kae_N_mm", t.Kae_N_mm, rules::kEdgeForceNmm);
   checkOptional(path + ".max_force_N", t.max_force_N, rules::kToolForceN);
   validateModes(path + ".modes_x", t.modes_x);
   validateModes(path + ".modes_y", t.modes_y);

@@ -101,6 +101,10 @@ QJsonObject toolJson(const ToolSpec& tool) {
   putNumbers(t, "runout_um", tool.runout_um);
   putOptional(t, "Kt_N_mm2", tool.Kt_N_mm2);
   putOptional(t, "Kr", tool.Kr);
+  putOptional(t, "Kte_N_mm", tool.Kte_N_mm);
+  putOptional(t, "Kre_N_mm", tool.Kre_N_mm);
+  putOptional(t, "Ka_N_mm2", tool.Ka_N_mm2);
+  putOptional(t, "Kae_N_mm", tool.Kae_N_mm);
   putOptional(t, "radial_depth_mm", tool.radial_depth_mm);
   putOptional(t, "max_force_N", tool.max_force_N);
   putAxis(t, "modes_x", tool.modes_x, "frf_x", tool.frf_x);
@@ -142,6 +146,16 @@ QJsonObject materialJson(QJsonObject o, const MaterialSpec& m) {
   o.insert("name", m.name);
   putNumber(o, "Kt_N_mm2", m.Kt_N_mm2);
   putNumber(o, "Kr", m.Kr);
+  putOptional(o, "Kte_N_mm", m.Kte_N_mm);
+  putOptional(o, "Kre_N_mm", m.Kre_N_mm);
+  putOptional(o, "Ka_N_mm2", m.Ka_N_mm2);
+  putOptional(o, "Kae_N_mm", m.Kae_N_mm);
+  putOptional(o, "process_damping_N_per_m", m.process_damping_N_per_m);
+  if (m.library) {
+    o.insert("library", *m.library);
+  } else {
+    o.remove("library");
+  }
   return o;
 }
 

@@ -28,13 +28,30 @@ DirectionalFactors averageDirectionalFactors(const Immersion& immersion, double 
   return {0.5 * (a.xx - b.xx), 0.5 * (a.xy - b.xy), 0.5 * (a.yx - b.yx), 0.5 * (a.yy - b.yy)};
 }
 
-ToothForce toothForce(const MillingSetup& setup, double depth_m, double phi_rad, double chip_m) {
-  if (chip_m <= 0.0 || !setup.immersion.contains(phi_rad)) return {};
-  const double ft = setup.tangential_coefficient_pa * depth_m * chip_m;
-  const double fr = setup.radial_ratio * ft;
+namespace {
+ToothForce resolved(double ft, double fr, double fa, double phi_rad) {
   const double s = std::sin(phi_rad);
   const double c = std::cos(phi_rad);
-  return {ft, -ft * c - fr * s, ft * s - fr * c};
+  return {ft, -ft * c - fr * s, ft * s - fr * c, fa};
+}
+}  // namespace
+
+ToothForce chipForcePerArea(const MillingSetup& setup, double phi_rad) {
+  const double ft = setup.tangential_coefficient_pa;
+  return resolved(ft, setup.radial_ratio * ft, setup.axial_coefficient_pa, phi_rad);
+}
+
+ToothForce edgeForcePerDepth(const MillingSetup& setup, double phi_rad) {
+  return resolved(setup.tangential_edge_n_per_m, setup.radial_edge_n_per_m, setup.axial_edge_n_per_m, phi_rad);
+}
+
+ToothForce toothForce(const MillingSetup& setup, double depth_m, double phi_rad, double chip_m) {
+  if (chip_m <= 0.0 || !setup.immersion.contains(phi_rad)) return {};
+  const double kt = setup.tangential_coefficient_pa;
+  const double ft = depth_m * (kt * chip_m + setup.tangential_edge_n_per_m);
+  const double fr = depth_m * (setup.radial_ratio * kt * chip_m + setup.radial_edge_n_per_m);
+  const double fa = depth_m * (setup.axial_coefficient_pa * chip_m + setup.axial_edge_n_per_m);
+  return resolved(ft, fr, fa, phi_rad);
 }
 
 double StaticForce::resultant() const {
@@ -79,6 +96,7 @@ StaticForce StaticCut::at(double theta_rad) const {
       total.tangential_sum_n += f.tangential_n;
       total.fx_n += f.fx_n;
       total.fy_n += f.fy_n;
+      total.fz_n += f.fz_n;
     }
   }
   return total;
@@ -103,6 +121,7 @@ CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& poin
     peak_tangential = std::max(peak_tangential, f.tangential_sum_n);
     sum_tangential += f.tangential_sum_n;
     out.peak_force_n = std::max(out.peak_force_n, f.resultant());
+    out.peak_axial_force_n = std::max(out.peak_axial_force_n, std::abs(f.fz_n));
   }
   out.peak_power_w = out.cutting_speed_m_per_s * peak_tangential;
   out.mean_power_w = out.cutting_speed_m_per_s * sum_tangential / samples;

@@ -16,21 +16,28 @@ struct DirectionalFactors {
 DirectionalFactors averageDirectionalFactors(const Immersion& immersion, double radial_ratio);
 
 // Force on the tool from one tooth at angle phi with chip thickness h (h <= 0 or outside the
-// immersion gives zero): F_t = K_t b h, F_r = K_r F_t, F_x = -F_t cos phi - F_r sin phi,
-// F_y = F_t sin phi - F_r cos phi.
+// immersion gives zero), with the edge forces (Altintas 2000, eq. 2.22):
+//   F_t = b (K_t h + K_te),  F_r = b (K_r K_t h + K_re),  F_a = b (K_ac h + K_ae),
+//   F_x = -F_t cos phi - F_r sin phi,  F_y = F_t sin phi - F_r cos phi,  F_z = F_a.
 struct ToothForce {
   double tangential_n = 0.0;
   double fx_n = 0.0;
   double fy_n = 0.0;
+  double fz_n = 0.0;
 };
 ToothForce toothForce(const MillingSetup& setup, double depth_m, double phi_rad, double chip_m);
+// The parts of toothForce proportional to b h (per unit b h, [N/m^2]) and to b alone (the edge forces,
+// per unit b, [N/m]), at phi whether or not it lies in the immersion.
+ToothForce chipForcePerArea(const MillingSetup& setup, double phi_rad);
+ToothForce edgeForcePerDepth(const MillingSetup& setup, double phi_rad);
 
 // Sum over the teeth at cutter rotation angle theta (tooth j at theta + toothAngleRad(j)), rigid tool.
 struct StaticForce {
   double tangential_sum_n = 0.0;  // sum_j F_tj
   double fx_n = 0.0;
   double fy_n = 0.0;
-  double resultant() const;
+  double fz_n = 0.0;
+  double resultant() const;  // the lateral |(F_x, F_y)|, which bends the tool
 };
 
 // The rigid-tool cut of a real cutter (docs/fidelity.md, "Real cutters"): each tooth's slices at their
@@ -62,17 +69,19 @@ StaticForce staticForce(const MillingSetup& setup, const OperatingPoint& point, 
 struct CutPerformance {
   double peak_power_w = 0.0;  // max over the principal period (a tooth period; a revolution for variable pitch)
   double mean_power_w = 0.0;
-  double peak_torque_nm = 0.0;  // max of (D/2) sum F_t
-  double peak_force_n = 0.0;    // max resultant |F|
-  double mrr_m3_per_s = 0.0;    // a b s_t n_t N
+  double peak_torque_nm = 0.0;      // max of (D/2) sum F_t
+  double peak_force_n = 0.0;        // max lateral resultant |(F_x, F_y)|
+  double peak_axial_force_n = 0.0;  // max |F_z|
+  double mrr_m3_per_s = 0.0;        // a b s_t n_t N
   double cutting_speed_m_per_s = 0.0;
 };
 CutPerformance evaluateCut(const MillingSetup& setup, const OperatingPoint& point);
 
 // Peak power and peak resultant force per unit (b s_t) at depth b and feed s_t: the power is
-// proportional to N (v = pi D N) and the force independent of it. Without runout both are independent of
-// s_t, and with straight teeth of b too; the helix lowers them as b grows, the runout raises them at small
-// s_t. Used for the power- and force-limit curves (Pareto paper eq. 8 and Module II).
+// proportional to N (v = pi D N) and the force independent of it. Without runout and edge forces both are
+// independent of s_t, and with straight teeth of b too; the helix lowers them as b grows, the runout and
+// the edge forces raise them at small s_t. Used for the power- and force-limit curves (Pareto paper eq. 8 and Module
+// II).
 struct PeakPerDepthFeed {
   double power_w_per_rev_per_s = 0.0;  // P / (N b s_t) [W / (rev/s m^2)]
   double force_n = 0.0;                // |F|_max / (b s_t) [N / m^2]

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "core/invalid_input.h"
 
@@ -92,6 +93,24 @@ void MillingSetup::validateGeometry() const {
       throw InvalidInput("runout[" + std::to_string(j) + "] = " + number(runout_m[j] * 1e6) +
                          " um is outside (-D/4, D/4) = (" + number(-0.25e6 * diameter_m) + ", " +
                          number(0.25e6 * diameter_m) + ") um");
+}
+
+void MillingSetup::validateCoefficients() const {
+  const std::pair<const char*, double> fields[] = {{"K_t [N/m^2]", tangential_coefficient_pa},
+                                                   {"K_r", radial_ratio},
+                                                   {"K_te [N/m]", tangential_edge_n_per_m},
+                                                   {"K_re [N/m]", radial_edge_n_per_m},
+                                                   {"K_ac [N/m^2]", axial_coefficient_pa},
+                                                   {"K_ae [N/m]", axial_edge_n_per_m},
+                                                   {"C_i [N/m] (process damping)", process_damping_n_per_m}};
+  for (const auto& [name, value] : fields)
+    if (!(value >= 0.0 && std::isfinite(value)))
+      throw InvalidInput(std::string(name) + " = " + number(value) + ": must be finite and >= 0");
+}
+
+double MillingSetup::processDampingPerDepth(double spindle_rev_per_s) const {
+  if (process_damping_n_per_m == 0.0) return 0.0;
+  return process_damping_n_per_m / (std::numbers::pi * diameter_m * spindle_rev_per_s);
 }
 
 }  // namespace mx

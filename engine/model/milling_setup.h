@@ -42,6 +42,16 @@ struct MillingSetup {
   std::vector<double> runout_m;            // one per tooth; empty: none
   double tangential_coefficient_pa = 0.0;  // K_t [N/m^2] (eq. 2)
   double radial_ratio = 0.0;               // K_r = F_r / F_t (eq. 3)
+  // Edge (ploughing) forces per unit b of an engaged edge, and the axial cutting and edge coefficients
+  // (Altintas 2000, eq. 2.22: F_q = K_qc b h + K_qe b). They change the static forces, torque and power,
+  // not the linear stability.
+  double tangential_edge_n_per_m = 0.0;  // K_te
+  double radial_edge_n_per_m = 0.0;      // K_re
+  double axial_coefficient_pa = 0.0;     // K_ac
+  double axial_edge_n_per_m = 0.0;       // K_ae
+  // Process damping (the C_i / V model; docs/fidelity.md, "Process damping"): an engaged edge of
+  // width b moving at v_n into the cut surface is pushed back by C_i b v_n / V, V = pi D N.
+  double process_damping_n_per_m = 0.0;  // C_i
   ModalAxis modes_x;
   ModalAxis modes_y;
   // Measured receptance per axis; an axis may have a measured FRF, modes, both or neither (rigid).
@@ -63,6 +73,11 @@ struct MillingSetup {
   // Throws InvalidInput naming the field, value and rule: 1 <= teeth <= kMaxTeeth, |helix| < 90 deg, pitch and runout
   // of length teeth, pitches > 0 summing to 360 deg within 1e-6 deg, runout finite and below D / 4.
   void validateGeometry() const;
+  // Throws InvalidInput naming the field and value unless K_t, K_r and the edge, axial and process-damping
+  // coefficients are finite and >= 0.
+  void validateCoefficients() const;
+  // The process damping per unit b [N s / m^2] at `spindle_rev_per_s`: C_i / V.
+  double processDampingPerDepth(double spindle_rev_per_s) const;
 };
 
 // Tolerance on the sum of the pitch angles: the fixed interface's 1e-6 degree.

@@ -82,12 +82,14 @@ class ReferenceModel {
   }
 
   // Summed edge forces at time t (eq. 2-3, 7 with each tooth's delays, feeds and runout terms of
-  // cutter_edges.h; the chip is the minimum over the remembered passes), straight from mx::toothForce.
+  // cutter_edges.h; the chip is the minimum over the remembered passes), straight from mx::toothForce, and
+  // the process damping -(C_i / V) b_e (n . v) n of each cutting edge, n = (sin phi, cos phi).
   StaticForce force(double t, const double* s) const {
     double x, y, vx, vy;
     axes(s, x, y, vx, vy);
     for (std::size_t i = 0; i < xd_.size(); ++i) delayed(t, passes_.delay_tooth_periods[i], xd_[i], yd_[i]);
     const double theta = 2.0 * std::numbers::pi * point_.spindle_rev_per_s * t;
+    const double damping = setup_.processDampingPerDepth(point_.spindle_rev_per_s) * point_.axial_depth_m;
     StaticForce total;
     for (const CutterEdge& edge : edges_) {
       const double phi = theta + edge.angle_rad;
@@ -100,8 +102,10 @@ class ReferenceModel {
       for (int k = 1; k < passes_.passes; ++k) chip = std::min(chip, chipOfPass(first + static_cast<std::size_t>(k)));
       const ToothForce f = toothForce(setup_, point_.axial_depth_m * edge.depth_fraction, phi, chip);
       total.tangential_sum_n += f.tangential_n;
-      total.fx_n += f.fx_n;
-      total.fy_n += f.fy_n;
+      const bool cutting = chip > 0.0 && setup_.immersion.contains(phi);
+      const double pushed = cutting ? damping * edge.depth_fraction * (sn * vx + cs * vy) : 0.0;
+      total.fx_n += f.fx_n - pushed * sn;
+      total.fy_n += f.fy_n - pushed * cs;
     }
     return total;
   }

@@ -52,9 +52,10 @@ void EngagementPlanner::addSubStep(double begin, double end, double theta_mid, c
       // The stage angle measured from the midpoint, clamped against roundoff at the event instants.
       const double phi = std::clamp(mid + (stage_theta[static_cast<std::size_t>(point)] - theta_mid),
                                     immersion.entry_rad, immersion.exit_rad);
-      const ToothForce unit = toothForce(setup_, 1.0, phi, 1.0);  // per unit b h
-      pool.push_back({std::sin(phi), std::cos(phi), unit.fx_n, unit.fy_n, edge.depth_fraction,
-                      static_cast<std::size_t>(edge.pass_set)});
+      const ToothForce unit = chipForcePerArea(setup_, phi);
+      const ToothForce edge_unit = edgeForcePerDepth(setup_, phi);
+      pool.push_back({std::sin(phi), std::cos(phi), unit.fx_n, unit.fy_n, edge_unit.fx_n, edge_unit.fy_n,
+                      edge.depth_fraction, static_cast<std::size_t>(edge.pass_set)});
     }
   }
   sub.offsets[3] = static_cast<std::uint32_t>(pool.size());

@@ -1,6 +1,7 @@
 #pragma once
 // Which teeth cut during one integration step, with their per-unit force directions from mx::toothForce
-// (b = 1 m, h = 1 m): F_t = K_t b h, F_x = b h fx_unit, F_y = b h fy_unit (2006, eq. 2-3). A "tooth"
+// (b = 1 m, h = 1 m): F_t = K_t b h, F_x = b (h fx_unit + ex_unit), F_y = b (h fy_unit + ey_unit)
+// (2006, eq. 2-3, with the edge forces of Altintas 2000, eq. 2.22). A "tooth"
 // here is a CutterEdge: a straight tooth, or one axial slice of a helical one (its share of b).
 //
 // A tooth entering or leaving the immersion switches the force discontinuously (partial immersion has
@@ -22,6 +23,8 @@ struct ActiveTooth {
   double cos_phi = 0.0;
   double fx_unit = 0.0;  // [N / m^2]: F_x per unit b h
   double fy_unit = 0.0;
+  double ex_unit = 0.0;  // [N / m]: the edge force's F_x per unit b
+  double ey_unit = 0.0;
   double depth_fraction = 1.0;  // the edge's share of b
   std::size_t pass_set = 0;     // its tooth's passes (ToothPasses)
 };

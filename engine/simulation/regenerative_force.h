@@ -38,11 +38,23 @@ struct CutForce {
   double fx = 0.0, fy = 0.0, tangential = 0.0, max_chip = 0.0;
 };
 
+// The terms beyond the chip force, for edges with h_j > 0: the edge forces b_e (ex_unit, ey_unit) and
+// K_te b_e (Altintas 2000, eq. 2.22), and the process damping -(C_i / V) b_e (n . v) n with n = (sin phi,
+// cos phi), the direction in which the chip grows, and v the tool's velocity (docs/fidelity.md, "Process
+// damping").
+struct CutExtras {
+  bool active = false;        // some edge force or process damping is not 0
+  double kte = 0.0;           // K_te [N/m]
+  double damping = 0.0;       // C_i / V [N s / m^2]
+  double vx = 0.0, vy = 0.0;  // the tool's velocity [m/s]
+};
+
 // Inlined into the RK4 stage, the hot loop of the simulation.
-template <bool kPlain>
+template <bool kPlain, bool kExtended>
 [[gnu::always_inline]] inline CutForce cutForceOf(std::span<const ActiveTooth> teeth, const Regeneration& r,
-                                                  double depth, double kt) {
+                                                  double depth, double kt, const CutExtras& extras) {
   double sum_h = 0.0, sum_x = 0.0, sum_y = 0.0, max_h = 0.0;
+  double sum_b = 0.0, extra_x = 0.0, extra_y = 0.0;  // kExtended only
   const auto passes = static_cast<std::size_t>(r.passes);
   const double* ax = r.ax.data();
   const double* ay = r.ay.data();
@@ -61,13 +73,27 @@ template <bool kPlain>
       sum_x += hb * tooth.fx_unit;
       sum_y += hb * tooth.fy_unit;
       max_h = std::max(max_h, h);
+      if constexpr (kExtended) {
+        const double b = kPlain ? 1.0 : tooth.depth_fraction;
+        const double pushed = extras.damping * b * (tooth.sin_phi * extras.vx + tooth.cos_phi * extras.vy);
+        sum_b += b;
+        extra_x += b * tooth.ex_unit - pushed * tooth.sin_phi;
+        extra_y += b * tooth.ey_unit - pushed * tooth.cos_phi;
+      }
     }
   }
+  if constexpr (kExtended)
+    return {depth * (sum_x + extra_x), depth * (sum_y + extra_y), depth * (kt * sum_h + extras.kte * sum_b), max_h};
   return {depth * sum_x, depth * sum_y, kt * depth * sum_h, max_h};
 }
 
-inline CutForce cutForce(std::span<const ActiveTooth> teeth, const Regeneration& r, double depth, double kt) {
-  return r.plain ? cutForceOf<true>(teeth, r, depth, kt) : cutForceOf<false>(teeth, r, depth, kt);
+inline CutForce cutForce(std::span<const ActiveTooth> teeth, const Regeneration& r, double depth, double kt,
+                         const CutExtras& extras = {}) {
+  if (extras.active)
+    return r.plain ? cutForceOf<true, true>(teeth, r, depth, kt, extras)
+                   : cutForceOf<false, true>(teeth, r, depth, kt, extras);
+  return r.plain ? cutForceOf<true, false>(teeth, r, depth, kt, extras)
+                 : cutForceOf<false, false>(teeth, r, depth, kt, extras);
 }
 
 }  // namespace mx

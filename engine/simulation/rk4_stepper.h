@@ -16,12 +16,13 @@
 
 namespace mx {
 
-// The cut's constants: axial depth b, feed per tooth s_t, K_t (F_t per unit b h), and each tooth's
-// remembered passes (delays, static feed and runout terms).
+// The cut's constants: axial depth b, feed per tooth s_t, K_t (F_t per unit b h), the edge forces and
+// process damping, and each tooth's remembered passes (delays, static feed and runout terms).
 struct CutParameters {
   double depth_m = 0.0;
   double feed_per_tooth_m = 0.0;
   double kt = 0.0;
+  CutExtras extras;  // edge forces and process damping; the velocities are the stage's
   ToothPasses passes;
   bool sliced = false;  // helical teeth as axial slices (each edge carries its share of b)
 };
@@ -87,7 +88,9 @@ class Rk4Stepper {
       regeneration_.ax[i] = feed[i] + x - past[i].x;
       regeneration_.ay[i] = y - past[i].y;
     }
-    const CutForce f = cutForce(teeth, regeneration_, cut_.depth_m, cut_.kt);
+    CutExtras& extras = cut_.extras;
+    if (extras.active) dynamics_.axisVelocities(s, extras.vx, extras.vy);
+    const CutForce f = cutForce(teeth, regeneration_, cut_.depth_m, cut_.kt, extras);
     dynamics_.derivative(s, f.fx, f.fy, out);
     return f;
   }

@@ -24,12 +24,15 @@ constexpr int kMinStepsPerToothPeriod = 32;
 constexpr double kStepsPerVibrationPeriod = 40.0;
 constexpr int kMaxTabulatedSteps = 1 << 18;
 
-// K_t via the force model: F_t per unit b h, at mid-immersion.
+// The cut's coefficients: K_t, K_te and the process damping C_i / V per unit b at the nominal speed.
 CutParameters cutParameters(const MillingSetup& setup, const OperatingPoint& point, int passes, int slices) {
   CutParameters cut;
   cut.depth_m = point.axial_depth_m;
   cut.feed_per_tooth_m = point.feed_per_tooth_m;
-  cut.kt = toothForce(setup, 1.0, 0.5 * (setup.immersion.entry_rad + setup.immersion.exit_rad), 1.0).tangential_n;
+  cut.kt = setup.tangential_coefficient_pa;
+  cut.extras.kte = setup.tangential_edge_n_per_m;
+  cut.extras.damping = setup.processDampingPerDepth(point.spindle_rev_per_s);
+  cut.extras.active = cut.extras.kte != 0.0 || setup.radial_edge_n_per_m != 0.0 || cut.extras.damping != 0.0;
   cut.passes = toothPasses(setup, point.feed_per_tooth_m, passes);
   cut.sliced = slices > 1;
   return cut;
@@ -55,6 +58,7 @@ class StepSampler {
         circumference_(std::numbers::pi * setup.diameter_m),  // v = pi D N
         depth_(cut.depth_m),
         kt_(cut.kt),
+        edges_{cut.extras.active, cut.extras.kte, 0.0, 0.0, 0.0},
         dt_(dt),
         rigid_(rigidTool(setup, cut)) {}
 
@@ -70,7 +74,7 @@ class StepSampler {
     const double speed = constant_speed_ ? nominal_rev_per_s_ : kinematics_.speedRevPerS(n * dt_);
     s.power_w = circumference_ * speed * c.tangential;
     s.chip_m = c.max_chip;
-    const CutForce static_force = cutForce(teeth, rigid_, depth_, kt_);
+    const CutForce static_force = cutForce(teeth, rigid_, depth_, kt_, edges_);
     s.static_force_n = std::hypot(static_force.fx, static_force.fy);
     s.static_chip_m = static_force.max_chip;
     return s;
@@ -81,7 +85,9 @@ class StepSampler {
   double nominal_rev_per_s_;
   bool constant_speed_;
   double circumference_;
-  double depth_, kt_, dt_;
+  double depth_, kt_;
+  CutExtras edges_;  // the rigid tool's: edge forces, no vibration to damp
+  double dt_;
   Regeneration rigid_;
 };
 

@@ -197,6 +197,13 @@ Eigen::Matrix2d coefficientOf(const TrigIntegrals& t, double kt, double kr, doub
   return h * (kt / dphi);
 }
 
+// N (sdm_model.h) from the same integrals: the step average of n n^T, n = (sin phi, cos phi).
+Eigen::Matrix2d normalProjectorOf(const TrigIntegrals& t, double dphi) {
+  Eigen::Matrix2d n;
+  n << t.s2, t.sc, t.sc, t.c2;
+  return n / dphi;
+}
+
 bool cuts(const Eigen::Matrix2d& h) {
   return h.cwiseAbs().maxCoeff() > 0.0;
 }
@@ -238,6 +245,7 @@ SdmModel::SdmModel(const MillingSetup& setup, int steps_per_tooth_period, int de
   a0_ = Eigen::MatrixXd::Zero(n, n);
   p_ = Eigen::Matrix<double, Eigen::Dynamic, 2>::Zero(n, 2);
   c_ = Eigen::MatrixXd::Zero(2, n);
+  velocity_ = Eigen::MatrixXd::Zero(2, n);
   min_decay_rate_ = dofs.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   for (size_t r = 0; r < dofs.size(); ++r) {
     const Mode& mode = *dofs[r].mode;
@@ -249,6 +257,7 @@ SdmModel::SdmModel(const MillingSetup& setup, int steps_per_tooth_period, int de
     a0_(i + 1, i + 1) = -2.0 * mode.damping_ratio * w;
     p_(i + 1, dofs[r].axis) = w / mode.stiffness_n_per_m;
     c_(dofs[r].axis, i) = 1.0;
+    velocity_(dofs[r].axis, i + 1) = w;
     min_decay_rate_ = std::min(min_decay_rate_, mode.decayRate());
   }
 
@@ -282,20 +291,20 @@ SdmModel::SdmModel(const MillingSetup& setup, int steps_per_tooth_period, int de
   h_.assign(static_cast<size_t>(steps_), Eigen::Matrix2d::Zero());
   in_cut_.assign(static_cast<size_t>(steps_), false);
   for (DelayGroup& g : groups_) {
-    g.h = groupCoefficients(g, 0.0);
-    for (int i = 0; i < steps_; ++i) h_[static_cast<size_t>(i)] += g.h[static_cast<size_t>(i)];
+    g.straight = groupCoefficients(g, 0.0);
+    for (int i = 0; i < steps_; ++i) h_[static_cast<size_t>(i)] += g.straight[static_cast<size_t>(i)].h;
   }
   for (int i = 0; i < steps_; ++i) in_cut_[static_cast<size_t>(i)] = cuts(h_[static_cast<size_t>(i)]);
 }
 
-std::vector<Eigen::Matrix2d> SdmModel::groupCoefficients(const DelayGroup& g, double depth_m) const {
+std::vector<SdmModel::StepCoefficients> SdmModel::groupCoefficients(const DelayGroup& g, double depth_m) const {
   const double kt = setup_.tangential_coefficient_pa, kr = setup_.radial_ratio;
   const double lag = setup_.helixLagRad(depth_m);
   const bool exact = helix_slices_ == kExactHelixSlices && std::abs(lag) >= kSmallestExactLagRad;
   // Midpoint slices: lag (k + 1/2) L / n; one slice at L / 2 for straight or nearly straight edges.
   const int slices = exact ? 0 : (helix_slices_ == kExactHelixSlices || lag == 0.0 ? 1 : helix_slices_);
   const ClippedTrigPrimitives primitives(setup_.immersion);
-  std::vector<Eigen::Matrix2d> out(static_cast<size_t>(steps_));
+  std::vector<StepCoefficients> out(static_cast<size_t>(steps_));
   for (int i = 0; i < steps_; ++i) {
     TrigIntegrals t;
     for (double angle : g.tooth_angles) {
@@ -308,18 +317,17 @@ std::vector<Eigen::Matrix2d> SdmModel::groupCoefficients(const DelayGroup& g, do
       for (int k = 0; k < slices; ++k) addInCut(setup_.immersion, start - lag * (k + 0.5) / slices, dphi_, sliced);
       t.add({sliced.s2 / slices, sliced.sc / slices, sliced.c2 / slices});
     }
-    Eigen::Matrix2d h = coefficientOf(t, kt, kr, dphi_);
-    // Clear round-off outside the cut: a step whose edges all miss the window contributes nothing.
-    if ((std::abs(t.s2) + std::abs(t.c2)) <= 1e-12 * dphi_) h.setZero();
-    out[static_cast<size_t>(i)] = h;
+    // Round-off outside the cut stays zero: a step whose edges all miss the window contributes nothing.
+    if ((std::abs(t.s2) + std::abs(t.c2)) <= 1e-12 * dphi_) continue;
+    out[static_cast<size_t>(i)] = {coefficientOf(t, kt, kr, dphi_), normalProjectorOf(t, dphi_)};
   }
   return out;
 }
 
-std::vector<std::vector<Eigen::Matrix2d>> SdmModel::coefficientsAt(double depth_m) const {
-  std::vector<std::vector<Eigen::Matrix2d>> out;
+std::vector<std::vector<SdmModel::StepCoefficients>> SdmModel::coefficientsAt(double depth_m) const {
+  std::vector<std::vector<StepCoefficients>> out;
   const bool straight = setup_.helix_rad == 0.0 || depth_m == 0.0;
-  for (const DelayGroup& g : groups_) out.push_back(straight ? g.h : groupCoefficients(g, depth_m));
+  for (const DelayGroup& g : groups_) out.push_back(straight ? g.straight : groupCoefficients(g, depth_m));
   return out;
 }
 
@@ -339,7 +347,8 @@ void SdmModel::build(double spindle_rev_per_s, double depth_m, const Eigen::Matr
   const double dt = principalPeriodS(spindle_rev_per_s) / steps_;
   out.reset(c_, steps_, depth_);
   out.setFreeStep(free_step);
-  const std::vector<std::vector<Eigen::Matrix2d>> h = coefficientsAt(depth_m);
+  const std::vector<std::vector<StepCoefficients>> h = coefficientsAt(depth_m);
+  const double damping = setup_.processDampingPerDepth(spindle_rev_per_s);  // C_i / V
   StepIntegrals integrals(n, p);
   // The step integrals F_k are linear in the input: integrate -b dt P once and right-multiply by each
   // group's H_i (the state matrix takes the sum of all groups).
@@ -348,10 +357,15 @@ void SdmModel::build(double spindle_rev_per_s, double depth_m, const Eigen::Matr
   std::vector<SdmMonodromy::StepInput> moments(static_cast<size_t>(p + 1));  // k! F_k: integral of s^k
   for (int i = 0; i < steps_; ++i) {
     const auto step = static_cast<size_t>(i);
-    Eigen::Matrix2d total = Eigen::Matrix2d::Zero();
-    for (const auto& group : h) total += group[step];
+    Eigen::Matrix2d total = Eigen::Matrix2d::Zero(), normal = Eigen::Matrix2d::Zero();
+    for (const auto& group : h) {
+      total += group[step].h;
+      normal += group[step].normal;
+    }
     if (!cuts(total)) continue;
-    integrals.compute(free_x - input * total * c_, input);
+    const Eigen::MatrixXd feedback =
+        damping > 0.0 ? Eigen::MatrixXd(total * c_ - damping * normal * velocity_) : Eigen::MatrixXd(total * c_);
+    integrals.compute(free_x - input * feedback, input);
     double factorial = 1.0;
     for (int k = 0; k <= p; ++k) {
       if (k > 0) factorial *= k;
@@ -359,7 +373,7 @@ void SdmModel::build(double spindle_rev_per_s, double depth_m, const Eigen::Matr
     }
     std::vector<SdmMonodromy::DelayedTerm> terms;
     for (size_t gi = 0; gi < groups_.size(); ++gi) {
-      const Eigen::Matrix2d& hg = h[gi][step];
+      const Eigen::Matrix2d& hg = h[gi][step].h;
       if (!cuts(hg)) continue;
       const DelayGroup& g = groups_[gi];
       for (int j = 0; j <= p; ++j) {

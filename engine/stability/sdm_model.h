@@ -27,6 +27,9 @@
 //   exp([ L dt  -R dt  0 .. 0 ; 0  0  I .. ; .. ; 0 .. 0 ]) = [ Phi  F_0 .. F_p ; ... ],
 //   F_k = integral_0^1 e^{L dt (1 - s)} (-R dt) s^k / k! ds,  L = A0 + b P H_i C, R = b P H_i,
 //   Phi_i = Phi, G_ij = sum_k a_jk k! F_k.
+// Process damping (the C_i / V model; docs/fidelity.md, "Process damping"): each engaged edge adds the
+// force -(C_i b / V) n_j n_j^T r'(t), n_j = (sin phi_j, cos phi_j), so L gains -(C_i b / V) P N_i C_v with
+// N_i the step average of sum_j g(phi_j) n_j n_j^T (the same integrals as H_i) and C_v the velocity output.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -69,16 +72,21 @@ class SdmModel {
 
  private:
   // Teeth that share one delay of (base - shift) steps, 0 <= shift < 1.
+  // The step averages of a group's teeth: H_i and the normal projector N_i.
+  struct StepCoefficients {
+    Eigen::Matrix2d h = Eigen::Matrix2d::Zero();
+    Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+  };
   struct DelayGroup {
     int base = 0;
     double shift = 0.0;
     std::vector<double> tooth_angles;
-    Eigen::MatrixXd lagrange;        // a_jk: node j, power k of s
-    std::vector<Eigen::Matrix2d> h;  // straight-edge H_i of these teeth
+    Eigen::MatrixXd lagrange;                // a_jk: node j, power k of s
+    std::vector<StepCoefficients> straight;  // of these teeth with straight edges
   };
-  // H_i of each group at depth b (the helix lag depends on b); empty rows where no edge cuts.
-  std::vector<std::vector<Eigen::Matrix2d>> coefficientsAt(double depth_m) const;
-  std::vector<Eigen::Matrix2d> groupCoefficients(const DelayGroup& g, double depth_m) const;
+  // The coefficients of each group at depth b (the helix lag depends on b); zero where no edge cuts.
+  std::vector<std::vector<StepCoefficients>> coefficientsAt(double depth_m) const;
+  std::vector<StepCoefficients> groupCoefficients(const DelayGroup& g, double depth_m) const;
 
   MillingSetup setup_;
   int steps_per_tooth_ = 0;
@@ -94,6 +102,7 @@ class SdmModel {
   Eigen::MatrixXd a0_;                          // N x N
   Eigen::Matrix<double, Eigen::Dynamic, 2> p_;  // N x 2 force input
   Eigen::MatrixXd c_;                           // 2 x N position output
+  Eigen::MatrixXd velocity_;                    // 2 x N velocity output
   std::vector<Eigen::Matrix2d> h_;
   std::vector<bool> in_cut_;
 };

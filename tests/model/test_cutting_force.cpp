@@ -75,6 +75,45 @@ class TestCuttingForce : public QObject {
     QCOMPARE(toothForce(s, 1e-3, 1.5 * kPi, 1e-4).tangential_n, 0.0);  // outside the immersion
   }
 
+  // Edge forces (Altintas 2000, eq. 2.22): F_t = b (K_t h + K_te), F_r = b (K_r K_t h + K_re), F_z = b (K_ac h +
+  // K_ae) while the tooth cuts, nothing outside.
+  void toothForceWithEdgeForces() {
+    MillingSetup s = test::rubioR1();
+    s.tangential_edge_n_per_m = 25e3;
+    s.radial_edge_n_per_m = 30e3;
+    s.axial_coefficient_pa = 2e8;
+    s.axial_edge_n_per_m = 2e3;
+    const double phi = kPi / 3, b = 1e-3, h = 1e-4;
+    const ToothForce f = toothForce(s, b, phi, h);
+    const double ft = b * (6e8 * h + 25e3), fr = b * (0.3 * 6e8 * h + 30e3);
+    QCOMPARE_LE(std::abs(f.tangential_n / ft - 1.0), 1e-14);
+    QCOMPARE_LE(std::abs(f.fx_n / (-ft * std::cos(phi) - fr * std::sin(phi)) - 1.0), 1e-14);
+    QCOMPARE_LE(std::abs(f.fy_n / (ft * std::sin(phi) - fr * std::cos(phi)) - 1.0), 1e-14);
+    QCOMPARE_LE(std::abs(f.fz_n / (b * (2e8 * h + 2e3)) - 1.0), 1e-14);
+    QCOMPARE(toothForce(s, b, phi, -1e-6).fz_n, 0.0);  // out of the cut: no ploughing either
+  }
+
+  // Mean power of a slot with edge forces: v (n_t b / 2 pi) integral_0^pi (K_t s_t sin phi + K_te) dphi
+  // = v n_t b (2 K_t s_t + pi K_te) / (2 pi); with K_ae alone the peak axial force is that of the most
+  // edges cutting at once: 2 of 3 teeth in a slot.
+  void edgeForcesAddToPowerAndTorque() {
+    MillingSetup s = test::rubioR1();  // 3 teeth, slotting
+    s.tangential_edge_n_per_m = 25e3;
+    const OperatingPoint q{100.0, 1e-3, 1e-4};
+    const CutPerformance p = evaluateCut(s, q);
+    const double v = kPi * s.diameter_m * 100.0;
+    const double mean = v * 3 * 1e-3 * (2.0 * 6e8 * 1e-4 + kPi * 25e3) / (2.0 * kPi);
+    QCOMPARE_LE(std::abs(p.mean_power_w / mean - 1.0), 2e-3);  // sampled at 1440 angles per pitch
+    QCOMPARE_LE(std::abs(p.peak_torque_nm - p.peak_power_w / (2.0 * kPi * 100.0)), 1e-9);
+    s.tangential_edge_n_per_m = 0.0;
+    const CutPerformance plain = evaluateCut(s, q);
+    QVERIFY(p.peak_power_w > plain.peak_power_w * 1.2);  // the edge adds 25e3 / (6e8 1e-4) = 42 % per tooth
+    QCOMPARE(plain.peak_axial_force_n, 0.0);
+    s.axial_edge_n_per_m = 2e3;
+    // At any instant one or two of the 3 teeth cut the slot: the peak axial force is that of two edges.
+    QCOMPARE_LE(std::abs(evaluateCut(s, q).peak_axial_force_n / (2.0 * 1e-3 * 2e3) - 1.0), 1e-12);
+  }
+
   void immersionAngles_data() {
     QTest::addColumn<int>("direction");
     QTest::addColumn<double>("ratio");
