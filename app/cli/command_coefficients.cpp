@@ -1,13 +1,15 @@
 // millexpert-cli coefficients FILE... --diameter MM --teeth N --depth MM [--immersion A_D] [--milling up|down]
 //                                      [--speed RPM]... [--feed MM_PER_TOOTH]...
-// The cutting coefficients of test cuts by the average-force method (engine/cutting_data). A FILE is
-// either the mean forces of several cuts (header feed_mm_per_tooth,Fx_N,Fy_N,Fz_N) or the dynamometer
-// record of one cut (header time_s,Fx_N,Fy_N,Fz_N), averaged over whole revolutions; a record needs its
-// spindle speed and feed: --speed and --feed once for every record, or once per record in the order of the
-// files. Prints {"Kt_N_mm2", "Kr", "Ka_N_mm2", "Kte_N_mm", "Kre_N_mm", "Kae_N_mm", "r2": {"x", "y", "z"},
-// "residuals_N": [{"feed_mm_per_tooth", "x", "y", "z"}]} plus "Krc_N_mm2", "ci95" (half-widths of the 95 %
-// confidence intervals of the same keys; 0 with two cuts) and "cuts". Kt_N_mm2 is K_tc and Kr is K_rc / K_tc:
-// the material fields. Exit 2: a bad file (the message names the line) or flag; exit 1: no fit.
+// The cutting coefficients of test cuts by the average-force method (engine/cutting_data). A FILE, told by
+// its content, is the mean forces of several cuts (CSV header feed_mm_per_tooth,Fx_N,Fy_N,Fz_N) or the
+// dynamometer record of one cut: a CSV (header time_s,Fx_N,Fy_N,Fz_N) or a universal file of three
+// datasets 58/58b of function type 1, time responses of Fx, Fy and Fz (force_record_uff.h). A record is
+// averaged over whole revolutions and needs its spindle speed and feed: --speed and --feed once for every
+// record, or once per record in the order of the files. Prints {"Kt_N_mm2", "Kr", "Ka_N_mm2", "Kte_N_mm",
+// "Kre_N_mm", "Kae_N_mm", "r2": {"x", "y", "z"}, "residuals_N": [{"feed_mm_per_tooth", "x", "y", "z"}]} plus
+// "Krc_N_mm2", "ci95" (half-widths of the 95 % confidence intervals of the same keys; 0 with two cuts) and
+// "cuts". Kt_N_mm2 is K_tc and Kr is K_rc / K_tc: the material fields. Exit 2: a bad file (the message names
+// the line) or flag; exit 1: no fit.
 #include <QJsonArray>
 #include <algorithm>
 
@@ -16,6 +18,7 @@
 #include "cli/cli_support.h"
 #include "core/invalid_input.h"
 #include "cutting_data/force_measurement_csv.h"
+#include "cutting_data/force_record_uff.h"
 #include "document/input_files.h"
 
 namespace mx::app {
@@ -61,28 +64,40 @@ double perRecord(const QCommandLineParser& parser, const QString& name, int reco
   return v;
 }
 
+enum class CutFile { MeanForces, RecordCsv, RecordUff };
+
+CutFile kindOf(std::string_view bytes) {
+  if (isUniversalFile(bytes)) return CutFile::RecordUff;
+  return isForceRecordCsv(bytes) ? CutFile::RecordCsv : CutFile::MeanForces;
+}
+
+ForceRecord readRecord(CutFile kind, std::string_view bytes, const std::string& source) {
+  return kind == CutFile::RecordUff ? readForceRecordUff(bytes, source) : readForceRecordCsv(bytes, source);
+}
+
 std::vector<TestCut> readCuts(const QCommandLineParser& parser, const QStringList& files) {
   std::vector<std::string> contents;
-  std::vector<bool> is_record;
+  std::vector<CutFile> kinds;
   for (const QString& file : files) {
     try {
       contents.push_back(readBoundedFile(file, kTestCutFileLimit).toStdString());
     } catch (const InvalidInput& e) {
       throw CliError(QString("%1: %2").arg(file, e.what()), kExitBadInput);
     }
-    is_record.push_back(isForceRecordCsv(contents.back()));
+    kinds.push_back(kindOf(contents.back()));
   }
-  const auto records = static_cast<int>(std::count(is_record.begin(), is_record.end(), true));
+  const auto records =
+      static_cast<int>(std::count_if(kinds.begin(), kinds.end(), [](CutFile k) { return k != CutFile::MeanForces; }));
   std::vector<TestCut> cuts;
   int record = 0;
   for (std::size_t i = 0; i < contents.size(); ++i) {
     const std::string source = files[static_cast<qsizetype>(i)].toStdString();
     try {
-      if (is_record[i]) {
+      if (kinds[i] != CutFile::MeanForces) {
         const double rpm = perRecord(parser, "speed", record, records, 1e-3, 1e6);
         const double feed_mm = perRecord(parser, "feed", record, records, 1e-6, 10.0);
         ++record;
-        cuts.push_back(meanOverRevolutions(readForceRecordCsv(contents[i], source), rpm, feed_mm / 1000.0, source));
+        cuts.push_back(meanOverRevolutions(readRecord(kinds[i], contents[i], source), rpm, feed_mm / 1000.0, source));
       } else {
         for (const TestCut& c : readMeanForcesCsv(contents[i], source)) cuts.push_back(c);
       }
@@ -104,8 +119,11 @@ int runCoefficientsCommand(const QStringList& arguments) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Cutting coefficients from test cuts (average-force method).");
   parser.addHelpOption();
-  parser.addPositionalArgument("FILE", "Mean forces per cut, or one cut's dynamometer record (CSV, at most 256 MB).",
-                               "FILE...");
+  parser.addPositionalArgument(
+      "FILE",
+      "Mean forces per cut (CSV), or one cut's dynamometer record: a CSV, or a universal file of datasets 58 "
+      "type 1 (time responses of Fx, Fy, Fz). At most 256 MB.",
+      "FILE...");
   parser.addOptions({
       {"diameter", "Cutter diameter [mm].", "MM"},
       {"teeth", "Number of teeth, 1..100.", "N"},

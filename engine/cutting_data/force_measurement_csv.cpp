@@ -10,9 +10,6 @@
 namespace mx {
 namespace {
 
-constexpr double kMaxForceN = 1e7;
-constexpr double kMaxTimeS = 1e6;
-
 [[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
   throw InvalidInput(source + ": line " + std::to_string(line) + ": " + what);
 }
@@ -45,7 +42,7 @@ double number(std::string_view text, const std::string& source, int line, const 
 
 double force(std::string_view text, const std::string& source, int line, const char* column) {
   const double f = number(text, source, line, column);
-  if (std::abs(f) > kMaxForceN)
+  if (std::abs(f) > kMaxTestCutForceN)
     fail(source, line, std::string(column) + " = " + std::string(text.substr(0, 40)) + ": must be within ±1e7 N");
   return f;
 }
@@ -99,7 +96,7 @@ ForceRecord readForceRecordCsv(std::string_view bytes, const std::string& source
   ForceRecord r;
   readRows(bytes, source, kForceRecordHeader, [&](int n, const std::vector<std::string_view>& f) {
     const double t = number(f[0], source, n, "time_s");
-    if (std::abs(t) > kMaxTimeS) fail(source, n, "time_s = " + std::string(f[0]) + ": must be within ±1e6 s");
+    if (std::abs(t) > kMaxRecordTimeS) fail(source, n, "time_s = " + std::string(f[0]) + ": must be within ±1e6 s");
     if (!r.t_s.empty() && !(t > r.t_s.back()))
       fail(source, n, "time_s = " + std::string(f[0]) + ": must be after the previous sample's");
     r.t_s.push_back(t);

@@ -26,6 +26,10 @@ bool isForceRecordCsv(std::string_view bytes);
 struct ForceRecord {
   std::vector<double> t_s, fx_n, fy_n, fz_n;
 };
+// The bounds of a record's values, for every record format (force_record_uff.h too).
+inline constexpr double kMaxTestCutForceN = 1e7;
+inline constexpr double kMaxRecordTimeS = 1e6;
+
 // A dynamometer record: at least two samples, times within ±1e6 s and strictly increasing, forces as above.
 ForceRecord readForceRecordCsv(std::string_view bytes, const std::string& source_name);
 

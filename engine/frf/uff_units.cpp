@@ -75,4 +75,11 @@ std::optional<double> frequencyUnitsToHz(std::string_view label) {
   return std::nullopt;
 }
 
+std::optional<double> timeUnitsToSeconds(std::string_view label) {
+  const std::string n = normaliseUnitsLabel(label);
+  if (isSi(n) || n == "s") return 1.0;
+  if (n == "ms") return 1e-3;
+  return std::nullopt;
+}
+
 }  // namespace mx

@@ -9,6 +9,7 @@
 //   label containing "g" is standard gravity, 9.80665 m/s^2
 //   force  N (1), kN (1e3), lbf / lb / lbs (4.4482216152605, the avoirdupois pound-force)
 //   frequency  Hz (1)
+//   time  s (1), ms (1e-3)
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,5 +27,7 @@ std::optional<double> numeratorUnitsToSi(FrfQuantity quantity, std::string_view 
 std::optional<double> forceUnitsToSi(std::string_view label);
 // Factor taking a frequency in the labelled unit to Hz; nullopt if not recognised.
 std::optional<double> frequencyUnitsToHz(std::string_view label);
+// Factor taking a time in the labelled unit to seconds; nullopt if not recognised.
+std::optional<double> timeUnitsToSeconds(std::string_view label);
 
 }  // namespace mx

@@ -68,6 +68,16 @@ class TestUffUnits : public QObject {
     QVERIFY(!frequencyUnitsToHz("rad/s"));
     QCOMPARE(normaliseUnitsLabel(" M / SEC**2 "), std::string("m/s^2"));
   }
+
+  void time() {
+    QCOMPARE(timeUnitsToSeconds("s").value_or(0.0), 1.0);
+    QCOMPARE(timeUnitsToSeconds("Sec").value_or(0.0), 1.0);
+    QCOMPARE(timeUnitsToSeconds("NONE").value_or(0.0), 1.0);
+    QCOMPARE(timeUnitsToSeconds("ms").value_or(0.0), 1e-3);
+    QCOMPARE(timeUnitsToSeconds("msec").value_or(0.0), 1e-3);
+    QVERIFY(!timeUnitsToSeconds("Hz"));
+    QVERIFY(!timeUnitsToSeconds("min"));
+  }
 };
 
 MX_REGISTER_TEST(TestUffUnits)
