@@ -27,8 +27,9 @@ CostMapData costMap(const ExpertSession& session, std::size_t tool, const std::a
     double best = std::numeric_limits<double>::infinity();
     for (int f = 1; f <= cell.feed_count; ++f) {
       const double s = f * grid.feedStep();
-      best = std::min(best, toolCostTerms(c, session.normalisation(), cell.speed_rev_per_s, cell.power_per_feed * s,
-                                          cell.mrr_per_feed * s, cell.speed_security)
+      best = std::min(best, toolCostTerms(c, session.normalisation(), cell.speed_rev_per_s,
+                                          cell.power_at_zero_feed_w + cell.power_per_feed * s, cell.mrr_per_feed * s,
+                                          cell.speed_security)
                                 .total());
     }
     out.cost[static_cast<qsizetype>(i) * depths + j] = best;

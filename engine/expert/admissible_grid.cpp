@@ -22,6 +22,28 @@ std::int64_t countUpTo(double limit, double step) {
   if (limit <= 0.0) return 0;
   return static_cast<std::int64_t>(std::floor(limit / step * (1.0 + kEps)));
 }
+
+// The peak power per (N b) [W / (rev/s m)] and the peak force per b [N/m] at depth b as lines in s_t:
+// through the origin at the reference feed, or (affine) the chord between it and half of it.
+struct PeakLines {
+  double power_slope = 0.0, power_intercept = 0.0;
+  double force_slope = 0.0, force_intercept = 0.0;
+};
+PeakLines peakLines(const MillingSetup& setup, double depth_m, double reference_feed_m, bool affine) {
+  const PeakPerDepthFeed at = peakPerDepthFeed(setup, depth_m, reference_feed_m);
+  if (!affine) return {at.power_w_per_rev_per_s, 0.0, at.force_n, 0.0};
+  const double half_feed = 0.5 * reference_feed_m;
+  const PeakPerDepthFeed half = peakPerDepthFeed(setup, depth_m, half_feed);
+  auto chord = [&](double per_area_full, double per_area_half, double& slope, double& intercept) {
+    const double full = per_area_full * reference_feed_m, at_half = per_area_half * half_feed;
+    slope = (full - at_half) / half_feed;
+    intercept = full - slope * reference_feed_m;
+  };
+  PeakLines lines;
+  chord(at.power_w_per_rev_per_s, half.power_w_per_rev_per_s, lines.power_slope, lines.power_intercept);
+  chord(at.force_n, half.force_n, lines.force_slope, lines.force_intercept);
+  return lines;
+}
 }  // namespace
 
 QConstraint ConstraintFunnel::emptiedBy() const {
@@ -128,25 +150,28 @@ void AdmissibleGrid::build(const JobControl& job) {
   funnel_ = {};
   funnel_.speeds = static_cast<std::int64_t>(speeds_.size());
   funnel_.feeds = grid_feeds >= kUnbounded ? -1 : grid_feeds;
-  // The peak power per (b s_t) is proportional to N (v = pi D N; the force pattern over a period does not
+  // The peak power per b is proportional to N (v = pi D N; the force pattern over a period does not
   // depend on N) and the peak force independent of it, so one evaluation per depth serves every speed.
-  // With straight teeth and no runout one serves every depth too; runout makes them depend on s_t, so
-  // they are taken at the largest feed and each cell's largest feed is then checked exactly.
+  // With straight teeth one serves every depth too. Without runout and edge forces both are
+  // proportional to s_t; runout and edge forces make them affine in s_t only approximately, so their line
+  // is the chord between the largest feed and half of it, and each cell's largest feed is then checked
+  // exactly.
   const bool straight = setup_.helix_rad == 0.0;
-  const bool runout = setup_.hasRunout();
+  const bool affine = setup_.hasRunout() || setup_.hasEdgeForces();
   const double reference_feed =
       std::isfinite(lim.max_feed_per_tooth_m) && lim.max_feed_per_tooth_m > 0.0 ? lim.max_feed_per_tooth_m : feed_step_;
-  std::vector<PeakPerDepthFeed> peaks;  // by depth index j - 1
-  auto peakAt = [&](std::int64_t j) -> const PeakPerDepthFeed& {
+  std::vector<PeakLines> peaks;  // by depth index j - 1
+  auto feedsUnder = [&](double headroom, double per_feed) { return countUpTo(headroom / per_feed, feed_step_); };
+  auto peakAt = [&](std::int64_t j) -> const PeakLines& {
     const auto index = static_cast<std::size_t>(straight ? 0 : j - 1);
     while (peaks.size() <= index)
-      peaks.push_back(peakPerDepthFeed(setup_, static_cast<double>(peaks.size() + 1) * depth_step_, reference_feed));
+      peaks.push_back(peakLines(setup_, static_cast<double>(peaks.size() + 1) * depth_step_, reference_feed, affine));
     return peaks[index];
   };
-  // With runout the peak is not proportional to s_t, so the linear estimate can miss either way: it is
-  // moved to the largest count <= most whose exact peak stays within `limit` (the peak grows with s_t).
+  // The lines can miss either way: the count is moved to the largest count <= most whose exact peak stays
+  // within `limit` (the peak grows with s_t).
   auto exactFeeds = [&](std::int64_t estimate, std::int64_t most, double n, double b, bool power, double limit) {
-    if (!runout || !std::isfinite(limit)) return estimate;
+    if (!affine || !std::isfinite(limit)) return estimate;
     auto fits = [&](std::int64_t count) {
       const CutPerformance perf = evaluateCut(setup_, {n, b, static_cast<double>(count) * feed_step_});
       return (power ? perf.peak_power_w : perf.peak_force_n) <= limit * (1.0 + 1e-6);
@@ -184,16 +209,16 @@ void AdmissibleGrid::build(const JobControl& job) {
     if (drive_feeds == 0) continue;
     for (std::int64_t j = 1; j <= depths; ++j) {
       const double b = static_cast<double>(j) * depth_step_;
-      const PeakPerDepthFeed& peak = peakAt(j);
-      const double power_per_feed = peak.power_w_per_rev_per_s * n * b;
+      const PeakLines& peak = peakAt(j);
+      const double power_per_feed = peak.power_slope * n * b, power_at_zero_feed = peak.power_intercept * n * b;
       const std::int64_t power_feeds =
-          exactFeeds(std::min(drive_feeds, countUpTo(available_power / power_per_feed, feed_step_)), drive_feeds, n, b,
-                     true, available_power);
+          exactFeeds(std::min(drive_feeds, feedsUnder(available_power - power_at_zero_feed, power_per_feed)),
+                     drive_feeds, n, b, true, available_power);
       if (power_feeds == 0) break;  // the power grows with b: no deeper cell fits either
       funnel_.power_points = std::min(kUnbounded, funnel_.power_points + power_feeds);
-      const std::int64_t feeds =
-          exactFeeds(std::min(power_feeds, countUpTo(lim.max_tool_force_n / (peak.force_n * b), feed_step_)),
-                     power_feeds, n, b, false, lim.max_tool_force_n);
+      const std::int64_t feeds = exactFeeds(
+          std::min(power_feeds, feedsUnder(lim.max_tool_force_n - peak.force_intercept * b, peak.force_slope * b)),
+          power_feeds, n, b, false, lim.max_tool_force_n);
       if (feeds == 0) break;  // so does the force
       if (feeds > kMaxFeedsPerCell)
         throw InvalidInput("expert grid: more than 1e6 admissible feeds per cell; raise the feed step");
@@ -204,6 +229,7 @@ void AdmissibleGrid::build(const JobControl& job) {
       cell.speed_rev_per_s = n;
       cell.depth_m = b;
       cell.power_per_feed = power_per_feed;
+      cell.power_at_zero_feed_w = power_at_zero_feed;
       cell.available_power_w = available_power;
       cell.mrr_per_feed = radial * b * setup_.teeth * n;
       cell.speed_security = dns;
@@ -219,7 +245,8 @@ void AdmissibleGrid::build(const JobControl& job) {
 ExpertPoint AdmissibleGrid::point(std::size_t cell, int feed_index) const {
   const GridCell& c = cells_.at(cell);
   const double s = feed_step_ * feed_index;
-  return {c.speed_rev_per_s, c.depth_m, s, c.power_per_feed * s, c.mrr_per_feed * s, c.speed_security};
+  return {c.speed_rev_per_s,  c.depth_m,       s, c.power_at_zero_feed_w + c.power_per_feed * s,
+          c.mrr_per_feed * s, c.speed_security};
 }
 
 QConstraint AdmissibleGrid::violation(double n, double b, double s) const {

@@ -25,7 +25,8 @@ namespace mx {
 struct GridCell {
   double speed_rev_per_s = 0.0;
   double depth_m = 0.0;
-  double power_per_feed = 0.0;                                         // peak power [W] per metre of feed per tooth
+  double power_per_feed = 0.0;        // peak power [W] per metre of feed per tooth ...
+  double power_at_zero_feed_w = 0.0;  // ... plus this (edge forces, runout): P = p0 + p1 s_t
   double available_power_w = std::numeric_limits<double>::infinity();  // P_av at this speed
   double mrr_per_feed = 0.0;    // MRR [m^3/s] per metre of feed per tooth: a b n_t N
   double speed_security = 0.0;  // Delta N_s [rev/s], > 0

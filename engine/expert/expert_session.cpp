@@ -34,12 +34,13 @@ void forEachPoint(const AdmissibleGrid& grid, const std::array<double, 3>& c, co
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const GridCell& cell = cells[i];
     const double a = powerCostTerm(c[0], cell.power_per_feed, cell.available_power_w);  // cost per unit feed
-    const double b = mrr_weight / cell.mrr_per_feed;                                    // cost times feed
+    const double a0 = powerCostTerm(c[0], cell.power_at_zero_feed_w, cell.available_power_w);
+    const double b = mrr_weight / cell.mrr_per_feed;  // cost times feed
     const double k = dns_weight / cell.speed_security;
     for (int f = 1; f <= cell.feed_count; ++f) {
       const double s = fs * f;
       if (admit && !admit(grid.point(i, f))) continue;
-      visit(i, f, a * s + b / s + k);
+      visit(i, f, a * s + a0 + b / s + k);
     }
   }
 }

@@ -67,6 +67,7 @@ struct MillingSetup {
   double runoutM(int tooth) const;        // runout_m[tooth], or 0
   bool uniformPitch() const;              // no pitch list, or every pitch equal to the mean within 1e-9 rad
   bool hasRunout() const;                 // some runout offset differs from 0
+  bool hasEdgeForces() const { return tangential_edge_n_per_m != 0.0 || radial_edge_n_per_m != 0.0; }
   double helixLagRad(double height_m) const;
   // The period after which the cut repeats: one tooth period when the pitch is uniform, else one revolution.
   int teethPerPrincipalPeriod() const { return uniformPitch() ? 1 : teeth; }

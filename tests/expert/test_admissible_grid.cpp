@@ -1,5 +1,6 @@
 // The admissible space Q of one tool: b_min and the depth grid, every stored point re-checked against
 // every constraint independently, and the constraint that empties Q.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -180,21 +181,40 @@ class TestAdmissibleGrid : public QObject {
     QVERIFY_THROWS_EXCEPTION(InvalidInput, AdmissibleGrid(test::rubioR1(), s));
   }
 
-  // A real cutter (R1 with a 30 deg helix and 6/-4 um runout): each cell's largest feed keeps the exact
-  // peak power and force (evaluateCut) within the limits, and the next feed step breaks one of them or
-  // another limit of Q (violation), so the per-depth coefficients and the runout check lose no point.
+  // A real cutter (R1 with a 30 deg helix and 6/-4 um runout), or R1 with edge forces: each cell's largest
+  // feed keeps the exact peak power and force (evaluateCut) within the limits, and the next feed step breaks
+  // one of them or another limit of Q (violation), so the per-depth lines and the exact check lose no point.
+  // The power of a point (the chord of the peak power between the largest feed and half of it) is within
+  // 2 % of the exact peak power at every fourth feed.
+  void realCutterFeedsMeetTheExactLimits_data() {
+    QTest::addColumn<bool>("runout");
+    QTest::addColumn<double>("edge_n_per_m");
+    QTest::newRow("30 deg helix, runout") << true << 0.0;
+    QTest::newRow("edge forces K_te = K_re = 40 N/mm") << false << 40e3;
+  }
   void realCutterFeedsMeetTheExactLimits() {
+    QFETCH(bool, runout);
+    QFETCH(double, edge_n_per_m);
     ExpertSettings s = test::rubioExpertSettings();
     s.limits.max_tool_force_n = 150.0;
     MillingSetup tool = test::rubioR1();
-    tool.helix_rad = 30.0 * std::numbers::pi / 180.0;
-    tool.runout_m = {0.0, 6e-6, -4e-6};
+    if (runout) {
+      tool.helix_rad = 30.0 * std::numbers::pi / 180.0;
+      tool.runout_m = {0.0, 6e-6, -4e-6};
+    }
+    tool.tangential_edge_n_per_m = tool.radial_edge_n_per_m = edge_n_per_m;
     const AdmissibleGrid g(tool, s);
     QVERIFY(!g.cells().empty());
+    double worst_power_error = 0.0;
     for (std::size_t i = 0; i < g.cells().size(); ++i) {
       const GridCell& c = g.cells()[i];
       const ExpertPoint last = g.point(i, c.feed_count);
       const CutPerformance perf = evaluateCut(tool, {last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m});
+      for (int f = 1; f <= c.feed_count; f += 4) {
+        const ExpertPoint q = g.point(i, f);
+        const double exact = evaluateCut(tool, {q.speed_rev_per_s, q.depth_m, q.feed_per_tooth_m}).peak_power_w;
+        worst_power_error = std::max(worst_power_error, std::abs(q.power_w / exact - 1.0));
+      }
       QVERIFY(perf.peak_power_w <= c.available_power_w * (1 + 1e-6));
       QVERIFY(perf.peak_force_n <= 150.0 * (1 + 1e-6));
       QCOMPARE(g.violation(last.speed_rev_per_s, last.depth_m, last.feed_per_tooth_m), QConstraint::None);
@@ -209,6 +229,8 @@ class TestAdmissibleGrid : public QObject {
                               .arg(c.available_power_w)
                               .arg(np.peak_force_n)));
     }
+    qInfo("largest power error of a point: %.3f %%", 100.0 * worst_power_error);
+    QVERIFY(worst_power_error < 0.02);
   }
 
   void invalidCurveIsRefused() {
