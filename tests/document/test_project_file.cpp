@@ -169,6 +169,38 @@ class TestProjectFile : public QObject {
     QCOMPARE(byDepth.setupFor("T2").radial_depth_m, 0.0025);
   }
 
+  // The edge and axial coefficients and the process damping: the tool's value, else the material's, else 0,
+  // in SI (N/mm -> N/m, N/mm^2 -> N/m^2); they round-trip in the documented key order.
+  void edgeForcesAndProcessDamping() {
+    const QJsonObject root = mutated(readJson(fixturePath("valid-full.mxproj")),
+                                     {"material/Kte_N_mm=27.7", "material/Kre_N_mm=26.6", "material/Ka_N_mm2=222",
+                                      "material/Kae_N_mm=0.7", "material/process_damping_N_per_m=2.5e5",
+                                      "material/library=\"Al7075-T6\"", "tools/1/Kte_N_mm=40", "tools/1/Ka_N_mm2=0"});
+    const Project p = projectFromJson(root);
+    validateProject(p);
+    const MillingSetup t1 = p.setupFor("T1"), t2 = p.setupFor("T2");
+    QCOMPARE(t1.tangential_edge_n_per_m, 27.7e3);
+    QCOMPARE(t1.radial_edge_n_per_m, 26.6e3);
+    QCOMPARE(t1.axial_coefficient_pa, 222e6);
+    QCOMPARE(t1.axial_edge_n_per_m, 0.7e3);
+    QCOMPARE(t1.process_damping_n_per_m, 2.5e5);
+    QCOMPARE(t2.tangential_edge_n_per_m, 40e3);  // the tool's overrides
+    QCOMPARE(t2.axial_coefficient_pa, 0.0);
+    QCOMPARE(t2.radial_edge_n_per_m, 26.6e3);
+    QCOMPARE(*p.material->library, QString("Al7075-T6"));
+    QTemporaryDir dir;
+    const QString out = dir.filePath("edges.mxproj");
+    saveProject(p, out);
+    QCOMPARE(readJson(out), root);
+    QVERIFY(*loadProject(out).material == *p.material);
+    QCOMPARE(loadProject(out).tools, p.tools);
+    const Project plain = loadProject(fixturePath("valid-full.mxproj"));  // K_t and K_r alone: no edge force
+    const MillingSetup before = plain.setupFor("T1");
+    QCOMPARE(before.tangential_edge_n_per_m + before.radial_edge_n_per_m + before.axial_coefficient_pa +
+                 before.axial_edge_n_per_m + before.process_damping_n_per_m,
+             0.0);
+  }
+
   void setupForErrors() {
     const Project p = loadProject(fixturePath("valid-full.mxproj"));
     QCOMPARE(errorOf([&] { p.setupFor("X9"); }), QString("tool 'X9' not found; available: T1, T2"));
@@ -273,6 +305,15 @@ class TestProjectFile : public QObject {
     row("Kr negative", {"material/Kr=-0.1"}, {"material.Kr = -0.1: must be in [0, 10]"});
     row("Kr missing", {"-material/Kr"}, {"material.Kr: missing (required number >= 0)"});
     row("material name missing", {"-material/name"}, {"material.name: missing (required string)"});
+    row("Kte negative", {"material/Kte_N_mm=-1"}, {"material.Kte_N_mm = -1: must be in [0, 10000]"});
+    row("Kre too large", {"material/Kre_N_mm=20000"}, {"material.Kre_N_mm = 20000: must be in [0, 10000]"});
+    row("Ka string", {"material/Ka_N_mm2=\"200\""}, {"material.Ka_N_mm2: expected a number, got string"});
+    row("Kae nan", {"material/Kae_N_mm=nan"}, {"material.Kae_N_mm = nan: must be a finite number in [0, 10000]"});
+    row("process damping too large", {"material/process_damping_N_per_m=2e9"},
+        {"material.process_damping_N_per_m = 2e+09: must be in [0, 1e+09]"});
+    row("library number", {"material/library=7"}, {"material.library: expected a string, got number"});
+    row("tool Kte negative", {"tools/0/Kte_N_mm=-5"}, {"tools[0].Kte_N_mm = -5: must be in [0, 10000]"});
+    row("tool Ka too large", {"tools/0/Ka_N_mm2=1e6"}, {"tools[0].Ka_N_mm2 = 1e+06: must be in [0, 1e+05]"});
     // operation
     row("milling invalid", {"operation/milling=\"sideways\""},
         {"operation.milling = \"sideways\": must be \"up\" or \"down\""});
