@@ -36,6 +36,8 @@ const char* kUsage =
     "  coefficients  cutting coefficients from test cuts: coefficients FORCES.csv --diameter MM --teeth N\n"
     "            --depth MM [--immersion A_D] [--milling up|down] [--speed RPM --feed MM_PER_TOOTH]\n"
     "            (a record: CSV time_s,Fx_N,Fy_N,Fz_N, or UFF 58 type 1 time responses of Fx, Fy, Fz)\n"
+    "  materials the materials library [--library FILE]; --apply ID --into PROJECT copies an entry into\n"
+    "            the project's material section\n"
     "An output (--csv, --out, --output, --db) is never an input of the command, another output, or an\n"
     "existing file that is not a regular file (device, FIFO, directory, socket): exit 2 before any work.\n"
     "Run 'millexpert-cli <command> --help' or 'millexpert-cli help <command>' for the options of a command.\n";

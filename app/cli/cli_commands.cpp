@@ -29,6 +29,8 @@ const CliCommand* findCommand(const QString& name) {
        &runLibraryExportCommand},
       {"coefficients", "cutting coefficients (K_tc, K_rc, K_ac, edge) from test cuts, average-force method",
        &runCoefficientsCommand},
+      {"materials", "list the materials library, or copy an entry into a project's material section",
+       &runMaterialsCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

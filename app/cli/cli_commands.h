@@ -31,5 +31,6 @@ int runFrfExportCommand(const QStringList& arguments);
 int runLibraryImportCommand(const QStringList& arguments);
 int runLibraryExportCommand(const QStringList& arguments);
 int runCoefficientsCommand(const QStringList& arguments);
+int runMaterialsCommand(const QStringList& arguments);
 
 }  // namespace mx::app
