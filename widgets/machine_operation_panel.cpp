@@ -75,7 +75,7 @@ MachineOperationPanel::MachineOperationPanel(QWidget* parent) : QWidget(parent) 
 QWidget* MachineOperationPanel::addNumber(const QString& path, double max, int decimals, const QString& tip,
                                           NumberField field) {
   field.box = new QDoubleSpinBox(this);
-  field.box->setRange(0.0, max);  // 0 can be typed and is refused with its reason where it is invalid
+  field.box->setRange(field.min, max);  // 0 (or below) can be typed and is refused with its reason where invalid
   field.max = max;
   field.box->setDecimals(decimals);
   field.box->setKeyboardTracking(false);
@@ -86,7 +86,9 @@ QWidget* MachineOperationPanel::addNumber(const QString& path, double max, int d
   connect(field.box, &QDoubleSpinBox::valueChanged, this, [this, path] { commitNumber(path); });
   QWidget* widget = field.box;
   if (field.enabled) {
-    field.enabled->setToolTip(tr("Checked: limited to the value at the right; unchecked: no limit"));
+    field.enabled->setToolTip(field.enabledTip.isEmpty()
+                                  ? tr("Checked: limited to the value at the right; unchecked: no limit")
+                                  : field.enabledTip);
     controls_.insert(path + ".enabled", field.enabled);
     connect(field.enabled, &QCheckBox::toggled, this, [this, path] { commitNumber(path); });
     widget = new QWidget(this);
@@ -166,20 +168,78 @@ QGroupBox* MachineOperationPanel::materialGroup() {
   box->setToolTip(tr("The work material's cutting-force coefficients (tools may override them)"));
   groups_.insert("material", box);
   auto* form = new QFormLayout(box);
+  form->addRow(tr("Library"), materialPicker());
   materialName_ = new QLineEdit(this);
   materialName_->setToolTip(tr("Name of the work material"));
   controls_.insert("material.name", materialName_);
   connect(materialName_, &QLineEdit::editingFinished, this, &MachineOperationPanel::commitName);
   form->addRow(tr("Name"), materialName_);
-  form->addRow(tr("K_t"),
-               addNumber("material.Kt_N_mm2", 1e5, 2, tr("Specific tangential cutting force K_t [N/mm²] (> 0)"),
-                         {.suffix = " N/mm²",
-                          .get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
-                          .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
-  form->addRow(tr("K_r"), addNumber("material.Kr", 10.0, 4, tr("Radial force ratio K_r = F_r / F_t (>= 0)"),
-                                    {.get = [](const app::Project& p) { return Opt(p.material->Kr); },
-                                     .set = [](app::Project& p, Opt v) { material(p).Kr = v.value_or(0); }}));
+  form->addRow(
+      tr("Tangential force K_t [N/mm²]"),
+      addNumber("material.Kt_N_mm2", 1e5, 2, tr("Specific tangential cutting force K_t = K_tc [N/mm²] in (0, 1e5]"),
+                {.get = [](const app::Project& p) { return Opt(p.material->Kt_N_mm2); },
+                 .set = [](app::Project& p, Opt v) { material(p).Kt_N_mm2 = v.value_or(0); }}));
+  form->addRow(tr("Radial ratio K_r [-]"),
+               addNumber("material.Kr", 10.0, 4, tr("Radial force ratio K_r = F_r / F_t = K_rc / K_tc in [0, 10]"),
+                         {.get = [](const app::Project& p) { return Opt(p.material->Kr); },
+                          .set = [](app::Project& p, Opt v) { material(p).Kr = v.value_or(0); }}));
+  form->addRow(tr("Edge force K_te [N/mm]"),
+               addCoefficient("material.Kte_N_mm", 1e4, 2,
+                              tr("Tangential edge (ploughing) force per unit depth K_te [N/mm] in [0, 1e4]: static "
+                                 "forces, torque and power, not the lobes"),
+                              &app::MaterialSpec::Kte_N_mm));
+  form->addRow(tr("Radial edge force K_re [N/mm]"),
+               addCoefficient("material.Kre_N_mm", 1e4, 2,
+                              tr("Radial edge (ploughing) force per unit depth K_re [N/mm] in [0, 1e4]"),
+                              &app::MaterialSpec::Kre_N_mm));
+  form->addRow(tr("Axial force K_a [N/mm²]"),
+               addCoefficient("material.Ka_N_mm2", 1e5, 2,
+                              tr("Axial cutting coefficient K_ac [N/mm²] in [0, 1e5]: the peak axial force"),
+                              &app::MaterialSpec::Ka_N_mm2));
+  form->addRow(
+      tr("Axial edge force K_ae [N/mm]"),
+      addCoefficient("material.Kae_N_mm", 1e4, 2, tr("Axial edge force per unit depth K_ae [N/mm] in [0, 1e4]"),
+                     &app::MaterialSpec::Kae_N_mm));
+  form->addRow(tr("Process damping C_i [N/m]"),
+               addCoefficient("material.process_damping_N_per_m", 1e9, 0,
+                              tr("Process-damping coefficient C_i [N/m] in [0, 1e9] (damping C_i b / V): raises the "
+                                 "semi-discretization's lobes at low cutting speed; the ZOA leaves it out"),
+                              &app::MaterialSpec::process_damping_N_per_m));
   return box;
+}
+
+QWidget* MachineOperationPanel::materialPicker() {
+  materialPicker_ = new QComboBox(this);
+  materialPicker_->setObjectName("material.library");
+  materialPicker_->setPlaceholderText(tr("From library…"));
+  // The entries' long names would set the dock's width; the list still shows them whole.
+  materialPicker_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  materialPicker_->setMinimumContentsLength(16);
+  materialPicker_->setToolTip(
+      tr("Copy an entry of the materials library into the project's material (name and every coefficient; "
+         "one undo step). The project keeps its own copy: edit it below."));
+  controls_.insert("material.library", materialPicker_);
+  connect(materialPicker_, &QComboBox::activated, this, &MachineOperationPanel::pickMaterial);
+  materialOrigin_ = new QLabel(this);
+  materialOrigin_->setObjectName("material.origin");
+  materialOrigin_->setWordWrap(true);
+  controls_.insert("material.origin", materialOrigin_);
+  auto* widget = new QWidget(this);
+  auto* column = new QVBoxLayout(widget);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->addWidget(materialPicker_);
+  column->addWidget(materialOrigin_);
+  return widget;
+}
+
+QWidget* MachineOperationPanel::addCoefficient(const QString& path, double max, int decimals, const QString& tip,
+                                               std::optional<double> app::MaterialSpec::*member) {
+  return addNumber(path, max, decimals, tip,
+                   {.enabled = new QCheckBox(this),
+                    .enabledTip = tr("Checked: the value at the right; unchecked: absent, taken as 0"),
+                    .min = -max,
+                    .get = [member](const app::Project& p) { return (*p.material).*member; },
+                    .set = [member](app::Project& p, Opt v) { material(p).*member = v; }});
 }
 
 QGroupBox* MachineOperationPanel::expertGroup() {
@@ -218,6 +278,18 @@ void MachineOperationPanel::setUnits(DisplayUnits* units) {
   followUnits(this, units_, units, &MachineOperationPanel::refresh);
 }
 
+void MachineOperationPanel::setMaterialLibrary(const QList<MaterialChoice>& choices) {
+  materialChoices_ = choices;
+  materialPicker_->clear();
+  for (int i = 0; i < choices.size(); ++i) {
+    const MaterialChoice& c = choices[i];
+    materialPicker_->addItem(tr("%1 (ISO %2)").arg(c.material.name, c.iso_group));
+    materialPicker_->setItemData(i, c.tooltip, Qt::ToolTipRole);
+  }
+  materialPicker_->setEnabled(!choices.isEmpty());
+  refresh();
+}
+
 double MachineOperationPanel::toDisplay(const NumberField& f, double value) const {
   return f.quantity ? DisplayUnits::of(units_).fromBase(*f.quantity, value * f.to_base) : value;
 }
@@ -236,7 +308,7 @@ void MachineOperationPanel::refresh() {
     if (f.quantity) {
       f.box->setSuffix(" " + units.symbol(*f.quantity));
       f.box->setDecimals(units.decimals(*f.quantity));
-      f.box->setMaximum(toDisplay(f, f.max));
+      f.box->setRange(toDisplay(f, f.min), toDisplay(f, f.max));
     } else {
       f.box->setSuffix(f.suffix);
     }
@@ -248,6 +320,9 @@ void MachineOperationPanel::refresh() {
   useDepth_->setChecked(s.operation->radial_depth_mm.has_value());
   useImmersion_->setChecked(!s.operation->radial_depth_mm.has_value());
   materialName_->setText(s.material->name);
+  materialName_->setCursorPosition(0);   // a library name is long: its start says what it is
+  materialPicker_->setCurrentIndex(-1);  // the placeholder: the picker is an action, not a state
+  showMaterialOrigin(*s.material);
   const QString absent = tr(" (not in the project: defaults shown, an edit adds it)");
   groups_["machine"]->setTitle(tr("Machine") + (project_.machine ? QString() : absent));
   groups_["operation"]->setTitle(tr("Operation") + (project_.operation ? QString() : absent));
@@ -312,6 +387,31 @@ void MachineOperationPanel::commitRadialChoice() {
     op.radial_depth_mm.reset();
     request(edited, "operation.radial_immersion", tr("Give the radial immersion"));
   }
+}
+
+void MachineOperationPanel::pickMaterial(int index) {
+  if (updating_ || index < 0 || index >= materialChoices_.size()) return;
+  app::Project edited = project_;
+  edited.material = materialChoices_[index].material;
+  request(edited, "material.library", tr("Material from the library: %1").arg(edited.material->name));
+  materialPicker_->setCurrentIndex(-1);
+}
+
+void MachineOperationPanel::showMaterialOrigin(const app::MaterialSpec& material) {
+  if (!material.library) {
+    materialOrigin_->setText(tr("Not from the library (typed in)"));
+    return;
+  }
+  const QString& id = *material.library;
+  const auto entry = std::find_if(materialChoices_.begin(), materialChoices_.end(),
+                                  [&id](const MaterialChoice& c) { return c.material.library == id; });
+  if (entry == materialChoices_.end()) {
+    materialOrigin_->setText(tr("From library entry %1 (not in the loaded library)").arg(id));
+    return;
+  }
+  const QStringList edited = editedMaterialFields(material, entry->material);
+  materialOrigin_->setText(edited.isEmpty() ? tr("From library entry %1").arg(id)
+                                            : tr("From library entry %1, edited since: %2").arg(id, edited.join(", ")));
 }
 
 void MachineOperationPanel::request(const app::Project& edited, const QString& path, const QString& description) {

@@ -16,8 +16,9 @@ QString number(double value) {
 }
 
 const char* fieldName(int column) {
-  static const char* kNames[] = {"id",       "teeth", "diameter_mm",     "helix_deg",   "pitch_deg", "runout_um",
-                                 "Kt_N_mm2", "Kr",    "radial_depth_mm", "max_force_N", "modes_x",   "modes_y"};
+  static const char* kNames[] = {
+      "id",       "teeth",    "diameter_mm", "helix_deg", "pitch_deg",       "runout_um",   "Kt_N_mm2", "Kr",
+      "Kte_N_mm", "Kre_N_mm", "Ka_N_mm2",    "Kae_N_mm",  "radial_depth_mm", "max_force_N", "modes_x",  "modes_y"};
   return kNames[column];
 }
 
@@ -83,6 +84,14 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
       return opt(t.Kt_N_mm2);
     case Kr:
       return opt(t.Kr);
+    case Kte:
+      return opt(t.Kte_N_mm);
+    case Kre:
+      return opt(t.Kre_N_mm);
+    case Ka:
+      return opt(t.Ka_N_mm2);
+    case Kae:
+      return opt(t.Kae_N_mm);
     case RadialDepth:
       return t.radial_depth_mm ? QVariant(toDisplay(*t.radial_depth_mm)) : QVariant();
     case MaxForce:
@@ -124,6 +133,14 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
       break;
     case Kr:
       r = {-0.001, 10, 3, 0.01, "material's"};
+      break;
+    case Kte:
+    case Kre:
+    case Kae:  // 0 is a value: the special text "material's" sits just below
+      r = {-0.01, app::rules::kEdgeForceNmm.hi, 2, 1, "material's"};
+      break;
+    case Ka:
+      r = {-0.01, app::rules::kAxialPressureNmm2.hi, 2, 10, "material's"};
       break;
     case RadialDepth:
       r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, "operation's"};
@@ -173,13 +190,12 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
                 "(e.g. 0; 8; 0; -5); empty or '%1' = no runout")
           .arg(noRunoutText());
     case Kt:
-      return project_.material ? tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's %1")
-                                     .arg(app::formatNumber(project_.material->Kt_N_mm2))
-                               : tr("Specific tangential cutting force K_t [N/mm²] (> 0); empty = the material's");
     case Kr:
-      return project_.material ? tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's %1")
-                                     .arg(app::formatNumber(project_.material->Kr))
-                               : tr("Radial force ratio K_r = F_r / F_t (>= 0); empty = the material's");
+    case Kte:
+    case Kre:
+    case Ka:
+    case Kae:
+      return coefficientTip(column);
     case RadialDepth:
       return tr("Radial depth of cut a [%1] in (0, D]; empty = the operation's radial engagement").arg(lengthUnit());
     case MaxForce: {
@@ -200,6 +216,42 @@ QString ToolTableModel::toolTip(const app::ToolSpec& t, int column) const {
     default:
       return {};
   }
+}
+
+QString ToolTableModel::coefficientTip(int column) const {
+  const std::optional<app::MaterialSpec>& m = project_.material;
+  // An absent edge or axial coefficient of the material is 0.
+  const auto value = [](const std::optional<double>& v) { return app::formatNumber(v.value_or(0.0)); };
+  QString what, material;
+  switch (column) {
+    case Kt:
+      what = tr("Specific tangential cutting force K_t [N/mm²] (> 0)");
+      if (m) material = app::formatNumber(m->Kt_N_mm2);
+      break;
+    case Kr:
+      what = tr("Radial force ratio K_r = F_r / F_t (>= 0)");
+      if (m) material = app::formatNumber(m->Kr);
+      break;
+    case Kte:
+      what = tr("Tangential edge force K_te [N/mm] in [0, 1e4]");
+      if (m) material = value(m->Kte_N_mm);
+      break;
+    case Kre:
+      what = tr("Radial edge force K_re [N/mm] in [0, 1e4]");
+      if (m) material = value(m->Kre_N_mm);
+      break;
+    case Ka:
+      what = tr("Axial cutting coefficient K_a [N/mm²] in [0, 1e5]");
+      if (m) material = value(m->Ka_N_mm2);
+      break;
+    case Kae:
+      what = tr("Axial edge force K_ae [N/mm] in [0, 1e4]");
+      if (m) material = value(m->Kae_N_mm);
+      break;
+    default:
+      return {};
+  }
+  return m ? tr("%1; empty = the material's %2").arg(what, material) : tr("%1; empty = the material's").arg(what);
 }
 
 QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
@@ -243,7 +295,15 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
       case Kt:
         return tr("K_t [N/mm²]");
       case Kr:
-        return tr("K_r");
+        return tr("K_r [-]");
+      case Kte:
+        return tr("K_te [N/mm]");
+      case Kre:
+        return tr("K_re [N/mm]");
+      case Ka:
+        return tr("K_a [N/mm²]");
+      case Kae:
+        return tr("K_ae [N/mm]");
       case RadialDepth:
         return tr("radial depth [%1]").arg(unit);
       case MaxForce:
@@ -310,6 +370,18 @@ bool ToolTableModel::setData(const QModelIndex& index, const QVariant& value, in
       break;
     case Kr:
       optional(t.Kr, false);
+      break;
+    case Kte:
+      optional(t.Kte_N_mm, false);
+      break;
+    case Kre:
+      optional(t.Kre_N_mm, false);
+      break;
+    case Ka:
+      optional(t.Ka_N_mm2, false);
+      break;
+    case Kae:
+      optional(t.Kae_N_mm, false);
       break;
     case RadialDepth:
       optional(t.radial_depth_mm, true);

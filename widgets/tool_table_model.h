@@ -14,7 +14,25 @@ namespace mx::widgets {
 class ToolTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Id, Teeth, Diameter, Helix, Pitch, Runout, Kt, Kr, RadialDepth, MaxForce, ModesX, ModesY, ColumnCount };
+  enum Column {
+    Id,
+    Teeth,
+    Diameter,
+    Helix,
+    Pitch,
+    Runout,
+    Kt,
+    Kr,
+    Kte,
+    Kre,
+    Ka,
+    Kae,
+    RadialDepth,
+    MaxForce,
+    ModesX,
+    ModesY,
+    ColumnCount
+  };
   // The text of a pitch cell for uniform pitch, and of a runout cell without runout; an empty cell
   // means the same.
   static QString uniformPitchText() { return QStringLiteral("uniform"); }
@@ -34,7 +52,8 @@ class ToolTableModel : public QAbstractTableModel {
   QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
   Qt::ItemFlags flags(const QModelIndex& index) const override;
   // Validates and requests the edit; returns false (and emits editRefused) when it is refused.
-  // An invalid QVariant clears an optional column (K_t, K_r, radial depth, maximum force). The pitch
+  // An invalid QVariant clears an optional column (K_t, K_r, the edge and axial coefficients K_te, K_re,
+  // K_a, K_ae, radial depth, maximum force). The pitch
   // and runout cells take a ';'-separated list (degrees, micrometres) or an empty cell / the word.
   bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
@@ -49,6 +68,7 @@ class ToolTableModel : public QAbstractTableModel {
   QVariant editValue(const app::ToolSpec& tool, int column) const;
   QVariant rangeData(int column, int role) const;
   QString toolTip(const app::ToolSpec& tool, int column) const;
+  QString coefficientTip(int column) const;  // K_t .. K_ae: what the value is, and the material's
   // Reads a pitch or runout cell into `list`; returns the refusal ("" = ok).
   static QString readToothList(const QVariant& value, const QString& path, const QString& absentWord,
                                std::optional<std::vector<double>>& list);

@@ -4,6 +4,7 @@
 
 #include "feature_dock.h"
 #include "machine_operation_panel.h"
+#include "material_choices.h"
 #include "tool_library_editor.h"
 #include "tool_library_transfer.h"
 
@@ -17,6 +18,7 @@ EditorsFeature::EditorsFeature(QMainWindow* window, FeatureContext& context)
   setObjectName("editorsFeature");
   tool_editor_->setUnits(context.units());
   machine_panel_->setUnits(context.units());
+  machine_panel_->setMaterialLibrary(bundledMaterialChoices());
   QDockWidget* tools = makeFeatureDock(window, tr("Tool library"), "toolsDock", tool_editor_, DockContent::Scrolling);
   QDockWidget* machine =
       makeFeatureDock(window, tr("Machine and operation"), "machineDock", machine_panel_, DockContent::Scrolling);

@@ -1,7 +1,8 @@
 #pragma once
 // The project's editors: the tool library and the machine and operation panel (tabbed docks on the
 // left). Their edits go to the document as undoable steps; choosing a tool in the library makes it the
-// active tool. The library's Import / Export go through ToolLibraryTransfer.
+// active tool. The library's Import / Export go through ToolLibraryTransfer. The panel's material picker
+// offers the bundled materials library.
 #include <QMainWindow>
 
 #include "feature_context.h"

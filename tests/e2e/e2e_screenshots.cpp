@@ -11,10 +11,12 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTest>
 #include <QTimer>
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -22,7 +24,9 @@
 #include "e2e_driver.h"
 #include "e2e_report.h"
 #include "e2e_window.h"
+#include "machine_operation_panel.h"
 #include "machining_feature.h"
+#include "material_choices.h"
 #include "pareto_feature.h"
 #include "shop_units_dialog.h"
 #include "supervisor_feature.h"
@@ -59,6 +63,7 @@ struct Shot {
   bool inch = false;                // the Inch shop units (in, SFM, IPM, in/tooth, hp, lbf, in³/min)
   bool preferences = false;         // Edit > Preferences... open over the window (a grab of the screen)
   const char* library = "";         // imported (in projects/), then its import dialog open over the window
+  const char* material = "";        // copied from the materials library through the material panel's picker
 };
 
 const Shot kShots[] = {
@@ -100,6 +105,10 @@ const Shot kShots[] = {
      .project = "rubio2006-tool-selection.mxproj",
      .docks = "toolsDock",
      .library = "libraries/fusion-endmills.json"},
+    {.file = "material-library.png",
+     .project = "rubio2006-tool-selection.mxproj",
+     .docks = "machineDock",
+     .material = "Al7075-T6"},
 };
 
 QString projectFile(const char* relative) {
@@ -114,6 +123,27 @@ void raiseDocks(gui::MainWindow& window, const QString& names) {
     if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
       window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
   }
+}
+
+// Copies the library entry `id` into the project through the panel's picker, as a click would, waits
+// until the lobes and the simulation of the new material are shown, and scrolls the material group into
+// view.
+void pickMaterial(gui::MainWindow& window, const QString& id) {
+  auto* panel = part<widgets::MachineOperationPanel>(window);
+  auto* picker = qobject_cast<QComboBox*>(panel->field("material.library"));
+  const QList<widgets::MaterialChoice> choices = gui::bundledMaterialChoices();
+  const auto entry = std::find_if(choices.begin(), choices.end(),
+                                  [&id](const widgets::MaterialChoice& c) { return c.material.library == id; });
+  if (entry == choices.end()) throw Aborted(QString("the materials library has no entry %1").arg(id));
+  QSignalSpy lobes_shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+  QSignalSpy simulated(test::simulationOf(window), &gui::SimulationFeature::simulationShown);
+  emit picker->activated(int(entry - choices.begin()));
+  waitFor([&] { return lobes_shown.count() > 0 && simulated.count() > 0; }, kShotMs,
+          "the lobes and the simulation of the library's material");
+  QTest::qWait(100);  // the panel's layout after the edit
+  auto* area = qobject_cast<QScrollArea*>(panel->parentWidget()->parentWidget());
+  if (!area) throw Aborted("the material panel is not in its dock's scroll area");
+  area->ensureWidgetVisible(panel->field("material.process_damping_N_per_m"), 0, 20);
 }
 
 // Imports every tool of `library` into the window's project, selects the first one imported, and
@@ -253,6 +283,10 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
   if (*shot.library) dialog = importDialog(report, window, projectFile(shot.library));
   if (dialog) {
     dialog->move(window.geometry().center() - dialog->rect().center());
+    QTest::qWait(300);
+  }
+  if (*shot.material) {
+    pickMaterial(window, shot.material);
     QTest::qWait(300);
   }
   // The dialog is a window of its own: the screen holds both.

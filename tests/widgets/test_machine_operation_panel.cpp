@@ -1,9 +1,12 @@
 // The machine / operation / material / expert panel: shows the project, refuses invalid values in
-// place with the reason, switches the radial engagement, creates missing sections, undoes.
+// place with the reason, switches the radial engagement, creates missing sections, undoes; copies a
+// materials-library entry in one undo step and says where the material came from.
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QRadioButton>
 #include <QSignalSpy>
@@ -19,6 +22,54 @@ using mx::widgets::MachineOperationPanel;
 namespace {
 
 const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+
+// Two library entries as the GUI host hands them over; the second has every optional value.
+QList<mx::widgets::MaterialChoice> twoChoices() {
+  mx::app::MaterialSpec steel;
+  steel.name = "Carbon steel AISI 1045";
+  steel.Kt_N_mm2 = 1945.0;
+  steel.Kr = 0.35;
+  steel.Kte_N_mm = 48.4;
+  steel.Kre_N_mm = 48.0;
+  steel.library = "AISI1045";
+  mx::app::MaterialSpec al;
+  al.name = "Aluminium 7075-T6";
+  al.Kt_N_mm2 = 767.01;
+  al.Kr = 0.2201;
+  al.Kte_N_mm = 27.7;
+  al.Kre_N_mm = 26.6;
+  al.Ka_N_mm2 = 222.0;
+  al.Kae_N_mm = 0.7;
+  al.process_damping_N_per_m = 2e5;
+  al.library = "Al7075-T6";
+  return {{"P", "steel", steel}, {"N", "aluminium", al}};
+}
+
+// The panel wired to a document as the main window wires it.
+void wire(MachineOperationPanel& panel, mx::app::ProjectDocument& doc) {
+  QObject::connect(&panel, &MachineOperationPanel::editRequested, &doc,
+                   [&doc](const Project& edited, const QString& text) { doc.applyEdit(edited, text); });
+  QObject::connect(&doc, &mx::app::ProjectDocument::changed, &panel, [&] { panel.setProject(doc.project()); });
+  panel.setProject(doc.project());
+}
+
+// The form label of the row that holds the control of `path` (alone, or with its check box).
+QString labelOf(const MachineOperationPanel& panel, const QString& path) {
+  QWidget* control = panel.field(path);
+  for (auto* form : panel.findChildren<QFormLayout*>()) {
+    for (int row = 0; row < form->rowCount(); ++row) {
+      QLayoutItem* field = form->itemAt(row, QFormLayout::FieldRole);
+      QWidget* widget = field ? field->widget() : nullptr;
+      if (widget && (widget == control || widget->isAncestorOf(control)))
+        return qobject_cast<QLabel*>(form->itemAt(row, QFormLayout::LabelRole)->widget())->text();
+    }
+  }
+  return {};
+}
+
+QString originText(const MachineOperationPanel& panel) {
+  return qobject_cast<QLabel*>(panel.field("material.origin"))->text();
+}
 
 QDoubleSpinBox* spin(const MachineOperationPanel& panel, const QString& path) {
   return qobject_cast<QDoubleSpinBox*>(panel.field(path));
@@ -150,6 +201,137 @@ class TestMachineOperationPanel : public QObject {
     doc.undoStack()->undo();
     QCOMPARE(doc.project().material->Kt_N_mm2, 600.0);
     QCOMPARE(spin(panel, "material.Kt_N_mm2")->value(), 600.0);
+  }
+
+  void pickingALibraryEntryIsOneUndoStep() {
+    mx::app::ProjectDocument doc;
+    doc.load(kRubio);
+    MachineOperationPanel panel;
+    panel.setMaterialLibrary(twoChoices());
+    wire(panel, doc);
+    const mx::app::MaterialSpec before = *doc.project().material;
+    QCOMPARE(originText(panel), QString("Not from the library (typed in)"));
+    auto* picker = qobject_cast<QComboBox*>(panel.field("material.library"));
+    QCOMPARE(picker->count(), 2);
+    QCOMPARE(picker->itemText(1), QString("Aluminium 7075-T6 (ISO N)"));
+    QCOMPARE(picker->itemData(1, Qt::ToolTipRole).toString(), QString("aluminium"));
+    QCOMPARE(picker->currentIndex(), -1);
+    QCOMPARE(picker->placeholderText(), QString("From library…"));
+
+    const int steps = doc.undoStack()->index();
+    emit picker->activated(1);
+    QCOMPARE(doc.undoStack()->index(), steps + 1);
+    QCOMPARE(*doc.project().material, twoChoices().at(1).material);  // every field and the library id
+    QCOMPARE(doc.undoStack()->undoText(), QString("Material from the library: Aluminium 7075-T6"));
+    QCOMPARE(spin(panel, "material.Kt_N_mm2")->value(), 767.01);
+    QCOMPARE(spin(panel, "material.Ka_N_mm2")->value(), 222.0);
+    QCOMPARE(spin(panel, "material.process_damping_N_per_m")->value(), 2e5);
+    QVERIFY(qobject_cast<QCheckBox*>(panel.field("material.Kae_N_mm.enabled"))->isChecked());
+    QCOMPARE(qobject_cast<QLineEdit*>(panel.field("material.name"))->text(), QString("Aluminium 7075-T6"));
+    QCOMPARE(originText(panel), QString("From library entry Al7075-T6"));
+    QCOMPARE(picker->currentIndex(), -1);
+
+    doc.undoStack()->undo();
+    QCOMPARE(*doc.project().material, before);
+    QVERIFY(!qobject_cast<QCheckBox*>(panel.field("material.Kae_N_mm.enabled"))->isChecked());
+    QCOMPARE(originText(panel), QString("Not from the library (typed in)"));
+  }
+
+  void editsSinceTheLibraryAreShown() {
+    mx::app::ProjectDocument doc;
+    doc.load(kRubio);
+    MachineOperationPanel panel;
+    panel.setMaterialLibrary(twoChoices());
+    wire(panel, doc);
+    emit qobject_cast<QComboBox*>(panel.field("material.library"))->activated(0);
+    type(spin(panel, "material.Kt_N_mm2"), "2000");
+    qobject_cast<QCheckBox*>(panel.field("material.Kre_N_mm.enabled"))->setChecked(false);
+    QCOMPARE(*doc.project().material->library, QString("AISI1045"));  // the copy keeps its origin
+    QCOMPARE(originText(panel), QString("From library entry AISI1045, edited since: K_t, K_re"));
+    panel.setMaterialLibrary({});
+    QCOMPARE(originText(panel), QString("From library entry AISI1045 (not in the loaded library)"));
+    QVERIFY(!panel.field("material.library")->isEnabled());
+  }
+
+  // The optional coefficients: a check box each (unchecked = absent), labels with units, the project's
+  // rules at the edges of their ranges, and a refusal naming the field, the value and the range.
+  void optionalCoefficients_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("refusal");  // "" = accepted
+    QTest::newRow("K_te negative") << "material.Kte_N_mm"
+                                   << "-5"
+                                   << "material.Kte_N_mm = -5: must be in [0, 10000]";
+    QTest::newRow("K_te zero") << "material.Kte_N_mm"
+                               << "0"
+                               << "";
+    QTest::newRow("K_te at 1e4") << "material.Kte_N_mm"
+                                 << "10000"
+                                 << "";
+    QTest::newRow("K_re negative") << "material.Kre_N_mm"
+                                   << "-0.01"
+                                   << "material.Kre_N_mm = -0.01: must be in [0, 10000]";
+    QTest::newRow("K_a at 1e5") << "material.Ka_N_mm2"
+                                << "100000"
+                                << "";
+    QTest::newRow("K_a negative") << "material.Ka_N_mm2"
+                                  << "-1"
+                                  << "material.Ka_N_mm2 = -1: must be in [0, 1e+05]";
+    QTest::newRow("K_ae") << "material.Kae_N_mm"
+                          << "0.7"
+                          << "";
+    QTest::newRow("C_i at 1e9") << "material.process_damping_N_per_m"
+                                << "1000000000"
+                                << "";
+    QTest::newRow("C_i negative") << "material.process_damping_N_per_m"
+                                  << "-1"
+                                  << "material.process_damping_N_per_m = -1: must be in [0, 1e+09]";
+  }
+  void optionalCoefficients() {
+    QFETCH(QString, path);
+    QFETCH(QString, typed);
+    QFETCH(QString, refusal);
+    Project p = mx::app::loadProject(kRubio);
+    p.material->Kte_N_mm = p.material->Kre_N_mm = p.material->Ka_N_mm2 = p.material->Kae_N_mm = 10.0;
+    p.material->process_damping_N_per_m = 10.0;
+    MachineOperationPanel panel;
+    panel.setProject(p);
+    QSignalSpy spy(&panel, &MachineOperationPanel::editRequested);
+    type(spin(panel, path), typed);
+    if (refusal.isEmpty()) {
+      QCOMPARE(spy.count(), 1);
+      QCOMPARE(panel.errorText(), QString());
+      return;
+    }
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(panel.errorText(), refusal);
+    QCOMPARE(spin(panel, path)->value(), 10.0);  // the project's value is shown again
+    QVERIFY(spin(panel, path)->toolTip().contains("Refused: " + refusal));
+  }
+
+  void uncheckingACoefficientRemovesIt() {
+    Project p = mx::app::loadProject(kRubio);
+    p.material->Kte_N_mm = 31.5;
+    MachineOperationPanel panel;
+    panel.setProject(p);
+    QSignalSpy spy(&panel, &MachineOperationPanel::editRequested);
+    qobject_cast<QCheckBox*>(panel.field("material.Kte_N_mm.enabled"))->setChecked(false);
+    QCOMPARE(spy.count(), 1);
+    QVERIFY(!spy.at(0).at(0).value<Project>().material->Kte_N_mm);
+    QVERIFY(!spin(panel, "material.Kte_N_mm")->isEnabled());
+  }
+
+  void everyMaterialLabelHasItsUnit() {
+    MachineOperationPanel panel;
+    const QHash<QString, QString> units{{"material.Kt_N_mm2", "[N/mm²]"},
+                                        {"material.Kr", "[-]"},
+                                        {"material.Kte_N_mm", "[N/mm]"},
+                                        {"material.Kre_N_mm", "[N/mm]"},
+                                        {"material.Ka_N_mm2", "[N/mm²]"},
+                                        {"material.Kae_N_mm", "[N/mm]"},
+                                        {"material.process_damping_N_per_m", "[N/m]"}};
+    for (auto it = units.begin(); it != units.end(); ++it)
+      QVERIFY2(labelOf(panel, it.key()).endsWith(it.value()), qPrintable(it.key() + ": " + labelOf(panel, it.key())));
   }
 
   void inchUnits() {

@@ -10,6 +10,7 @@
 
 #include "display_units.h"
 #include "document/project_document.h"
+#include "range_delegate.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
 
@@ -229,6 +230,14 @@ class TestToolLibraryEditor : public QObject {
                                       << "tools[0].radial_depth_mm = 31: must be in (0, 30]";
     QTest::newRow("max force zero") << int(ToolTableModel::MaxForce) << QVariant(0.0)
                                     << "tools[0].max_force_N = 0: must be in (0, 1e+07]";
+    QTest::newRow("edge force negative") << int(ToolTableModel::Kte) << QVariant(-0.5)
+                                         << "tools[0].Kte_N_mm = -0.5: must be in [0, 10000]";
+    QTest::newRow("radial edge force above 1e4")
+        << int(ToolTableModel::Kre) << QVariant(10000.01) << "tools[0].Kre_N_mm = 10000.01: must be in [0, 10000]";
+    QTest::newRow("axial coefficient above 1e5")
+        << int(ToolTableModel::Ka) << QVariant(100001.0) << "tools[0].Ka_N_mm2 = 100001: must be in [0, 1e+05]";
+    QTest::newRow("axial edge force negative")
+        << int(ToolTableModel::Kae) << QVariant(-1.0) << "tools[0].Kae_N_mm = -1: must be in [0, 10000]";
     // R1: 3 teeth, D = 30 mm (|runout| < 7500 um)
     QTest::newRow("pitch wrong length")
         << int(ToolTableModel::Pitch) << QVariant("170; 190")
@@ -331,6 +340,49 @@ class TestToolLibraryEditor : public QObject {
     QCOMPARE(m->index(0, ToolTableModel::MaxForce).data().toString(), QString("450"));
     QVERIFY(m->setData(m->index(0, ToolTableModel::MaxForce), QVariant()));
     QVERIFY(!spy.at(4).at(0).value<Project>().tools[0].max_force_N);
+  }
+
+  // K_te, K_re, K_a, K_ae: per-tool overrides of the material's edge and axial coefficients, each edit one
+  // undo step; the edge values of their ranges are accepted, and an empty cell is the material's again.
+  void edgeAndAxialOverrides_data() {
+    QTest::addColumn<int>("column");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("header");
+    QTest::newRow("K_te zero") << int(ToolTableModel::Kte) << 0.0 << "K_te [N/mm]";
+    QTest::newRow("K_te at 1e4") << int(ToolTableModel::Kte) << 1e4 << "K_te [N/mm]";
+    QTest::newRow("K_re") << int(ToolTableModel::Kre) << 26.6 << "K_re [N/mm]";
+    QTest::newRow("K_a at 1e5") << int(ToolTableModel::Ka) << 1e5 << "K_a [N/mm²]";
+    QTest::newRow("K_ae") << int(ToolTableModel::Kae) << 0.7 << "K_ae [N/mm]";
+  }
+  void edgeAndAxialOverrides() {
+    QFETCH(int, column);
+    QFETCH(double, value);
+    QFETCH(QString, header);
+    mx::app::ProjectDocument doc;
+    doc.load(kRubio);
+    ToolLibraryEditor editor;
+    wire(editor, doc);
+    ToolTableModel* m = editor.toolModel();
+    QCOMPARE(m->headerData(column, Qt::Horizontal).toString(), header);
+    const QModelIndex cell = m->index(0, column);
+    QCOMPARE(cell.data().toString(), QString());  // the material's
+    QVERIFY(cell.data(Qt::ToolTipRole).toString().contains("empty = the material's 0"));
+    QCOMPARE(cell.data(mx::widgets::RangeDelegate::SpecialTextRole).toString(), QString("material's"));
+    QVERIFY(cell.data(mx::widgets::RangeDelegate::MinimumRole).toDouble() < 0.0);  // 0 is a value
+    const int steps = doc.undoStack()->index();
+    QVERIFY(m->setData(cell, value));
+    QCOMPARE(doc.undoStack()->index(), steps + 1);
+    QCOMPARE(cell.data(Qt::EditRole).toDouble(), value);
+    const mx::app::ToolSpec& t = doc.project().tools[0];
+    const std::optional<double> stored = column == ToolTableModel::Kte   ? t.Kte_N_mm
+                                         : column == ToolTableModel::Kre ? t.Kre_N_mm
+                                         : column == ToolTableModel::Ka  ? t.Ka_N_mm2
+                                                                         : t.Kae_N_mm;
+    QCOMPARE(stored, std::optional<double>(value));
+    QVERIFY(m->setData(cell, QVariant()));
+    QVERIFY(!cell.data(Qt::EditRole).isValid());
+    doc.undoStack()->undo();
+    QCOMPARE(cell.data(Qt::EditRole).toDouble(), value);
   }
 
   void inchUnits() {
