@@ -14,7 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "replay/finding.h"
@@ -123,9 +125,14 @@ int main(int argc, char** argv) {
 
   const bool mutate = options.seconds > 0.0 || options.mutations >= 0;
   const auto budget = std::chrono::duration<double>(options.seconds);
-  mx::fuzz::Mutator mutator(
-      options.seed, options.dictionary.empty() ? std::vector<Bytes>{} : mx::fuzz::readDictionary(options.dictionary),
-      seeds);
+  std::vector<Bytes> tokens;
+  try {
+    if (!options.dictionary.empty()) tokens = mx::fuzz::readDictionary(options.dictionary);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "replay: %s\n", e.what());
+    return 2;
+  }
+  mx::fuzz::Mutator mutator(options.seed, std::move(tokens), seeds);
   long mutants = 0;
   for (; mutate && mutants != options.mutations; ++mutants) {
     if (options.seconds > 0.0 && std::chrono::steady_clock::now() - started > budget) break;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace mx::fuzz {
 
@@ -43,17 +46,20 @@ bool isNumberChar(char c) {
   return isDigit(c) || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
 }
 
-Bytes unescape(const std::string& line, std::size_t open, std::size_t close) {
+// libFuzzer's escapes (FuzzerUtil.cpp, ParseOneDictionaryEntry): \\, \" and \xAB; any other one makes
+// libFuzzer refuse the whole dictionary, so the replay refuses it too. nullopt: a bad escape.
+std::optional<Bytes> unescape(const std::string& line, std::size_t open, std::size_t close) {
   Bytes token;
   for (std::size_t i = open + 1; i < close; ++i) {
-    if (line[i] == '\\' && i + 3 < close && line[i + 1] == 'x' && hexDigit(line[i + 2]) >= 0 &&
-        hexDigit(line[i + 3]) >= 0) {
+    if (line[i] != '\\') {
+      token.push_back(line[i]);
+    } else if (i + 1 < close && (line[i + 1] == '\\' || line[i + 1] == '"')) {
+      token.push_back(line[++i]);
+    } else if (i + 3 < close && line[i + 1] == 'x' && hexDigit(line[i + 2]) >= 0 && hexDigit(line[i + 3]) >= 0) {
       token.push_back(static_cast<char>(hexDigit(line[i + 2]) * 16 + hexDigit(line[i + 3])));
       i += 3;
-    } else if (line[i] == '\\' && i + 1 < close) {
-      token.push_back(line[++i]);
     } else {
-      token.push_back(line[i]);
+      return std::nullopt;
     }
   }
   return token;
@@ -64,11 +70,21 @@ Bytes unescape(const std::string& line, std::size_t open, std::size_t close) {
 std::vector<Bytes> readDictionary(const std::filesystem::path& path) {
   std::vector<Bytes> tokens;
   std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+  int number = 0;
   for (std::string line; std::getline(in, line);) {
+    ++number;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
     const auto open = line.find('"');
     const auto close = line.rfind('"');
-    if (line.empty() || line[0] == '#' || open == std::string::npos || close <= open) continue;
-    tokens.push_back(unescape(line, open, close));
+    const std::optional<Bytes> token =
+        open == std::string::npos || close <= open ? std::nullopt : unescape(line, open, close);
+    if (!token)
+      throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": '" + line +
+                               "' is not a libFuzzer dictionary entry (\"...\" with the escapes \\\\, \\\" and "
+                               "\\xAB only)");
+    tokens.push_back(*token);
   }
   return tokens;
 }
