@@ -17,6 +17,7 @@
 #include "document/project.h"
 #include "document/shortened_text.h"
 #include "services/cutter_json.h"
+#include "services/cutting_data_json.h"
 #include "stability/lobe_computation.h"
 
 namespace mx::app {
@@ -150,10 +151,12 @@ int runLobesCommand(const QStringList& arguments) {
                   {"delta_per_s", request.delta_per_s},
                   {"alpha", request.alpha},
                   {"cutter", cutterJson(setup)},
+                  {"cutting_data", cuttingDataJson(setup)},
                   {"speed_rpm", speed_rpm},
                   {"blim_mm", blim_mm},
                   {"chatter_frequency_Hz", chatter_hz},
                   {"minima", minima}};
+  if (const QString note = processDampingNote(method, setup); !note.isEmpty()) out.insert("notes", QJsonArray{note});
   if (method == StabilityMethod::SemiDiscretization) {
     out.insert("sdm_delay_order", request.delay_order);
     out.insert("sdm_helix_slices", request.helix_slices);

@@ -18,6 +18,7 @@
 #include "document/shortened_text.h"
 #include "model/cutting_force.h"
 #include "services/cutter_json.h"
+#include "services/cutting_data_json.h"
 #include "stability/lobe_computation.h"
 #include "stability/stability_boundary.h"
 
@@ -116,6 +117,7 @@ int runPointCommand(const QStringList& arguments) {
                   {"method", method},
                   {"dynamics_used", dynamicsName(dynamics.used)},
                   {"cutter", cutterJson(setup)},
+                  {"cutting_data", cuttingDataJson(setup)},
                   {"speed_rpm", speed_rpm},
                   {"depth_mm", depth_mm},
                   {"feed_per_tooth_mm", feed_mm},
@@ -128,9 +130,12 @@ int runPointCommand(const QStringList& arguments) {
                   {"mean_power_W", perf.mean_power_w},
                   {"peak_torque_Nm", perf.peak_torque_nm},
                   {"peak_force_N", perf.peak_force_n},
+                  {"peak_axial_force_N", perf.peak_axial_force_n},
                   {"MRR_mm3_s", perf.mrr_m3_per_s * 1e9},
                   {"cutting_speed_m_min", perf.cutting_speed_m_per_s * 60.0},
                   {"feed_mm_s", feed_mm * setup.teeth * n}};
+  if (const QString note = processDampingNote(stability_method, setup); !note.isEmpty())
+    out.insert("notes", QJsonArray{note});
   if (project.machine) {
     const double available = availablePowerW(project.machine, speed_rpm);  // torque-limited below the base speed
     out.insert("available_power_W", available);

@@ -17,6 +17,7 @@
 #include "document/project.h"
 #include "model/axial_slices.h"
 #include "services/cutter_json.h"
+#include "services/cutting_data_json.h"
 #include "simulation/simulation.h"
 #include "simulation/time_domain_simulator.h"
 
@@ -115,7 +116,8 @@ int runSimulateCommand(const QStringList& arguments) {
       {"diverged", result.diverged},
       {"simulated_revolutions", result.simulated_revolutions},
       {"axial_slices", simulationAxialSlices(setup, point.axial_depth_m, options.axial_slices)},
-      {"cutter", cutterJson(setup)}};
+      {"cutter", cutterJson(setup)},
+      {"cutting_data", cuttingDataJson(setup)}};
   if (project.machine)  // of P_av at the speed (torque-limited below the base speed)
     out.insert("power_fraction", ind.peak_power_w / availablePowerW(project.machine, speed_rpm));
   printJson(out);

@@ -188,6 +188,32 @@ class TestCommandPoint : public QObject {
              qPrintable(r.err));
     QVERIFY(r.out.isEmpty());
   }
+
+  // The cutting data used, after the tool's overrides, and the process-damping note: the ZOA leaves the
+  // material's C_i out and says so, the SDM includes it (its limit rises at 600 rpm); peak_axial_force_N is 0
+  // without axial coefficients.
+  void cuttingDataAndProcessDampingNote() {
+    QTemporaryDir dir;  // the lobe chart's grid narrowed to 560-640 rpm, so that the SDM takes a second
+    const QString project = mx::test::writeMutatedProject(
+        MX_PROJECTS_DIR "/process-damping-low-speed.mxproj",
+        {"expert/grid/speed_from_rpm=560", "expert/grid/speed_to_rpm=640"}, dir.filePath("pd.mxproj"));
+    const QStringList args{"point", project, "--tool", "EM10-4F", "--speed", "600", "--depth", "0.2", "--feed", "0.05"};
+    const mx::test::CliRun zoa = mx::test::runCli(args);
+    QCOMPARE(zoa.code, 0);
+    const QJsonObject data = zoa.json["cutting_data"].toObject();
+    QCOMPARE(data["Kt_N_mm2"].toDouble(), 1648.0);
+    QCOMPARE(data["Kte_N_mm"].toDouble(), 46.0);
+    QCOMPARE(data["process_damping_N_per_m"].toDouble(), 1e5);
+    QCOMPARE(zoa.json["peak_axial_force_N"].toDouble(), 0.0);
+    const QJsonArray notes = zoa.json["notes"].toArray();
+    QCOMPARE(notes.size(), 1);
+    QVERIFY(notes[0].toString().contains("leaves out the process damping"));
+    const mx::test::CliRun sdm = mx::test::runCli(args + QStringList{"--method", "sdm"});
+    QCOMPARE(sdm.code, 0);
+    QVERIFY(!sdm.json.contains("notes"));
+    QVERIFY2(sdm.json["blim_mm"].isNull() || sdm.json["blim_mm"].toDouble() > 1.5 * zoa.json["blim_mm"].toDouble(),
+             sdm.out);
+  }
 };
 
 MX_REGISTER_TEST(TestCommandPoint)
