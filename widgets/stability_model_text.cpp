@@ -34,8 +34,11 @@ QString methodAdvice(StabilityMethod method, const MillingSetup& setup) {
     reasons << QObject::tr("intermittent cut: a/D = %1 < %2")
                    .arg(validity.radial_immersion, 0, 'g', 3)
                    .arg(validity.min_radial_immersion, 0, 'g', 3);
+  if (setup.process_damping_n_per_m > 0.0)
+    reasons << QObject::tr("process damping C_i = %1 N/m left out").arg(setup.process_damping_n_per_m, 0, 'g', 3);
   if (reasons.isEmpty()) return {};
-  return QObject::tr("ZOA: approximate for this tool (%1); SDM models pitch and helix").arg(reasons.join(", "));
+  return QObject::tr("ZOA: approximate for this tool (%1); SDM models pitch, helix and process damping")
+      .arg(reasons.join(", "));
 }
 
 }  // namespace mx::widgets

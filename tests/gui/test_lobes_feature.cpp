@@ -133,7 +133,7 @@ class TestLobesFeature : public QObject {
     QSignalSpy shown(lobes, &gui::LobesFeature::lobesShown);
     QCOMPARE(window.document()->applyEdit(edited, "pitch"), QString());
     QCOMPARE(lobes->methodAdviceText(),
-             QString("ZOA: approximate for this tool (variable pitch); SDM models pitch and helix"));
+             QString("ZOA: approximate for this tool (variable pitch); SDM models pitch, helix and process damping"));
     QVERIFY(shown.wait(20000));
     QCOMPARE(lobes->chart()->modelLabel(), QString("Tool R1: ZOA, 3 teeth, variable pitch"));
     lobes->setMethod(gui::LobeMethod::SemiDiscretization);

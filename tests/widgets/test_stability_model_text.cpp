@@ -54,7 +54,7 @@ class TestStabilityModelText : public QObject {
     QTest::addColumn<MillingSetup>("tool");
     QTest::addColumn<QString>("advice");
     const auto sdm = StabilityMethod::SemiDiscretization, zoa = StabilityMethod::ZeroOrder;
-    const QString tail = "; SDM models pitch and helix";
+    const QString tail = "; SDM models pitch, helix and process damping";
     QTest::newRow("ZOA fits") << zoa << setup(3, 0, {}, 1.0) << QString();
     QTest::newRow("ZOA at 4 teeth, a/D = 0.5") << zoa << setup(4, 0, {}, 0.5) << QString();  // always a tooth in cut
     QTest::newRow("ZOA variable pitch") << zoa << setup(4, 0, {70, 110, 70, 110}, 1.0)
@@ -65,6 +65,11 @@ class TestStabilityModelText : public QObject {
                                       << "ZOA: approximate for this tool (intermittent cut: a/D = 0.5 < 0.75)" + tail;
     QTest::newRow("ZOA all three") << zoa << setup(4, 30, {85, 95, 85, 95}, 0.05)
                                    << "ZOA: approximate for this tool (variable pitch, 30\u00b0 helix)" + tail;
+    MillingSetup damped = setup(3, 0, {}, 1.0);
+    damped.process_damping_n_per_m = 1e5;
+    QTest::newRow("ZOA process damping")
+        << zoa << damped << "ZOA: approximate for this tool (process damping C_i = 1e+05 N/m left out)" + tail;
+    QTest::newRow("SDM process damping") << sdm << damped << QString();
     QTest::newRow("SDM variable helix") << sdm << setup(4, 30, {70, 110, 70, 110}, 0.05) << QString();
   }
   void methodAdvice() {
