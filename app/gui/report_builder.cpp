@@ -1,6 +1,8 @@
 #include "report_builder.h"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace mx::gui {
 
@@ -144,6 +146,18 @@ QString ReportBuilder::projectSection() const {
     rows << QStringList{"Material", esc(p.material->name), ""};
     rows << QStringList{"Tangential coefficient K<sub>t</sub>", formatNumber(p.material->Kt_N_mm2, 1), "N/mm\u00b2"};
     rows << QStringList{"Radial ratio K<sub>r</sub>", formatNumber(p.material->Kr, 3), "\u2013"};
+    const std::pair<const char*, const std::optional<double>*> edges[] = {
+        {"Tangential edge force K<sub>te</sub>", &p.material->Kte_N_mm},
+        {"Radial edge force K<sub>re</sub>", &p.material->Kre_N_mm},
+        {"Axial edge force K<sub>ae</sub>", &p.material->Kae_N_mm}};
+    for (const auto& [label, value] : edges)
+      if (*value) rows << QStringList{label, formatNumber(**value, 2), "N/mm"};
+    if (p.material->Ka_N_mm2)
+      rows << QStringList{"Axial coefficient K<sub>a</sub>", formatNumber(*p.material->Ka_N_mm2, 1), "N/mm\u00b2"};
+    if (p.material->process_damping_N_per_m)
+      rows << QStringList{"Process damping C<sub>i</sub> (the ZOA leaves it out)",
+                          formatNumber(*p.material->process_damping_N_per_m, 0), "N/m"};
+    if (p.material->library) rows << QStringList{"From the materials library", esc(*p.material->library), ""};
   }
   if (p.operation) {
     rows << QStringList{"Operation", p.operation->milling == MillingDirection::Up ? "up milling" : "down milling", ""};

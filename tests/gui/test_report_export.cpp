@@ -82,6 +82,22 @@ class TestReportExport : public QObject {
     for (const char* figure : {"Figure 1.", "Figure 2.", "Figure 3."}) QVERIFY(html.contains(figure));
   }
 
+  // The material's edge forces, process damping and library entry appear when the project gives them.
+  void materialRowsShowEdgeForcesAndProcessDamping() {
+    QVERIFY(QDir(dir_.path()).mkpath("damped"));
+    ReportOptions options;
+    options.image_dir = dir_.filePath("damped");
+    const ReportData damped = collectReportData(MX_PROJECTS_DIR "/process-damping-low-speed.mxproj", options);
+    const QString html = dir_.filePath("damped.html");
+    ReportWriter(damped).writeHtml(html);
+    const QString text = readText(html);
+    for (const QString& s :
+         {QString("Tangential edge force K<sub>te</sub>"), QString("Radial edge force K<sub>re</sub>"),
+          QString(">46.00<"), QString("Process damping C<sub>i</sub>"), QString(">100000<"), QString(">Ti-6Al-4V<")})
+      QVERIFY2(text.contains(s), qPrintable("the report lacks '" + s + "'"));
+    QVERIFY(!readText(html_).contains("edge force"));  // the Rubio case has K_t and K_r alone
+  }
+
   void embeddedHtmlIsSelfContained() {
     const QString path = dir_.filePath("embedded.html");
     ReportWriter(*data_).writeHtml(path, HtmlImages::Embedded);
