@@ -12,6 +12,7 @@
 
 #include "document/project.h"
 #include "document/project_validation.h"
+#include "support/error_message.h"
 #include "support/json_mutation.h"
 #include "support/project_files.h"
 #include "test_registry.h"
@@ -22,14 +23,10 @@ using namespace mx::test;
 
 namespace {
 
-// The ProjectError message of f(), or a null string when nothing is thrown.
-QString errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ProjectError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
+// The ProjectError message of fn(), or a null string when nothing is thrown.
+template <typename F>
+QString errorOf(F fn) {
+  return mx::test::messageOf<ProjectError>(fn);
 }
 
 using mx::test::mutated;

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "services/learning_database.h"
+#include "support/error_message.h"
 #include "test_registry.h"
 
 using mx::app::JobFeatures;
@@ -40,15 +41,10 @@ LearningRecord sample(const QString& tool, const QString& material, double diame
 
 const std::vector<double> kW{0.25, 0.25, 0.25, 0.25};
 
-// Runs fn and returns the LearningDatabaseError message ("" when nothing was thrown).
+// The LearningDatabaseError message of fn(), or a null string when nothing is thrown.
 template <typename F>
 QString errorOf(F fn) {
-  try {
-    fn();
-  } catch (const LearningDatabaseError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
+  return mx::test::messageOf<LearningDatabaseError>(fn);
 }
 
 // A plain Qt Sql connection, to look at (or tamper with) the file behind the class's back.

@@ -7,6 +7,7 @@
 #include "document/project_validation.h"
 #include "services/material_library.h"
 #include "services/service_errors.h"
+#include "support/error_message.h"
 #include "support/hostile_files.h"
 #include "support/project_files.h"
 #include "test_registry.h"
@@ -27,13 +28,10 @@ QByteArray libraryWith(const QJsonObject& fields, const QString& without = {}) {
   return QJsonDocument(root).toJson();
 }
 
-QString errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
+// The InputError message of fn(), or a null string when nothing is thrown.
+template <typename F>
+QString errorOf(F fn) {
+  return mx::test::messageOf<InputError>(fn);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "frf/uff_writer.h"
 #include "services/measured_dynamics.h"
 #include "services/service_errors.h"
+#include "support/error_message.h"
 #include "support/frf_samples.h"
 #include "support/project_files.h"
 #include "test_registry.h"
@@ -39,13 +40,10 @@ Project tapProject(const QTemporaryDir& dir) {
   return p;
 }
 
-QString inputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
+// The InputError message of fn(), or a null string when nothing is thrown.
+template <typename F>
+QString inputErrorOf(F fn) {
+  return mx::test::messageOf<InputError>(fn);
 }
 
 }  // namespace

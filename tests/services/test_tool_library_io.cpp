@@ -5,6 +5,7 @@
 
 #include "document/project.h"
 #include "services/tool_formats/tool_library_io.h"
+#include "support/error_message.h"
 #include "test_registry.h"
 
 using namespace mx::app;
@@ -41,13 +42,10 @@ ToolSpec mappedTool() {
   return t;
 }
 
-QString errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ToolLibraryError& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
+// The ToolLibraryError message of fn(), or a null string when nothing is thrown.
+template <typename F>
+QString errorOf(F fn) {
+  return mx::test::messageOf<ToolLibraryError>(fn);
 }
 
 }  // namespace
