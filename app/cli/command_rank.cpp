@@ -11,7 +11,8 @@
 //    "region","holds_chosen_point"}...], "reported_chatter_iterations", "malfunction_limit_reached",
 //    "rule5": {"candidates" (points scored), "seeds" (of them the best K by C), "iterations",
 //              "converged" (steps below the resolutions), "simulations" (run, not from the cache),
-//              "c_resultant" (at q**)} (null with --no-simulation)}.
+//              "c_resultant" (at q**)} (null with --no-simulation),
+//    "notes" (when the ZOA leaves a material's process damping out; services/cutting_data_json.h)}.
 //    Tools with a tap test use it with --dynamics measured.
 // Rule 6 on evidence: chatter observed at the machine (the project's expert.reported_chatter and each
 //   --chatter-at, rpm:mm[:Hz], of --chatter-tool, default the tool Rule 4 selects at the given weights)
@@ -36,6 +37,7 @@
 #include "document/shortened_text.h"
 #include "expert/expert_session.h"
 #include "model/cutting_force.h"
+#include "services/cutting_data_json.h"
 #include "services/expert_request.h"
 #include "services/expert_rules.h"
 #include "services/pareto_request.h"
@@ -183,6 +185,12 @@ int runRankCommand(const QStringList& arguments) {
       {"reported_chatter_iterations", result.reported_chatter_iterations},
       {"malfunction_limit_reached", result.malfunction_limit_reached}};
   out.insert("rule5", result.refinement ? QJsonValue(rule5Json(*result.refinement)) : QJsonValue());
+  for (const MillingSetup& tool : request.tools) {  // once: every tool cuts the project's material
+    const QString note = processDampingNote(request.settings.stability.method, tool);
+    if (note.isEmpty()) continue;
+    out.insert("notes", QJsonArray{note});
+    break;
+  }
   if (!rules.empty()) {
     QJsonObject fired =
         rulesJson(rules.tool(selected.tool), paretoPointOf(selected.q), request.tools[selected.tool].teeth);

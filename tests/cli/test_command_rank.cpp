@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
+#include "support/json_mutation.h"
 #include "test_registry.h"
 
 namespace {
@@ -320,6 +321,22 @@ class TestCliRank : public QObject {
     const Run bad = cli({"rank", rubioWithRules(dir, {"if tool.teeth >= then speed_rpm <= 10"})});
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains("operator_rules[0]: line 1, column"));
+  }
+
+  // With the ZOA the ranking's lobes leave the material's process damping out, and "notes" says so once;
+  // with the SDM there is no note.
+  void processDampingNote() {
+    QTemporaryDir dir;
+    const QString project = mx::test::writeMutatedProject(
+        MX_PROJECTS_DIR "/process-damping-low-speed.mxproj",
+        {"expert/grid/speed_from_rpm=2000", "expert/grid/speed_to_rpm=2400"}, dir.filePath("pd.mxproj"));
+    const mx::test::CliRun zoa = mx::test::runCli({"rank", project, "--no-simulation"});
+    QCOMPARE(zoa.code, 0);
+    QCOMPARE(zoa.json["notes"].toArray().size(), 1);
+    QVERIFY(zoa.json["notes"].toArray()[0].toString().contains("process_damping_N_per_m = 100000"));
+    const mx::test::CliRun sdm = mx::test::runCli({"rank", project, "--no-simulation", "--method", "sdm"});
+    QCOMPARE(sdm.code, 0);
+    QVERIFY(!sdm.json.contains("notes"));
   }
 };
 
