@@ -33,6 +33,26 @@ void BM_TimeDomainRK4(benchmark::State& state) {
 }
 BENCHMARK(BM_TimeDomainRK4)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 
+// The same kernel with edge forces and process damping (the extended force of regenerative_force.h: the
+// stage's velocities and two more terms per engaged edge); arg 0: neither, 1: both.
+void BM_TimeDomainRK4EdgeAndProcessDamping(benchmark::State& state) {
+  mx::MillingSetup setup = mx::bench::toolR1();
+  if (state.range(0) != 0) {
+    setup.tangential_edge_n_per_m = 25e3;
+    setup.radial_edge_n_per_m = 30e3;
+    setup.process_damping_n_per_m = 1e5;
+  }
+  double steps = 0.0;
+  for (auto _ : state) {
+    mx::TimeDomainSimulator simulator(setup, kQStar, mx::SimulationOptions{});
+    simulator.run();
+    benchmark::DoNotOptimize(simulator.window().max_force_n);
+    steps = static_cast<double>(simulator.totalSteps());
+  }
+  reportSteps(state, steps);
+}
+BENCHMARK(BM_TimeDomainRK4EdgeAndProcessDamping)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // The general kernel under spindle speed variation (theta(t), Newton delay, Hermite history).
 void BM_TimeDomainRK4Ssv(benchmark::State& state) {
   const mx::MillingSetup setup = mx::bench::toolR1();
