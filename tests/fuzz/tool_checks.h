@@ -13,8 +13,8 @@ namespace mx::fuzz {
 inline void requireFiniteTool(const app::ToolSpec& t) {
   const char* what = "an accepted tool holds finite numbers only";
   for (const double v : {t.diameter_mm, t.helix_deg}) requireFinite(v, what);
-  for (const auto& v : {t.Kt_N_mm2, t.Kr, t.radial_depth_mm, t.max_force_N, t.flute_length_mm, t.overall_length_mm,
-                        t.stickout_mm, t.corner_radius_mm})
+  for (const auto& v : {t.Kt_N_mm2, t.Kr, t.Kte_N_mm, t.Kre_N_mm, t.Ka_N_mm2, t.Kae_N_mm, t.radial_depth_mm,
+                        t.max_force_N, t.flute_length_mm, t.overall_length_mm, t.stickout_mm, t.corner_radius_mm})
     if (v) requireFinite(*v, what);
   for (const app::CuttingPresetSpec& p : t.cutting_data)
     for (const auto& v :

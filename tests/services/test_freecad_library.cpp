@@ -474,6 +474,10 @@ class TestFreecadLibrary : public QObject {
     endmill.helix_deg = 35.0;
     endmill.stickout_mm = 28.0;
     endmill.corner_radius_mm = 0.5;  // an endmill bit has no corner radius: carried
+    endmill.Kte_N_mm = 18.5;         // the edge and axial overrides of the material
+    endmill.Kre_N_mm = 0.1 + 0.2;
+    endmill.Ka_N_mm2 = 1e5;
+    endmill.Kae_N_mm = 0.0;
     const app::FreeCadExport files = app::writeFreeCadLibrary(tools, "Shop");
     const QJsonObject attributes = bitJson(files, "Bit/6mm_Endmill.fctb").value("attribute").toObject();
     const QJsonObject payload = QJsonDocument::fromJson(attributes.value("MillExpert").toString().toUtf8()).object();
@@ -482,7 +486,17 @@ class TestFreecadLibrary : public QObject {
     QCOMPARE(payload.value("corner_radius_mm").toDouble(), 0.5);
     QCOMPARE(payload.value("modes_x").toArray().size(), 1);
     QVERIFY(!payload.contains("teeth"));  // the bit's Flutes says it
+    QCOMPARE(payload.value("Kte_N_mm").toDouble(), 18.5);
+    QCOMPARE(payload.value("Kre_N_mm").toDouble(), 0.1 + 0.2);
+    QCOMPARE(payload.value("Ka_N_mm2").toDouble(), 1e5);
+    QCOMPARE(payload.value("Kae_N_mm").toDouble(-1.0), 0.0);
     QVERIFY(test::sameTools(reimport(files).tools, tools));
+    const app::ImportedLibrary again = reimport(files);
+    const ToolSpec& back = toolNamed(again.tools, "T1");
+    QCOMPARE(back.Kte_N_mm, endmill.Kte_N_mm);
+    QCOMPARE(back.Kre_N_mm, endmill.Kre_N_mm);
+    QCOMPARE(back.Ka_N_mm2, endmill.Ka_N_mm2);
+    QCOMPARE(back.Kae_N_mm, endmill.Kae_N_mm);
   }
 
   void newToolsGetFreshBits() {

@@ -368,6 +368,46 @@ class TestFusionLibrary : public QObject {
     QCOMPARE(mx::app::readFusionLibrary(again, "lib.json").tools.at(0), back);
   }
 
+  // The per-tool edge and axial coefficients travel in the millexpert key, in both containers, and an
+  // imported Fusion tool keeps them through a second export.
+  void edgeAndAxialOverridesTravelWithTheTool_data() {
+    QTest::addColumn<FusionContainer>("container");
+    QTest::newRow("JSON") << FusionContainer::Json;
+    QTest::newRow(".tools") << FusionContainer::Zipped;
+  }
+  void edgeAndAxialOverridesTravelWithTheTool() {
+    QFETCH(FusionContainer, container);
+    ToolSpec tool;
+    tool.id = "T5";
+    tool.teeth = 3;
+    tool.diameter_mm = 10.0;
+    tool.Kt_N_mm2 = 1500.0;
+    tool.Kte_N_mm = 18.5;
+    tool.Kre_N_mm = 0.1 + 0.2;
+    tool.Ka_N_mm2 = 1e5;
+    tool.Kae_N_mm = 0.0;
+    tool.modes_x = {{900.0, 2.0, 5.0, {}}};
+    const QByteArray bytes = mx::app::writeFusionLibrary({tool}, container);
+    const QByteArray json = mx::app::looksLikeZip(bytes) ? mx::app::readSingleJsonEntry(bytes) : bytes;
+    const QJsonObject payload = dataOf(json).at(0).toObject().value(mx::app::kFusionPayloadKey).toObject();
+    for (const char* key : {"Kte_N_mm", "Kre_N_mm", "Ka_N_mm2", "Kae_N_mm"}) QVERIFY2(payload.contains(key), key);
+    const ToolSpec back = mx::app::readFusionLibrary(bytes, "lib.tools").tools.at(0);
+    QCOMPARE(back.Kte_N_mm, tool.Kte_N_mm);
+    QCOMPARE(back.Kre_N_mm, tool.Kre_N_mm);
+    QCOMPARE(back.Ka_N_mm2, tool.Ka_N_mm2);
+    QCOMPARE(back.Kae_N_mm, tool.Kae_N_mm);
+    QCOMPARE(back.modes_x, tool.modes_x);
+    QCOMPARE(mx::app::writeFusionLibrary({back}, container), bytes);
+
+    // An imported Fusion tool (with its origin record) given the overrides keeps them too.
+    ToolSpec imported = read("metric.json").tools.at(0);
+    imported.Kte_N_mm = 7.0;
+    imported.Kae_N_mm = 1e4;
+    const ToolSpec again =
+        mx::app::readFusionLibrary(mx::app::writeFusionLibrary({imported}, container), "lib.tools").tools.at(0);
+    QCOMPARE(again, imported);
+  }
+
   void aToolFromAnotherFormatIsANewRecord() {
     ToolSpec tool = read("metric.json").tools.at(1);
     tool.origin = mx::app::ToolOriginSpec{"linuxcnc", QJsonObject{{"T", 4}, {"comment", "bull nose"}}};

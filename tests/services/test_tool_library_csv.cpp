@@ -39,6 +39,29 @@ const QByteArray kGeometryHeader =
     "tool_id,teeth,diameter_mm,helix_deg,pitch_deg,runout_um,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,damping_pct,"
     "stiffness_N_per_um\n";
 
+// With the optional edge and axial coefficient columns: Kte_N_mm is column 7 ... Kae_N_mm column 10.
+const QByteArray kCoefficientHeader =
+    "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,Kte_N_mm,Kre_N_mm,Ka_N_mm2,Kae_N_mm,radial_depth_mm,axis,freq_Hz,"
+    "damping_pct,stiffness_N_per_um\n";
+
+// A tool overriding all four edge and axial coefficients of the material.
+ToolSpec coefficientTool() {
+  ToolSpec t;
+  t.id = "K4";
+  t.teeth = 3;
+  t.diameter_mm = 12.0;
+  t.helix_deg = 35.0;
+  t.Kt_N_mm2 = 1800.0;
+  t.Kr = 0.35;
+  t.Kte_N_mm = 24.5;
+  t.Kre_N_mm = 0.1 + 0.2;  // shortest round-trip text, no rounding
+  t.Ka_N_mm2 = 1e5;        // the upper bounds are allowed
+  t.Kae_N_mm = 0.0;        // and so is 0: an override to no axial edge force, not "the material's"
+  t.modes_x = {{900.0, 2.0, 5.0, {}}, {1800.0, 1.5, 20.0, {}}};
+  t.modes_y = {{950.0, 2.2, 5.5, {}}};
+  return t;
+}
+
 // The window's and the CLI's import: the whole file read, then merged; "" or the reason.
 QString importInto(const Project& base, const QString& path, ToolLibraryFormat format, bool replace, Project& merged) {
   try {
@@ -171,6 +194,110 @@ class TestToolLibraryCsv : public QObject {
     QCOMPARE(back.tools[1].runout_um->at(0), 0.1 + 0.2);
   }
 
+  // Kte_N_mm, Kre_N_mm, Ka_N_mm2, Kae_N_mm: optional columns right after Kr, each written when some tool
+  // overrides that coefficient; export -> import is exact, on every row of a tool.
+  void edgeAndAxialColumnsRoundTrip() {
+    std::vector<ToolSpec> tools = rubio().tools;
+    tools.push_back(coefficientTool());
+    const QByteArray csv = ToolLibraryCsv::toCsv(tools);
+    QVERIFY2(csv.startsWith("tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,Kte_N_mm,Kre_N_mm,Ka_N_mm2,Kae_N_mm,"
+                            "radial_depth_mm,max_force_N,axis,freq_Hz,damping_pct,stiffness_N_per_um\n"),
+             csv.constData());
+    QVERIFY2(csv.contains("\nK4,3,12,35,1800,0.35,24.5,0.30000000000000004,1e+05,0,,,y,950,2.2,5.5\n"),
+             csv.constData());
+    const auto back = ToolLibraryCsv::fromCsv(csv);
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(back.tools.size(), tools.size());
+    QCOMPARE(back.tools.back(), coefficientTool());
+    QVERIFY(!back.tools.front().Kte_N_mm && !back.tools.front().Ka_N_mm2);  // blank: the material's
+    QCOMPARE(toolsJson(back.tools), toolsJson(tools));
+    QCOMPARE(ToolLibraryCsv::toCsv(back.tools), csv);
+
+    // Only the coefficients some tool overrides get a column.
+    ToolSpec axial = rubio().tools.at(0);
+    axial.Ka_N_mm2 = 350.0;
+    const QByteArray only = ToolLibraryCsv::toCsv({axial});
+    QVERIFY2(only.startsWith("tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,Ka_N_mm2,radial_depth_mm,"),
+             only.constData());
+    QVERIFY(!only.contains("Kte_N_mm") && !only.contains("Kre_N_mm") && !only.contains("Kae_N_mm"));
+    const auto onlyBack = ToolLibraryCsv::fromCsv(only);
+    QVERIFY2(onlyBack.ok(), qPrintable(onlyBack.error));
+    QCOMPARE(onlyBack.tools.at(0), axial);
+  }
+
+  // A library without any override is written exactly as before the columns existed.
+  void withoutOverridesTheExportIsUnchanged() {
+    QByteArray text;
+    QVERIFY(ToolLibraryCsv::readFile(MX_TEST_DATA_DIR "/library/tools.csv", text).isEmpty());
+    const auto file = ToolLibraryCsv::fromCsv(text);
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    std::vector<ToolSpec> tools = file.tools;
+    ToolSpec rigid;
+    rigid.id = "Rigid";
+    rigid.teeth = 2;
+    rigid.diameter_mm = 8.0;
+    rigid.max_force_N = 450.0;
+    tools.push_back(rigid);
+    QCOMPARE(ToolLibraryCsv::toCsv(tools),
+             QByteArray("tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,max_force_N,axis,freq_Hz,"
+                        "damping_pct,stiffness_N_per_um\n"
+                        "E16,4,16,30,,0.25,,,x,720,2.5,4.2\n"
+                        "E16,4,16,30,,0.25,,,x,1450,1.2,12\n"
+                        "E16,4,16,30,,0.25,,,y,735,2.4,4.4\n"
+                        "\"Ball, 10 mm\",2,10,0,750,,5,,x,1100,1.8,2.1\n"
+                        "Rigid-Y,3,20,0,,,,,x,900,2,3\n"
+                        "Rigid,2,8,0,,,,450,,,,\n"));
+    QCOMPARE(ToolLibraryCsv::toCsv({}), QByteArray("tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,"
+                                                   "max_force_N,axis,freq_Hz,damping_pct,stiffness_N_per_um\n"));
+  }
+
+  // A library written before the columns existed reads: the tools take the material's coefficients.
+  void oldHeaderWithoutCoefficientColumnsReads_data() {
+    QTest::addColumn<QByteArray>("csv");
+    QTest::newRow("first layout") << kHeader + "A,2,10,0,700,0.3,,x,1000,2,10\n";
+    QTest::newRow("with pitch and runout") << kGeometryHeader + "A,2,10,0,,,700,0.3,,x,1000,2,10\n";
+    QTest::newRow("with max_force_N") << QByteArray(
+        "tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,"
+        "max_force_N,axis,freq_Hz,damping_pct,stiffness_N_per_um\n"
+        "A,2,10,0,700,0.3,,450,x,1000,2,10\n");
+  }
+  void oldHeaderWithoutCoefficientColumnsReads() {
+    QFETCH(QByteArray, csv);
+    const auto file = ToolLibraryCsv::fromCsv(csv);
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    const ToolSpec& t = file.tools.at(0);
+    QCOMPARE(t.Kt_N_mm2, std::optional(700.0));
+    QCOMPARE(t.Kr, std::optional(0.3));
+    QVERIFY(!t.Kte_N_mm && !t.Kre_N_mm && !t.Ka_N_mm2 && !t.Kae_N_mm);
+    const QByteArray back = ToolLibraryCsv::toCsv(file.tools);  // and none is written back
+    for (const char* column : {"Kte_N_mm", "Kre_N_mm", "Ka_N_mm2", "Kae_N_mm"})
+      QVERIFY2(!back.contains(column), column);
+  }
+
+  // The bounds are accepted: edge forces in [0, 1e4] N/mm, the axial coefficient in [0, 1e5] N/mm^2.
+  void coefficientEdgeValuesAreAccepted_data() {
+    QTest::addColumn<QByteArray>("cells");  // Kte_N_mm,Kre_N_mm,Ka_N_mm2,Kae_N_mm
+    QTest::addColumn<QList<double>>("values");
+    const double blank = -1.0;
+    QTest::newRow("zeros") << QByteArray("0,0,0,0") << QList<double>{0, 0, 0, 0};
+    QTest::newRow("upper bounds") << QByteArray("10000,1e4,100000,1E4") << QList<double>{1e4, 1e4, 1e5, 1e4};
+    QTest::newRow("blank") << QByteArray(",,,") << QList<double>{blank, blank, blank, blank};
+    QTest::newRow("some") << QByteArray(" 12.5 ,,1e-300,") << QList<double>{12.5, blank, 1e-300, blank};
+  }
+  void coefficientEdgeValuesAreAccepted() {
+    QFETCH(QByteArray, cells);
+    QFETCH(QList<double>, values);
+    const auto file = ToolLibraryCsv::fromCsv(kCoefficientHeader + "A,2,10,0,,," + cells + ",,x,1000,2,10\n" +
+                                              "A,,,,,," + cells + ",,y,1000,2,10\n");  // repeated: the same
+    QVERIFY2(file.ok(), qPrintable(file.error));
+    const ToolSpec& t = file.tools.at(0);
+    const std::optional<double> read[] = {t.Kte_N_mm, t.Kre_N_mm, t.Ka_N_mm2, t.Kae_N_mm};
+    for (int i = 0; i < 4; ++i) QCOMPARE(read[i], values[i] < 0 ? std::nullopt : std::optional<double>(values[i]));
+    const auto back = ToolLibraryCsv::fromCsv(ToolLibraryCsv::toCsv(file.tools));
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(back.tools, file.tools);
+  }
+
   void exportImportRoundTrip() {
     QTemporaryDir dir;
     const Project p = rubio();
@@ -273,16 +400,53 @@ class TestToolLibraryCsv : public QObject {
                                              "q,A,2,10,0,,,,1000,2,10\n")
                                       << true << "line 2, column 1 (axis): 'q' must be x or y";
   }
+  void badCoefficientNamesTheCell_data() {
+    QTest::addColumn<QByteArray>("csv");
+    QTest::addColumn<bool>("replace");
+    QTest::addColumn<QString>("message");
+    const QByteArray h = kCoefficientHeader;
+    QTest::newRow("Kte negative") << h + "A,2,10,0,,,-1,,,,,x,1000,2,10\n"
+                                  << true << "line 2, column 7 (Kte_N_mm): '-1' must be in [0, 10000]";
+    QTest::newRow("Kre above 1e4") << h + "A,2,10,0,,,,10000.001,,,,x,1000,2,10\n"
+                                   << false << "line 2, column 8 (Kre_N_mm): '10000.001' must be in [0, 10000]";
+    QTest::newRow("Ka above 1e5") << h + "A,2,10,0,,,,,100000.01,,,x,1000,2,10\n"
+                                  << true << "line 2, column 9 (Ka_N_mm2): '100000.01' must be in [0, 1e+05]";
+    QTest::newRow("Ka negative zero-ish") << h + "A,2,10,0,,,,,-1e-300,,,x,1000,2,10\n"
+                                          << true << "line 2, column 9 (Ka_N_mm2): '-1e-300' must be in [0, 1e+05]";
+    QTest::newRow("Kae above 1e4") << h + "A,2,10,0,,,,,,2e4,,x,1000,2,10\n"
+                                   << true << "line 2, column 10 (Kae_N_mm): '2e4' must be in [0, 10000]";
+    QTest::newRow("Kae not a number") << h + "A,2,10,0,,,,,,12 N,,x,1000,2,10\n"
+                                      << true
+                                      << "line 2, column 10 (Kae_N_mm): '12 N' is not a number (number in [0, 10000])";
+    QTest::newRow("Kte infinite") << h + "A,2,10,0,,,inf,,,,,x,1000,2,10\n"
+                                  << true << "line 2, column 7 (Kte_N_mm): 'inf' must be a finite number in [0, 10000]";
+    QTest::newRow("Kre continuation differs")
+        << h + "A,2,10,0,,,,5,,,,x,1000,2,10\nA,,,,,,,6,,,,y,1000,2,10\n"
+        << true << "line 3, column 8 (Kre_N_mm): '6' differs from the tool's first row (line 2, '5')";
+    QTest::newRow("Ka on a continuation only")
+        << h + "A,2,10,0,,,,,,,,x,1000,2,10\nA,,,,,,,,300,,,y,1000,2,10\n"
+        << true << "line 3, column 9 (Ka_N_mm2): '300' differs from the tool's first row (line 2, '')";
+    QTest::newRow("reordered header")
+        << QByteArray(
+               "Kae_N_mm,tool_id,teeth,diameter_mm,helix_deg,Kt_N_mm2,Kr,radial_depth_mm,axis,freq_Hz,"
+               "damping_pct,stiffness_N_per_um\n"
+               "-5,A,2,10,0,,,,x,1000,2,10\n")
+        << true << "line 2, column 1 (Kae_N_mm): '-5' must be in [0, 10000]";
+    QTest::newRow("column given twice") << QByteArray("tool_id,Ka_N_mm2,Ka_N_mm2\n") << true
+                                        << "line 1, column 3: column 'Ka_N_mm2' given twice";
+  }
+  void badCoefficientNamesTheCell() {
+    QFETCH(QByteArray, csv);
+    QFETCH(bool, replace);
+    QFETCH(QString, message);
+    refusedImportChangesNothing(csv, replace, message);
+  }
+
   void badRowChangesNothing() {
     QFETCH(QByteArray, csv);
     QFETCH(bool, replace);
     QFETCH(QString, message);
-    QTemporaryDir dir;
-    const QString path = writeText(dir, "bad.csv", csv);
-    Project merged;
-    const QString error = importInto(rubio(), path, ToolLibraryFormat::Csv, replace, merged);
-    QVERIFY2(error.startsWith("bad.csv: " + message), qPrintable(error));
-    QVERIFY(merged.tools.empty());  // nothing merged
+    refusedImportChangesNothing(csv, replace, message);
   }
 
   // A row that is fine alone but not in this project (the operation's radial depth exceeds its D).
@@ -310,6 +474,31 @@ class TestToolLibraryCsv : public QObject {
     QCOMPARE(toolsJson(edited.tools), toolsJson(p.tools));
   }
 
+  // The JSON library (a project's tools) keeps the four overrides, through a file as well.
+  void jsonKeepsEdgeAndAxialOverrides() {
+    const auto back = ToolLibraryCsv::fromJson(ToolLibraryCsv::toJson({coefficientTool()}));
+    QVERIFY2(back.ok(), qPrintable(back.error));
+    QCOMPARE(back.tools.size(), std::size_t{1});
+    QCOMPARE(back.tools.at(0), coefficientTool());
+    QCOMPARE(ToolLibraryCsv::toJson(back.tools), ToolLibraryCsv::toJson({coefficientTool()}));
+
+    QTemporaryDir dir;
+    Project p = rubio();
+    p.tools.push_back(coefficientTool());
+    const QString path = dir.filePath("lib.json");
+    QCOMPARE(exportTo(p, path, ToolLibraryFormat::Json), QString());
+    Project edited;
+    QCOMPARE(importInto(p, path, ToolLibraryFormat::Json, true, edited), QString());
+    QCOMPARE(edited.tools.back(), coefficientTool());
+    QCOMPARE(toolsJson(edited.tools), toolsJson(p.tools));
+    // And the CSV file path the same way.
+    const QString csv = dir.filePath("lib.csv");
+    QCOMPARE(exportTo(p, csv, ToolLibraryFormat::Csv), QString());
+    Project fromCsv;
+    QCOMPARE(importInto(p, csv, ToolLibraryFormat::Csv, true, fromCsv), QString());
+    QCOMPARE(toolsJson(fromCsv.tools), toolsJson(p.tools));
+  }
+
   // An empty library exports a "tools" array, so that it imports again (as an empty library).
   void emptyLibraryJsonRoundTrip() {
     const QByteArray json = ToolLibraryCsv::toJson({});
@@ -329,6 +518,15 @@ class TestToolLibraryCsv : public QObject {
     QTest::newRow("no tools") << QString() << QByteArray(R"({"name":"x"})")
                               << "tools: missing (required array of tools)";
     QTest::newRow("syntax") << QString() << QByteArray("{ \"tools\": [ ") << "JSON syntax error at offset";
+    const QByteArray tool = R"([{"id":"A","teeth":2,"diameter_mm":10,"helix_deg":0,"modes_x":[],"modes_y":[],)";
+    QTest::newRow("Kte negative") << QString() << tool + R"("Kte_N_mm":-1}])"
+                                  << "tools[0].Kte_N_mm = -1: must be in [0, 10000]";
+    QTest::newRow("Kre above 1e4") << QString() << tool + R"("Kre_N_mm":10001}])"
+                                   << "tools[0].Kre_N_mm = 10001: must be in [0, 10000]";
+    QTest::newRow("Ka above 1e5") << QString() << tool + R"("Ka_N_mm2":100001}])"
+                                  << "tools[0].Ka_N_mm2 = 100001: must be in [0, 1e+05]";
+    QTest::newRow("Kae text") << QString() << tool + R"("Kae_N_mm":"3"}])"
+                              << "tools[0].Kae_N_mm: expected";
   }
   void badJsonNamesTheFieldPath() {
     QFETCH(QString, path);
@@ -384,6 +582,17 @@ class TestToolLibraryCsv : public QObject {
       QCOMPARE(error, path + ": cannot write (" + written + ")");
       QVERIFY(!QFileInfo(path).isFile() || kind == "/dev/null");
     }
+  }
+
+ private:
+  // An import of `csv` is refused with `message` (after the file's name) and merges nothing.
+  static void refusedImportChangesNothing(const QByteArray& csv, bool replace, const QString& message) {
+    QTemporaryDir dir;
+    const QString path = writeText(dir, "bad.csv", csv);
+    Project merged;
+    const QString error = importInto(rubio(), path, ToolLibraryFormat::Csv, replace, merged);
+    QVERIFY2(error.startsWith("bad.csv: " + message), qPrintable(error));
+    QVERIFY(merged.tools.empty());  // nothing merged
   }
 };
 

@@ -31,6 +31,16 @@ ToolSpec dynamicTool() {
   return t;
 }
 
+// dynamicTool() overriding the material's edge and axial coefficients as well.
+ToolSpec coefficientTool() {
+  ToolSpec t = dynamicTool();
+  t.Kte_N_mm = 24.5;
+  t.Kre_N_mm = 0.1 + 0.2;
+  t.Ka_N_mm2 = 1e5;
+  t.Kae_N_mm = 0.0;
+  return t;
+}
+
 // What a CAM format gives for the same tool: geometry, no dynamics.
 ToolSpec mappedTool() {
   ToolSpec t;
@@ -59,6 +69,52 @@ class TestToolLibraryIo : public QObject {
     QCOMPARE(payload.keys(), QStringList({"Kr", "Kt_N_mm2", "helix_deg", "max_force_N", "modes_x", "modes_y",
                                           "pitch_deg", "radial_depth_mm", "runout_um"}));
     QCOMPARE(payload.value("modes_x").toArray().size(), 2);
+  }
+
+  // The edge and axial overrides are MillExpert's data: carried, and given back exactly.
+  void payloadCarriesEdgeAndAxialOverrides() {
+    const QJsonObject payload = dynamicsPayload(coefficientTool());
+    QCOMPARE(payload.keys(),
+             QStringList({"Ka_N_mm2", "Kae_N_mm", "Kr", "Kre_N_mm", "Kt_N_mm2", "Kte_N_mm", "helix_deg", "max_force_N",
+                          "modes_x", "modes_y", "pitch_deg", "radial_depth_mm", "runout_um"}));
+    QCOMPARE(payload.value("Kae_N_mm").toDouble(-1.0), 0.0);  // an override of 0 is carried, not dropped
+    QCOMPARE(withPayload(mappedTool(), payload, "lib.tbl"), coefficientTool());
+    // Through the side file (LinuxCNC) as well.
+    const std::map<QString, QJsonObject> side =
+        readSideFile(writeSideFile({coefficientTool()}), "tool.millexpert.json");
+    QCOMPARE(withPayload(mappedTool(), side.at("T7"), "tool.tbl"), coefficientTool());
+  }
+
+  // The bounds are accepted from a payload: edge forces in [0, 1e4] N/mm, the axial coefficient in [0, 1e5].
+  void payloadCoefficientBounds_data() {
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("message");  // "" = accepted
+    for (const char* key : {"Kte_N_mm", "Kre_N_mm", "Kae_N_mm"}) {
+      QTest::addRow("%s 0", key) << key << 0.0 << QString();
+      QTest::addRow("%s 1e4", key) << key << 1e4 << QString();
+      QTest::addRow("%s above 1e4", key)
+          << key << 10000.5 << QString("tool.tbl: tool 'T7': %1 = 10000.5: must be in [0, 10000]").arg(key);
+      QTest::addRow("%s negative", key) << key << -0.5
+                                        << QString("tool.tbl: tool 'T7': %1 = -0.5: must be in [0, 10000]").arg(key);
+    }
+    QTest::newRow("Ka_N_mm2 0") << "Ka_N_mm2" << 0.0 << QString();
+    QTest::newRow("Ka_N_mm2 1e5") << "Ka_N_mm2" << 1e5 << QString();
+    QTest::newRow("Ka_N_mm2 above 1e5") << "Ka_N_mm2" << 100000.5
+                                        << "tool.tbl: tool 'T7': Ka_N_mm2 = 100000.5: must be in [0, 1e+05]";
+    QTest::newRow("Ka_N_mm2 negative") << "Ka_N_mm2" << -1.0
+                                       << "tool.tbl: tool 'T7': Ka_N_mm2 = -1: must be in [0, 1e+05]";
+  }
+  void payloadCoefficientBounds() {
+    QFETCH(QString, key);
+    QFETCH(double, value);
+    QFETCH(QString, message);
+    ToolSpec back;
+    const QString error = errorOf([&] {
+      back = withPayload(mappedTool(), QJsonObject{{key, value}}, "/shop/tool.tbl");
+    });
+    QCOMPARE(error, message);
+    if (message.isEmpty()) QCOMPARE(toolToJson(back).value(key).toDouble(-1.0), value);
   }
 
   // The carried data and the format's geometry give back the whole tool.
@@ -95,6 +151,8 @@ class TestToolLibraryIo : public QObject {
                                      << "tool.tbl: tool 'T7': pitch_deg";
     QTest::newRow("wrong type") << QJsonObject{{"Kt_N_mm2", "hard"}}
                                 << "tool.tbl: tool 'T7': Kt_N_mm2: expected a number";
+    QTest::newRow("edge force type") << QJsonObject{{"Kte_N_mm", "high"}}
+                                     << "tool.tbl: tool 'T7': Kte_N_mm: expected a number";
   }
   void badPayloadNamesFileToolAndField() {
     QFETCH(QJsonObject, payload);

@@ -5,6 +5,8 @@
 #include <QRegularExpression>
 #include <QSet>
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 #include "core/invalid_input.h"
 #include "document/input_files.h"
@@ -28,6 +30,10 @@ enum Col {
   kRunout,
   kKt,
   kKr,
+  kKte,
+  kKre,
+  kKa,
+  kKae,
   kRadial,
   kMaxForce,
   kAxis,
@@ -39,8 +45,19 @@ enum Col {
 
 // Columns a header may leave out (a library written before they existed); their cells read as blank.
 bool optionalColumn(int col) {
-  return col == kMaxForce || col == kPitch || col == kRunout;
+  return col == kMaxForce || col == kPitch || col == kRunout || col == kKte || col == kKre || col == kKa || col == kKae;
 }
+
+// The per-tool overrides of the material's edge and axial coefficients: their columns and fields.
+struct CoefficientColumn {
+  Col col;
+  std::optional<double> ToolSpec::*field;
+  const NumberRule* rule;
+};
+const CoefficientColumn kCoefficientColumns[] = {{kKte, &ToolSpec::Kte_N_mm, &rules::kEdgeForceNmm},
+                                                 {kKre, &ToolSpec::Kre_N_mm, &rules::kEdgeForceNmm},
+                                                 {kKa, &ToolSpec::Ka_N_mm2, &rules::kAxialPressureNmm2},
+                                                 {kKae, &ToolSpec::Kae_N_mm, &rules::kEdgeForceNmm}};
 
 // Splits one CSV line (RFC 4180 quoting, no line breaks inside a field). Cells are trimmed unless quoted.
 bool splitCsvLine(const QString& line, QStringList& cells) {
@@ -136,7 +153,7 @@ class CsvReader {
       if (!required(kTeeth, rules::kTeeth, teeth) || !required(kDiameter, rules::kDiameterMm, tool.diameter_mm) ||
           !required(kHelix, rules::kHelixDeg, tool.helix_deg) ||
           !optional(kKt, rules::kCuttingPressureNmm2, tool.Kt_N_mm2) || !optional(kKr, rules::kForceRatio, tool.Kr) ||
-          !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm) ||
+          !coefficients(tool) || !optional(kRadial, rules::radialDepth(tool.diameter_mm), tool.radial_depth_mm) ||
           !optional(kMaxForce, rules::kToolForceN, tool.max_force_N))
         return false;
       tool.teeth = static_cast<int>(teeth);
@@ -181,6 +198,11 @@ class CsvReader {
     value = v;
     return true;
   }
+  bool coefficients(ToolSpec& tool) {
+    for (const CoefficientColumn& c : kCoefficientColumns)
+      if (!optional(c.col, *c.rule, tool.*c.field)) return false;
+    return true;
+  }
   // A ';'-separated list of numbers; a blank cell is no list (uniform pitch, no runout).
   bool toothList(int col, std::optional<std::vector<double>>& values) {
     if (cell(col).isEmpty()) return true;
@@ -214,9 +236,17 @@ class CsvReader {
                             .arg(firstLine_.value(t.id))
                             .arg(first ? toothListText(*first) : QString()));
     }
-    const std::pair<int, std::optional<double>> fields[] = {
-        {kTeeth, double(t.teeth)},    {kDiameter, t.diameter_mm}, {kHelix, t.helix_deg}, {kKt, t.Kt_N_mm2}, {kKr, t.Kr},
-        {kRadial, t.radial_depth_mm}, {kMaxForce, t.max_force_N}};
+    const std::pair<int, std::optional<double>> fields[] = {{kTeeth, double(t.teeth)},
+                                                            {kDiameter, t.diameter_mm},
+                                                            {kHelix, t.helix_deg},
+                                                            {kKt, t.Kt_N_mm2},
+                                                            {kKr, t.Kr},
+                                                            {kKte, t.Kte_N_mm},
+                                                            {kKre, t.Kre_N_mm},
+                                                            {kKa, t.Ka_N_mm2},
+                                                            {kKae, t.Kae_N_mm},
+                                                            {kRadial, t.radial_depth_mm},
+                                                            {kMaxForce, t.max_force_N}};
     for (const auto& [col, first] : fields) {
       if (cell(col).isEmpty()) continue;
       bool ok = false;
@@ -262,28 +292,43 @@ class CsvReader {
 }  // namespace
 
 const QStringList& ToolLibraryCsv::columns() {
-  static const QStringList kColumns{"tool_id",   "teeth",    "diameter_mm", "helix_deg",         "pitch_deg",
-                                    "runout_um", "Kt_N_mm2", "Kr",          "radial_depth_mm",   "max_force_N",
-                                    "axis",      "freq_Hz",  "damping_pct", "stiffness_N_per_um"};
+  static const QStringList kColumns{
+      "tool_id",         "teeth",       "diameter_mm", "helix_deg", "pitch_deg",   "runout_um",
+      "Kt_N_mm2",        "Kr",          "Kte_N_mm",    "Kre_N_mm",  "Ka_N_mm2",    "Kae_N_mm",
+      "radial_depth_mm", "max_force_N", "axis",        "freq_Hz",   "damping_pct", "stiffness_N_per_um"};
   return kColumns;
 }
 
-// The pitch and runout columns are written when some tool has that list.
+// The pitch and runout columns are written when some tool has that list, each edge or axial coefficient
+// column when some tool overrides that coefficient: a library without them is written as before.
 QByteArray ToolLibraryCsv::toCsv(const std::vector<ToolSpec>& tools) {
   const auto opt = [](const std::optional<double>& v) { return v ? formatNumber(*v) : QString(); };
   const auto list = [](const std::optional<std::vector<double>>& v) { return v ? toothListText(*v) : QString(); };
-  const bool pitch = std::any_of(tools.begin(), tools.end(), [](const ToolSpec& t) { return t.pitch_deg; });
-  const bool runout = std::any_of(tools.begin(), tools.end(), [](const ToolSpec& t) { return t.runout_um; });
-  QStringList header = columns();
-  if (!runout) header.removeAt(kRunout);
-  if (!pitch) header.removeAt(kPitch);
+  const auto anyTool = [&](const auto& has) { return std::any_of(tools.begin(), tools.end(), has); };
+  const bool pitch = anyTool([](const ToolSpec& t) { return t.pitch_deg.has_value(); });
+  const bool runout = anyTool([](const ToolSpec& t) { return t.runout_um.has_value(); });
+  QList<int> omitted;
+  if (!pitch) omitted << kPitch;
+  if (!runout) omitted << kRunout;
+  std::vector<const CoefficientColumn*> coefficients;
+  for (const CoefficientColumn& c : kCoefficientColumns) {
+    if (anyTool([&](const ToolSpec& t) { return (t.*c.field).has_value(); }))
+      coefficients.push_back(&c);
+    else
+      omitted << c.col;
+  }
+  QStringList header;
+  for (int col = 0; col < kColumnCount; ++col)
+    if (!omitted.contains(col)) header << columns()[col];
   QStringList lines{header.join(',')};
   for (const ToolSpec& t : tools) {
     QStringList fields{quoteCsv(t.id), QString::number(t.teeth), formatNumber(t.diameter_mm),
                        formatNumber(t.helix_deg)};
     if (pitch) fields << list(t.pitch_deg);
     if (runout) fields << list(t.runout_um);
-    fields << opt(t.Kt_N_mm2) << opt(t.Kr) << opt(t.radial_depth_mm) << opt(t.max_force_N);
+    fields << opt(t.Kt_N_mm2) << opt(t.Kr);
+    for (const CoefficientColumn* c : coefficients) fields << opt(t.*(c->field));
+    fields << opt(t.radial_depth_mm) << opt(t.max_force_N);
     const QString head = fields.join(',');
     const auto mode = [&](const char* axis, const ModeSpec& m) {
       lines << QStringList{head, axis, formatNumber(m.freq_Hz), formatNumber(m.damping_pct),

@@ -18,8 +18,9 @@ constexpr auto kSideFileFormat = "millexpert-tool-dynamics";
 
 // Keys the payload always decides: no CAM format has them.
 const QStringList& ownedKeys() {
-  static const QStringList keys{"modes_x", "modes_y",         "frf_x",       "frf_y",     "Kt_N_mm2",
-                                "Kr",      "radial_depth_mm", "max_force_N", "pitch_deg", "runout_um"};
+  static const QStringList keys{"modes_x",   "modes_y",  "frf_x",    "frf_y",    "Kt_N_mm2",        "Kr",
+                                "Kte_N_mm",  "Kre_N_mm", "Ka_N_mm2", "Kae_N_mm", "radial_depth_mm", "max_force_N",
+                                "pitch_deg", "runout_um"};
   return keys;
 }
 
