@@ -1,6 +1,7 @@
 #include "supervisor_view.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -28,6 +29,8 @@ SupervisorView::SupervisorView(QWidget* parent)
       feed_hold_(new QPushButton(tr("Feed hold"), this)),
       chatter_(new QPushButton(tr("Chatter!"), this)),
       compare_(new QPushButton(tr("Compare none / SMC I / SMC II"), this)),
+      time_constant_(new QDoubleSpinBox(this)),
+      reset_feed_(new QComboBox(this)),
       status_(new QLabel(this)),
       metrics_(new QLabel(this)),
       tabs_(new QTabWidget(this)),
@@ -56,6 +59,7 @@ SupervisorView::SupervisorView(QWidget* parent)
   metrics_->setObjectName(QStringLiteral("supervisorMetrics"));
   metrics_->setWordWrap(true);
   metrics_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  setUpModelController();
 
   chart_->setFitToWidget(true);  // the whole chart beside the timeline; the editor tab shows it full size
   chart_scroll_->setWidget(chart_);
@@ -86,6 +90,8 @@ SupervisorView::SupervisorView(QWidget* parent)
   tabs_->addTab(run_tab, tr("Run"));
   tabs_->addTab(compare_tab, tr("Compare"));
   tabs_->addTab(editor_, tr("Edit chart"));
+  // Beside the tabs: the settings apply to Run and Compare alike and cost no height of the plots.
+  tabs_->setCornerWidget(buildModelControllerRow(), Qt::TopRightCorner);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
   layout->addWidget(buildToolbar());
@@ -100,6 +106,8 @@ SupervisorView::SupervisorView(QWidget* parent)
     emit feedHoldToggled(on);
   });
   connect(chatter_, &QPushButton::clicked, this, &SupervisorView::chatterSignalled);
+  connect(time_constant_, &QDoubleSpinBox::valueChanged, this, &SupervisorView::timeConstantEdited);
+  connect(reset_feed_, &QComboBox::currentIndexChanged, this, [this] { emit resetFeedEdited(resetFeed()); });
   connect(chart_, &GrafcetChartView::activeStepsChanged, this, [this] { followTokens(); });
   setControllers({QStringLiteral("none"), QStringLiteral("smc1"), QStringLiteral("smc2")});
   setRunning(false);
@@ -123,6 +131,52 @@ QWidget* SupervisorView::buildToolbar() {
   row->addWidget(chatter_);
   row->addSpacing(16);
   row->addWidget(status_, 1);
+  return bar;
+}
+
+// Module L (SMC I's model-based force controller): the limits are those of the project file.
+void SupervisorView::setUpModelController() {
+  time_constant_->setObjectName(QStringLiteral("supervisorTimeConstant"));
+  time_constant_->setRange(1.0, 1e5);
+  time_constant_->setDecimals(1);
+  time_constant_->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);  // a tenth of the decade: 1 ms at 50 ms
+  time_constant_->setKeyboardTracking(false);  // one edit per committed value, not per keystroke
+  time_constant_->setValue(200.0);
+  time_constant_->setToolTip(
+      tr("Closed-loop force time constant \u03c4 of SMC I's model-based force controller (module L, "
+         "supervisor.model_controller.time_constant_ms): after each contact F_Y approaches F_ref as a "
+         "first-order response with this time constant. Smaller settles faster; larger changes the feed "
+         "more gently. 1 to 100000 ms, default 200 ms."));
+  reset_feed_->setObjectName(QStringLiteral("supervisorResetFeed"));
+  reset_feed_->addItem(tr("from the force model"), QStringLiteral("model"));
+  reset_feed_->addItem(tr("from the current feed (bumpless)"), QStringLiteral("current"));
+  reset_feed_->setToolTip(
+      tr("Where SMC I's model-based force controller (module L) restarts at each contact "
+         "(supervisor.model_controller.reset_feed):\n"
+         "from the force model: the feed that gives F_ref at the pass depth in the inverse force model "
+         "(model, the default);\n"
+         "from the current feed (bumpless): the feed the axis is moving at (current)."));
+}
+
+QWidget* SupervisorView::buildModelControllerRow() {
+  auto* bar = new QWidget(this);
+  auto* row = new QHBoxLayout(bar);
+  row->setContentsMargins(0, 0, 0, 0);
+  auto* module = new QLabel(tr("Module L (SMC I):"), bar);
+  module->setToolTip(tr("SMC I's model-based force controller; the other controllers do not use it"));
+  row->addWidget(module);
+  row->addSpacing(8);
+  // The labels carry their field's tooltip and name it for screen readers.
+  const auto addField = [bar, row](const QString& text, QWidget* field) {
+    auto* label = new QLabel(text, bar);
+    label->setBuddy(field);
+    label->setToolTip(field->toolTip());
+    row->addWidget(label);
+    row->addWidget(field);
+  };
+  addField(tr("Force time constant \u03c4 [ms]:"), time_constant_);
+  row->addSpacing(16);
+  addField(tr("Restart at contact:"), reset_feed_);
   return bar;
 }
 
@@ -161,6 +215,8 @@ void SupervisorView::setRunning(bool running) {
   stop_->setEnabled(running);
   feed_hold_->setEnabled(running);
   chatter_->setEnabled(running);
+  time_constant_->setEnabled(!running);  // the running cycle keeps the settings it started with
+  reset_feed_->setEnabled(!running);
   if (!running && feed_hold_->isChecked()) {  // a finished run releases the hold without an event
     const QSignalBlocker block(feed_hold_);
     feed_hold_->setChecked(false);
@@ -207,6 +263,22 @@ bool SupervisorView::feedHoldOn() const {
 
 double SupervisorView::speedFactor() const {
   return speed_->currentData().toDouble();
+}
+
+void SupervisorView::setModelController(double time_constant_ms, const QString& reset_feed) {
+  const QSignalBlocker block_time(time_constant_);
+  const QSignalBlocker block_reset(reset_feed_);
+  time_constant_->setValue(time_constant_ms);
+  const int i = reset_feed_->findData(reset_feed);
+  if (i >= 0) reset_feed_->setCurrentIndex(i);
+}
+
+double SupervisorView::timeConstantMs() const {
+  return time_constant_->value();
+}
+
+QString SupervisorView::resetFeed() const {
+  return reset_feed_->currentData().toString();
 }
 
 }  // namespace mx::widgets

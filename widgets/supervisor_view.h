@@ -2,6 +2,8 @@
 // The supervisor dock (Landers & Ulsoy's supervisory machining control):
 //   toolbar: controller (none / SMC I / SMC II), Run, Stop, speed (1x, 5x, 20x, max), the operator's
 //            Feed hold (checkable) and Chatter buttons (enabled while running), status;
+//   beside the tabs: module L's force time constant tau [ms] and where it restarts at contact
+//            (supervisor.model_controller), disabled while running;
 //   "Run" tab: the Grafcet chart with its tokens (left, scrolled to follow the active steps) and the
 //            timeline of F_Y, power and module activity (right), the run's metrics line below;
 //   "Compare" tab: SupervisorComparison and a "Compare none / SMC I / SMC II" button;
@@ -16,6 +18,7 @@
 #include "supervision_data.h"
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QScrollArea;
@@ -47,6 +50,10 @@ class SupervisorView : public QWidget {
   void setStatus(const QString& text);
   bool feedHoldOn() const;
   double speedFactor() const;  // 1, 5, 20 or 0 (= as fast as possible)
+  // Module L's settings as the project gives them (defaults filled in); no signal.
+  void setModelController(double time_constant_ms, const QString& reset_feed);
+  double timeConstantMs() const;
+  QString resetFeed() const;  // "model" or "current"
 
   // Tests.
   QComboBox* controllerCombo() const { return controller_; }
@@ -56,6 +63,8 @@ class SupervisorView : public QWidget {
   QPushButton* feedHoldButton() const { return feed_hold_; }
   QPushButton* chatterButton() const { return chatter_; }
   QPushButton* compareButton() const { return compare_; }
+  QDoubleSpinBox* timeConstantSpin() const { return time_constant_; }
+  QComboBox* resetFeedCombo() const { return reset_feed_; }
   QTabWidget* tabs() const { return tabs_; }
   QString metricsText() const;
   QString statusText() const;
@@ -67,9 +76,14 @@ class SupervisorView : public QWidget {
   void compareRequested();
   void feedHoldToggled(bool on);  // operator feed hold button (checkable)
   void chatterSignalled();        // operator chatter button
+  // A committed change of module L's settings (Enter, focus out or a step; a combo choice).
+  void timeConstantEdited(double time_constant_ms);
+  void resetFeedEdited(const QString& reset_feed);  // "model" or "current"
 
  private:
   QWidget* buildToolbar();
+  QWidget* buildModelControllerRow();
+  void setUpModelController();
   void followTokens();
 
   QComboBox* controller_;
@@ -79,6 +93,8 @@ class SupervisorView : public QWidget {
   QPushButton* feed_hold_;
   QPushButton* chatter_;
   QPushButton* compare_;
+  QDoubleSpinBox* time_constant_;
+  QComboBox* reset_feed_;
   QLabel* status_;
   QLabel* metrics_;
   QTabWidget* tabs_;

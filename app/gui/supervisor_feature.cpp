@@ -3,6 +3,7 @@
 #include <QDockWidget>
 
 #include "document/project_grafcet_io.h"
+#include "document/project_validation.h"
 #include "feature_dock.h"
 #include "grafcet_chart_editor.h"
 #include "grafcet_chart_view.h"
@@ -47,6 +48,14 @@ void SupervisorFeature::connectView() {
   connect(view_, &widgets::SupervisorView::chatterSignalled, this,
           [this] { runner_->inject(OperatorEventType::ChatterSignal); });
   connect(view_, &widgets::SupervisorView::compareRequested, this, &SupervisorFeature::compare);
+  connect(view_, &widgets::SupervisorView::timeConstantEdited, this, [this](double ms) {
+    editModelController([ms](app::SupervisorModelControllerSpec& m) { m.time_constant_ms = ms; },
+                        tr("Set module L's force time constant \u03c4 to %1 ms").arg(ms));
+  });
+  connect(view_, &widgets::SupervisorView::resetFeedEdited, this, [this](const QString& name) {
+    editModelController([name](app::SupervisorModelControllerSpec& m) { m.reset_feed = name; },
+                        tr("Set module L's restart at contact to '%1'").arg(name));
+  });
   connect(view_->editor(), &widgets::GrafcetChartEditor::chartEdited, this,
           [this](const widgets::GrafcetChartData& d) { requestChartEdit(view_->controller(), engineChart(d)); });
 }
@@ -66,6 +75,32 @@ void SupervisorFeature::requestChartEdit(const QString& controller, const Grafce
   if (!spec) return;
   *spec = app::grafcetChartSpecWith(spec->value_or(app::GrafcetChartSpec{}), chart);
   emit editRequested(edited, tr("Edit the %1 chart").arg(controller), 0);
+}
+
+// The project's values, the engine's defaults for what the section leaves out.
+void SupervisorFeature::showModelController(const app::SupervisorSection& section) {
+  const SupervisionScenario defaults;
+  const app::SupervisorModelControllerSpec m = section.model_controller.value_or(app::SupervisorModelControllerSpec{});
+  view_->setModelController(m.time_constant_ms.value_or(defaults.force_time_constant_s * 1e3),
+                            m.reset_feed.value_or(QString::fromStdString(resetFeedName(defaults.force_reset_feed))));
+}
+
+// One undoable edit of supervisor.model_controller. A value the project's rules refuse is named with its
+// range (the document's message), changes nothing, and the view shows the project's values again.
+void SupervisorFeature::editModelController(const std::function<void(app::SupervisorModelControllerSpec&)>& change,
+                                            const QString& description) {
+  app::Project edited = document_.project();
+  if (!edited.supervisor) return;
+  std::optional<app::SupervisorModelControllerSpec>& spec = edited.supervisor->model_controller;
+  if (!spec) spec.emplace();
+  change(*spec);
+  const QString error = app::projectValidationError(edited);
+  if (!error.isEmpty()) {
+    emit errorRaised(description, error);
+    showModelController(*document_.project().supervisor);
+    return;
+  }
+  emit editRequested(edited, description, 0);
 }
 
 void SupervisorFeature::onChunk(const SupervisionChunk& c) {
@@ -128,6 +163,7 @@ void SupervisorFeature::refresh(const app::Project& p) {
     view_->setStatus(tr("This project has no \"supervisor\" section (docs/project-file.md)"));
     return;
   }
+  showModelController(*p.supervisor);
   try {
     request_ = app::supervisorRequestFromProject(p, view_->controller());
   } catch (const std::exception& e) {

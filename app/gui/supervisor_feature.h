@@ -4,8 +4,10 @@
 // project edit); a run streams F_Y, power, the active steps (tokens), module activity and events from
 // the engine thread, paced so that the operator's feed hold and chatter buttons act on it; Compare
 // runs none, SMC I and SMC II side by side. A shown run or comparison re-runs when its inputs change.
+// Module L's settings (supervisor.model_controller) are edited in the view, one undoable edit each.
 #include <QMainWindow>
 #include <QThreadPool>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -37,6 +39,8 @@ class SupervisorFeature : public WindowFeature {
   void compare();  // none, SMC I and SMC II side by side
   widgets::SupervisorView* view() const { return view_; }
   SupervisionRunner* runner() const { return runner_; }
+  // The scenario and chart of the view's controller, as the next run takes them; none when invalid.
+  const std::optional<app::SupervisorRequest>& request() const { return request_; }
 
  signals:
   void supervisionFinished();                        // a live run ended
@@ -50,6 +54,9 @@ class SupervisorFeature : public WindowFeature {
   void onFinished(const SupervisionOutcome& outcome);
   void onCompared(const SupervisionOutcome& outcome);
   void requestChartEdit(const QString& controller, const GrafcetChart& chart);
+  void showModelController(const app::SupervisorSection& section);
+  void editModelController(const std::function<void(app::SupervisorModelControllerSpec&)>& change,
+                           const QString& description);
 
   enum class Shown { None, Run, Comparison };
   const app::ProjectDocument& document_;

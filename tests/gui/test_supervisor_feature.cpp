@@ -1,14 +1,21 @@
 // The supervisor dock: the project's chart of the chosen controller is drawn; a live run
 // streams F_Y and tokens and ends with the metrics of the CLI's run; the operator's feed hold injected
 // during a paced run reaches the run as an operator event; Compare fills the three columns; a valid
-// chart edit is one undoable project edit, an invalid one is shown inline and changes nothing.
+// chart edit is one undoable project edit, an invalid one is shown inline and changes nothing; module L's
+// time constant and restart mode are shown from the project, each change is one undo step that the next
+// run takes, and a value out of range is refused with the document's message.
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTimer>
+#include <QUndoStack>
 
 #include "document/project.h"
 #include "grafcet_chart_editor.h"
@@ -33,6 +40,34 @@ bool openLanders(gui::MainWindow& w) {
 
 gui::SupervisorFeature* supervisor(const gui::MainWindow& w) {
   return w.findChild<gui::SupervisorFeature*>("supervisorFeature");
+}
+
+QJsonObject modelControllerOf(const gui::MainWindow& w) {
+  return app::projectToJson(*w.project()).value("supervisor").toObject().value("model_controller").toObject();
+}
+
+// The Landers project with supervisor.model_controller replaced (left out when empty), in `dir`.
+QString landersWith(const QTemporaryDir& dir, const QJsonObject& model_controller) {
+  QFile in(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
+  if (!in.open(QIODevice::ReadOnly)) return {};
+  QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+  QJsonObject section = root.value("supervisor").toObject();
+  section.remove("model_controller");
+  if (!model_controller.isEmpty()) section.insert("model_controller", model_controller);
+  root.insert("supervisor", section);
+  const QString path = dir.filePath("landers.mxproj");
+  QFile out(path);
+  if (!out.open(QIODevice::WriteOnly) || out.write(QJsonDocument(root).toJson()) < 0) return {};
+  return path;
+}
+
+// The settling time [s] of the first force transient of the next finished run (-1: never settled).
+double nextFirstSettling(QSignalSpy& finished) {
+  finished.clear();
+  if (!finished.wait(120000)) return -2.0;
+  const auto outcome = qvariant_cast<gui::SupervisionOutcome>(finished.at(0).at(0));
+  if (!outcome.result || outcome.result->metrics.force_transients.empty()) return -3.0;
+  return outcome.result->metrics.force_transients.front().settling_s;
 }
 }  // namespace
 
@@ -176,6 +211,118 @@ class TestSupervisorFeature : public QObject {
     editor->setChart(bad);
     QVERIFY(!editor->issues().isEmpty());
     QCOMPARE(name(), QString("No Contact and No Chatter"));
+  }
+
+  // Each change of module L's settings is one undo step; undo and redo bring the view and the request along.
+  void modelControllerEditsAreUndoSteps() {
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = supervisor(window)->view();
+    QCOMPARE(view->timeConstantMs(), 200.0);
+    QCOMPARE(view->resetFeed(), QString("model"));
+    QUndoStack* undo = window.document()->undoStack();
+    const int steps = undo->count();
+    view->timeConstantSpin()->setValue(50.0);  // a committed value (keyboard tracking is off)
+    QCOMPARE(undo->count(), steps + 1);
+    QCOMPARE(modelControllerOf(window).value("time_constant_ms").toDouble(), 50.0);
+    QCOMPARE(supervisor(window)->request()->scenario.force_time_constant_s, 0.05);
+    view->resetFeedCombo()->setCurrentIndex(view->resetFeedCombo()->findData("current"));
+    QCOMPARE(undo->count(), steps + 2);
+    QCOMPARE(modelControllerOf(window).value("reset_feed").toString(), QString("current"));
+    QCOMPARE(supervisor(window)->request()->scenario.force_reset_feed, ResetFeed::Current);
+
+    undo->undo();
+    QCOMPARE(modelControllerOf(window).value("reset_feed").toString(), QString("model"));
+    QCOMPARE(view->resetFeed(), QString("model"));
+    QCOMPARE(supervisor(window)->request()->scenario.force_reset_feed, ResetFeed::Model);
+    undo->undo();
+    QCOMPARE(modelControllerOf(window).value("time_constant_ms").toDouble(), 200.0);
+    QCOMPARE(view->timeConstantMs(), 200.0);
+    QCOMPARE(supervisor(window)->request()->scenario.force_time_constant_s, 0.2);
+    undo->redo();
+    QCOMPARE(view->timeConstantMs(), 50.0);
+  }
+
+  // The edges of [1, 1e5] ms are project edits; a value outside is refused with the document's message.
+  void timeConstantEdges_data() {
+    QTest::addColumn<double>("ms");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("1 ms") << 1.0 << QString();
+    QTest::newRow("100000 ms") << 1e5 << QString();
+    QTest::newRow("0.5 ms refused") << 0.5 << "supervisor.model_controller.time_constant_ms = 0.5: must be in [1, 1e5]";
+    QTest::newRow("100001 ms refused") << 100001.0
+                                       << "supervisor.model_controller.time_constant_ms = 100001: must be in [1, 1e5]";
+  }
+  void timeConstantEdges() {
+    QFETCH(double, ms);
+    QFETCH(QString, error);
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = supervisor(window)->view();
+    QSignalSpy errors(supervisor(window), &gui::SupervisorFeature::errorRaised);
+    const int steps = window.document()->undoStack()->count();
+    emit view->timeConstantEdited(ms);
+    if (error.isEmpty()) {
+      QCOMPARE(errors.count(), 0);
+      QCOMPARE(window.document()->undoStack()->count(), steps + 1);
+      QCOMPARE(modelControllerOf(window).value("time_constant_ms").toDouble(), ms);
+      QCOMPARE(supervisor(window)->request()->scenario.force_time_constant_s, ms * 1e-3);
+      return;
+    }
+    QCOMPARE(errors.count(), 1);
+    QCOMPARE(errors.at(0).at(1).toString(), error);
+    QCOMPARE(window.document()->undoStack()->count(), steps);
+    QCOMPARE(modelControllerOf(window).value("time_constant_ms").toDouble(), 200.0);
+    QCOMPARE(view->timeConstantMs(), 200.0);  // the view shows the project's value again
+  }
+
+  void unknownResetFeedIsRefused() {
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = supervisor(window)->view();
+    QSignalSpy errors(supervisor(window), &gui::SupervisorFeature::errorRaised);
+    emit view->resetFeedEdited("warm");
+    QCOMPARE(errors.count(), 1);
+    QCOMPARE(errors.at(0).at(1).toString(),
+             QString("supervisor.model_controller.reset_feed = 'warm': must be current or model"));
+    QCOMPARE(modelControllerOf(window).value("reset_feed").toString(), QString("model"));
+    QCOMPARE(view->resetFeed(), QString("model"));
+  }
+
+  // A project's values are shown; a section without model_controller shows the defaults.
+  void projectValuesAreShown() {
+    const QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    gui::MainWindow window;
+    window.setQuiet(true);
+    widgets::SupervisorView* view = supervisor(window)->view();
+    QVERIFY(window.openProject(landersWith(dir, {{"time_constant_ms", 350}, {"reset_feed", "current"}})));
+    QCOMPARE(view->timeConstantMs(), 350.0);
+    QCOMPARE(view->resetFeed(), QString("current"));
+    QCOMPARE(supervisor(window)->request()->scenario.force_time_constant_s, 0.35);
+    QCOMPARE(supervisor(window)->request()->scenario.force_reset_feed, ResetFeed::Current);
+    QVERIFY(window.openProject(landersWith(dir, {})));
+    QCOMPARE(view->timeConstantMs(), 200.0);
+    QCOMPARE(view->resetFeed(), QString("model"));
+  }
+
+  // The run takes the project's time constant: SMC I's force settles later after contact with a longer tau.
+  void timeConstantReachesTheRun() {
+    gui::MainWindow window;
+    QVERIFY(openLanders(window));
+    widgets::SupervisorView* view = supervisor(window)->view();
+    view->setController("smc1");
+    emit view->controllerChanged("smc1");
+    view->speedCombo()->setCurrentIndex(3);  // max
+    QSignalSpy finished(supervisor(window)->runner(), &gui::SupervisionRunner::finished);
+    view->timeConstantSpin()->setValue(50.0);
+    supervisor(window)->start();
+    const double fast = nextFirstSettling(finished);
+    view->timeConstantSpin()->setValue(400.0);  // the shown run re-runs with the edited project
+    const double slow = nextFirstSettling(finished);
+    qInfo("first force settling after contact: %.3f s at 50 ms, %.3f s at 400 ms", fast, slow);
+    QVERIFY(fast > 0.0);
+    QCOMPARE_GT(slow, 3.0 * fast);
   }
 };
 

@@ -1,7 +1,9 @@
 // SupervisorView: run / stop / compare, the operator's feed hold toggle and chatter button,
-// the controller combo (signal on user change only), the running state, speed, metrics and the tabs.
+// the controller combo (signal on user change only), the running state, speed, metrics and the tabs;
+// module L's time constant and restart mode (a signal per committed change, none from the setter).
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QImage>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -104,6 +106,58 @@ class TestSupervisorView : public QObject {
     QCOMPARE(view.speedFactor(), 20.0);
     view.speedCombo()->setCurrentIndex(3);
     QCOMPARE(view.speedFactor(), 0.0);
+  }
+
+  void modelControllerSettings() {
+    SupervisorView view;
+    QSignalSpy tau(&view, &SupervisorView::timeConstantEdited), reset(&view, &SupervisorView::resetFeedEdited);
+    QCOMPARE(view.timeConstantMs(), 200.0);  // the project file's defaults
+    QCOMPARE(view.resetFeed(), QStringLiteral("model"));
+    QCOMPARE(view.timeConstantSpin()->minimum(), 1.0);
+    QCOMPARE(view.timeConstantSpin()->maximum(), 1e5);
+    QVERIFY(!view.timeConstantSpin()->keyboardTracking());
+    QVERIFY(!view.timeConstantSpin()->toolTip().isEmpty() && !view.resetFeedCombo()->toolTip().isEmpty());
+    view.setModelController(350.0, "current");
+    QCOMPARE(view.timeConstantMs(), 350.0);
+    QCOMPARE(view.resetFeed(), QStringLiteral("current"));
+    QCOMPARE(view.resetFeedCombo()->currentText(), QStringLiteral("from the current feed (bumpless)"));
+    QCOMPARE(tau.count() + reset.count(), 0);
+    view.resetFeedCombo()->setCurrentIndex(0);  // as the user would
+    QCOMPARE(reset.count(), 1);
+    QCOMPARE(reset.at(0).at(0).toString(), QStringLiteral("model"));
+    view.timeConstantSpin()->stepUp();  // a step is a committed value
+    QCOMPARE(tau.count(), 1);
+    QCOMPARE(tau.at(0).at(0).toDouble(), 360.0);
+    view.setRunning(true);  // a running cycle keeps its settings
+    QVERIFY(!view.timeConstantSpin()->isEnabled() && !view.resetFeedCombo()->isEnabled());
+    view.setRunning(false);
+    QVERIFY(view.timeConstantSpin()->isEnabled() && view.resetFeedCombo()->isEnabled());
+  }
+
+  // Typed values count when committed (Enter): the edges of [1, 1e5] ms are taken, a value below is not.
+  void timeConstantTyped_data() {
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<bool>("committed");
+    QTest::addColumn<double>("shown");
+    QTest::newRow("1 ms") << "1" << true << 1.0;
+    QTest::newRow("100000 ms") << "100000" << true << 1e5;
+    QTest::newRow("0.5 ms refused") << "0.5" << false << 200.0;
+  }
+  void timeConstantTyped() {
+    QFETCH(QString, typed);
+    QFETCH(bool, committed);
+    QFETCH(double, shown);
+    SupervisorView view;
+    QSignalSpy tau(&view, &SupervisorView::timeConstantEdited);
+    QDoubleSpinBox* spin = view.timeConstantSpin();
+    spin->selectAll();
+    QTest::keyClicks(spin, typed);
+    QCOMPARE(spin->cleanText(), typed);
+    QCOMPARE(tau.count(), 0);  // not per keystroke
+    QTest::keyClick(spin, Qt::Key_Return);
+    QCOMPARE(tau.count(), committed ? 1 : 0);
+    if (committed) QCOMPARE(tau.at(0).at(0).toDouble(), shown);
+    QCOMPARE(view.timeConstantMs(), shown);
   }
 
   void metricsStatusAndParts() {
