@@ -30,6 +30,15 @@ bool knownG(double v) {
   return false;
 }
 
+// The M words every mill controller shares (program stop and end, spindle, tool change, coolant). They
+// are kept verbatim like any word; knowing them spares a warning on nearly every program.
+bool knownM(double v) {
+  static constexpr int kM[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30};
+  for (int m : kM)
+    if (std::abs(v - m) < 1e-9) return true;
+  return false;
+}
+
 bool knownLetter(char l) {
   switch (l) {
     case 'F':
@@ -42,6 +51,7 @@ bool knownLetter(char l) {
     case 'P':
     case 'N':
     case 'G':
+    case 'M':
       return true;
     default:
       return false;
@@ -179,7 +189,7 @@ void GcodeReader::lexLine(GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
       w.value = value;
       w.column = pos + 1;
       w.length = end - pos;
-      w.known = knownLetter(w.letter) && (w.letter != 'G' || knownG(value));
+      w.known = knownLetter(w.letter) && (w.letter != 'G' || knownG(value)) && (w.letter != 'M' || knownM(value));
       if (!w.known) warn(pos, w.length, "unknown word: kept verbatim");
       if (w.known) checkWordRange(b, w);
       b.words.push_back(w);
@@ -192,10 +202,11 @@ void GcodeReader::lexLine(GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
     pos = tend;
     b.words_end = pos;
   }
-  // Repeated words of the same known letter (except G) are ambiguous: the first one is used.
+  // Repeated words of the same known letter (except G and M, of which a block may hold several) are
+  // ambiguous: the first one is used.
   for (std::size_t i = 0; i < b.words.size(); ++i) {
     const auto& w = b.words[i];
-    if (!w.known || w.letter == 'G') continue;
+    if (!w.known || w.letter == 'G' || w.letter == 'M') continue;
     for (std::size_t j = 0; j < i; ++j)
       if (b.words[j].letter == w.letter) {
         warn(w.column - 1, w.length, "repeated word: the first one is used");

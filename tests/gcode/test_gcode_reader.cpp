@@ -45,12 +45,31 @@ class TestGcodeReader : public QObject {
     QCOMPARE(b.words[3].value, 1500.0);
     QCOMPARE(b.words[3].column, std::size_t(12));
     QCOMPARE(b.words[3].length, std::size_t(5));
-    QVERIFY(!b.words[4].known);  // M3
-    QCOMPARE(p.warnings.size(), std::size_t(1));
-    QCOMPARE(p.warnings[0].line, 1);
-    QCOMPARE(p.warnings[0].column, std::size_t(18));
-    QCOMPARE(p.warnings[0].text, std::string("M3"));
+    QVERIFY(b.words[4].known);  // M3: a common M word
+    QCOMPARE(b.words[4].letter, 'M');
+    QVERIFY(p.warnings.empty());
     QCOMPARE(b.words_end, b.text.size());
+  }
+  // The M words every mill controller shares are known (no warning), several in one block too; others
+  // stay unknown and are warned about. All are written back verbatim.
+  void commonMWords_data() {
+    QTest::addColumn<QString>("block");
+    QTest::addColumn<int>("warnings");
+    for (const char* m : {"M0", "M1", "M2", "M3", "M4", "M5", "M6", "M7", "M8", "M9", "M30", "m3", "M03"})
+      QTest::newRow(m) << QString("G0 Z5 %1").arg(m) << 0;
+    QTest::newRow("spindle and coolant in one block") << "S1200 M3 M8" << 0;
+    QTest::newRow("M98 (subprogram call)") << "M98 P100" << 1;
+    QTest::newRow("M99") << "M99" << 1;
+    QTest::newRow("M3.5") << "M3.5" << 1;
+    QTest::newRow("M without a number") << "M" << 1;
+  }
+  void commonMWords() {
+    QFETCH(QString, block);
+    QFETCH(int, warnings);
+    const std::string text = block.toStdString() + "\n";
+    const auto p = GcodeReader::parse(text);
+    QCOMPARE(static_cast<int>(p.warnings.size()), warnings);
+    QCOMPARE(p.text(), text);
   }
   void compactLowerCaseAndSignedNumbers() {
     const auto p = GcodeReader::parse("g1x10.5y-.5z+2.f200");
@@ -89,9 +108,10 @@ class TestGcodeReader : public QObject {
       std::size_t column;
       const char* text;
     };
-    const W expected[] = {{1, 9, "G54"},      {2, 1, "T1"},        {2, 4, "M6"},   {3, 13, "M3"}, {4, 13, "G40"},
-                          {5, 1, "#100=2.5"}, {6, 4, "X[#100*2]"}, {7, 8, "R5"},   {7, 11, "Q2"}, {8, 1, "G18"},
-                          {9, 1, "@@"},       {9, 4, "garbage"},   {9, 12, "line"}};
+    // M6 (line 2) and M3 (line 3) are common M words: known, not warned about.
+    const W expected[] = {{1, 9, "G54"},       {2, 1, "T1"},      {4, 13, "G40"}, {5, 1, "#100=2.5"},
+                          {6, 4, "X[#100*2]"}, {7, 8, "R5"},      {7, 11, "Q2"},  {8, 1, "G18"},
+                          {9, 1, "@@"},        {9, 4, "garbage"}, {9, 12, "line"}};
     QCOMPARE(p.warnings.size(), std::size(expected));
     for (std::size_t i = 0; i < std::size(expected); ++i) {
       QCOMPARE(p.warnings[i].line, expected[i].line);
