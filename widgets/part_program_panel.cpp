@@ -47,9 +47,13 @@ constexpr ColumnSpec kColumns[PartProgramPanel::kColumnCount] = {
     {"Line", "Line number in the program file (1-based)"},
     {"Block", "The block as written in the program"},
     {"F [%1]", "Programmed feed F of the block [%1] (converted from the program's unit)"},
-    {"F new [%1]", "Proposed feed F [%1]; \"=\" keeps the programmed value; highlighted when changed"},
+    {"F new [%1]",
+     "Proposed feed F [%1] in effect at the block; \"=\" keeps the programmed value; highlighted when changed; "
+     "italic where a block without its own F inherits the F proposed on an earlier line (modal)"},
     {"S [rpm]", "Programmed spindle speed S [rpm]"},
-    {"S new [rpm]", "Proposed spindle speed S [rpm]; \"=\" keeps the programmed value; highlighted when changed"},
+    {"S new [rpm]",
+     "Proposed spindle speed S [rpm] in effect at the block; \"=\" keeps the programmed value; highlighted when "
+     "changed; italic where inherited from an earlier line (modal)"},
     {"Depth [%2]", "Axial depth of cut of the block [%2]"},
     {"Predicted force [%3]", "Predicted peak cutting force of the block with the proposed F and S [%3]"},
     {"Reason", "Why F or S was changed; empty when unchanged"},
@@ -66,6 +70,18 @@ struct CellUnits {
     return v ? std::optional<double>(units.fromBase(q, *v)) : std::nullopt;
   }
 };
+
+// The line whose proposal a modal cell inherits (PartProgramRow::new_feed_from_line); 0 for any other cell.
+int inheritedFrom(const PartProgramRow& r, int column) {
+  if (column == PartProgramPanel::kNewFeed) return r.new_feed_from_line;
+  return column == PartProgramPanel::kNewSpeed ? r.new_speed_from_line : 0;
+}
+
+QFont italicFont() {
+  QFont f;
+  f.setItalic(true);
+  return f;
+}
 
 QString cellText(const PartProgramRow& r, int column, const CellUnits& u, bool* changed) {
   *changed = false;
@@ -159,6 +175,8 @@ class PartProgramTableModel : public QAbstractTableModel {
       case Qt::DisplayRole:
         return text;
       case Qt::ToolTipRole:
+        if (const int from = inheritedFrom(r, column); from > 0)
+          return PartProgramPanel::tr("Modal: the value proposed at line %1 stays in effect here").arg(from);
         return text_column && !text.isEmpty() ? QVariant(text) : QVariant();
       case Qt::BackgroundRole:
         if (!changed) return {};
@@ -166,6 +184,7 @@ class PartProgramTableModel : public QAbstractTableModel {
         return column == PartProgramPanel::kNewSpeed ? kSpeedHighlight : kReasonHighlight;
       case Qt::FontRole:
         if (column == PartProgramPanel::kBlock) return QFontDatabase::systemFont(QFontDatabase::FixedFont);
+        if (inheritedFrom(r, column) > 0) return italicFont();
         return changed && column != PartProgramPanel::kReason ? QVariant(boldFont()) : QVariant();
       case Qt::TextAlignmentRole:
         return QVariant(text_column ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);

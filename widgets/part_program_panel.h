@@ -27,6 +27,9 @@ struct PartProgramRow {                           // one block of the program
   QString text;                                   // the block as written (without line end)
   std::optional<double> original_feed, new_feed;  // in the program's units (see feed unit label), nullopt when none
   std::optional<double> speed_rpm, new_speed_rpm;
+  // > 0 when the new value is modal: the block has no F (S) word of its own and inherits the one
+  // proposed at this line.
+  int new_feed_from_line = 0, new_speed_from_line = 0;
   std::optional<double> depth_mm, predicted_force_n;
   QString reason;  // empty when unchanged
   bool changed = false;

@@ -23,13 +23,32 @@ std::optional<double> finiteOr(double v) {
   return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
 }
 
-// One display row per block: F in the program's units per minute, S in rpm.
+// A proposed F or S that stays in effect on the following blocks until one has its own word (modal).
+struct ModalProposal {
+  std::optional<double> value;
+  int line = 0;
+  // The value in effect at a block: its own proposal, none when it carries its own word, else the modal.
+  std::optional<double> at(std::optional<double> proposed, bool own_word, int block_line) {
+    if (proposed) {
+      value = proposed;
+      line = block_line;
+      return proposed;
+    }
+    if (own_word) value.reset();
+    return value;
+  }
+  int inheritedAt(std::optional<double> proposed) const { return proposed || !value ? 0 : line; }
+};
+
+// One display row per block: F in the program's units per minute, S in rpm. The new F and S are those in
+// effect at the block: where a block has no word of its own, the one proposed on an earlier line.
 QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult& r) {
   QVector<widgets::PartProgramRow> rows;
   rows.reserve(static_cast<qsizetype>(r.program.blocks.size()));
   std::vector<const FeedOverrideRow*> by_block(r.program.blocks.size(), nullptr);
   for (const FeedOverrideRow& f : r.rows)
     if (f.block >= 1 && f.block <= by_block.size()) by_block[f.block - 1] = &f;
+  ModalProposal feed, speed;
   for (std::size_t i = 0; i < r.program.blocks.size(); ++i) {
     const GcodeBlock& b = r.program.blocks[i];
     const GcodeMotion& m = r.run.motions[i];
@@ -39,9 +58,18 @@ QVector<widgets::PartProgramRow> partProgramRows(const PartProgramOverrideResult
     row.line = b.line;
     row.text = QString::fromStdString(b.text);
     if (m.isFeedMove() || m.feed_word) row.original_feed = finiteOr(m.feed_m_per_s * 60.0 / unit);
-    row.new_feed = finiteOr(e.feed);
+    const std::optional<double> new_feed = finiteOr(e.feed), new_speed = finiteOr(e.speed_rpm);
+    const std::optional<double> feed_in_effect = feed.at(new_feed, m.feed_word, b.line);
+    const std::optional<double> speed_in_effect = speed.at(new_speed, m.speed_word, b.line);
+    if (row.original_feed) {
+      row.new_feed = feed_in_effect;
+      row.new_feed_from_line = feed.inheritedAt(new_feed);
+    }
     if (m.isFeedMove() || m.speed_word) row.speed_rpm = finiteOr(m.speed_rev_per_s * 60.0);
-    row.new_speed_rpm = finiteOr(e.speed_rpm);
+    if (row.speed_rpm) {
+      row.new_speed_rpm = speed_in_effect;
+      row.new_speed_from_line = speed.inheritedAt(new_speed);
+    }
     if (m.isFeedMove()) row.depth_mm = r.depths_m[i] * 1e3;
     if (const FeedOverrideRow* f = by_block[i]) {
       row.predicted_force_n = finiteOr(f->predicted_force_N);

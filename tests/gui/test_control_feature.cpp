@@ -225,6 +225,17 @@ class TestControlFeature : public QObject {
     QVERIFY(in.open(QIODevice::ReadOnly));
     const QList<QByteArray> input = in.readAll().split('\n');
     QCOMPARE(panel->rows().size(), input.size() - (input.last().isEmpty() ? 1 : 0));
+    // N50 gets a new F; N60 (no F of its own) runs at it: its new F is the modal one, from N50's line.
+    const auto byBlock = [&](const char* n) {
+      for (const widgets::PartProgramRow& r : panel->rows())
+        if (r.text.startsWith(n)) return r;
+      return widgets::PartProgramRow{};
+    };
+    const widgets::PartProgramRow n50 = byBlock("N50 "), n60 = byBlock("N60 ");
+    QVERIFY(n50.new_feed.has_value() && n50.changed);
+    QCOMPARE(n60.new_feed, n50.new_feed);
+    QCOMPARE(n60.new_feed_from_line, n50.line);
+    QCOMPARE(byBlock("N40 ").new_feed_from_line, 0);
     QTemporaryDir dir;
     QVERIFY(machining(window)->exportPartProgram(dir.filePath("out.nc")));
     QVERIFY(machining(window)->exportPartProgramCsv(dir.filePath("out.csv")));

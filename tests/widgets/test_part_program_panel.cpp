@@ -179,6 +179,23 @@ class TestPartProgramPanel : public QObject {
     }
   }
 
+  // A modal proposal: the block has no F of its own and inherits the F proposed on an earlier line. The
+  // cell shows the value in effect (not "="), in italics, and its tooltip names that line.
+  void modalProposalShowsTheValueInEffect() {
+    QVector<PartProgramRow> rows = sampleRows();
+    PartProgramRow inherited = row(8, "G1 Y40", 1200.0, 900.0, 2000.0, {}, 2.0, 700.0, {}, false);
+    inherited.new_feed_from_line = 4;
+    rows.append(inherited);
+    PartProgramPanel panel;
+    panel.setProgram(programPath("part.nc"), rows, sampleWarnings(), "mm/min", "Fanuc");
+    const int last = static_cast<int>(rows.size()) - 1;
+    QCOMPARE(cell(panel, last, PartProgramPanel::kNewFeed), cell(panel, 3, PartProgramPanel::kNewFeed));
+    QVERIFY(cell(panel, last, PartProgramPanel::kNewFeed) != QString("="));
+    QVERIFY(panel.table()->model()->index(last, PartProgramPanel::kNewFeed).data(Qt::FontRole).value<QFont>().italic());
+    QVERIFY(cell(panel, last, PartProgramPanel::kNewFeed, Qt::ToolTipRole).contains("line 4"));
+    QVERIFY(!panel.table()->model()->index(3, PartProgramPanel::kNewFeed).data(Qt::FontRole).value<QFont>().italic());
+  }
+
   void filter() {
     PartProgramPanel panel;
     loadSample(panel);
