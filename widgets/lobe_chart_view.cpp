@@ -2,15 +2,17 @@
 
 #include <qcustomplot.h>
 
+#include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QPainter>
 #include <QSvgGenerator>
-#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "cost_map_layer.h"
+#include "lobe_pockets.h"
+#include "lobe_tool_panel.h"
 #include "plot_legend.h"
 
 namespace mx::widgets {
@@ -18,6 +20,27 @@ namespace mx::widgets {
 namespace {
 const QColor kUnstableFill(214, 39, 40, 38);
 const QColor kAdmissibleFill(44, 160, 44, 40);
+const QColor kStyleKey(70, 70, 70);
+constexpr int kLegendColumns = 2;
+constexpr int kExportLegendColumns = 3;
+constexpr int kMinExportPlotHeight = 560;  // px of axes and title an exported chart keeps
+
+// A tool's list icon: its nominal line with its marker over its dashed margined line.
+QIcon toolSwatch(int index) {
+  QPixmap pixmap(44, 14);
+  pixmap.fill(Qt::transparent);
+  QCPPainter painter(&pixmap);
+  painter.setRenderHint(QPainter::Antialiasing);
+  const QColor c = LobeChartView::toolColor(index);
+  painter.setPen(QPen(c, 2.0));
+  painter.drawLine(QPointF(1, 4), QPointF(43, 4));
+  painter.setPen(QPen(c, 1.5, Qt::DashLine));
+  painter.drawLine(QPointF(1, 11), QPointF(43, 11));
+  QCPScatterStyle shape(static_cast<QCPScatterStyle::ScatterShape>(LobeChartView::toolShape(index)), c, Qt::white, 8);
+  shape.applyTo(&painter, QPen(c, 1.5));
+  shape.drawShape(&painter, 22, 5);
+  return QIcon(pixmap);
+}
 
 QColor verdictColor(PointVerdict v) {
   switch (v) {
@@ -38,19 +61,24 @@ QColor verdictColor(PointVerdict v) {
 
 LobeChartView::LobeChartView(QWidget* parent)
     : QWidget(parent), plot_(new QCustomPlot(this)), costs_(new CostMapLayer(plot_)) {
-  auto* layout = new QVBoxLayout(this);
+  panel_ = new LobeToolPanel(this);
+  auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(plot_);
+  layout->setSpacing(2);
+  layout->addWidget(plot_, 1);
+  layout->addWidget(panel_);
   setFocusPolicy(Qt::StrongFocus);
   plot_->setFocusPolicy(Qt::NoFocus);
+  plot_->setMouseTracking(true);  // the cursor readout follows the mouse without a button held
+  plot_->installEventFilter(this);
   plot_->xAxis->setLabel("Spindle speed N [rpm]");
   plot_->yAxis->setLabel("Axial depth of cut b [mm]");
   title_ = new QCPTextElement(plot_, QString(), QFont(font().family(), 10, QFont::Bold));
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
   plot_->legend->setBrush(QColor(255, 255, 255, 220));
-  placeLegendUnderPlot(plot_, 2);           // never over a lobe, a marker or the operating point
-  plot_->setInteractions(QCP::iRangeZoom);  // left drag moves the point; right drag pans (below)
+  placeLegendUnderPlot(plot_, kLegendColumns);  // never over a lobe, a marker or the operating point
+  plot_->setInteractions(QCP::iRangeZoom);      // left drag moves the point; right drag pans (below)
   plot_->setToolTip(
       tr("Drag with the left button to pick the operating point; arrow keys nudge it "
          "(Shift snaps to the grid). Wheel zooms, right button pans."));
@@ -68,6 +96,22 @@ LobeChartView::LobeChartView(QWidget* parent)
   connect(plot_, &QCustomPlot::mousePress, this, &LobeChartView::onMousePress);
   connect(plot_, &QCustomPlot::mouseMove, this, &LobeChartView::onMouseMove);
   connect(plot_, &QCustomPlot::mouseRelease, this, &LobeChartView::onMouseRelease);
+  connect(panel_, &LobeToolPanel::toolVisibilityToggled, this, [this](int index, bool visible) {
+    if (index < 0 || index >= series_.size()) return;
+    setToolVisible(series_[index].tool_id, visible);
+    emit toolVisibilityChanged(series_[index].tool_id, visible);
+  });
+  connect(panel_, &LobeToolPanel::toolClicked, this, [this](int index) {
+    if (index >= 0 && index < series_.size()) emit activeToolRequested(index);
+  });
+  connect(panel_, &LobeToolPanel::activeToolOnlyToggled, this, [this] {
+    applyToolVisibility();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+  });
+  connect(panel_, &LobeToolPanel::pocketChosen, this, [this](double speed_rpm, double depth_mm) {
+    movePointTo(speed_rpm, depth_mm, false, false);
+    emit pointReleased(point_rpm_, point_mm_);
+  });
 }
 
 LobeChartView::~LobeChartView() {
@@ -95,10 +139,23 @@ int LobeChartView::costCellCount() const {
   return costs_->costCellCount();
 }
 
+// The first six are the familiar Tableau ones; the other 14 were picked greedily for the largest
+// smallest CIELAB distance to those before them (lightness 25-70, so that each reads on white): every
+// pair differs by Delta E_76 > 29.
 QColor LobeChartView::toolColor(int index) {
-  static const QColor palette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),  QColor(44, 160, 44),
-                                   QColor(148, 103, 189), QColor(255, 127, 14), QColor(23, 190, 207)};
-  return palette[index % 6];
+  static const QRgb palette[kDistinctColors] = {0x1f77b4, 0xd62728, 0x2ca02c, 0x9467bd, 0xff7f0e, 0x17becf, 0x0000e0,
+                                                0xe020e0, 0x806000, 0xe02080, 0xe08080, 0x006040, 0x6000a0, 0x802040,
+                                                0x0060e0, 0x80a060, 0xa0a000, 0x802000, 0x00c080, 0x206000};
+  return QColor(palette[(index % kDistinctColors + kDistinctColors) % kDistinctColors]);
+}
+
+int LobeChartView::toolShape(int index) {
+  static const QCPScatterStyle::ScatterShape shapes[] = {
+      QCPScatterStyle::ssCircle,  QCPScatterStyle::ssSquare, QCPScatterStyle::ssTriangle,
+      QCPScatterStyle::ssDiamond, QCPScatterStyle::ssCross,  QCPScatterStyle::ssTriangleInverted,
+      QCPScatterStyle::ssPlus};
+  constexpr int count = static_cast<int>(std::size(shapes));
+  return shapes[(index % count + count) % count];
 }
 
 QWidget* LobeChartView::plotWidget() const {
@@ -125,6 +182,8 @@ QString LobeChartView::modelLabel() const {
 void LobeChartView::clear() {
   series_.clear();
   tool_graphs_.clear();
+  panel_->setTools({});
+  panel_->setPockets({}, {}, scale_, unit_);
   power_mm_.clear();
   costs_->clear();
   plot_->clearGraphs();
@@ -178,38 +237,39 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
   admissible_fill_->setPen(Qt::NoPen);
   admissible_fill_->setBrush(kAdmissibleFill);
   double max_depth = 0.0, highest_minimum = 0.0;
+  QVector<LobeToolEntry> entries;
+  bool any_measured = false;
   for (int i = 0; i < series.size(); ++i) {
     const ToolLobeSeries& s = series[i];
-    const QString dynamics = s.dynamics.isEmpty() ? QString() : QString(", %1").arg(s.dynamics);
+    const QString dynamics = s.dynamics.isEmpty() ? QString() : QString(" (%1)").arg(s.dynamics);
     QCPGraph* nominal = plot_->addGraph();
-    nominal->setName(QString("%1 nominal%2 (\u03b4 = 0, \u03b1 = 1)").arg(s.tool_id, dynamics));
+    nominal->setName(s.tool_id + dynamics);
     nominal->setPen(QPen(toolColor(i), 2.0));
+    // The marker every ~1/12 of the curve: a second cue where two colours look alike.
+    nominal->setScatterStyle(
+        QCPScatterStyle(static_cast<QCPScatterStyle::ScatterShape>(toolShape(i)), toolColor(i), Qt::white, 7));
+    nominal->setScatterSkip(std::max<int>(1, static_cast<int>(s.speed_rpm.size() / 12)));
     nominal->setData(s.speed_rpm, scaled(s.nominal_mm), true);
     QCPGraph* margined = plot_->addGraph();
-    margined->setName(s.margin_needs_modes
-                          ? QString("%1 margined%2 (\u03b4 = 0: \u03b4 > 0 needs fitted modes, \u03b1 = %3)")
-                                .arg(s.tool_id, dynamics)
-                                .arg(alpha)
-                          : QString("%1 margined%2 (\u03b4 = %3 1/s, \u03b1 = %4)")
-                                .arg(s.tool_id, dynamics)
-                                .arg(delta_per_s)
-                                .arg(alpha));
+    margined->setName(s.tool_id + tr(" margined"));
     margined->setPen(QPen(toolColor(i), 1.5, Qt::DashLine));
     margined->setData(s.speed_rpm, scaled(s.margined_mm), true);
     QVector<QCPGraph*> graphs{nominal, margined};
     if (!s.measured_mm.isEmpty()) {
       QCPGraph* measured = plot_->addGraph();
-      measured->setName(QString("%1 measured FRF (ZOA, \u03b4 = 0, \u03b1 = 1)").arg(s.tool_id));
+      measured->setName(s.tool_id + tr(" measured FRF"));
       measured->setPen(QPen(toolColor(i).darker(140), 1.5, Qt::DotLine));
       measured->setData(s.speed_rpm, scaled(s.measured_mm), true);
       graphs.push_back(measured);
+      any_measured = true;
     }
+    for (QCPGraph* g : graphs) g->removeFromLegend();
     tool_graphs_.push_back(graphs);
-    const bool visible = !hidden_.contains(s.tool_id);
-    for (QCPGraph* g : graphs) {
-      g->setVisible(visible);
-      if (!visible) g->removeFromLegend();
-    }
+    const QString margin = s.margin_needs_modes
+                               ? tr("margined: \u03b4 = 0 (\u03b4 > 0 needs fitted modes), \u03b1 = %1").arg(alpha)
+                               : tr("margined: \u03b4 = %1 1/s, \u03b1 = %2").arg(delta_per_s).arg(alpha);
+    entries.push_back({s.tool_id, tr("%1%2\nnominal: \u03b4 = 0, \u03b1 = 1; %3").arg(s.tool_id, dynamics, margin),
+                       toolSwatch(i), !hidden_.contains(s.tool_id)});
     double lowest = std::numeric_limits<double>::infinity();
     for (double b : s.nominal_mm)
       if (std::isfinite(b)) {
@@ -218,9 +278,11 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
       }
     if (std::isfinite(lowest)) highest_minimum = std::max(highest_minimum, lowest);
   }
+  addLineStyleKeys(delta_per_s, alpha, any_measured);
   power_graph_ = plot_->addGraph();
   power_graph_->setPen(QPen(QColor(40, 40, 40), 1.5, Qt::DashDotLine));
   power_graph_->removeFromLegend();
+  panel_->setTools(entries);
   if (!series.isEmpty() && !series.front().speed_rpm.isEmpty()) {
     home_x0_ = series.front().speed_rpm.front();
     home_x1_ = series.front().speed_rpm.back();
@@ -228,14 +290,51 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
   home_y1_ = std::min(max_depth, std::max(3.0 * highest_minimum, 1e-3)) * 1.05 + 1e-6;
   if (active_ >= series.size()) active_ = series.isEmpty() ? -1 : 0;
   if (active_ < 0 && !series.isEmpty()) active_ = 0;
+  panel_->setActiveTool(active_);
+  applyToolVisibility();
+  updatePockets();
   updateRegions();
   if (!map_cost_.isEmpty()) costs_->setCostMap(map_speeds_, scaled(map_depths_mm_), map_cost_);
   if (!grid_speeds_.isEmpty()) costs_->setGridPoints(grid_speeds_, scaled(grid_depths_mm_));
   resetView();
 }
 
+// Legend entries without data that key the line styles every tool shares.
+void LobeChartView::addLineStyleKeys(double delta_per_s, double alpha, bool measured) {
+  const auto key = [this](const QString& name, const QPen& pen) {
+    QCPGraph* g = plot_->addGraph();
+    g->setName(name);
+    g->setPen(pen);
+  };
+  key(tr("nominal lobe of each tool (\u03b4 = 0, \u03b1 = 1)"), QPen(kStyleKey, 2.0));
+  key(tr("margined lobe (\u03b4 = %1 1/s, \u03b1 = %2)").arg(delta_per_s).arg(alpha),
+      QPen(kStyleKey, 1.5, Qt::DashLine));
+  if (measured) key(tr("measured-FRF lobe (ZOA, \u03b4 = 0, \u03b1 = 1)"), QPen(kStyleKey, 1.5, Qt::DotLine));
+}
+
+// A tool shows when the user has not hidden it and, with "Active tool only", when it is the active one.
+void LobeChartView::applyToolVisibility() {
+  const bool only_active = panel_->activeToolOnly();
+  for (int i = 0; i < series_.size() && i < tool_graphs_.size(); ++i) {
+    const bool visible = !hidden_.contains(series_[i].tool_id) && (!only_active || i == active_);
+    for (QCPGraph* g : tool_graphs_[i]) g->setVisible(visible);
+  }
+}
+
+void LobeChartView::updatePockets() {
+  if (active_ < 0 || active_ >= series_.size()) {
+    panel_->setPockets({}, {}, scale_, unit_);
+    return;
+  }
+  const ToolLobeSeries& s = series_[active_];
+  panel_->setPockets(s.tool_id, findStabilityPockets(s.speed_rpm, s.margined_mm), scale_, unit_);
+}
+
 void LobeChartView::setActiveTool(int index) {
   active_ = (index >= 0 && index < series_.size()) ? index : -1;
+  panel_->setActiveTool(active_);
+  applyToolVisibility();
+  updatePockets();
   updateRegions();
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -245,16 +344,9 @@ void LobeChartView::setToolVisible(const QString& tool_id, bool visible) {
     hidden_.remove(tool_id);
   else
     hidden_.insert(tool_id);
-  for (int i = 0; i < series_.size() && i < tool_graphs_.size(); ++i) {
-    if (series_[i].tool_id != tool_id) continue;
-    for (QCPGraph* g : tool_graphs_[i]) {
-      g->setVisible(visible);
-      if (visible)
-        g->addToLegend();
-      else
-        g->removeFromLegend();
-    }
-  }
+  for (int i = 0; i < series_.size(); ++i)
+    if (series_[i].tool_id == tool_id) panel_->setToolVisible(i, visible);
+  applyToolVisibility();
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -426,6 +518,7 @@ void LobeChartView::onMouseMove(QMouseEvent* event) {
     plot_->replot(QCustomPlot::rpQueuedReplot);
     return;
   }
+  showCursorLimit(p);
   if (!dragging_) return;
   const bool snap = event->modifiers() & Qt::ShiftModifier;
   movePointTo(plot_->xAxis->pixelToCoord(p.x()), plot_->yAxis->pixelToCoord(p.y()) / scale_, snap, snap);
@@ -481,7 +574,74 @@ void LobeChartView::keyPressEvent(QKeyEvent* event) {
   emit pointReleased(point_rpm_, point_mm_);
 }
 
+bool LobeChartView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == plot_ && event->type() == QEvent::Leave) panel_->setCursorText({});
+  return QWidget::eventFilter(watched, event);
+}
+
+// "N = 3400 rpm, b = 0.500 mm" and the active tool's nominal and margined limits at that speed.
+void LobeChartView::showCursorLimit(const QPointF& pixel) {
+  if (!plot_->axisRect()->rect().contains(pixel.toPoint())) {
+    panel_->setCursorText({});
+    return;
+  }
+  const double speed = plot_->xAxis->pixelToCoord(pixel.x());
+  const double depth = plot_->yAxis->pixelToCoord(pixel.y());
+  const int decimals = scale_ == 1.0 ? 3 : 4;
+  QString text = tr("Cursor: N = %1 rpm, b = %2 %3").arg(speed, 0, 'f', 0).arg(depth, 0, 'f', decimals).arg(unit_);
+  if (active_ >= 0 && active_ < series_.size()) {
+    const ToolLobeSeries& s = series_[active_];
+    const double nominal = envelopeAt(s.speed_rpm, s.nominal_mm, speed) * scale_;
+    const double margined = envelopeAt(s.speed_rpm, s.margined_mm, speed) * scale_;
+    const auto depth_text = [&](double b) {
+      return std::isfinite(b) ? QString("%1 %2").arg(b, 0, 'f', decimals).arg(unit_) : tr("above the chart");
+    };
+    if (speed < s.speed_rpm.value(0) || speed > s.speed_rpm.value(s.speed_rpm.size() - 1))
+      text += tr("\n%1: outside the computed speeds").arg(s.tool_id);
+    else
+      text += tr("\nb_lim of %1: %2 nominal, %3 margined").arg(s.tool_id, depth_text(nominal), depth_text(margined));
+  }
+  panel_->setCursorText(text);
+}
+
+QStringList LobeChartView::legendNames() const {
+  QStringList names;
+  for (int i = 0; i < plot_->legend->itemCount(); ++i)
+    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot_->legend->item(i))) names << item->plottable()->name();
+  return names;
+}
+
+// An exported image has no tool list beside it: its legend names every shown tool by its nominal line.
+void LobeChartView::setToolsInLegend(bool shown) {
+  for (int i = 0; i < tool_graphs_.size(); ++i) {
+    QCPGraph* nominal = tool_graphs_[i].front();
+    if (shown && nominal->visible())
+      nominal->addToLegend();
+    else
+      nominal->removeFromLegend();
+  }
+  plot_->legend->setWrap(shown ? kExportLegendColumns : kLegendColumns);
+}
+
+int LobeChartView::exportHeight(int width, int height) {
+  setToolsInLegend(true);
+  plot_->legend->setMaximumSize(width, QWIDGETSIZE_MAX);
+  const int legend = plot_->legend->minimumOuterSizeHint().height();
+  setToolsInLegend(false);
+  plot_->legend->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+  return std::max(height, kMinExportPlotHeight + legend);
+}
+
 bool LobeChartView::saveImage(const QString& path, int width, int height) {
+  height = exportHeight(width, height);
+  setToolsInLegend(true);
+  const bool saved = writeImage(path, width, height);
+  setToolsInLegend(false);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+  return saved;
+}
+
+bool LobeChartView::writeImage(const QString& path, int width, int height) {
   plot_->replot();
   if (path.endsWith(".pdf", Qt::CaseInsensitive)) return plot_->savePdf(path, width, height);
   if (path.endsWith(".svg", Qt::CaseInsensitive)) {

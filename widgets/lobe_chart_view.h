@@ -3,7 +3,10 @@
 // envelopes of the tools, the unstable region of the active tool shaded, the power-limit curve for
 // the current feed, the admissible region (below both), and the operating point, which the user
 // drags with the left button (live signals), nudges with the arrow keys (Shift snaps to the
-// admissible grid), zooms with the wheel and pans with the right button.
+// admissible grid), zooms with the wheel and pans with the right button. Beside the plot, the tool
+// list (LobeToolPanel) names the tools, the active tool's stability pockets and the limit under the
+// cursor; the legend under the plot keys the line styles and regions, so that its size does not grow
+// with the library. Each tool has one of 20 distinct colours and, as a second cue, a marker shape.
 #include <QColor>
 #include <QPair>
 #include <QPoint>
@@ -24,6 +27,7 @@ class QMouseEvent;
 namespace mx::widgets {
 
 class CostMapLayer;
+class LobeToolPanel;
 
 struct ToolLobeSeries {
   QString tool_id;
@@ -82,15 +86,27 @@ class LobeChartView : public QWidget {
   double pointDepth() const { return point_mm_; }
   QPoint pixelFor(double speed_rpm, double depth_mm) const;  // in plotWidget() coordinates
   QWidget* plotWidget() const;
+  LobeToolPanel* toolPanel() const { return panel_; }
+  // Tool `index`'s colour (20 distinct ones, then again) and marker shape (a QCPScatterStyle shape,
+  // 7 of them, so that colour and shape together repeat only after 140 tools).
   static QColor toolColor(int index);
+  static int toolShape(int index);
+  static constexpr int kDistinctColors = 20;
+  // The legend entries: on screen the line styles and regions only; an exported image adds one per
+  // shown tool, and grows taller rather than cut the legend off.
+  QStringList legendNames() const;
+  int exportHeight(int width, int height);  // the height saveImage(width, height) uses
 
  signals:
   void pointDragged(double speed_rpm, double depth_mm);   // live, during a drag
   void pointReleased(double speed_rpm, double depth_mm);  // drag released or key nudge
   void viewReset();
+  void activeToolRequested(int index);  // a click on a tool of the list
+  void toolVisibilityChanged(const QString& tool_id, bool visible);
 
  protected:
   void keyPressEvent(QKeyEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void onMousePress(QMouseEvent* event);
@@ -98,11 +114,18 @@ class LobeChartView : public QWidget {
   void onMouseRelease(QMouseEvent* event);
   void movePointTo(double speed_rpm, double depth_mm, bool snap_speed, bool snap_depth);
   void updateRegions();
+  void applyToolVisibility();
+  void updatePockets();
+  void showCursorLimit(const QPointF& pixel);
+  void addLineStyleKeys(double delta_per_s, double alpha, bool measured);
+  void setToolsInLegend(bool shown);
+  bool writeImage(const QString& path, int width, int height);
   void replotOverlay();
   void replotQueued();
 
   QCustomPlot* plot_;
   CostMapLayer* costs_;
+  LobeToolPanel* panel_;
   QVector<double> map_speeds_, map_depths_mm_, map_cost_, grid_speeds_, grid_depths_mm_;
   QCPGraph* unstable_top_ = nullptr;
   QCPGraph* unstable_fill_ = nullptr;
