@@ -11,6 +11,7 @@
 #include "engine_task.h"
 #include "feature_dock.h"
 #include "gcode/gcode_reader.h"
+#include "notice_stack.h"
 #include "part_program_panel.h"
 #include "services/sdnrp_request.h"
 #include "surface_finish_panel.h"
@@ -119,8 +120,10 @@ MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& co
       pool_(context.enginePool()),
       channel_(this),
       surface_panel_(new widgets::SurfaceFinishPanel),
+      surface_notice_(new widgets::NoticeStack(surface_panel_)),
       program_panel_(new widgets::PartProgramPanel) {
   setObjectName("machiningFeature");
+  surface_notice_->setObjectName("surfaceFinishNotice");
   surface_panel_->setUnits(context.units());
   program_panel_->setUnits(context.units());
   units_ = context.units();
@@ -129,7 +132,7 @@ MachiningFeature::MachiningFeature(QMainWindow* window, const FeatureContext& co
 }
 
 void MachiningFeature::addDocks() {
-  QDockWidget* surface = makeFeatureDock(window_, tr("Surface finish (SDNRP)"), "surfaceFinishDock", surface_panel_,
+  QDockWidget* surface = makeFeatureDock(window_, tr("Surface finish (SDNRP)"), "surfaceFinishDock", surface_notice_,
                                          DockContent::Scrolling);
   QDockWidget* program =
       makeFeatureDock(window_, tr("Part program"), "partProgramDock", program_panel_, DockContent::Scrolling);
@@ -144,6 +147,7 @@ void MachiningFeature::addDocks() {
 
 void MachiningFeature::connectPanels() {
   connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MachiningFeature::runSurfaceFinish);
+  connect(surface_notice_, &widgets::NoticeStack::actionTriggered, this, &MachiningFeature::addSdnrpSection);
   connect(program_panel_, &widgets::PartProgramPanel::openRequested, this, [this] {
     const QString path = QFileDialog::getOpenFileName(window_, tr("Open part program"), QString(),
                                                       tr("G-code (*.nc *.ngc *.tap *.gcode);;All files (*)"));
@@ -164,6 +168,14 @@ void MachiningFeature::connectPanels() {
 void MachiningFeature::projectChanged(const app::Project& project, Features recompute) {
   if ((recompute & Feature::PartProgram) && !override_path_.isEmpty()) openPartProgram(override_path_);
   if (!(recompute & Feature::SurfaceFinish)) return;
+  if (!project.sdnrp) {
+    surface_notice_->showNotice(
+        tr("This project has no surface-finish section (\"sdnrp\"). The SDNRP loop of Cus and Zuperl would run "
+           "on their defaults: R_a 0.81 \u00b5m for 15 s, from the speed and feed their model picks."),
+        tr("Add an SDNRP section with these defaults"));
+    return;
+  }
+  surface_notice_->showContent();
   try {
     const SdnrpSettings s = app::sdnrpSettingsFromProject(project);
     surface_panel_->setDesiredRaUm(s.ra_desired_m * 1e6);
@@ -172,6 +184,18 @@ void MachiningFeature::projectChanged(const app::Project& project, Features reco
   } catch (const std::exception&) {
     // an invalid sdnrp section is reported when the loop is run
   }
+}
+
+// The defaults made explicit (SdnrpSettings), so that the panel and the file show what runs.
+void MachiningFeature::addSdnrpSection() {
+  app::Project edited = document_.project();
+  if (edited.sdnrp) return;
+  const SdnrpSettings defaults;
+  app::SdnrpSection section;
+  section.ra_um = defaults.ra_desired_m * 1e6;
+  section.seconds = defaults.duration_s;
+  edited.sdnrp = section;
+  emit editRequested(edited, tr("Add a surface-finish section"), 0);
 }
 
 void MachiningFeature::runSurfaceFinish() {

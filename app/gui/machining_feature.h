@@ -14,6 +14,7 @@
 #include "window_feature.h"
 
 namespace mx::widgets {
+class NoticeStack;
 class PartProgramPanel;
 class SurfaceFinishPanel;
 }  // namespace mx::widgets
@@ -36,6 +37,7 @@ class MachiningFeature : public WindowFeature {
   bool exportPartProgram(const QString& path);     // the optimised program
   bool exportPartProgramCsv(const QString& path);  // the per-block feed-override table
   widgets::SurfaceFinishPanel* surfacePanel() const { return surface_panel_; }
+  widgets::NoticeStack* surfaceNotice() const { return surface_notice_; }
   widgets::PartProgramPanel* programPanel() const { return program_panel_; }
 
  signals:
@@ -46,6 +48,7 @@ class MachiningFeature : public WindowFeature {
   void addDocks();
   void connectPanels();
   void showSurfaceFinish(const SdnrpResult& result, const SdnrpResult* baseline);
+  void addSdnrpSection();
   void showOverride(const QString& path, app::OverrideOutcome outcome);
 
   QMainWindow* window_;
@@ -54,6 +57,7 @@ class MachiningFeature : public WindowFeature {
   const widgets::DisplayUnits* units_ = nullptr;
   EngineChannel channel_;
   widgets::SurfaceFinishPanel* surface_panel_;
+  widgets::NoticeStack* surface_notice_;  // the panel, or that the project has no sdnrp section
   widgets::PartProgramPanel* program_panel_;
   quint64 sdnrp_generation_ = 0, override_generation_ = 0;
   std::shared_ptr<const app::OverrideOutcome> override_;

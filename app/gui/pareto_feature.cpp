@@ -12,6 +12,7 @@
 #include "history_view.h"
 #include "lobe_chart_view.h"
 #include "monitoring_panel.h"
+#include "notice_stack.h"
 #include "operator_rules_editor.h"
 #include "pareto_choice_summary.h"
 #include "pareto_front_view.h"
@@ -83,6 +84,7 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       requirements_(new widgets::RequirementsPanel),
       summary_(new widgets::ParetoChoiceSummaryPanel),
       front_view_(new widgets::ParetoFrontView),
+      front_notice_(new widgets::NoticeStack(front_view_)),
       monitoring_(new widgets::MonitoringPanel),
       history_(new widgets::HistoryView),
       rules_editor_(new widgets::OperatorRulesEditor),
@@ -90,6 +92,7 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       report_chatter_(new QPushButton(tr("Report chatter (Rule 16 / Rule 6)"))),
       chatter_hz_(new QDoubleSpinBox) {
   setObjectName("paretoFeature");
+  front_notice_->setObjectName("paretoFrontNotice");
   requirements_->setUnits(context.units());
   summary_->setUnits(context.units());
   front_view_->setUnits(context.units());
@@ -137,7 +140,7 @@ void ParetoFeature::buildDocks(QMainWindow* window) {
   QDockWidget* weights =
       makeFeatureDock(window, tr("Pareto weights"), "paretoWeightsDock", buildWeightsPanel(), DockContent::Scrolling);
   QDockWidget* rules = makeFeatureDock(window, tr("Operator rules"), "operatorRulesDock", rules_editor_);
-  QDockWidget* front = makeFeatureDock(window, tr("Pareto front"), "paretoFrontDock", front_view_);
+  QDockWidget* front = makeFeatureDock(window, tr("Pareto front"), "paretoFrontDock", front_notice_);
   QDockWidget* monitoring =
       makeFeatureDock(window, tr("Monitoring"), "monitoringDock", monitoring_, DockContent::Scrolling);
   QDockWidget* history = makeFeatureDock(window, tr("History"), "historyDock", history_);
@@ -174,6 +177,7 @@ void ParetoFeature::connectSignals() {
           [this](const QString& key) { editParetoSetting("normalisation", key); });
   connect(requirements_, &widgets::RequirementsPanel::autoWeightsRequested, this, &ParetoFeature::onAutoWeights);
   connect(front_view_, &widgets::ParetoFrontView::pointActivated, this, &ParetoFeature::onFrontPointActivated);
+  connect(front_notice_, &widgets::NoticeStack::actionTriggered, this, &ParetoFeature::addParetoSection);
   connect(record_button_, &QPushButton::clicked, this, [this] { recordOperatingPoint(); });
   connect(report_chatter_, &QPushButton::clicked, this, [this] { routeChatterReport(chatter_hz_->value()); });
   connect(rules_editor_, &widgets::OperatorRulesEditor::rulesChanged, this, &ParetoFeature::onRulesEdited);
@@ -204,11 +208,46 @@ void ParetoFeature::projectChanged(const app::Project& project, Features recompu
 void ParetoFeature::rebuild() {
   const app::Project& p = context_.project();
   choice_.reset();
-  if (!p.pareto || p.tools.empty() || !p.machine || !p.operation || !p.expert) {
+  if (const QString missing = missingSections(); !missing.isEmpty()) {
     disable();
+    if (!p.pareto)
+      front_notice_->showNotice(tr("This project has no Pareto study: the front of tool life, removal rate, "
+                                   "roughness and robustness needs a \"pareto\" section with the material's "
+                                   "tool-life and roughness laws."),
+                                tr("Add a Pareto section (Rubio et al.'s aluminium laws, to edit for your material)"));
+    else
+      front_notice_->showNotice(tr("The Pareto study needs %1.").arg(missing));
     return;
   }
+  front_notice_->showContent();
   runner_->build(app::withAbsoluteFrfPaths(p));  // the FRF files are read on the engine thread
+}
+
+// What the study lacks, in words: "a tool and the machine section", or "".
+QString ParetoFeature::missingSections() const {
+  const app::Project& p = context_.project();
+  QStringList missing;
+  if (!p.pareto) missing << tr("a \"pareto\" section");
+  if (p.tools.empty()) missing << tr("a tool");
+  if (!p.machine) missing << tr("the machine section");
+  if (!p.operation) missing << tr("the operation section");
+  if (!p.expert) missing << tr("the expert section (its grid and cost weights)");
+  if (missing.size() > 1) missing.last().prepend(tr("and "));
+  return missing.join(missing.size() > 2 ? ", " : " ");
+}
+
+// A Pareto section with the tool-life (Taylor) and roughness laws of Rubio et al.'s aluminium case
+// (Table 3, projects/rubio-pareto-case.mxproj) and its weights: a start that computes, to be replaced
+// by the shop's own laws.
+void ParetoFeature::addParetoSection() {
+  app::Project edited = context_.project();
+  if (edited.pareto) return;
+  app::ParetoSection section;
+  section.taylor = app::PowerLawSpec{15300000.0, -3.02, -1.14, -0.54};
+  section.roughness = app::PowerLawSpec{0.98, 0.4638, 1.129, 0.4461};
+  section.weights = std::vector<double>{0.4, 0.1, 0.3, 0.2};
+  edited.pareto = section;
+  emit editRequested(edited, tr("Add a Pareto section"), 0);
 }
 
 void ParetoFeature::disable() {
@@ -233,6 +272,7 @@ void ParetoFeature::onStudyReady(const QString& error) {
   setControlsEnabled(ok);
   if (!ok) {
     front_view_->setPoints({});
+    front_notice_->showNotice(tr("The Pareto study could not run: %1").arg(error));
     choice_.reset();
     showChoiceMarker();
     emit statusMessage(tr("Pareto expert system unavailable: %1").arg(error), 15000);

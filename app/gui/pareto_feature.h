@@ -24,6 +24,7 @@ namespace mx::widgets {
 class HistoryView;
 class LobeChartView;
 class MonitoringPanel;
+class NoticeStack;
 class OperatorRulesEditor;
 class ParetoChoiceSummaryPanel;
 class ParetoFrontView;
@@ -69,6 +70,8 @@ class ParetoFeature : public WindowFeature {
   void connectSignals();
   void rebuild();
   void disable();
+  QString missingSections() const;  // "" when the study can run
+  void addParetoSection();
   void setControlsEnabled(bool enabled);
   void onStudyReady(const QString& error);
   std::optional<app::ParetoChoice> chooseWith(const ParetoWeights& w, bool auto_weights);
@@ -96,6 +99,7 @@ class ParetoFeature : public WindowFeature {
   widgets::RequirementsPanel* requirements_;
   widgets::ParetoChoiceSummaryPanel* summary_;
   widgets::ParetoFrontView* front_view_;
+  widgets::NoticeStack* front_notice_;  // the front, or why there is none
   widgets::MonitoringPanel* monitoring_;
   widgets::HistoryView* history_;
   widgets::OperatorRulesEditor* rules_editor_;

@@ -11,12 +11,14 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <cmath>
 
 #include "document/project.h"
 #include "history_view.h"
 #include "main_window.h"
 #include "monitoring_panel.h"
+#include "notice_stack.h"
 #include "operator_rules_editor.h"
 #include "pareto_front_view.h"
 #include "pareto_runner.h"
@@ -55,6 +57,31 @@ class TestParetoFeature : public QObject {
   void init() {
     QCoreApplication::setOrganizationName("MillExpertTest");
     QCoreApplication::setApplicationName("millexpert-test");
+  }
+
+  // Without a "pareto" section the front dock says so instead of an empty 0-1 plot; its button adds
+  // a section with Rubio et al.'s laws (one undo step) and the front follows.
+  void frontWithoutAStudySaysWhyAndAddsOne() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    window.resize(1600, 950);
+    window.show();
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    auto* notice = test::windowPart<widgets::NoticeStack>(window, "paretoFrontNotice");
+    QTRY_VERIFY(notice->noticeShown());
+    QVERIFY2(notice->noticeText().contains("no Pareto study"), qPrintable(notice->noticeText()));
+    QVERIFY(!window.project()->pareto);
+    QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
+    QTest::mouseClick(notice->actionButton(), Qt::LeftButton);
+    QVERIFY(window.project()->pareto && window.project()->pareto->taylor);
+    QCOMPARE(window.project()->pareto->taylor->speed_exponent, -3.02);
+    QTRY_VERIFY(!notice->noticeShown());
+    QTRY_VERIFY_WITH_TIMEOUT(test::paretoOf(window)->runner()->study() != nullptr, 120000);
+    QCOMPARE_GT(test::paretoOf(window)->runner()->study()->front().size(), std::size_t{1});
+    window.document()->undoStack()->undo();
+    QVERIFY(!window.project()->pareto);
+    QTRY_VERIFY(notice->noticeShown());  // the study is rebuilt once the edits pause
   }
 
   // The chart marks the choice of the study's tool once; a live weight move redraws that one marker.
