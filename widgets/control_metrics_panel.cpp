@@ -5,6 +5,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "glossary.h"
 #include "indicator_gauge.h"
 #include "monitoring_panel.h"
 
@@ -50,6 +51,8 @@ ControlMetricsPanel::ControlMetricsPanel(QWidget* parent) : QWidget(parent), war
     form->addRow(label, value);
     values_.insert(QString::fromLatin1(r.key), value);
   }
+  labels_["jc"]->setWhatsThis(glossaryText(Term::Jc));
+  values_["jc"]->setWhatsThis(glossaryText(Term::Jc));
   warning_->setObjectName(QStringLiteral("control_metric_warning"));
   warning_->setWordWrap(true);
   warning_->setStyleSheet(QString("QLabel { background: %1; color: white; padding: 4px; border-radius: 4px; "

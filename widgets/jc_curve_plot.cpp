@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glossary.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -29,6 +31,7 @@ JcCurvePlot::JcCurvePlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPl
       tr("Cost J_c(\u03b2) (eq. 34): the area between the continuous plant output and the linear interpolation of "
          "its samples; smaller means fewer overshoots between samples. Shaded: \u03b2 where H_\u03b2 has an "
          "unstable zero."));
+  setWhatsThis(glossaryText(Term::Jc));  // the plot has none: What's This reaches this widget
   plot_->xAxis->setLabel(tr("FROH gain \u03b2 [\u2013]"));
   plot_->yAxis->setLabel(tr("Cost J_c [N\u00b7s]"));
   plot_->xAxis->setRange(kBetaMin - 0.05, kBetaMax + 0.05);

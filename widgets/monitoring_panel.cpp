@@ -6,7 +6,9 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
+#include <utility>
 
+#include "glossary.h"
 #include "indicator_gauge.h"
 
 namespace mx::widgets {
@@ -96,6 +98,10 @@ MonitoringPanel::MonitoringPanel(QWidget* parent)
     value->setToolTip(tip);
     form->addRow(name, value);
     values_.insert(r.key, value);
+  }
+  for (const auto& [key, term] : {std::pair{"ros", Term::Ros}, std::pair{"eta", Term::Eta}}) {
+    names_[key]->setWhatsThis(glossaryText(term));
+    values_[key]->setWhatsThis(glossaryText(term));
   }
 
   verdict_->setObjectName("monitoring_verdict");

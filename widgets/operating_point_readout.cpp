@@ -3,6 +3,9 @@
 #include <QFormLayout>
 #include <QVBoxLayout>
 #include <cmath>
+#include <utility>
+
+#include "glossary.h"
 
 namespace mx::widgets {
 
@@ -54,6 +57,12 @@ OperatingPointReadout::OperatingPointReadout(QWidget* parent)
        "The time-domain simulation of this point (Live simulation dock): eta = 1 means no growth of the vibration"},
   };
   for (const auto& r : rows) values_.insert(r.key, addRow(r.key, tr(r.label), tr(r.tip)));
+  // What's This (Shift+F1) on the symbols of the glossary, label and value alike.
+  const std::pair<const char*, Term> terms[] = {{"dns", Term::DeltaNs}, {"ros", Term::Ros}, {"simulation", Term::Eta}};
+  for (const auto& [key, term] : terms) {
+    values_[key]->setWhatsThis(glossaryText(term));
+    form->labelForField(values_[key])->setWhatsThis(glossaryText(term));
+  }
   refresh();
 }
 

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "expert/expert_session.h"
+#include "glossary.h"
 #include "model/milling_setup.h"
 #include "ranking_table_model.h"
 
@@ -26,6 +27,9 @@ RankingTable::RankingTable(QWidget* parent)
   view_->horizontalHeader()->setStretchLastSection(true);
   view_->setToolTip(tr("Tool ranking by minimum tool cost C (Rule 4), best first. Click a tool to show its lobes."));
   setToolTip(view_->toolTip());
+  // What's This on the table as a whole; each header has its own (RankingTableModel, Qt::WhatsThisRole).
+  view_->setWhatsThis(glossaryText(Term::QStar) + "\n\n" + glossaryText(Term::QStarStar));
+  setWhatsThis(view_->whatsThis());
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   stale_->setObjectName("ranking_stale");

@@ -222,7 +222,27 @@ QVariant RankingTableModel::headerData(int section, Qt::Orientation orientation,
   };
   if (role == Qt::DisplayRole) return header().title;
   if (role == Qt::ToolTipRole) return header().tip;
+  if (role == Qt::WhatsThisRole) return columnTerm(section) ? glossaryText(*columnTerm(section)) : QVariant();
   return {};
+}
+
+// The glossary term a column shows (What's This, Shift+F1): q*'s coordinates, q**'s costs, ΔN_s.
+std::optional<Term> RankingTableModel::columnTerm(int column) {
+  switch (column) {
+    case Speed:
+    case Depth:
+    case Feed:
+      return Term::QStar;
+    case DnsTerm:
+    case Dns:
+      return Term::DeltaNs;
+    case TimeCost:
+    case FrequencyCost:
+    case ResultantCost:
+      return Term::QStarStar;
+    default:
+      return std::nullopt;
+  }
 }
 
 Qt::ItemFlags RankingTableModel::flags(const QModelIndex& index) const {

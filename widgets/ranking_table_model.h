@@ -1,6 +1,7 @@
 #pragma once
 // Table model of the RankingTable: one row per RankingRow, in the given (rank) order. Display text
-// with units in the headers, raw values under ValueRole, the selected tool bold with a check mark.
+// with units in the headers, the glossary's What's This on the q*, q** and ΔN_s columns, raw values
+// under ValueRole, the selected tool bold with a check mark.
 // setRanking() with the same tools in the same order only emits dataChanged; the same tools in another
 // order are a layout change (persistent indexes follow their tool, so views keep their selection);
 // a different set of tools resets the model.
@@ -11,6 +12,7 @@
 #include <optional>
 
 #include "display_units.h"
+#include "glossary.h"
 #include "ranking_table.h"
 
 namespace mx::widgets {
@@ -56,6 +58,7 @@ class RankingTableModel : public QAbstractTableModel {
  private:
   double value(const RankingRow& row, int column) const;  // in display units
   static std::optional<Quantity> quantity(int column);
+  static std::optional<Term> columnTerm(int column);
   QString text(const RankingRow& row, int column) const;
   void unitsChanged();
 

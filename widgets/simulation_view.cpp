@@ -13,6 +13,7 @@
 #include <limits>
 #include <vector>
 
+#include "glossary.h"
 #include "indicator_gauge.h"
 #include "spectrum_plot.h"
 
@@ -151,6 +152,8 @@ QWidget* SimulationView::buildIndicatorPanel() {
                                   tr("\u03b7 = max|F_dynamic| / max|F_static| over the evaluated revolutions "
                                      "(Rubio et al. 2006, eq. 11)"),
                                   1.3, panel);
+  eta_gauge_->setObjectName(QStringLiteral("etaGauge"));
+  eta_gauge_->setWhatsThis(glossaryText(Term::Eta));
   chip_gauge_ = new IndicatorGauge(tr("Chip ratio h_dyn/h_st"),
                                    tr("Maximum dynamic over maximum static chip thickness (Rule 15)"), 1.25, panel);
   details_label_ = new QLabel(panel);

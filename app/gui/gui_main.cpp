@@ -1,16 +1,17 @@
-// millexpert: the GUI. "millexpert [PROJECT]" opens PROJECT, else the bundled default project.
+// millexpert: the GUI. "millexpert [PROJECT]" opens PROJECT, else the bundled default project (the start
+// page when the examples are not found).
 // "--point RPM,MM[,MM_PER_TOOTH]" picks the initial operating point; "--screenshot FILE" saves the
 // window once the lobes and the point's simulation are shown, then quits (docs, scripts).
 #include <QApplication>
 #include <QComboBox>
 #include <QCommandLineParser>
 #include <QDockWidget>
-#include <QFile>
 #include <QTextStream>
 #include <QTimer>
 #include <clocale>
 #include <memory>
 
+#include "example_projects.h"
 #include "lobes_feature.h"
 #include "machining_feature.h"
 #include "main_window.h"
@@ -20,13 +21,6 @@
 #include "supervisor_view.h"
 #include "tap_test_feature.h"
 #include "tap_test_panel.h"
-
-namespace {
-QString defaultProject() {
-  if (QFile::exists(MX_DEFAULT_PROJECT)) return MX_DEFAULT_PROJECT;
-  return "/usr/share/millexpert/projects/rubio2006-tool-selection.mxproj";
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
@@ -61,7 +55,9 @@ int main(int argc, char** argv) {
                     "and simulate it."});
   parser.process(app);
 
-  const QString path = parser.positionalArguments().value(0, defaultProject());
+  // The bundled default, where the examples are (example_projects.h); none found: the start page.
+  const QString path =
+      parser.positionalArguments().value(0, mx::gui::exampleProject("rubio2006-tool-selection.mxproj"));
   mx::gui::MainWindow window;
   const QString screenshot = parser.value("screenshot");
   window.setQuiet(!screenshot.isEmpty());
@@ -166,7 +162,7 @@ int main(int argc, char** argv) {
     });
     QTimer::singleShot(60000, &app, [] { QApplication::exit(1); });
   }
-  if (!window.openProject(path) && !screenshot.isEmpty()) return 2;
+  if (!path.isEmpty() && !window.openProject(path) && !screenshot.isEmpty()) return 2;
   if (parser.isSet("sdnrp")) machining->runSurfaceFinish();
   if (parser.isSet("supervise")) {
     mx::widgets::SupervisorView* view = supervisor->view();

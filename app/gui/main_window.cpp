@@ -11,6 +11,7 @@
 #include "engine_runner.h"
 #include "expert_feature.h"
 #include "feature_context.h"
+#include "help_feature.h"
 #include "lobes_feature.h"
 #include "machining_feature.h"
 #include "pareto_feature.h"
@@ -18,6 +19,7 @@
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
 #include "tap_test_feature.h"
+#include "tool_library_transfer.h"
 
 namespace mx::gui {
 
@@ -31,14 +33,19 @@ MainWindow::MainWindow(QWidget* parent)
   connect(lobes, &LobesFeature::cancelRequested, this, &MainWindow::stopFeatures);
   // The docks of a feature tab with those of the features before it: the order matters.
   addFeature(lobes);
-  addFeature(new EditorsFeature(this, *context_));
+  auto* editors = new EditorsFeature(this, *context_);
+  addFeature(editors);
   addFeature(new SimulationFeature(this, *context_));
-  addFeature(new TapTestFeature(this, *context_));
+  auto* tap_test = new TapTestFeature(this, *context_);
+  addFeature(tap_test);
   addFeature(new ExpertFeature(this, *context_, lobes->chart()));
   addFeature(new ParetoFeature(this, *context_, lobes->chart()));
   addFeature(new ControlFeature(this, *context_));
   addFeature(new MachiningFeature(this, *context_));
   addFeature(new SupervisorFeature(this, *context_));
+  auto* help = new HelpFeature(this);
+  addFeature(help);
+  connectHelp(help, editors, tap_test);
   buildActions();
   units_.setShop(widgets::readShopUnits(QSettings()));  // the user's; the views follow its changed()
 
@@ -55,6 +62,18 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() {
   stopFeatures();
+}
+
+// The start page's and the Examples menu's requests: the window's own open (with its save prompt),
+// and the imports of the features that own them.
+void MainWindow::connectHelp(HelpFeature* help, EditorsFeature* editors, TapTestFeature* tap_test) {
+  connect(help, &HelpFeature::projectOpenRequested, this, [this](const QString& path) {
+    if (maybeSave()) openProject(path);
+  });
+  connect(help, &HelpFeature::openProjectRequested, this, &MainWindow::onOpen);
+  connect(help, &HelpFeature::tapTestImportRequested, tap_test, &TapTestFeature::chooseImport);
+  connect(help, &HelpFeature::toolLibraryImportRequested, editors->libraryTransfer(),
+          &ToolLibraryTransfer::chooseImport);
 }
 
 void MainWindow::stopFeatures() {

@@ -2,7 +2,7 @@
 // MillExpert main window: a host of features (window_feature.h). It keeps the project document
 // (undo/redo, autosave, recovery), the display units, the engine thread, the menus and the status
 // bar. Each feature (lobes and the operating point, the editors, the simulation, the expert ranking,
-// the Pareto study, force control, machining and the supervisor) owns its docks, runner and
+// the Pareto study, force control, machining, the supervisor and help) owns its docks, runner and
 // generation counters; it takes each project change and requests edits, which the window applies.
 #include <QMainWindow>
 #include <utility>
@@ -17,8 +17,11 @@ class ShopUnitsDialog;
 
 namespace mx::gui {
 
+class EditorsFeature;
 class EngineRunner;
 class FeatureContext;
+class HelpFeature;
+class TapTestFeature;
 class WindowFeature;
 
 class MainWindow : public QMainWindow {
@@ -45,6 +48,7 @@ class MainWindow : public QMainWindow {
  private:
   // main_window.cpp
   void addFeature(WindowFeature* feature);
+  void connectHelp(HelpFeature* help, EditorsFeature* editors, TapTestFeature* tap_test);
   void applyFeatureEdit(const WindowFeature* feature, const app::Project& edited, const QString& description,
                         int gesture);
   void onProjectChanged(app::ProjectChanges changes);

@@ -65,6 +65,9 @@ void MainWindow::buildActions() {
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
 
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  for (WindowFeature* feature : features_) feature->addHelpActions(help);
+
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());

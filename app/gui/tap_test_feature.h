@@ -38,6 +38,8 @@ class TapTestFeature : public WindowFeature {
                   std::optional<FrfQuantity> quantity);
   // The accepted tool edit for `direction` (what Accept applies), or the reason it cannot be made.
   std::optional<app::Project> acceptedProject(const QString& direction, QString* why) const;
+  // File > Import tap test: the file, the direction (and a CSV's quantity) asked, then importFile.
+  void chooseImport();
   widgets::TapTestPanel* panel() const { return panel_; }
   TapTestRunner* runner() const { return runner_; }
 
@@ -59,7 +61,6 @@ class TapTestFeature : public WindowFeature {
     std::optional<int> dataset;
   };
 
-  void chooseImport();
   void exportFrf();
   void onLoaded(quint64 generation, const TapTestFile& file);
   void onFitted(quint64 generation, const TapTestFit& fit);

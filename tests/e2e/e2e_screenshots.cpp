@@ -4,6 +4,7 @@
 // there fails, naming what it waited for; packaging/screenshots.sh runs this scenario.
 #include "e2e_screenshots.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
@@ -12,6 +13,7 @@
 #include <QImage>
 #include <QScreen>
 #include <QScrollArea>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTest>
@@ -24,6 +26,8 @@
 #include "e2e_driver.h"
 #include "e2e_report.h"
 #include "e2e_window.h"
+#include "guide_window.h"
+#include "help_feature.h"
 #include "machine_operation_panel.h"
 #include "machining_feature.h"
 #include "material_choices.h"
@@ -64,6 +68,8 @@ struct Shot {
   bool preferences = false;         // Edit > Preferences... open over the window (a grab of the screen)
   const char* library = "";         // imported (in projects/), then its import dialog open over the window
   const char* material = "";        // copied from the materials library through the material panel's picker
+  bool start_page = false;          // a window without a project: the start page, `project` a recent one
+  bool guide = false;               // Help > User guide open beside the window (a grab of the screen)
 };
 
 const Shot kShots[] = {
@@ -109,6 +115,8 @@ const Shot kShots[] = {
      .project = "rubio2006-tool-selection.mxproj",
      .docks = "machineDock",
      .material = "Al7075-T6"},
+    {.file = "start-screen.png", .project = "rubio-pareto-case.mxproj", .start_page = true},
+    {.file = "user-guide.png", .project = "rubio2006-tool-selection.mxproj", .guide = true},
 };
 
 QString projectFile(const char* relative) {
@@ -146,6 +154,27 @@ void pickMaterial(gui::MainWindow& window, const QString& id) {
   area->ensureWidgetVisible(panel->field("material.process_damping_N_per_m"), 0, 20);
 }
 
+// The start page of a window opened without a project, after `recent` and two other examples were
+// opened (the e2e run's own settings, as a user's File > Open recent keeps them).
+std::unique_ptr<gui::MainWindow> startPage(const QString& recent) {
+  QSettings().setValue("recentFiles", QStringList{projectFile("tap-test-example.mxproj"), recent,
+                                                  projectFile("rubio2006-tool-selection.mxproj")});
+  std::unique_ptr<gui::MainWindow> window = showWindow();
+  auto* help = part<gui::HelpFeature>(*window, "helpFeature");
+  waitFor([help] { return help->startScreenShown(); }, kShotMs, "the start page of a window without a project");
+  QTest::qWait(500);  // its first paint
+  return window;
+}
+
+// Help > User guide, placed over the right of the window (Xvfb has no window manager to do it).
+QWidget* openGuide(gui::MainWindow& window) {
+  QAction* guide = part<QAction>(window, "userGuideAction");
+  guide->trigger();
+  auto* shown = part<widgets::GuideWindow>(window, "guideWindow");
+  shown->setGeometry(560, 0, 1360, 1080);
+  return shown;
+}
+
 // Imports every tool of `library` into the window's project, selects the first one imported, and
 // opens the import dialog on the same library (as Import library... shows it).
 QDialog* importDialog(Report& report, gui::MainWindow& window, const QString& library) {
@@ -168,7 +197,22 @@ QDialog* importDialog(Report& report, gui::MainWindow& window, const QString& li
   return dialog;
 }
 
+void saveShot(Report& report, const Shot& shot, const QDir& folder, const QImage& image, const QWidget& window) {
+  const QString path = folder.filePath(shot.file);
+  report.check(QString("%1.saved").arg(shot.file), image.save(path), path);
+  report.check(QString("%1.size").arg(shot.file), image.size() == QSize(1920, 1080),
+               QString("%1x%2; the window's minimum size is %3x%4")
+                   .arg(image.width())
+                   .arg(image.height())
+                   .arg(window.minimumSizeHint().width())
+                   .arg(window.minimumSizeHint().height()));
+}
+
 void takeShot(Report& report, const Shot& shot, const QDir& folder) {
+  if (shot.start_page) {
+    std::unique_ptr<gui::MainWindow> window = startPage(projectFile(shot.project));
+    return saveShot(report, shot, folder, window->grab().toImage(), *window);
+  }
   std::unique_ptr<gui::MainWindow> owner = showWindow();
   gui::MainWindow& window = *owner;
   // Each shot in its own units, whatever an earlier run left in the settings.
@@ -289,18 +333,15 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
     pickMaterial(window, shot.material);
     QTest::qWait(300);
   }
-  // The dialog is a window of its own: the screen holds both.
-  const QImage image = dialog ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
-                              : window.grab().toImage();
+  QWidget* guide = shot.guide ? openGuide(window) : nullptr;
+  if (guide) QTest::qWait(500);  // its first paint
+  // A dialog or the guide is a window of its own: the screen holds both.
+  const QImage image = dialog || guide
+                           ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
+                           : window.grab().toImage();
+  if (guide) guide->close();
   if (dialog) dialog->reject();
-  const QString path = folder.filePath(shot.file);
-  report.check(QString("%1.saved").arg(shot.file), image.save(path), path);
-  report.check(QString("%1.size").arg(shot.file), image.size() == QSize(1920, 1080),
-               QString("%1x%2; the window's minimum size is %3x%4")
-                   .arg(image.width())
-                   .arg(image.height())
-                   .arg(window.minimumSizeHint().width())
-                   .arg(window.minimumSizeHint().height()));
+  saveShot(report, shot, folder, image, window);
 }
 
 }  // namespace

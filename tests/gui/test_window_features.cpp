@@ -28,9 +28,9 @@ class TestWindowFeatures : public QObject {
   // its docks; the window itself holds no view of a feature.
   void featuresAreFoundByNameWithTheirDocks() {
     gui::MainWindow window;
-    const QStringList features{"lobesFeature",   "editorsFeature",   "simulationFeature",
-                               "tapTestFeature", "expertFeature",    "paretoFeature",
-                               "controlFeature", "machiningFeature", "supervisorFeature"};
+    const QStringList features{"lobesFeature",      "editorsFeature", "simulationFeature", "tapTestFeature",
+                               "expertFeature",     "paretoFeature",  "controlFeature",    "machiningFeature",
+                               "supervisorFeature", "helpFeature"};
     QStringList found;
     for (const auto* f : window.findChildren<gui::WindowFeature*>(Qt::FindDirectChildrenOnly)) found << f->objectName();
     QCOMPARE(found, features);
