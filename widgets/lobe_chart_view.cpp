@@ -283,6 +283,7 @@ void LobeChartView::setSeries(const QVector<ToolLobeSeries>& series, double delt
   power_graph_->setPen(QPen(QColor(40, 40, 40), 1.5, Qt::DashDotLine));
   power_graph_->removeFromLegend();
   panel_->setTools(entries);
+  fitLegendColumns();
   if (!series.isEmpty() && !series.front().speed_rpm.isEmpty()) {
     home_x0_ = series.front().speed_rpm.front();
     home_x1_ = series.front().speed_rpm.back();
@@ -361,6 +362,7 @@ void LobeChartView::setPowerLimit(const QVector<double>& depth_mm, const QString
       power_graph_->addToLegend();
     }
   }
+  fitLegendColumns();
   updateRegions();
   plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -415,6 +417,10 @@ void LobeChartView::setOperatingPoint(double speed_rpm, double depth_mm, PointVe
                              .arg(depth_mm * scale_, 0, 'f', scale_ == 1.0 ? 3 : 4)
                              .arg(unit_));
   marker_label_->setColor(c.darker(150));
+  // On the side facing the middle of the view, so that the right edge never cuts it.
+  const bool right_half = speed_rpm > plot_->xAxis->range().center();
+  marker_label_->position->setCoords(right_half ? -10 : 10, -8);
+  marker_label_->setPositionAlignment((right_half ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignBottom);
   marker_label_->setVisible(true);
   replotOverlay();
 }
@@ -432,13 +438,38 @@ void LobeChartView::setMarker(const QString& name, double speed_rpm, double dept
   text->position->setParentAnchor(tracer->position);
   // The label on the side of the marker facing the middle of the view, so that no axis cuts it.
   const bool right_half = speed_rpm > plot_->xAxis->range().center();
-  text->position->setCoords(right_half ? -8 : 8, 8);
   text->setPositionAlignment((right_half ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
   text->setText(name);
+  placeBelowOtherLabels(text, right_half ? -8 : 8);
   text->setColor(color);
   extra_markers_.push_back({group, tracer});
   extra_markers_.push_back({group, text});
   replotQueued();
+}
+
+namespace {
+QRectF labelRect(QCPItemText* text) {
+  return QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition());
+}
+}  // namespace
+
+// A new marker label hangs below its marker, one text row lower for each label of another marker it
+// would overprint ("q* (R1)" and "q**" at neighbouring points).
+void LobeChartView::placeBelowOtherLabels(QCPItemText* text, double dx) {
+  const double row = QFontMetrics(text->font()).height();
+  const auto overprints = [this, text] {
+    const QRectF mine = labelRect(text);
+    return std::any_of(extra_markers_.begin(), extra_markers_.end(), [&](const auto& marker) {
+      auto* other = qobject_cast<QCPItemText*>(marker.second);
+      return other && other != text && labelRect(other).intersects(mine);
+    });
+  };
+  constexpr int kMaxRows = 6;
+  for (int rows = 0; rows <= kMaxRows; ++rows) {
+    text->position->setCoords(dx, 8 + rows * row);
+    if (!overprints()) return;
+  }
+  text->position->setCoords(dx, 8);
 }
 
 void LobeChartView::clearMarkers() {
@@ -604,6 +635,25 @@ void LobeChartView::showCursorLimit(const QPointF& pixel) {
   panel_->setCursorText(text);
 }
 
+// As many legend columns as the widest entry leaves room for in the plot's width (at most two).
+void LobeChartView::fitLegendColumns() {
+  const QFontMetrics metrics(plot_->legend->font());
+  int widest = 0;
+  for (const QString& name : legendNames()) widest = std::max(widest, metrics.horizontalAdvance(name));
+  const int entry = widest + plot_->legend->iconSize().width() + 4 * plot_->legend->iconTextPadding() + 20;
+  const int columns = std::clamp(plot_->width() / std::max(entry, 1), 1, kLegendColumns);
+  if (plot_->legend->wrap() != columns) {
+    plot_->legend->setWrap(columns);
+    plot_->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+  }
+}
+
+void LobeChartView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  fitLegendColumns();
+}
+
 QStringList LobeChartView::legendNames() const {
   QStringList names;
   for (int i = 0; i < plot_->legend->itemCount(); ++i)
@@ -621,6 +671,8 @@ void LobeChartView::setToolsInLegend(bool shown) {
       nominal->removeFromLegend();
   }
   plot_->legend->setWrap(shown ? kExportLegendColumns : kLegendColumns);
+  plot_->legend->setFillOrder(QCPLegend::foColumnsFirst, true);  // re-flows the entries into the columns
+  if (!shown) fitLegendColumns();
 }
 
 int LobeChartView::exportHeight(int width, int height) {

@@ -107,6 +107,7 @@ class LobeChartView : public QWidget {
  protected:
   void keyPressEvent(QKeyEvent* event) override;
   bool eventFilter(QObject* watched, QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   void onMousePress(QMouseEvent* event);
@@ -119,6 +120,8 @@ class LobeChartView : public QWidget {
   void showCursorLimit(const QPointF& pixel);
   void addLineStyleKeys(double delta_per_s, double alpha, bool measured);
   void setToolsInLegend(bool shown);
+  void fitLegendColumns();
+  void placeBelowOtherLabels(QCPItemText* text, double dx);
   bool writeImage(const QString& path, int width, int height);
   void replotOverlay();
   void replotQueued();

@@ -236,6 +236,7 @@ class TestLobeChartView : public QObject {
       if (QRegularExpression("^T(1?[0-9])$").match(plot->graph(i)->name()).hasMatch()) plot->graph(i)->addToLegend();
     QCOMPARE(chart.legendNames().size(), 4 + 19);
     plot->legend->setWrap(3);
+    plot->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
     QCOMPARE_LE(plot->legend->minimumOuterSizeHint().height(), height - 560);
   }
 
@@ -296,6 +297,30 @@ class TestLobeChartView : public QObject {
     QCOMPARE_LE(std::abs(released.front()[1].toDouble() - 0.9 * 0.885), 1e-12);
     chart.setLengthUnit(1.0 / 25.4, "in");
     QCOMPARE(pockets->item(0)->text(), QString("best: 2400 rpm, 0.0322 in"));
+  }
+
+  // Labels face the middle of the view, so that no edge cuts them; the labels of neighbouring markers
+  // stack instead of overprinting.
+  void labelsStayInsideAndApart() {
+    LobeChartView chart;
+    chart.resize(1100, 650);
+    chart.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    chart.setSeries(vSeries(1), 0.05, 0.95);
+    QCustomPlot* plot = plotOf(chart);
+    plot->replot();
+    chart.setOperatingPoint(4990.0, 0.5, mx::widgets::PointVerdict::Stable);
+    chart.setMarker("q* (T1)", 4800.0, 0.6, Qt::blue, "expert");
+    chart.setMarker("q**", 4850.0, 0.62, Qt::magenta, "expert");
+    plot->replot();
+    QVector<QRectF> labels;
+    for (int i = 0; i < plot->itemCount(); ++i)
+      if (auto* text = qobject_cast<QCPItemText*>(plot->item(i)); text && text->visible())
+        labels.push_back(QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()));
+    QCOMPARE(labels.size(), 3);  // the point's and the two markers'
+    const QRectF area = plot->axisRect()->rect();
+    for (const QRectF& r : labels) QVERIFY2(area.contains(r), "a label crosses the plot's edge");
+    QVERIFY(!labels[1].intersects(labels[2]));
   }
 
   // Under the mouse: the speed and depth there and the active tool's b_lim at that speed; on T1's
