@@ -110,6 +110,15 @@ void LobesFeature::connectSignals() {
   });
   connect(&context_.document(), &app::ProjectDocument::pointChanged, this, &LobesFeature::showPoint);
   connect(&context_, &FeatureContext::activeToolChanged, this, &LobesFeature::showActiveTool);
+  connect(chart_, &widgets::LobeChartView::activeToolRequested, this, [this](int index) {
+    if (snapshot_ && index < static_cast<int>(snapshot_->tools.size()))
+      context_.setActiveTool(QString::fromStdString(snapshot_->tools[static_cast<size_t>(index)].setup.tool_id));
+  });
+  connect(chart_, &widgets::LobeChartView::toolVisibilityChanged, this, [this](const QString& id, bool visible) {
+    if (!tools_menu_) return;
+    for (QAction* a : tools_menu_->actions())
+      if (a->text() == id) a->setChecked(visible);
+  });
   connect(tool_combo_, &QComboBox::currentTextChanged, &context_, &FeatureContext::setActiveTool);
   connect(method_combo_, &QComboBox::currentIndexChanged, this, [this](int index) {
     method_ = index == 0 ? LobeMethod::ZeroOrder : LobeMethod::SemiDiscretization;
