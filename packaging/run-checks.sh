@@ -40,8 +40,9 @@ check_tsan() {
   local targets
   targets=$(ctest --preset tsan -N | sed -n 's/^ *Test *#[0-9]*: \([a-z_]*\)\..*$/tests_\1/p' | sort -u)
   [ -n "$targets" ] || { echo "run-checks: no test has the label threads"; return 1; }
+  # The programs those tests start (MX_CLI_PATH and the report writer beside it) are built too.
   # shellcheck disable=SC2086 # one word per target
-  cmake --build --preset tsan --parallel "$(nproc)" --target $targets
+  cmake --build --preset tsan --parallel "$(nproc)" --target $targets millexpert-cli millexpert-report
   in_fresh_home ctest --preset tsan --parallel "$(nproc)"
 }
 
