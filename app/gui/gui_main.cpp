@@ -115,9 +115,10 @@ int main(int argc, char** argv) {
   for (const QString& name : parser.value("docks").split(',', Qt::SkipEmptyParts))
     if (auto* dock = window.findChild<QDockWidget*>(name)) {
       dock->raise();
-      // A raised bottom dock gets 55 % of the height (plots need it); a right dock keeps its width.
+      // A raised bottom dock gets 40 % of the height (its plots need it, the chart keeps the most); a
+      // right dock keeps its width.
       if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
-        window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
+        window.resizeDocks({dock}, {window.height() * 40 / 100}, Qt::Vertical);
     }
   const bool pareto = parser.isSet("pareto");
   bool moved_to_pareto = false;

@@ -44,6 +44,7 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   // main_window.cpp
@@ -56,6 +57,8 @@ class MainWindow : public QMainWindow {
   void showError(const QString& title, const QString& message);
   // main_window_actions.cpp
   void buildActions();
+  void addUndoButtons(QToolBar* bar);
+  void applyDefaultDockSizes();
   void updateRecentMenu();
   void addRecentFile(const QString& path);
   // main_window_file.cpp
@@ -78,6 +81,7 @@ class MainWindow : public QMainWindow {
   QMenu* recent_menu_ = nullptr;
   widgets::ShopUnitsDialog* preferences_ = nullptr;
   bool quiet_ = false;
+  bool default_layout_pending_ = false;  // no saved layout: the default sizes on the first show
   RecoveryPolicy recovery_ = RecoveryPolicy::Ask;
 };
 

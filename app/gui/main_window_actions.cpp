@@ -6,6 +6,7 @@
 #include <QSettings>
 #include <QToolBar>
 #include <QUndoStack>
+#include <utility>
 
 #include "main_window.h"
 #include "shop_units_dialog.h"
@@ -56,8 +57,7 @@ void MainWindow::buildActions() {
       tr("Shop units: mm or inch, m/min or SFM, mm/min or IPM, W, kW or hp, N or lbf, cm\u00b3/min or in\u00b3/min"),
       [this] { openPreferences(); });
   bar->addSeparator();
-  bar->addAction(undo);
-  bar->addAction(redo);
+  addUndoButtons(bar);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   bar->addSeparator();
@@ -70,8 +70,49 @@ void MainWindow::buildActions() {
 
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
-  restoreState(settings.value("window/state").toByteArray());
+  default_layout_pending_ = !restoreState(settings.value("window/state").toByteArray());
   updateRecentMenu();
+}
+
+// Toolbar buttons of fixed text: the menu's "Undo <edit>" would resize the button with every edit and
+// shift the buttons after it. What they undo and redo is in their tooltips.
+void MainWindow::addUndoButtons(QToolBar* bar) {
+  QUndoStack* stack = doc_.undoStack();
+  const auto button = [&](const QString& text, const char* name, void (QUndoStack::*slot)()) {
+    QAction* a = bar->addAction(text, stack, slot);
+    a->setObjectName(name);
+    return a;
+  };
+  QAction* undo = button(tr("Undo"), "toolbarUndo", &QUndoStack::undo);
+  QAction* redo = button(tr("Redo"), "toolbarRedo", &QUndoStack::redo);
+  const auto follow = [this, stack, undo, redo] {
+    undo->setEnabled(stack->canUndo());
+    redo->setEnabled(stack->canRedo());
+    undo->setToolTip(stack->canUndo() ? tr("Undo %1").arg(stack->undoText()) : tr("Nothing to undo"));
+    redo->setToolTip(stack->canRedo() ? tr("Redo %1").arg(stack->redoText()) : tr("Nothing to redo"));
+  };
+  connect(stack, &QUndoStack::indexChanged, this, follow);
+  connect(stack, &QUndoStack::cleanChanged, this, follow);
+  follow();
+}
+
+// Without a saved layout: the chart keeps most of the height, the bottom docks about a third and the
+// side docks about a quarter of the width each (at 1920 x 1080: a 580 px tall chart area).
+void MainWindow::applyDefaultDockSizes() {
+  QList<QDockWidget*> bottom, sides;
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+    if (dock->isFloating() || !dock->toggleViewAction()->isChecked()) continue;
+    const Qt::DockWidgetArea area = dockWidgetArea(dock);
+    if (area == Qt::BottomDockWidgetArea) bottom << dock;
+    if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) sides << dock;
+  }
+  resizeDocks(bottom, QList<int>(bottom.size(), height() * 34 / 100), Qt::Vertical);
+  resizeDocks(sides, QList<int>(sides.size(), width() * 23 / 100), Qt::Horizontal);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (std::exchange(default_layout_pending_, false)) applyDefaultDockSizes();
 }
 
 widgets::ShopUnitsDialog* MainWindow::openPreferences() {

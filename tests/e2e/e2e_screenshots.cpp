@@ -123,13 +123,13 @@ QString projectFile(const char* relative) {
   return QStringLiteral(MX_PROJECTS_DIR "/") + relative;
 }
 
-// The docks raised as gui_main's --docks does: a bottom dock gets 55 % of the height for its plots.
+// The docks raised as gui_main's --docks does: a bottom dock gets 40 % of the height for its plots.
 void raiseDocks(gui::MainWindow& window, const QString& names) {
   for (const QString& name : names.split(',', Qt::SkipEmptyParts)) {
     auto* dock = part<QDockWidget>(window, name);
     dock->raise();
     if (window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea)
-      window.resizeDocks({dock}, {window.height() * 55 / 100}, Qt::Vertical);
+      window.resizeDocks({dock}, {window.height() * 40 / 100}, Qt::Vertical);
   }
 }
 

@@ -1,14 +1,18 @@
 // Main window (offscreen): save/reopen, autosave recovery after a simulated crash, the untitled
 // autosave's folder, a bad file that keeps the project, and saves that fail (a read-only folder, the
-// file replaced by a directory) showing the error and keeping the changes.
+// file replaced by a directory) showing the error and keeping the changes; the default layout at
+// 1080p and the toolbar's steady Undo button.
 #include <QAction>
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QUndoStack>
 
 #include "document/project_validation.h"
 #include "main_window.h"
@@ -176,6 +180,33 @@ class TestMainWindow : public QObject {
     QCOMPARE(window.project()->machine->spindle_power_W, 999.0);
     QVERIFY(window.document()->point() == point);
     QCOMPARE(window.document()->undoStack()->count(), steps);
+  }
+
+  // Without a saved layout the chart keeps most of the height at 1920 x 1080 (the bottom docks about
+  // a third); the toolbar's Undo keeps its place and width whatever it undoes.
+  void defaultLayoutLeavesTheChartTheHeight() {
+    QSettings().remove("window/state");
+    QSettings().remove("window/geometry");
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    window.resize(1920, 1080);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openProject(kRubio));
+    QTRY_VERIFY2(window.centralWidget()->height() >= 1080 / 2,
+                 qPrintable(QString::number(window.centralWidget()->height())));
+    auto* toolbar = window.findChild<QToolBar*>("mainToolbar");
+    auto* undo = window.findChild<QAction*>("toolbarUndo");
+    QVERIFY(toolbar && undo);
+    QWidget* button = toolbar->widgetForAction(undo);
+    const QRect before = button->geometry();
+    QVERIFY(!undo->isEnabled());
+    window.document()->setPoint({4000.0, 0.5, 0.1});  // an undoable point move, with its own text
+    QVERIFY(undo->isEnabled());
+    QVERIFY2(undo->toolTip().startsWith("Undo "), qPrintable(undo->toolTip()));
+    QCOMPARE(undo->text(), QString("Undo"));
+    QCOMPARE(button->geometry(), before);
   }
 
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
