@@ -83,6 +83,9 @@ QWidget* StartScreen::buildActions() {
       {"startImportToolLibrary", tr("Import a tool library..."),
        tr("Tools from Fusion 360, FreeCAD, LinuxCNC, or a CSV or JSON library."),
        &StartScreen::toolLibraryImportRequested},
+      {"startAddTool", tr("Add a tool"),
+       tr("A tool typed in by hand in the tool library: teeth, diameter and the modes of a tap test."),
+       &StartScreen::addToolRequested},
       {"startOpenProject", tr("Open a project..."), tr("A MillExpert project file (.mxproj)."),
        &StartScreen::openProjectRequested},
   };

@@ -37,6 +37,7 @@ class StartScreen : public QWidget {
   void openProjectRequested();              // a file dialog
   void tapTestImportRequested();
   void toolLibraryImportRequested();
+  void addToolRequested();  // a tool typed in by hand, in the tool library
 
  private:
   QWidget* buildActions();

@@ -29,6 +29,7 @@ HelpFeature::HelpFeature(QMainWindow* window)
   connect(start_, &widgets::StartScreen::openProjectRequested, this, &HelpFeature::openProjectRequested);
   connect(start_, &widgets::StartScreen::tapTestImportRequested, this, &HelpFeature::tapTestImportRequested);
   connect(start_, &widgets::StartScreen::toolLibraryImportRequested, this, &HelpFeature::toolLibraryImportRequested);
+  connect(start_, &widgets::StartScreen::addToolRequested, this, &HelpFeature::addToolRequested);
   if (QWidget* host = window->centralWidget()) host->installEventFilter(this);
 }
 

@@ -43,6 +43,7 @@ class HelpFeature : public WindowFeature {
   void openProjectRequested();                     // File > Open's dialog
   void tapTestImportRequested();
   void toolLibraryImportRequested();
+  void addToolRequested();
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;  // the central widget moved or resized

@@ -19,6 +19,7 @@
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
 #include "tap_test_feature.h"
+#include "tool_library_editor.h"
 #include "tool_library_transfer.h"
 
 namespace mx::gui {
@@ -74,6 +75,7 @@ void MainWindow::connectHelp(HelpFeature* help, EditorsFeature* editors, TapTest
   connect(help, &HelpFeature::tapTestImportRequested, tap_test, &TapTestFeature::chooseImport);
   connect(help, &HelpFeature::toolLibraryImportRequested, editors->libraryTransfer(),
           &ToolLibraryTransfer::chooseImport);
+  connect(help, &HelpFeature::addToolRequested, editors->toolEditor(), &widgets::ToolLibraryEditor::addTool);
 }
 
 void MainWindow::stopFeatures() {

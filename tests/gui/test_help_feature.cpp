@@ -271,6 +271,20 @@ class TestHelpFeature : public QObject {
     QVERIFY(helpOf(window)->startScreenShown());  // cancelled: the project is still empty
   }
 
+  // An empty library's "Add a tool": one undoable new tool, the lobes instead of the page.
+  void addAToolFromTheStartScreen() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    window.show();
+    QVERIFY(helpOf(window)->startScreenShown());
+    helpOf(window)->startScreen()->button("startAddTool")->click();
+    QCOMPARE(window.project()->tools.size(), std::size_t{1});
+    QVERIFY(!helpOf(window)->startScreenShown());
+    window.document()->undoStack()->undo();
+    QVERIFY(helpOf(window)->startScreenShown());
+  }
+
   void anImportedToolLibraryHidesTheStartScreen() {
     gui::MainWindow window;
     window.setQuiet(true);

@@ -64,6 +64,8 @@ class TestStartScreen : public QObject {
                               << "Import a tap test...";
     QTest::newRow("tool library") << "startImportToolLibrary"
                                   << "Import a tool library...";
+    QTest::newRow("add tool") << "startAddTool"
+                              << "Add a tool";
     QTest::newRow("open") << "startOpenProject"
                           << "Open a project...";
   }
@@ -74,6 +76,7 @@ class TestStartScreen : public QObject {
     QSignalSpy tap(&screen, &StartScreen::tapTestImportRequested);
     QSignalSpy library(&screen, &StartScreen::toolLibraryImportRequested);
     QSignalSpy open(&screen, &StartScreen::openProjectRequested);
+    QSignalSpy add(&screen, &StartScreen::addToolRequested);
     QPushButton* b = screen.button(button);
     QVERIFY(b);
     QCOMPARE(b->text(), text);
@@ -81,6 +84,7 @@ class TestStartScreen : public QObject {
     QCOMPARE(tap.count(), button == "startImportTapTest" ? 1 : 0);
     QCOMPARE(library.count(), button == "startImportToolLibrary" ? 1 : 0);
     QCOMPARE(open.count(), button == "startOpenProject" ? 1 : 0);
+    QCOMPARE(add.count(), button == "startAddTool" ? 1 : 0);
   }
 
   void recentProjectsThatExistOpenOnAClick() {
