@@ -60,6 +60,15 @@ std::array<double, 3> lab(const QColor& c) {
   return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
 }
 
+// The chart on screen (1100 x 650) with vSeries(tools), delta = 0.05 1/s, alpha = 0.95.
+bool showWithTools(LobeChartView& chart, int tools) {
+  chart.resize(1100, 650);
+  chart.show();
+  if (!QTest::qWaitForWindowExposed(&chart)) return false;
+  chart.setSeries(vSeries(tools), 0.05, 0.95);
+  return true;
+}
+
 QCustomPlot* plotOf(const LobeChartView& chart) {
   return qobject_cast<QCustomPlot*>(chart.plotWidget());
 }
@@ -184,10 +193,7 @@ class TestLobeChartView : public QObject {
   void legendKeysStylesBelowThePlot() {
     QFETCH(int, tools);
     LobeChartView chart;
-    chart.resize(1100, 650);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
-    chart.setSeries(vSeries(tools), 0.05, 0.95);
+    QVERIFY(showWithTools(chart, tools));
     const QStringList names = chart.legendNames();
     QCOMPARE(names.size(), 4);  // unstable, admissible, nominal and margined line styles
     for (const QString& name : names) QVERIFY2(!name.startsWith("T"), qPrintable(name));
@@ -256,10 +262,7 @@ class TestLobeChartView : public QObject {
   // The list's check box hides a tool (and says so); a click on a tool asks for it as the active tool.
   void toolListShowsHidesAndActivates() {
     LobeChartView chart;
-    chart.resize(1100, 650);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
-    chart.setSeries(vSeries(3), 0.05, 0.95);
+    QVERIFY(showWithTools(chart, 3));
     QSignalSpy visibility(&chart, &LobeChartView::toolVisibilityChanged);
     QSignalSpy activate(&chart, &LobeChartView::activeToolRequested);
     QListWidget* list = chart.toolPanel()->toolList();
@@ -280,10 +283,7 @@ class TestLobeChartView : public QObject {
   // The active tool's pockets of its margined lobe, deepest first; a click moves the point there.
   void pocketListMovesThePoint() {
     LobeChartView chart;
-    chart.resize(1100, 650);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
-    chart.setSeries(vSeries(2), 0.05, 0.95);
+    QVERIFY(showWithTools(chart, 2));
     QListWidget* pockets = chart.toolPanel()->pocketList();
     QCOMPARE(pockets->count(), 2);
     QCOMPARE(pockets->item(0)->text(), QString("best: 2400 rpm, 0.81 mm"));
@@ -303,10 +303,7 @@ class TestLobeChartView : public QObject {
   // stack instead of overprinting.
   void labelsStayInsideAndApart() {
     LobeChartView chart;
-    chart.resize(1100, 650);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
-    chart.setSeries(vSeries(1), 0.05, 0.95);
+    QVERIFY(showWithTools(chart, 1));
     QCustomPlot* plot = plotOf(chart);
     plot->replot();
     chart.setOperatingPoint(4990.0, 0.5, mx::widgets::PointVerdict::Stable);
@@ -327,10 +324,7 @@ class TestLobeChartView : public QObject {
   // first lobe flank (1300 rpm) b_lim = 0.5 + 0.001 (2000 - N).
   void cursorReadoutGivesTheLimitUnderTheMouse() {
     LobeChartView chart;
-    chart.resize(1100, 650);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
-    chart.setSeries(vSeries(1), 0.05, 0.95);
+    QVERIFY(showWithTools(chart, 1));
     plotOf(chart)->replot();
     QTest::mouseMove(chart.plotWidget(), chart.pixelFor(1300.0, 0.3));
     const QRegularExpressionMatch m =
