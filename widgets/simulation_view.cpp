@@ -15,7 +15,9 @@
 
 #include "glossary.h"
 #include "indicator_gauge.h"
+#include "plot_legend.h"
 #include "spectrum_plot.h"
+#include "trace_graph.h"
 
 namespace mx::widgets {
 
@@ -25,17 +27,17 @@ constexpr int kLiveSpectrumIntervalMs = 250;
 constexpr std::size_t kLiveSpectrumSamples = 8192;
 const QColor kXColor(31, 119, 180);
 const QColor kYColor(255, 127, 14);
-const QColor kForceColor(120, 120, 120, 150);  // translucent: behind the displacements
+const QColor kForceColor(148, 32, 170);  // saturated purple: apart from x, y and the red limit
+constexpr int kForceBandAlpha = 25;      // fainter: its band spans the displacements' too
 const QColor kPowerColor(44, 160, 44);
 const QColor kLimitColor(214, 39, 40);
 
-QCustomPlot* makePlot(QWidget* parent, const QString& tooltip) {
+QCustomPlot* makePlot(QWidget* parent, const QString& tooltip, int legend_columns) {
   auto* plot = new QCustomPlot(parent);
   plot->setMinimumSize(320, 140);
   plot->legend->setVisible(true);
   plot->legend->setFont(QFont(parent->font().family(), 9));
-  plot->legend->setBrush(QColor(255, 255, 255, 210));
-  plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  placeLegendUnderPlot(plot, legend_columns);  // never over a trace
   plot->setToolTip(tooltip);
   // Dense oscillating traces: antialiased wide polylines take seconds per repaint; these stay ~ms.
   plot->setPlottingHint(QCP::phFastPolylines, true);
@@ -43,24 +45,14 @@ QCustomPlot* makePlot(QWidget* parent, const QString& tooltip) {
   return plot;
 }
 
-QCPGraph* addGraph(QCustomPlot* plot, QCPAxis* value_axis, const QString& name, const QPen& pen) {
-  QCPGraph* graph = plot->addGraph(plot->xAxis, value_axis);
-  graph->setName(name);
-  graph->setPen(pen);
-  graph->setAdaptiveSampling(true);
-  return graph;
-}
-
-// Graph data (t, factor v[i]) for the kept samples; `lo`/`hi` widen to the values seen.
-QVector<QCPGraphData> graphData(const RingBuffer<double>& t, const RingBuffer<double>& v, double& lo, double& hi,
-                                double factor = 1.0) {
-  QVector<QCPGraphData> out(static_cast<qsizetype>(t.size()));
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const double value = factor * v[i];
-    out[static_cast<qsizetype>(i)] = QCPGraphData(t[i], value);
-    if (std::isfinite(value)) {
-      lo = std::min(lo, value);
-      hi = std::max(hi, value);
+// The kept samples of `v` times `factor`; `lo`/`hi` widen to the values seen.
+std::vector<double> plotValues(const RingBuffer<double>& v, double& lo, double& hi, double factor = 1.0) {
+  std::vector<double> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    out[i] = factor * v[i];
+    if (std::isfinite(out[i])) {
+      lo = std::min(lo, out[i]);
+      hi = std::max(hi, out[i]);
     }
   }
   return out;
@@ -79,25 +71,40 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
       y_um_(capacity),
       force_n_(capacity),
       power_w_(capacity),
-      motion_plot_(makePlot(this, tr("Tool vibration and resultant cutting force of the running simulation "
-                                     "(the last samples are kept). Wheel zooms, drag pans."))),
-      power_plot_(makePlot(this, tr("Spindle power P = v \u03a3 F_t against the machine's spindle power limit."))),
+      motion_plot_(makePlot(this,
+                            tr("Tool vibration and resultant cutting force of the running simulation "
+                               "(the last samples are kept). Wheel zooms, drag pans. A band is the least and greatest "
+                               "value of the samples within each pixel column; zoom in for the samples."),
+                            3)),
+      power_plot_(makePlot(this,
+                           tr("Spindle power P = v \u03a3 F_t against the machine's spindle power limit. Wheel "
+                              "zooms, drag pans. A band is the least and greatest value within each pixel column."),
+                           2)),
       spectrum_(new SpectrumPlot(this)),
       replot_timer_(new QTimer(this)) {
   motion_plot_->xAxis->setLabel(tr("Time t [s]"));
-  motion_plot_->yAxis->setLabel(tr("Tool displacement [\u00b5m]"));
+  // Short axis labels: the plots are short in the dock; the legends under them give the full names.
+  motion_plot_->yAxis->setLabel(tr("x, y [\u00b5m]"));
   motion_plot_->yAxis2->setVisible(true);
   motion_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  motion_plot_->yAxis2->setLabelColor(kForceColor);
+  motion_plot_->yAxis2->setTickLabelColor(kForceColor);
   // The force first, so that the displacements are drawn over it.
-  force_graph_ = addGraph(motion_plot_, motion_plot_->yAxis2, QString(), QPen(kForceColor, 1.0));
-  x_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement x [\u00b5m]"), QPen(kXColor, 1.0));
-  y_graph_ = addGraph(motion_plot_, motion_plot_->yAxis, tr("Displacement y [\u00b5m]"), QPen(kYColor, 1.0));
+  force_trace_ = std::make_unique<TraceGraph>(motion_plot_, motion_plot_->yAxis2, kForceColor, kForceBandAlpha);
+  x_trace_ = std::make_unique<TraceGraph>(motion_plot_, motion_plot_->yAxis, kXColor);
+  y_trace_ = std::make_unique<TraceGraph>(motion_plot_, motion_plot_->yAxis, kYColor);
+  x_trace_->setName(tr("Displacement x [\u00b5m]"));
+  y_trace_->setName(tr("Displacement y [\u00b5m]"));
 
   power_plot_->xAxis->setLabel(tr("Time t [s]"));
-  power_graph_ = addGraph(power_plot_, power_plot_->yAxis, QString(), QPen(kPowerColor, 1.0));
-  limit_graph_ =
-      addGraph(power_plot_, power_plot_->yAxis, tr("Spindle power limit"), QPen(kLimitColor, 2.0, Qt::DashLine));
-  limit_graph_->setAdaptiveSampling(false);
+  power_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  power_trace_ = std::make_unique<TraceGraph>(power_plot_, power_plot_->yAxis, kPowerColor);
+  limit_graph_ = power_plot_->addGraph();
+  limit_graph_->setName(tr("Spindle power limit"));
+  limit_graph_->setPen(QPen(kLimitColor, 2.0, Qt::DashLine));
+  // Each layout (a flush, a zoom, a pan, a resize) draws the traces for the range and width it shows.
+  for (QCustomPlot* plot : {motion_plot_, power_plot_})
+    connect(plot, &QCustomPlot::afterLayout, this, [this, plot] { drawTraces(plot); });
 
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(kSpacing, kSpacing, kSpacing, kSpacing);
@@ -120,6 +127,8 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
   clear();
 }
 
+SimulationView::~SimulationView() = default;
+
 void SimulationView::setUnits(DisplayUnits* units) {
   const auto apply = [this] {
     relabel();
@@ -133,10 +142,10 @@ void SimulationView::setUnits(DisplayUnits* units) {
 void SimulationView::relabel() {
   const ShopUnits& u = DisplayUnits::of(units_);
   const QString force = u.symbol(Quantity::Force), power = u.symbol(Quantity::Power);
-  motion_plot_->yAxis2->setLabel(tr("Resultant force |F| [%1]").arg(force));
-  force_graph_->setName(tr("Resultant force |F| [%1] (right axis)").arg(force));
-  power_plot_->yAxis->setLabel(tr("Spindle power P [%1]").arg(power));
-  power_graph_->setName(tr("Spindle power P [%1]").arg(power));
+  motion_plot_->yAxis2->setLabel(tr("|F| [%1]").arg(force));
+  force_trace_->setName(tr("Resultant force |F| [%1] (right axis)").arg(force));
+  power_plot_->yAxis->setLabel(tr("P [%1]").arg(power));
+  power_trace_->setName(tr("Spindle power P [%1]").arg(power));
   spectrum_->setAmplitudeUnit(force);
 }
 
@@ -207,6 +216,8 @@ void SimulationView::beginRun(double spindle_power_limit_w, int teeth, double to
   power_limit_w_ = std::isfinite(spindle_power_limit_w) && spindle_power_limit_w > 0.0 ? spindle_power_limit_w : 0.0;
   teeth_ = teeth;
   tooth_passing_hz_ = tooth_passing_hz;
+  for (TraceGraph* t : {x_trace_.get(), y_trace_.get(), force_trace_.get(), power_trace_.get()})
+    t->setShortestBucket(tooth_passing_hz > 0.0 ? 1.0 / tooth_passing_hz : 0.0);
   clear();
   running_ = true;
   spectrum_clock_.start();
@@ -354,9 +365,6 @@ void SimulationView::setPlotsGreyed(bool greyed) {
   }
 }
 
-int SimulationView::plottedSampleCount() const {
-  return x_graph_->dataCount();
-}
 int SimulationView::spectrumPointCount() const {
   return spectrum_->pointCount();
 }
@@ -376,13 +384,14 @@ void SimulationView::scheduleReplot() {
 
 void SimulationView::flushPlots() {
   ++flush_count_;
-  double lo = 0.0, hi = 0.0, f_lo = 0.0, f_hi = 0.0, p_lo = 0.0, p_hi = 0.0;
-  x_graph_->data()->set(graphData(time_, x_um_, lo, hi), true);
-  y_graph_->data()->set(graphData(time_, y_um_, lo, hi), true);
+  double lo = 0.0, hi = 0.0, f_lo = 0.0, f_hi = 0.0, p_lo = 0.0, p_hi = 0.0, t_lo = 0.0, t_hi = 0.0;
+  plot_t_ = plotValues(time_, t_lo, t_hi);
+  plot_x_ = plotValues(x_um_, lo, hi);
+  plot_y_ = plotValues(y_um_, lo, hi);
   const ShopUnits& u = DisplayUnits::of(units_);
   const double force = u.fromBase(Quantity::Force, 1.0), power = u.fromBase(Quantity::Power, 1.0);
-  force_graph_->data()->set(graphData(time_, force_n_, f_lo, f_hi, force), true);
-  power_graph_->data()->set(graphData(time_, power_w_, p_lo, p_hi, power), true);
+  plot_force_ = plotValues(force_n_, f_lo, f_hi, force);
+  plot_power_ = plotValues(power_w_, p_lo, p_hi, power);
   const double t0 = time_.empty() ? 0.0 : time_.front();
   const double t1 = time_.empty() ? 1.0 : std::max(time_.back(), t0 + 1e-6);
   const double amplitude = std::max({std::abs(lo), std::abs(hi), 1e-3});
@@ -402,6 +411,59 @@ void SimulationView::flushPlots() {
   }
   motion_plot_->replot(QCustomPlot::rpQueuedReplot);
   power_plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SimulationView::drawTraces(QCustomPlot* plot) {
+  if (plot == power_plot_) return power_trace_->show(plot_t_, plot_power_);
+  force_trace_->show(plot_t_, plot_force_);
+  x_trace_->show(plot_t_, plot_x_);
+  y_trace_->show(plot_t_, plot_y_);
+}
+
+const TraceGraph& SimulationView::trace(Trace trace) const {
+  switch (trace) {
+    case Trace::X:
+      return *x_trace_;
+    case Trace::Y:
+      return *y_trace_;
+    case Trace::Force:
+      return *force_trace_;
+    case Trace::Power:
+      break;
+  }
+  return *power_trace_;
+}
+
+bool SimulationView::envelopeShown(Trace t) const {
+  return trace(t).envelopeShown();
+}
+int SimulationView::drawnPointCount(Trace t) const {
+  return trace(t).drawnPoints();
+}
+std::pair<double, double> SimulationView::drawnValueRange(Trace t) const {
+  return trace(t).drawnRange();
+}
+int SimulationView::plotColumns(Trace t) const {
+  return trace(t).columns();
+}
+int SimulationView::envelopeBuckets(Trace t) const {
+  return trace(t).buckets();
+}
+QColor SimulationView::traceColor(Trace t) const {
+  return t == Trace::X ? kXColor : t == Trace::Y ? kYColor : t == Trace::Force ? kForceColor : kPowerColor;
+}
+QColor SimulationView::axisLabelColor(Trace t) const {
+  const QCPAxis* axis = t == Trace::Power   ? power_plot_->yAxis
+                        : t == Trace::Force ? motion_plot_->yAxis2
+                                            : motion_plot_->yAxis;
+  return axis->labelColor();
+}
+
+void SimulationView::setTimeRange(double t0, double t1) {
+  for (QCustomPlot* plot : {motion_plot_, power_plot_}) {
+    plot->xAxis->setRange(t0, t1);
+    plot->replot(QCustomPlot::rpQueuedReplot);
+  }
 }
 
 void SimulationView::updatePowerLimit() {

@@ -5,15 +5,21 @@
 //   (3) the force amplitude spectrum with the tooth-passing harmonics and the chatter frequency,
 // and the indicators eta and chip-thickness ratio against their thresholds, the verdict and a one-click
 // "Move to N rpm" for the Smith-Tlusty speed. Memory is bounded: each signal keeps the last
-// capacity() samples in a ring buffer; plots repaint at most ~30 Hz (rpQueuedReplot). Force and power
-// are shown in the shop units of setUnits() (the data comes in N and W). QCustomPlot stays behind this
-// class.
+// capacity() samples in a ring buffer; plots repaint at most ~30 Hz (rpQueuedReplot). A time trace with
+// more samples in view than twice the plot's pixel columns is drawn as its min/max envelope per tooth
+// period, or per pixel column when that is longer (TraceGraph), redrawn at each layout (zoom, pan,
+// resize). The legends sit under the plots. Force and power are shown
+// in the shop units of setUnits() (the data comes in N and W). QCustomPlot stays behind this class.
+#include <QColor>
 #include <QElapsedTimer>
 #include <QPointer>
 #include <QString>
 #include <QWidget>
 #include <cstddef>
+#include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "display_units.h"
 #include "ring_buffer.h"
@@ -29,14 +35,17 @@ namespace mx::widgets {
 
 class IndicatorGauge;
 class SpectrumPlot;
+class TraceGraph;
 
 class SimulationView : public QWidget {
   Q_OBJECT
  public:
   static constexpr std::size_t kDefaultCapacity = 20000;
   static constexpr int kReplotIntervalMs = 33;
+  enum class Trace { X, Y, Force, Power };
 
   explicit SimulationView(QWidget* parent = nullptr, std::size_t capacity = kDefaultCapacity);
+  ~SimulationView() override;
 
   void setUnits(DisplayUnits* units);  // nullptr: metric
   // A new run: clears the plots and indicators. spindle_power_limit_w <= 0: no limit line.
@@ -54,8 +63,17 @@ class SimulationView : public QWidget {
 
   // Test accessors.
   std::size_t capacity() const { return time_.capacity(); }
-  int sampleCount() const { return static_cast<int>(time_.size()); }  // samples kept per signal
-  int plottedSampleCount() const;                                     // samples in the displacement graph
+  int sampleCount() const { return static_cast<int>(time_.size()); }           // samples kept per signal
+  int plottedSampleCount() const { return static_cast<int>(plot_t_.size()); }  // samples the plots were given
+  // What a time trace draws (after the plot's next layout): envelope or raw, its points and extremes.
+  bool envelopeShown(Trace trace) const;
+  int drawnPointCount(Trace trace) const;
+  std::pair<double, double> drawnValueRange(Trace trace) const;
+  int plotColumns(Trace trace) const;      // pixel columns of the trace's axis rect at its last drawing
+  int envelopeBuckets(Trace trace) const;  // min/max pairs of its last envelope
+  QColor traceColor(Trace trace) const;
+  QColor axisLabelColor(Trace trace) const;  // of the trace's value axis
+  void setTimeRange(double t0, double t1);   // zooms both time plots
   int spectrumPointCount() const;
   double latestTime() const { return time_.empty() ? 0.0 : time_.back(); }
   bool chatterShown() const { return chatter_shown_; }
@@ -77,6 +95,8 @@ class SimulationView : public QWidget {
   void showSummaryValues(const mx::gui::SimulationSummary& s);
   void updateLiveSpectrum();
   void updatePowerLimit();
+  void drawTraces(QCustomPlot* plot);
+  const TraceGraph& trace(Trace trace) const;
   QWidget* buildIndicatorPanel();
 
   QPointer<DisplayUnits> units_;
@@ -85,11 +105,10 @@ class SimulationView : public QWidget {
   QCustomPlot* motion_plot_;
   QCustomPlot* power_plot_;
   SpectrumPlot* spectrum_;
-  QCPGraph* x_graph_ = nullptr;
-  QCPGraph* y_graph_ = nullptr;
-  QCPGraph* force_graph_ = nullptr;
-  QCPGraph* power_graph_ = nullptr;
+  std::unique_ptr<TraceGraph> force_trace_, x_trace_, y_trace_, power_trace_;
   QCPGraph* limit_graph_ = nullptr;
+  // The kept samples as the plots draw them (time [s], displacements [um], force and power in shop units).
+  std::vector<double> plot_t_, plot_x_, plot_y_, plot_force_, plot_power_;
   IndicatorGauge* eta_gauge_ = nullptr;
   IndicatorGauge* chip_gauge_ = nullptr;
   QLabel* status_label_ = nullptr;

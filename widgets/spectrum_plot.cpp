@@ -153,7 +153,7 @@ void SpectrumPlot::rebuildMarkers() {
     label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
     label->setPadding(QMargins(3, 0, 0, 0));
     label->setColor(color);
-    label->setFont(QFont(font().family(), 8));
+    label->setFont(QFont(font().family(), 9));
     label->setText(text);
     label->setClipToAxisRect(true);
     markers_.push_back(label);

@@ -96,6 +96,60 @@ class TestSimulationView : public QObject {
     QCOMPARE(SimulationView::kDefaultCapacity, std::size_t{20000});
   }
 
+  // 60 revolutions of 300 samples: each time trace is a min/max band of 2 points per tooth period
+  // (3.4 ms, longer than a pixel column) whose extremes are exactly the samples'; zoomed in to a few
+  // periods it is the samples themselves.
+  void longRunDrawsEnvelopes() {
+    using Trace = SimulationView::Trace;
+    SimulationView view;
+    view.resize(1920, 500);
+    view.show();
+    view.beginRun(15000.0, 3, 290.0);
+    double x_lo = 0.0, x_hi = 0.0, f_lo = 1e9, f_hi = 0.0;
+    for (int r = 1; r <= 60; ++r) {
+      const SimulationChunkData c = syntheticChunk(r, 300);
+      for (int i = 0; i < c.x_m.size(); ++i) {
+        x_lo = std::min(x_lo, c.x_m[i] * 1e6);
+        x_hi = std::max(x_hi, c.x_m[i] * 1e6);
+        f_lo = std::min(f_lo, c.force_n[i]);
+        f_hi = std::max(f_hi, c.force_n[i]);
+      }
+      view.appendChunk(c);
+    }
+    QTRY_COMPARE(view.plottedSampleCount(), 18000);
+    for (Trace t : {Trace::X, Trace::Y, Trace::Force, Trace::Power}) {
+      QTRY_VERIFY(view.envelopeShown(t));
+      QVERIFY(view.plotColumns(t) > 300);
+      QVERIFY2(view.drawnPointCount(t) <= 2 * view.plotColumns(t),
+               qPrintable(QString("%1 points for %2 columns").arg(view.drawnPointCount(t)).arg(view.plotColumns(t))));
+      QCOMPARE(view.envelopeBuckets(t), static_cast<int>(17999e-5 * 290.0));  // whole tooth periods
+      QCOMPARE(view.drawnPointCount(t), 2 * view.envelopeBuckets(t));
+    }
+    QCOMPARE(view.drawnValueRange(Trace::X), std::pair(x_lo, x_hi));
+    QCOMPARE(view.drawnValueRange(Trace::Force), std::pair(f_lo, f_hi));
+
+    // Zoomed in to 200 samples (about one period of x): the raw samples.
+    view.setTimeRange(0.1, 0.1 + 199e-5);
+    QTRY_VERIFY(!view.envelopeShown(Trace::X));
+    QVERIFY(!view.envelopeShown(Trace::Power));
+    QVERIFY(view.drawnPointCount(Trace::X) >= 200 && view.drawnPointCount(Trace::X) <= 202);
+    QVERIFY(view.drawnValueRange(Trace::X).second <= x_hi);
+    // Back to the whole run: the band again.
+    view.setTimeRange(0.0, 17999e-5);
+    QTRY_VERIFY(view.envelopeShown(Trace::X));
+    QCOMPARE(view.drawnValueRange(Trace::X), std::pair(x_lo, x_hi));
+  }
+
+  // The resultant force is a saturated colour of its own, and its axis says so in the same colour.
+  void forceTraceIsSaturatedWithItsAxisInItsColour() {
+    using Trace = SimulationView::Trace;
+    SimulationView view;
+    const QColor force = view.traceColor(Trace::Force);
+    QVERIFY2(force.hsvSaturation() >= 150 && force.alpha() == 255, qPrintable(force.name()));
+    QCOMPARE(view.axisLabelColor(Trace::Force), force);
+    for (Trace t : {Trace::X, Trace::Y, Trace::Power}) QVERIFY(view.traceColor(t) != force);
+  }
+
   void chatterSummaryOffersTheMove() {
     SimulationView view;
     view.show();
@@ -185,8 +239,10 @@ class TestSimulationView : public QObject {
     QVERIFY(view.suggestedSpeedRpm() > 0.0 && view.suggestedSpeedRpm() <= 12000.0);
     QVERIFY(view.spectrumPointCount() > 50);
     QTRY_COMPARE(view.plottedSampleCount(), view.sampleCount());
-    if (qEnvironmentVariableIsSet("MX_SIMVIEW_SCREENSHOT"))  // for a look at 1080p
+    if (qEnvironmentVariableIsSet("MX_SIMVIEW_SCREENSHOT")) {  // for a look at 1080p
+      QTest::qWait(100);                                       // the queued replots
       view.grab().save(qEnvironmentVariable("MX_SIMVIEW_SCREENSHOT"));
+    }
   }
 };
 
