@@ -96,11 +96,11 @@ QVariant ModeTableModel::headerData(int section, Qt::Orientation orientation, in
   if (role == Qt::DisplayRole) {
     switch (section) {
       case Frequency:
-        return tr("frequency [Hz]");
+        return tr("f [Hz]");
       case Damping:
-        return tr("damping [%]");
+        return tr("ζ [%]");
       case Stiffness:
-        return tr("stiffness [N/µm]");
+        return tr("k [N/µm]");
       default:
         return {};
     }

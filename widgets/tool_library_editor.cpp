@@ -11,6 +11,7 @@
 
 #include "cam_tool_summary.h"
 #include "document/project_validation.h"
+#include "flow_layout.h"
 #include "range_delegate.h"
 
 namespace mx::widgets {
@@ -66,10 +67,9 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
   connect(importButton, &QPushButton::clicked, this, &ToolLibraryEditor::importRequested);
   connect(exportButton, &QPushButton::clicked, this, &ToolLibraryEditor::exportRequested);
 
-  auto* buttons = new QHBoxLayout;
-  for (QPushButton* b : {add, duplicate_, remove_}) buttons->addWidget(b);
-  buttons->addStretch(1);
-  for (QPushButton* b : {importButton, exportButton}) buttons->addWidget(b);
+  auto* buttons = new FlowLayout;  // wraps in a narrow dock: every button stays whole
+  buttons->setObjectName("toolButtons");
+  for (QPushButton* b : {add, duplicate_, remove_, importButton, exportButton}) buttons->addWidget(b);
 
   toolView_->setModel(tools_);
   toolView_->setItemDelegate(new RangeDelegate(toolView_));
@@ -132,7 +132,9 @@ QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
   view->setModel(model);
   view->setItemDelegate(new RangeDelegate(view));
   view->setSelectionBehavior(QAbstractItemView::SelectRows);
-  view->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  // Columns as wide as their short headers and values, the last one filling the rest.
+  view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  view->horizontalHeader()->setStretchLastSection(true);
   view->setToolTip(tr("Modes of the selected tool in %1; an empty table is a rigid axis").arg(name));
   (axis == Axis::X ? modeViewX_ : modeViewY_) = view;
   auto* add = button(tr("Add %1 mode").arg(name), tr("Add a mode in %1 to the selected tool").arg(name), pane);
@@ -145,10 +147,9 @@ QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
   auto* title = new QLabel(tr("%1 direction").arg(name), pane);
   title->setToolTip(tr("Modes of the tool-point FRF in the feed-normal plane, axis %1").arg(name));
   (axis == Axis::X ? titleX_ : titleY_) = title;
-  auto* buttons = new QHBoxLayout;
+  auto* buttons = new FlowLayout;
   buttons->addWidget(add);
   buttons->addWidget(remove);
-  buttons->addStretch(1);
   auto* layout = new QVBoxLayout(pane);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(title);

@@ -277,6 +277,7 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal) return QAbstractTableModel::headerData(section, orientation, role);
+  // Short headers with their units (the tools dock is narrow); the tooltips name them in full.
   const QString unit = lengthUnit();
   if (role == Qt::DisplayRole) {
     switch (section) {
@@ -285,11 +286,11 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
       case Teeth:
         return tr("teeth");
       case Diameter:
-        return tr("diameter [%1]").arg(unit);
+        return tr("D [%1]").arg(unit);
       case Helix:
-        return tr("helix [deg]");
+        return tr("helix [°]");
       case Pitch:
-        return tr("pitch [deg]");
+        return tr("pitch [°]");
       case Runout:
         return tr("runout [µm]");
       case Kt:
@@ -305,9 +306,9 @@ QVariant ToolTableModel::headerData(int section, Qt::Orientation orientation, in
       case Kae:
         return tr("K_ae [N/mm]");
       case RadialDepth:
-        return tr("radial depth [%1]").arg(unit);
+        return tr("a [%1]").arg(unit);
       case MaxForce:
-        return tr("max force [%1]").arg(DisplayUnits::of(units_).symbol(Quantity::Force));
+        return tr("F_allow [%1]").arg(DisplayUnits::of(units_).symbol(Quantity::Force));
       case ModesX:
         return tr("modes x");
       case ModesY:

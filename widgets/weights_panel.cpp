@@ -18,6 +18,10 @@ namespace mx::widgets {
 
 namespace {
 
+// Compact margins and rows: the four groups and the triangle fit the right dock at 1920 x 1080.
+constexpr int kMargin = 6;
+constexpr int kRowSpacing = 2;
+
 bool sameWeights(const CostWeights& a, const CostWeights& b) {
   return a.c == b.c && a.cr == b.cr && a.ct == b.ct && a.cf == b.cf;
 }
@@ -61,7 +65,21 @@ WeightsPanel::WeightsPanel(QWidget* parent) : QWidget(parent), committed_(weight
   });
   connect(ternary_, &TernaryPicker::weightsCommitted, this, [this] { commitIfChanged(); });
 
+  // The reset button beside the triangle, in the first group: the panel fits the right dock at 1080p
+  // without scrolling.
+  reset_ = new QPushButton(tr("Reset to project"), this);
+  reset_->setObjectName("weights_reset");
+  reset_->setToolTip(tr("Restore the weights saved in the project's expert section"));
+  connect(reset_, &QPushButton::clicked, this, &WeightsPanel::resetRequested);
+  auto* top = new QWidget(this);
+  auto* top_row = new QHBoxLayout(top);
+  top_row->setContentsMargins(0, 0, 0, 0);
+  top_row->addWidget(ternary_, 1);
+  top_row->addWidget(reset_, 0, Qt::AlignTop);
+
   auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(kMargin, kMargin, kMargin, kMargin);
+  layout->setSpacing(kMargin);
   layout->addWidget(
       addGroup(Group::Tool, tr("Tool cost weights c (eq. 13)"),
                tr("Weights of the tool cost C = c1 P/P_av + c2 MRR_max/MRR + c3 \u0394N_s,max/\u0394N_s; "
@@ -71,7 +89,7 @@ WeightsPanel::WeightsPanel(QWidget* parent) : QWidget(parent), committed_(weight
                 {"c3 \u0394N_s",
                  "c3: weight of the speed security term \u0394N_s,max / \u0394N_s "
                  "(dimensionless, 0..1)"}},
-               ternary_),
+               top),
       1);
   layout->addWidget(
       addGroup(Group::Resultant, tr("Resultant cost weights c_r (eq. 20)"),
@@ -88,14 +106,6 @@ WeightsPanel::WeightsPanel(QWidget* parent) : QWidget(parent), committed_(weight
                              tr("Weights of C_f = c1f R12h/R12h,max + c2f R1ch/R1ch,max; the two sum to 1."),
                              {{"c1f R12h", "c1f: weight of the harmonic ratio R12h (dimensionless, 0..1)"},
                               {"c2f R1ch", "c2f: weight of the chatter ratio R1ch (dimensionless, 0..1)"}}));
-  reset_ = new QPushButton(tr("Reset to project"), this);
-  reset_->setObjectName("weights_reset");
-  reset_->setToolTip(tr("Restore the weights saved in the project's expert section"));
-  connect(reset_, &QPushButton::clicked, this, &WeightsPanel::resetRequested);
-  auto* buttons = new QHBoxLayout;
-  buttons->addStretch(1);
-  buttons->addWidget(reset_);
-  layout->addLayout(buttons);
   refresh();
 }
 
@@ -104,6 +114,8 @@ QGroupBox* WeightsPanel::addGroup(Group group, const QString& title, const QStri
   auto* box = new QGroupBox(title, this);
   box->setToolTip(tip);
   auto* grid = new QGridLayout(box);
+  grid->setContentsMargins(kMargin, kMargin / 2, kMargin, kMargin / 2);
+  grid->setVerticalSpacing(kRowSpacing);
   int line = 0;
   if (top) grid->addWidget(top, line++, 0, 1, 3);
   for (std::size_t i = 0; i < specs.size(); ++i, ++line) {

@@ -1,11 +1,16 @@
 // Main window (offscreen): save/reopen, autosave recovery after a simulated crash, the untitled
 // autosave's folder, a bad file that keeps the project, and saves that fail (a read-only folder, the
 // file replaced by a directory) showing the error and keeping the changes; the default layout at
-// 1080p and the toolbar's steady Undo button.
+// 1080p (the chart's height, nothing of the docks cut) and the toolbar's steady Undo button.
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QElapsedTimer>
+#include <QHeaderView>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -19,6 +24,8 @@
 #include "support/hostile_files.h"
 #include "support/read_only_folder.h"
 #include "test_registry.h"
+#include "tool_library_editor.h"
+#include "weights_panel.h"
 
 using namespace mx;
 
@@ -207,6 +214,58 @@ class TestMainWindow : public QObject {
     QVERIFY2(undo->toolTip().startsWith("Undo "), qPrintable(undo->toolTip()));
     QCOMPARE(undo->text(), QString("Undo"));
     QCOMPARE(button->geometry(), before);
+  }
+
+  // Nothing of the docks is cut at 1920 x 1080 in the default layout: every header of the tool and
+  // mode tables is as wide as its text (the tool table scrolls, the mode tables fit), the five tool
+  // buttons are whole, and the cost weights fit their dock without scrolling.
+  void defaultLayoutCutsNothingAt1080p() {
+    QSettings().remove("window/state");
+    QSettings().remove("window/geometry");
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    window.resize(1920, 1080);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openProject(kRubio));
+    auto* editor = window.findChild<widgets::ToolLibraryEditor*>();
+    QVERIFY(editor);
+    QTRY_VERIFY(editor->modeModel(widgets::ModeTableModel::Axis::Y)->rowCount() > 0);
+    QTest::qWait(100);                                            // the docks' last layout
+    const QString shot = qEnvironmentVariable("MX_LAYOUT_SHOT");  // for a look: the window, then with the weights
+    if (!shot.isEmpty()) window.grab().save(shot + "-tools.png");
+    using Axis = widgets::ModeTableModel::Axis;
+    for (QTableView* view : {editor->toolView(), editor->modeView(Axis::X), editor->modeView(Axis::Y)}) {
+      const QHeaderView* header = view->horizontalHeader();
+      for (int s = 0; s < header->count(); ++s) {
+        const QString text = view->model()->headerData(s, Qt::Horizontal).toString();
+        QVERIFY2(header->sectionSize(s) >= header->fontMetrics().horizontalAdvance(text),
+                 qPrintable(QString("%1: %2 px").arg(text).arg(header->sectionSize(s))));
+      }
+      if (view != editor->toolView())
+        QVERIFY2(header->length() <= view->viewport()->width(),
+                 qPrintable(QString("%1 > %2 px").arg(header->length()).arg(view->viewport()->width())));
+    }
+    int buttons = 0;
+    for (const QPushButton* b : editor->findChildren<QPushButton*>())
+      if (QStringList{"Add tool", "Duplicate", "Remove", "Import library…", "Export library…"}.contains(b->text())) {
+        ++buttons;
+        QVERIFY2(b->visibleRegion() == QRegion(b->rect()), qPrintable(b->text()));
+      }
+    QCOMPARE(buttons, 5);
+
+    auto* weights = window.findChild<QDockWidget*>("weightsDock");
+    QVERIFY(weights);
+    weights->raise();
+    auto* area = qobject_cast<QScrollArea*>(weights->widget());
+    QVERIFY(area);
+    QTRY_VERIFY(area->isVisible());
+    QTest::qWait(100);
+    if (!shot.isEmpty()) window.grab().save(shot + "-weights.png");
+    QVERIFY2(area->verticalScrollBar()->maximum() == 0,
+             qPrintable(QString("the weights need %1 px more").arg(area->verticalScrollBar()->maximum())));
+    QCOMPARE(area->horizontalScrollBar()->maximum(), 0);
   }
 
   void badProjectIsRefusedAndKeepsTheCurrentOne() {

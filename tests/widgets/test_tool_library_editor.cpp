@@ -68,7 +68,7 @@ class TestToolLibraryEditor : public QObject {
     editor.setProject(mx::app::loadProject(kRubio));
     ToolTableModel* m = editor.toolModel();
     QCOMPARE(m->rowCount(), 2);
-    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("diameter [mm]"));
+    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("D [mm]"));
     QCOMPARE(m->index(1, ToolTableModel::Id).data().toString(), QString("R2"));
     QCOMPARE(m->index(1, ToolTableModel::Diameter).data().toString(), QString("12.7"));
     QCOMPARE(m->index(1, ToolTableModel::Kr).data().toString(), QString("0.07"));
@@ -284,7 +284,7 @@ class TestToolLibraryEditor : public QObject {
     ToolLibraryEditor editor;
     wire(editor, doc);
     ToolTableModel* m = editor.toolModel();
-    QCOMPARE(m->headerData(ToolTableModel::Pitch, Qt::Horizontal).toString(), QString("pitch [deg]"));
+    QCOMPARE(m->headerData(ToolTableModel::Pitch, Qt::Horizontal).toString(), QString("pitch [°]"));
     QCOMPARE(m->headerData(ToolTableModel::Runout, Qt::Horizontal).toString(), QString("runout [µm]"));
     const QModelIndex pitch = m->index(0, ToolTableModel::Pitch);
     const QModelIndex runout = m->index(0, ToolTableModel::Runout);
@@ -332,7 +332,7 @@ class TestToolLibraryEditor : public QObject {
     QVERIFY(m->setData(m->index(1, ToolTableModel::Id), "R2b"));
     QCOMPARE(spy.at(2).at(0).value<Project>().tools[1].id, QString("R2b"));
     // F_allow (Rule 3): set in N, cleared back to "none" (the project has no breakage limit).
-    QCOMPARE(m->headerData(ToolTableModel::MaxForce, Qt::Horizontal).toString(), QString("max force [N]"));
+    QCOMPARE(m->headerData(ToolTableModel::MaxForce, Qt::Horizontal).toString(), QString("F_allow [N]"));
     QVERIFY(m->index(0, ToolTableModel::MaxForce).data(Qt::ToolTipRole).toString().contains("empty = no limit"));
     QVERIFY(m->setData(m->index(0, ToolTableModel::MaxForce), 450.0));
     QCOMPARE(*spy.at(3).at(0).value<Project>().tools[0].max_force_N, 450.0);
@@ -393,7 +393,7 @@ class TestToolLibraryEditor : public QObject {
     units.setLength(mx::widgets::DisplayUnits::Length::Inch);
     ToolTableModel* m = editor.toolModel();
     const QModelIndex d = m->index(0, ToolTableModel::Diameter);
-    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("diameter [in]"));
+    QCOMPARE(m->headerData(ToolTableModel::Diameter, Qt::Horizontal).toString(), QString("D [in]"));
     QCOMPARE(d.data().toString(), QString("1.1811"));
     QVERIFY(qAbs(d.data(Qt::EditRole).toDouble() - 30.0 / 25.4) < 1e-12);
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
