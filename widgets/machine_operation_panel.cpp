@@ -1,5 +1,6 @@
 #include "machine_operation_panel.h"
 
+#include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "checked_spin_box.h"
 #include "document/project_validation.h"
+#include "input_feedback.h"
 
 namespace mx::widgets {
 
@@ -36,6 +39,21 @@ app::OperationSpec& operation(app::Project& p) {
 app::ExpertSpec& expert(app::Project& p) {
   if (!p.expert) p.expert = app::ExpertSpec{};
   return *p.expert;
+}
+
+// The notes of a row's spin box name it as the row's label does (checked_spin_box.h).
+void nameBoxesAfterLabels(const QFormLayout* form) {
+  for (int row = 0; row < form->rowCount(); ++row) {
+    const QLayoutItem* label = form->itemAt(row, QFormLayout::LabelRole);
+    const QLayoutItem* field = form->itemAt(row, QFormLayout::FieldRole);
+    if (!label || !field || !field->widget()) continue;
+    auto* box = dynamic_cast<CheckedDoubleSpinBox*>(field->widget());
+    if (!box) box = dynamic_cast<CheckedDoubleSpinBox*>(field->widget()->findChild<QDoubleSpinBox*>());
+    QString name;
+    if (const auto* text = qobject_cast<const QLabel*>(label->widget())) name = text->text();
+    if (const auto* button = qobject_cast<const QAbstractButton*>(label->widget())) name = button->text();
+    if (box) box->setFieldName(name.remove('&'));
+  }
 }
 
 }  // namespace
@@ -69,12 +87,14 @@ MachineOperationPanel::MachineOperationPanel(QWidget* parent) : QWidget(parent) 
   layout->addWidget(expertGroup());
   layout->addWidget(errorLabel_);
   layout->addStretch(1);
+  for (const QGroupBox* group : std::as_const(groups_))
+    nameBoxesAfterLabels(qobject_cast<QFormLayout*>(group->layout()));
   refresh();
 }
 
 QWidget* MachineOperationPanel::addNumber(const QString& path, double max, int decimals, const QString& tip,
                                           NumberField field) {
-  field.box = new QDoubleSpinBox(this);
+  field.box = new CheckedDoubleSpinBox(this);
   field.box->setRange(field.min, max);  // 0 (or below) can be typed and is refused with its reason where invalid
   field.max = max;
   field.box->setDecimals(decimals);
@@ -438,6 +458,8 @@ void MachineOperationPanel::markError(const QString& path, const QString& reason
   error_ = reason;
   errorLabel_->setText(reason.isEmpty() ? QString() : tr("Refused: %1").arg(reason));
   errorLabel_->setVisible(!reason.isEmpty());
+  // The label is at the bottom of a scrolling panel: the field says it at once.
+  if (!reason.isEmpty()) showInputNote(controls_.value(path, this), tr("%1. The field keeps its value.").arg(reason));
 }
 
 }  // namespace mx::widgets

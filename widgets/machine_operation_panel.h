@@ -2,8 +2,9 @@
 // The machine / operation / material / expert-margin form of a project. Like the tool-library editor
 // it shows the project given by setProject() and never changes it: an edit of one field builds the
 // edited project, validates it (validateProject) and emits editRequested(), or refuses it in place
-// (no signal, the field returns to the project's value, the reason appears in red under the form
-// and in the field's tooltip, the field gets a red border). A section the project lacks is shown
+// (no signal, the field returns to the project's value, the reason appears in red under the field for a
+// few seconds, under the form and in the field's tooltip, the field gets a red border). Input a field
+// cannot take is answered under it as it is typed (checked_spin_box.h). A section the project lacks is shown
 // with defaults and created by the first edit. Power, feed rate, lengths and chip load follow the shop
 // units (DisplayUnits); the project stays in W, mm/s and mm. The material can be copied from the
 // materials library given by setMaterialLibrary() in one edit; the panel says which entry the project's

@@ -3,6 +3,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
+#include "document/project_rules.h"
 #include "document/project_validation.h"
 #include "range_delegate.h"
 
@@ -77,15 +78,18 @@ QVariant ModeTableModel::data(const QModelIndex& index, int role) const {
       return headerData(c, Qt::Horizontal, Qt::ToolTipRole);
     case Qt::TextAlignmentRole:
       return QVariant(Qt::AlignRight | Qt::AlignVCenter);
-    // Minimum 0 for all three: typing 0 is possible and refused with the reason.
+    // The rule's closed lower bound, which the box enforces; a frequency of 0 can be typed and is
+    // refused with the rule's reason (f_n > 0).
     case D::MinimumRole:
-      return 0.0;
+      return c == Frequency ? 0.0 : c == Damping ? app::rules::kDampingPct.lo : app::rules::kStiffnessNPerUm.lo;
     case D::MaximumRole:
       return c == Frequency ? 2e4 : c == Damping ? 100.0 : 1e6;
     case D::DecimalsRole:
       return c == Frequency ? 3 : 4;
     case D::StepRole:
       return c == Frequency ? 10.0 : 0.1;
+    case D::FieldNameRole:
+      return c == Frequency ? tr("Frequency f_n [Hz]") : c == Damping ? tr("Damping ζ [%]") : tr("Stiffness k [N/µm]");
     default:
       return {};
   }

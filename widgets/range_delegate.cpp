@@ -1,14 +1,23 @@
 #include "range_delegate.h"
 
-#include <QDoubleSpinBox>
-#include <QSpinBox>
 #include <cmath>
+
+#include "checked_spin_box.h"
 
 namespace mx::widgets {
 
 namespace {
 constexpr char kOriginal[] = "mx_original";  // the value shown when the editor opened
+
+// The name the editor's messages give the cell: its FieldNameRole, or its column header as a sentence's start.
+QString fieldName(const QModelIndex& index) {
+  QString name = index.data(RangeDelegate::FieldNameRole).toString();
+  if (name.isEmpty()) name = index.model()->headerData(index.column(), Qt::Horizontal).toString();
+  if (!name.isEmpty()) name[0] = name[0].toUpper();
+  return name;
 }
+
+}  // namespace
 
 QWidget* RangeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem& option,
                                      const QModelIndex& index) const {
@@ -17,17 +26,19 @@ QWidget* RangeDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem
   const int decimals = index.data(DecimalsRole).toInt();
   QAbstractSpinBox* editor = nullptr;
   if (decimals == 0) {
-    auto* box = new QSpinBox(parent);
+    auto* box = new CheckedSpinBox(parent);
     box->setRange(minimum.toInt(), index.data(MaximumRole).toInt());
     box->setSuffix(index.data(SuffixRole).toString());
+    box->setFieldName(fieldName(index));
     editor = box;
   } else {
-    auto* box = new QDoubleSpinBox(parent);
+    auto* box = new CheckedDoubleSpinBox(parent);
     box->setDecimals(decimals);
     box->setRange(minimum.toDouble(), index.data(MaximumRole).toDouble());
     const QVariant step = index.data(StepRole);
     if (step.isValid()) box->setSingleStep(step.toDouble());
     box->setSuffix(index.data(SuffixRole).toString());
+    box->setFieldName(fieldName(index));
     editor = box;
   }
   editor->setSpecialValueText(index.data(SpecialTextRole).toString());

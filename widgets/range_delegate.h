@@ -2,7 +2,9 @@
 // Spin-box editing for table models that publish their ranges through item-data roles: an integer
 // or decimal spin box with the model's minimum, maximum, decimals and step. When the model gives a
 // special text (e.g. "material's"), the minimum shows that text and stands for "no value"
-// (setData with an invalid QVariant). Cells without a MinimumRole get the default editor.
+// (setData with an invalid QVariant). Cells without a MinimumRole get the default editor. Input the
+// box cannot take is answered at once under the cell (checked_spin_box.h), naming the field by its
+// FieldNameRole, or else by its column header.
 #include <QStyledItemDelegate>
 
 namespace mx::widgets {
@@ -17,6 +19,7 @@ class RangeDelegate : public QStyledItemDelegate {
     StepRole,                          // double single step
     SpecialTextRole,                   // QString shown at the minimum = "no value"
     SuffixRole,                        // QString, e.g. " mm"
+    FieldNameRole,                     // QString, name and unit for messages, e.g. "Stiffness k [N/µm]"
   };
   using QStyledItemDelegate::QStyledItemDelegate;
 

@@ -12,6 +12,7 @@
 #include "cam_tool_summary.h"
 #include "document/project_validation.h"
 #include "flow_layout.h"
+#include "input_feedback.h"
 #include "range_delegate.h"
 
 namespace mx::widgets {
@@ -95,20 +96,22 @@ ToolLibraryEditor::ToolLibraryEditor(QWidget* parent)
   modes->addWidget(buildModePane(Axis::Y));
   modeBox_->setToolTip(tr("The modal parameters of the selected tool (tool-point FRF), per axis"));
 
-  // Refusals are shown next to the table they come from; a good edit clears the message.
-  const auto refuseIn = [this](QLabel* label) {
-    return [this, label](const QString& reason) {
+  // Refusals are shown at once under the edited cell (the view's current one) and kept under the table
+  // they come from; a good edit clears the message.
+  const auto refuseIn = [this](QLabel* label, QTableView* view) {
+    return [this, label, view](const QString& reason) {
       showError({});
       error_ = reason;
       setError(label, reason);
+      showInputNote(view, view->currentIndex(), tr("%1. The cell keeps its value.").arg(reason));
     };
   };
   const auto forward = [this](const app::Project& edited, const QString& text) { request(edited, text); };
   connect(tools_, &ToolTableModel::editRequested, this, forward);
-  connect(tools_, &ToolTableModel::editRefused, this, refuseIn(toolError_));
-  for (ModeTableModel* m : {modesX_, modesY_}) {
-    connect(m, &ModeTableModel::editRequested, this, forward);
-    connect(m, &ModeTableModel::editRefused, this, refuseIn(modeError_));
+  connect(tools_, &ToolTableModel::editRefused, this, refuseIn(toolError_, toolView_));
+  for (Axis axis : {Axis::X, Axis::Y}) {
+    connect(modeModel(axis), &ModeTableModel::editRequested, this, forward);
+    connect(modeModel(axis), &ModeTableModel::editRefused, this, refuseIn(modeError_, modeView(axis)));
   }
 
   auto* layout = new QVBoxLayout(this);
@@ -135,6 +138,7 @@ QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
   // Columns as wide as their short headers and values, the last one filling the rest.
   view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   view->horizontalHeader()->setStretchLastSection(true);
+  view->verticalHeader()->hide();  // the rows need no numbers: three columns fit the half dock
   view->setToolTip(tr("Modes of the selected tool in %1; an empty table is a rigid axis").arg(name));
   (axis == Axis::X ? modeViewX_ : modeViewY_) = view;
   auto* add = button(tr("Add %1 mode").arg(name), tr("Add a mode in %1 to the selected tool").arg(name), pane);

@@ -3,7 +3,8 @@
 // remove, and for the selected tool its end view (teeth at their pitch angles) and its x and y modes. It shows the
 // project given by setProject() and never changes it: every edit is validated (validateProject) and requested with
 // editRequested(); an invalid edit is refused in place (no signal, the old value stays, the reason is shown in red
-// under the table). Its Import / Export buttons ask the window for a library transfer.
+// under the edited cell at once and under the table). Its Import / Export buttons ask the window for a library
+// transfer.
 #include <QLabel>
 #include <QPointer>
 #include <QPushButton>

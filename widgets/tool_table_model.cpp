@@ -106,7 +106,8 @@ QVariant ToolTableModel::editValue(const app::ToolSpec& t, int column) const {
 }
 
 // The spin-box ranges (RangeDelegate roles), in display units. The minimum of a required positive
-// value is 0 so that typing 0 is possible and refused with its reason.
+// value is 0 so that typing 0 is possible and refused with its reason; a closed lower bound (teeth)
+// is the box's own.
 QVariant ToolTableModel::rangeData(int column, int role) const {
   using D = RangeDelegate;
   const bool inch = units_ && units_->length() == DisplayUnits::Length::Inch;
@@ -120,7 +121,7 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
   Range r{};
   switch (column) {
     case Teeth:
-      r = {0, app::rules::kTeeth.hi, 0, 1, ""};
+      r = {app::rules::kTeeth.lo, app::rules::kTeeth.hi, 0, 1, ""};
       break;
     case Diameter:
       r = {0, inch ? 40.0 : 1000.0, lengthDecimals, inch ? 0.01 : 0.1, ""};
@@ -165,8 +166,28 @@ QVariant ToolTableModel::rangeData(int column, int role) const {
     case D::SuffixRole:
       if (column == MaxForce) return " " + DisplayUnits::of(units_).symbol(Quantity::Force);
       return column == Diameter || column == RadialDepth ? " " + lengthUnit() : QString();
+    case D::FieldNameRole:
+      return fieldLabel(column);
     default:
       return {};
+  }
+}
+
+// The name of a spin-box column in the editor's messages: the header's symbol in words, with the unit.
+QString ToolTableModel::fieldLabel(int column) const {
+  switch (column) {
+    case Teeth:
+      return tr("Teeth");
+    case Diameter:
+      return tr("Diameter D [%1]").arg(lengthUnit());
+    case Helix:
+      return tr("Helix angle [°]");
+    case RadialDepth:
+      return tr("Radial depth a [%1]").arg(lengthUnit());
+    case MaxForce:
+      return tr("Allowable force F_allow [%1]").arg(DisplayUnits::of(units_).symbol(Quantity::Force));
+    default:  // the cutting coefficients: their headers are their names
+      return headerData(column, Qt::Horizontal).toString();
   }
 }
 

@@ -67,6 +67,7 @@ class ToolTableModel : public QAbstractTableModel {
   QString lengthUnit() const { return units_ ? units_->lengthSuffix() : QStringLiteral("mm"); }
   QVariant editValue(const app::ToolSpec& tool, int column) const;
   QVariant rangeData(int column, int role) const;
+  QString fieldLabel(int column) const;  // RangeDelegate::FieldNameRole
   QString toolTip(const app::ToolSpec& tool, int column) const;
   QString coefficientTip(int column) const;  // K_t .. K_ae: what the value is, and the material's
   // Reads a pitch or runout cell into `list`; returns the refusal ("" = ok).

@@ -2,12 +2,16 @@
 // what the CLI computes on the saved project: the lobe readout's power, the simulation, the expert
 // ranking (rubio2006-adaptive-control; its control view: test_control_gui.cpp), the Pareto choice
 // (rubio-pareto-case), the optimised part program (cus-zuperl-sdnrp) and the supervisor comparison
-// (landers-face-milling). Each number is also checked to differ from the one before the edit.
+// (landers-face-milling). Each number is also checked to differ from the one before the edit. Bad input
+// in the tool table is answered in the window, under the cell, at once.
 #include <QFile>
+#include <QLabel>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <cmath>
 
+#include "input_feedback.h"
 #include "machining_feature.h"
 #include "main_window.h"
 #include "pareto_runner.h"
@@ -138,6 +142,50 @@ class TestEditorsFeature : public QObject {
     QCOMPARE(row.speed_rpm, best.value("q").toObject().value("speed_rpm").toDouble());
     QVERIFY(near(row.depth_mm, best.value("q").toObject().value("depth_mm").toDouble()));
     QVERIFY(!near(row.min_cost, four_rank.min_cost) || row.depth_mm != four_rank.depth_mm);
+  }
+
+  // The note is the window's: it stays under the cell after the editor closes. 0 passes the box and
+  // is refused by the project's rules, with their message.
+  void badInputIsAnsweredUnderTheCell() {
+    gui::MainWindow window;
+    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    widgets::ToolLibraryEditor* editor = test::editorsOf(window)->toolEditor();
+    QTableView* view = editor->toolView();
+    const auto typeInto = [view](const QModelIndex& cell, const QString& text) {
+      view->setCurrentIndex(cell);
+      view->edit(cell);
+      auto* box = view->viewport()->findChild<QAbstractSpinBox*>();
+      if (!box) return false;
+      box->selectAll();
+      QTest::keyClicks(box, text);
+      return true;
+    };
+    const auto noteAtCell = [view](const QModelIndex& cell) {
+      const QLabel* note = widgets::inputNote(view);
+      const QRect rect = view->visualRect(cell);
+      const int cellBottom = view->viewport()->mapToGlobal(rect.bottomLeft()).y();
+      return note && note->isVisible() && note->mapToGlobal(QPoint(0, 0)).y() == cellBottom + 1;
+    };
+    const QModelIndex teeth = editor->toolModel()->index(0, widgets::ToolTableModel::Teeth);
+    const int before = window.project()->tools[0].teeth;
+    QVERIFY(typeInto(teeth, "abc"));
+    const QLabel* note = widgets::inputNote(view);
+    QCOMPARE(note->parentWidget(), &window);
+    QCOMPARE(note->text(), QString("Teeth must be a whole number from 1 to 100; \"abc\" is not a number."));
+    QVERIFY(noteAtCell(teeth));
+    QTest::keyClick(view->viewport()->findChild<QSpinBox*>(), Qt::Key_Return);
+    QCoreApplication::processEvents();  // the view commits and closes its editor through queued calls
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+    QCOMPARE(window.project()->tools[0].teeth, before);
+    QVERIFY(noteAtCell(teeth));
+
+    const QModelIndex diameter = editor->toolModel()->index(0, widgets::ToolTableModel::Diameter);
+    QVERIFY(typeInto(diameter, "0"));
+    QTest::keyClick(view->viewport()->findChild<QAbstractSpinBox*>(), Qt::Key_Return);
+    QCoreApplication::processEvents();
+    QCOMPARE(note->text(), QString("tools[0].diameter_mm = 0: must be in (0, 1000]. The cell keeps its value."));
+    QVERIFY(noteAtCell(diameter));
   }
 
   void paretoStudyReRuns() {

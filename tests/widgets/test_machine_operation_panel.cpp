@@ -1,6 +1,7 @@
 // The machine / operation / material / expert panel: shows the project, refuses invalid values in
-// place with the reason, switches the radial engagement, creates missing sections, undoes; copies a
-// materials-library entry in one undo step and says where the material came from.
+// place with the reason (at once under the field), switches the radial engagement, creates missing
+// sections, undoes; copies a materials-library entry in one undo step and says where the material
+// came from.
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -13,6 +14,7 @@
 
 #include "display_units.h"
 #include "document/project_document.h"
+#include "input_feedback.h"
 #include "machine_operation_panel.h"
 #include "test_registry.h"
 
@@ -75,6 +77,14 @@ QDoubleSpinBox* spin(const MachineOperationPanel& panel, const QString& path) {
   return qobject_cast<QDoubleSpinBox*>(panel.field(path));
 }
 
+// The input note shown under `field`, "" when none is.
+QString noteUnder(const QWidget* field) {
+  const QLabel* note = mx::widgets::inputNote(field);
+  if (!note || !note->isVisible()) return {};
+  const QRect at(field->mapTo(field->window(), QPoint(0, 0)), field->size());
+  return note->y() == at.bottom() + 1 ? note->text() : QString("(not under the field) ") + note->text();
+}
+
 void type(QDoubleSpinBox* box, const QString& text) {
   box->selectAll();
   QTest::keyClicks(box, text);
@@ -108,6 +118,8 @@ class TestMachineOperationPanel : public QObject {
   void invalidSpindlePowerIsRefused() {
     MachineOperationPanel panel;
     panel.setProject(mx::app::loadProject(kRubio));
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
     QSignalSpy spy(&panel, &MachineOperationPanel::editRequested);
     QDoubleSpinBox* power = spin(panel, "machine.spindle_power_W");
     type(power, "0");
@@ -116,12 +128,51 @@ class TestMachineOperationPanel : public QObject {
     QCOMPARE(panel.errorText(), QString("machine.spindle_power_W = 0: must be in (0, 1e+06]"));
     QVERIFY(power->toolTip().contains("Refused: machine.spindle_power_W = 0: must be in (0, 1e+06]"));
     QVERIFY(power->styleSheet().contains("border"));
+    QCOMPARE(noteUnder(power),
+             QString("machine.spindle_power_W = 0: must be in (0, 1e+06]. The field keeps its value."));
 
     type(power, "1500");  // a good value clears the mark
     QCOMPARE(spy.count(), 1);
     QCOMPARE(spy.at(0).at(0).value<Project>().machine->spindle_power_W, 1500.0);
     QCOMPARE(panel.errorText(), QString());
     QVERIFY(power->styleSheet().isEmpty());
+  }
+
+  // What the box cannot take is answered as it is typed, named by the row's label and the unit.
+  void badInputIsAnsweredAtTheField_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("negative power") << "machine.spindle_power_W"
+                                    << "-5"
+                                    << "Spindle power [W] must be between 0 and 1000000; \"-5\" is below the minimum.";
+    QTest::newRow("letters in K_t") << "material.Kt_N_mm2"
+                                    << "abc"
+                                    << "Tangential force K_t [N/mm²] must be between 0 and 100000; \"abc\" is not a "
+                                       "number.";
+    QTest::newRow("alpha above 1") << "expert.alpha"
+                                   << "2"
+                                   << "Depth factor α must be between 0 and 1; \"2\" is above the maximum.";
+  }
+  void badInputIsAnsweredAtTheField() {
+    QFETCH(QString, path);
+    QFETCH(QString, typed);
+    QFETCH(QString, message);
+    MachineOperationPanel panel;
+    panel.setProject(mx::app::loadProject(kRubio));
+    panel.resize(500, 900);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QSignalSpy spy(&panel, &MachineOperationPanel::editRequested);
+    QDoubleSpinBox* box = spin(panel, path);
+    const double before = box->value();
+    box->selectAll();
+    QTest::keyClicks(box, typed);
+    QCOMPARE(noteUnder(box), message);
+    QTest::keyClick(box, Qt::Key_Return);
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(box->value(), before);
+    QVERIFY(noteUnder(box).startsWith(message + " The value stays "));
   }
 
   void switchingToRadialDepth() {

@@ -1,6 +1,6 @@
 // The tool-library editor: in-place edits through the real models and delegates, refusal of invalid
-// values (nothing emitted, old value kept, reason shown), undo through a real ProjectDocument,
-// selection kept across refreshes, and inch display.
+// values (nothing emitted, old value kept, reason shown at once under the cell), undo through a real
+// ProjectDocument, selection kept across refreshes, and inch display.
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -10,6 +10,7 @@
 
 #include "display_units.h"
 #include "document/project_document.h"
+#include "input_feedback.h"
 #include "range_delegate.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -38,16 +39,39 @@ void settle() {
   QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
 }
 
-// Types `text` into the spin box editor of `index` and presses Return.
-void typeInto(QTableView* view, const QModelIndex& index, const QString& text) {
+// Types `text` into the spin box editor of `index`, as a user who selected the cell.
+QAbstractSpinBox* typeKeys(QTableView* view, const QModelIndex& index, const QString& text) {
   view->setCurrentIndex(index);
   view->edit(index);
-  auto* box = view->viewport()->findChild<QDoubleSpinBox*>();
-  QVERIFY(box);
+  auto* box = view->viewport()->findChild<QAbstractSpinBox*>();
+  if (!box) return nullptr;
   box->selectAll();
   QTest::keyClicks(box, text);
+  return box;
+}
+
+// The same, then Return.
+void typeInto(QTableView* view, const QModelIndex& index, const QString& text) {
+  QAbstractSpinBox* box = typeKeys(view, index, text);
+  QVERIFY(box);
   QTest::keyClick(box, Qt::Key_Return);
   settle();
+}
+
+// The input note of the editor's window, "" when none is shown.
+QString noteText(const QWidget* editor) {
+  const QLabel* note = mx::widgets::inputNote(editor);
+  return note && note->isVisible() ? note->text() : QString();
+}
+
+// The note is right under or above the cell and overlaps it horizontally.
+bool noteIsAtTheCell(const QTableView* view, const QModelIndex& index) {
+  const QLabel* note = mx::widgets::inputNote(view);
+  const QRect rect = view->visualRect(index);
+  const QRect cell(view->viewport()->mapToGlobal(rect.topLeft()), rect.size());
+  const QRect shown(note->mapToGlobal(QPoint(0, 0)), note->size());
+  const bool adjacent = shown.top() == cell.bottom() + 1 || shown.bottom() + 1 == cell.top();
+  return adjacent && shown.left() <= cell.right() && shown.right() >= cell.left();
 }
 
 bool labelShows(const ToolLibraryEditor& editor, const QString& text) {
@@ -125,10 +149,10 @@ class TestToolLibraryEditor : public QObject {
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
     QTableView* view = editor.modeView(Axis::X);
     const QModelIndex k = editor.modeModel(Axis::X)->index(0, ModeTableModel::Stiffness);
-    typeInto(view, k, "0");
+    typeInto(view, k, "0");  // below the box's minimum, the rule's 0.001
     QCOMPARE(spy.count(), 0);
     QCOMPARE(k.data(Qt::EditRole).toDouble(), 5.59);
-    QVERIFY(editor.errorText().contains("stiffness_N_per_um = 0: must be in [0.001, 1e+06]"));
+    QVERIFY(noteText(view).contains("\"0\" is below the minimum"));
 
     typeInto(view, k, "7.25");
     QCOMPARE(spy.count(), 1);
@@ -136,6 +160,93 @@ class TestToolLibraryEditor : public QObject {
     QCOMPARE(edited.tools[0].modes_x[0].stiffness_N_per_um, 7.25);
     QCOMPARE(edited.tools[0].modes_y[0].stiffness_N_per_um, 5.715);
     QCOMPARE(editor.errorText(), QString());  // a good edit clears the message
+  }
+
+  // Typing what a cell's box cannot take is answered at once under the cell; ending the edit there
+  // keeps the old value and the note.
+  void badInputIsAnsweredAtTheCell_data() {
+    QTest::addColumn<bool>("toolTable");
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<QString>("message");
+    QTest::addColumn<QString>("kept");
+    const QString stiffness = "Stiffness k [N/µm] must be between 0.001 and 1000000; ";
+    const QString teeth = "Teeth must be a whole number from 1 to 100; ";
+    const int k = ModeTableModel::Stiffness;
+    const int z = ToolTableModel::Teeth;
+    QTest::newRow("stiffness -5") << false << k << "-5" << stiffness + "\"-5\" is below the minimum."
+                                  << "5.59";
+    QTest::newRow("stiffness too large") << false << k << "1000001" << stiffness + "\"1000001\" is above the maximum."
+                                         << "5.59";
+    QTest::newRow("teeth abc") << true << z << "abc" << teeth + "\"abc\" is not a number."
+                               << "3";
+    QTest::newRow("teeth 101") << true << z << "101" << teeth + "\"101\" is above the maximum."
+                               << "3";
+    QTest::newRow("diameter -1") << true << int(ToolTableModel::Diameter) << "-1"
+                                 << "Diameter D [mm] must be between 0 and 1000; \"-1\" is below the minimum."
+                                 << "30 mm";
+    QTest::newRow("teeth 2.5") << true << z << "2.5" << teeth + "\"2.5\" is not a whole number."
+                               << "3";
+  }
+  void badInputIsAnsweredAtTheCell() {
+    QFETCH(bool, toolTable);
+    QFETCH(int, column);
+    QFETCH(QString, typed);
+    QFETCH(QString, message);
+    QFETCH(QString, kept);
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    editor.resize(900, 700);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QTableView* view = toolTable ? editor.toolView() : editor.modeView(Axis::X);
+    QAbstractItemModel* model = view->model();
+    const QModelIndex cell = model->index(0, column);
+    const QVariant before = cell.data(Qt::EditRole);
+
+    QAbstractSpinBox* box = typeKeys(view, cell, typed);
+    QVERIFY(box);
+    QCOMPARE(noteText(view), message);  // at once, before the edit ends
+    QVERIFY(noteIsAtTheCell(view, cell));
+
+    QTest::keyClick(box, Qt::Key_Return);
+    settle();
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(cell.data(Qt::EditRole), before);
+    QCOMPARE(noteText(view), message + " The value stays " + kept + ".");
+    QVERIFY(noteIsAtTheCell(view, cell));
+  }
+
+  // A value the box takes but the project's rules refuse: the rule's message under the cell.
+  void documentRefusalIsShownAtTheCell_data() {
+    QTest::addColumn<bool>("toolTable");
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("diameter 0") << true << int(ToolTableModel::Diameter)
+                                << "tools[0].diameter_mm = 0: must be in (0, 1000]";
+    QTest::newRow("frequency 0") << false << int(ModeTableModel::Frequency)
+                                 << "tools[0].modes_x[0].freq_Hz = 0: must be in (0, 20000]";
+  }
+  void documentRefusalIsShownAtTheCell() {
+    QFETCH(bool, toolTable);
+    QFETCH(int, column);
+    QFETCH(QString, message);
+    ToolLibraryEditor editor;
+    editor.setProject(mx::app::loadProject(kRubio));
+    editor.resize(900, 700);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
+    QTableView* view = toolTable ? editor.toolView() : editor.modeView(Axis::X);
+    const QModelIndex cell = view->model()->index(0, column);
+    const QVariant before = cell.data(Qt::EditRole);
+    typeInto(view, cell, "0");
+    QCOMPARE(spy.count(), 0);
+    QCOMPARE(cell.data(Qt::EditRole), before);
+    QCOMPARE(editor.errorText(), message);
+    QCOMPARE(noteText(view), message + ". The cell keeps its value.");
+    QVERIFY(noteIsAtTheCell(view, cell));
   }
 
   void validStiffnessEmitsTheNewValue() {
