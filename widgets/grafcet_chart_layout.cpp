@@ -4,6 +4,7 @@
 #include <QObject>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPicture>
 #include <algorithm>
 #include <queue>
 
@@ -35,8 +36,8 @@ GrafcetLayout GrafcetLayout::compute(const GrafcetChartData& chart_, const QFont
   GrafcetLayout L;
   auto& steps_ = L.steps;
   auto& transitions_ = L.transitions;
-  const QFontMetricsF name_fm(font(base, 8.5, false, true)), text_fm(font(base, 9.5));
-  const QFontMetricsF action_fm(font(base, 9, true));
+  const QFontMetricsF name_fm(font(base, kNamePt, false, true)), text_fm(font(base, kTextPt));
+  const QFontMetricsF action_fm(font(base, kActionPt, true));
   QHash<int, int> order, depth;  // step id -> chart order / BFS level
   for (int i = 0; i < chart_.steps.size(); ++i) order.insert(chart_.steps[i].id, i);
   QHash<int, QVector<int>> out;  // step id -> transitions (indices) leaving it
@@ -188,17 +189,20 @@ GrafcetLayout GrafcetLayout::compute(const GrafcetChartData& chart_, const QFont
   for (int lane = 0; lane < backs.size(); ++lane) transitions_[chart_.transitions[backs[lane]].id].lane = lane;
 
   const int last = any_free ? free_col : max_col;
-  const double width = xs[last] + right[last] + kMargin;
+  QPicture legend;  // measured by drawing it
+  QPainter measure(&legend);
+  const double legend_w = paintHeader(measure, base, QString()) + kMargin;
+  const double width = std::max(xs[last] + right[last] + kMargin, legend_w);
   L.content = QSizeF(std::max(width, 760.0), top0 + (max_depth + 1) * kLevelH + kMargin);
   return L;
 }
 
-void GrafcetLayout::paintHeader(QPainter& p, const QFont& base, const QString& title) {
+double GrafcetLayout::paintHeader(QPainter& p, const QFont& base, const QString& title) {
   const QColor kInk = ink(), kActiveFill = activeFill(), kToken = token(), kBackArc = backArc();
   p.setPen(kInk);
-  p.setFont(font(base, 11, true));
+  p.setFont(font(base, kTitlePt, true));
   p.drawText(QRectF(kMargin, kMargin - 6, 1000, 22), Qt::AlignLeft | Qt::AlignVCenter, title);
-  const QFont f = font(base, 8.5);
+  const QFont f = font(base, kLegendPt);
   const QFontMetricsF fm(f);
   p.setFont(f);
   double x = kMargin;
@@ -239,6 +243,7 @@ void GrafcetLayout::paintHeader(QPainter& p, const QFont& base, const QString& t
   arrowUp(p, QPointF(x + 5, y));
   x += 14;
   label(QObject::tr("back arc (upward)"));
+  return x - 18;
 }
 
 }  // namespace mx::widgets

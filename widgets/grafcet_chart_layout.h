@@ -22,6 +22,9 @@ struct GrafcetLayout {
   static constexpr double kBarBelowStep = 34, kGapBelowBar = 58, kLaneGap = 14, kHeaderH = 64;
   static constexpr double kLevelH = kStepH + kBarBelowStep + kBarH + kGapBelowBar;
   static constexpr double kNameMaxW = 130, kReceptivityMaxW = 220;
+  // Label sizes [pt] at scale 1; the smallest stays at least 9 pt at the view's least scale (0.9).
+  static constexpr double kTitlePt = 12, kIdPt = 12, kTextPt = 10.5, kNamePt = 10, kActionPt = 10, kLegendPt = 10;
+  static constexpr double kSmallestPt = 10;
 
   struct Transition {
     QRectF bar;
@@ -42,8 +45,9 @@ struct GrafcetLayout {
   static QColor activeFill() { return QColor(255, 236, 150); }
   static QColor token() { return QColor(200, 30, 30); }
   static QColor backArc() { return QColor(70, 70, 150); }
-  static void arrowUp(QPainter& p, QPointF tip);                                  // filled head in the pen colour
-  static void paintHeader(QPainter& p, const QFont& base, const QString& title);  // title and legend row
+  static void arrowUp(QPainter& p, QPointF tip);  // filled head in the pen colour
+  // The title and the legend row; returns the legend's right end.
+  static double paintHeader(QPainter& p, const QFont& base, const QString& title);
 };
 
 }  // namespace mx::widgets

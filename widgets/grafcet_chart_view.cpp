@@ -86,10 +86,14 @@ void GrafcetChartView::setFitToWidget(bool fit) {
   update();
 }
 
+double GrafcetChartView::scale() const {
+  if (!fit_ || content_.isEmpty()) return 1.0;
+  return std::clamp(std::min(width() / content_.width(), height() / content_.height()), kMinFitScale, 1.0);
+}
+
 QTransform GrafcetChartView::toWidget() const {
-  if (!fit_ || content_.isEmpty()) return {};
-  const double scale = std::min({width() / content_.width(), height() / content_.height(), 1.0});
-  return QTransform::fromScale(scale, scale);
+  const double s = scale();
+  return QTransform::fromScale(s, s);
 }
 
 bool GrafcetChartView::stepDrawnAsInitial(int step_id) const {
@@ -105,7 +109,8 @@ bool GrafcetChartView::isBackArc(int transition_id) const {
 void GrafcetChartView::layoutChart() {
   layout_ = GrafcetLayout::compute(chart_, font());
   content_ = layout_.content;
-  setMinimumSize(fit_ ? QSize(200, 150) : sizeHint());
+  // Fit mode: never smaller than the least scale (a scroll area scrolls the rest).
+  setMinimumSize(fit_ ? (content_ * kMinFitScale).toSize() : sizeHint());
   updateGeometry();
 }
 
@@ -120,8 +125,8 @@ void GrafcetChartView::paintEvent(QPaintEvent*) {
 void GrafcetChartView::paintChart(QPainter& p) const {
   L::paintHeader(p, font(), chart_.name.isEmpty() ? tr("Grafcet chart") : tr("Grafcet: %1").arg(chart_.name));
   paintArcs(p);
-  const QFont id_font = L::font(font(), 11, true), name_font = L::font(font(), 8.5, false, true);
-  const QFont text_font = L::font(font(), 9.5), action_font = L::font(font(), 9, true);
+  const QFont id_font = L::font(font(), L::kIdPt, true), name_font = L::font(font(), L::kNamePt, false, true);
+  const QFont text_font = L::font(font(), L::kTextPt), action_font = L::font(font(), L::kActionPt, true);
   // Transitions: bar, "(n)" on the left, receptivity on the right.
   for (const GrafcetTransitionView& t : chart_.transitions) {
     const QRectF bar = layout_.transitions.value(t.id).bar;

@@ -40,10 +40,14 @@ class GrafcetChartView : public QWidget {
   bool isBackArc(int transition_id) const;         // drawn upward on a left lane
   QSizeF contentSize() const { return content_; }
 
-  // Fit mode (the supervisor's Run tab): the drawing is scaled down to the widget (never up) and the
-  // widget has no minimum size; rects, clicks and tooltips follow the scale.
+  // Fit mode (the supervisor's Run tab): the drawing is scaled down to the widget, never up and never
+  // below kMinFitScale, where its labels would become unreadable: the widget's minimum size is the
+  // drawing at that scale (put it in a scroll area). Rects, clicks and tooltips follow the scale.
+  static constexpr double kMinFitScale = 0.9;
   void setFitToWidget(bool fit);
   bool fitToWidget() const { return fit_; }
+  double scale() const;  // of the drawing in the widget
+  double smallestLabelPointSize() const { return GrafcetLayout::kSmallestPt * scale(); }
 
   bool saveImage(const QString& path, int width, int height);  // PNG, white background, fitted
   QSize sizeHint() const override;

@@ -1,8 +1,12 @@
 // GrafcetChartView: the automatic layout gives every step and transition a rect, steps never
 // overlap, levels follow the BFS from the initial step, upward arcs are back arcs; the initial step is
-// drawn double; tokens round trip; clicks emit the element's id; the PNG export draws the chart.
+// drawn double; tokens round trip; clicks emit the element's id; fit mode shrinks the drawing no
+// further than its labels stay readable (>= 9 pt), then scrolls; the PNG export draws the chart.
 #include <QApplication>
+#include <QFontInfo>
 #include <QImage>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -123,18 +127,52 @@ class TestGrafcetChartView : public QObject {
     view.setChart(smc2Chart());
     const QRectF full = view.stepRect(4);
     const QSizeF content = view.contentSize();
+    QCOMPARE(view.scale(), 1.0);
     view.setFitToWidget(true);
-    view.resize((content / 2).toSize());
-    QVERIFY(view.minimumSize().width() < content.width() / 2);
-    const QRectF half = view.stepRect(4);
-    QVERIFY(std::abs(half.width() - full.width() / 2) < 1.0);
-    QVERIFY(std::abs(half.center().x() - full.center().x() / 2) < 1.0);
+    view.resize((content * 0.95).toSize());
+    QVERIFY(std::abs(view.scale() - 0.95) < 0.01);
+    const QRectF scaled = view.stepRect(4);
+    QVERIFY(std::abs(scaled.width() - view.scale() * full.width()) < 0.5);
+    QVERIFY(std::abs(scaled.center().x() - view.scale() * full.center().x()) < 0.5);
     QSignalSpy steps(&view, &GrafcetChartView::stepClicked);
-    QTest::mouseClick(&view, Qt::LeftButton, {}, half.center().toPoint());
+    QTest::mouseClick(&view, Qt::LeftButton, {}, scaled.center().toPoint());
     QCOMPARE(steps.count(), 1);
     QCOMPARE(steps.at(0).at(0).toInt(), 4);
     view.resize((content * 2).toSize());  // never scaled up
     QCOMPARE(view.stepRect(4), full);
+  }
+
+  // A small dock: the drawing stops shrinking at the least scale and the widget asks a scroll area for
+  // the rest, so that no label falls under 9 pt (the labels were ~6 px at half scale).
+  void labelsStayReadableInASmallDock_data() {
+    QTest::addColumn<double>("fraction");  // of the drawing's size given to the widget
+    QTest::addColumn<double>("scale");
+    QTest::newRow("all of it") << 1.0 << 1.0;
+    QTest::newRow("the least scale") << GrafcetChartView::kMinFitScale << GrafcetChartView::kMinFitScale;
+    QTest::newRow("half") << 0.5 << GrafcetChartView::kMinFitScale;
+    QTest::newRow("a sliver") << 0.1 << GrafcetChartView::kMinFitScale;
+  }
+  void labelsStayReadableInASmallDock() {
+    QFETCH(double, fraction);
+    QFETCH(double, scale);
+    QScrollArea area;
+    auto* view = new GrafcetChartView;
+    view->setFitToWidget(true);
+    view->setChart(smc2Chart());
+    area.setWidget(view);
+    area.setWidgetResizable(true);
+    const QSizeF content = view->contentSize();
+    QCOMPARE(view->minimumSize(), (content * GrafcetChartView::kMinFitScale).toSize());
+    area.resize((content * fraction).toSize() + QSize(2 * area.frameWidth(), 2 * area.frameWidth()));
+    area.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&area));
+    QVERIFY2(std::abs(view->scale() - scale) < 0.01, qPrintable(QString::number(view->scale())));
+    QVERIFY(view->smallestLabelPointSize() >= 9.0);
+    QFont smallest = view->font();
+    smallest.setPointSizeF(view->smallestLabelPointSize());
+    QVERIFY(QFontInfo(smallest).pixelSize() >= 11);
+    const bool scrolls = area.verticalScrollBar()->maximum() > 0 || area.horizontalScrollBar()->maximum() > 0;
+    QCOMPARE(scrolls, fraction < GrafcetChartView::kMinFitScale);
   }
 
   void exportsAPng() {
