@@ -37,7 +37,9 @@ QCustomPlot* makePlot(QWidget* parent, const QString& tooltip, int legend_column
   plot->setMinimumSize(320, 140);
   plot->legend->setVisible(true);
   plot->legend->setFont(QFont(parent->font().family(), 9));
-  placeLegendUnderPlot(plot, legend_columns);  // never over a trace
+  placeLegendUnderPlot(plot, legend_columns);      // never over a trace
+  plot->legend->setMargins(QMargins(6, 1, 6, 1));  // the dock's height is for the traces
+  plot->legend->setRowSpacing(0);
   plot->setToolTip(tooltip);
   // Dense oscillating traces: antialiased wide polylines take seconds per repaint; these stay ~ms.
   plot->setPlottingHint(QCP::phFastPolylines, true);
@@ -89,6 +91,8 @@ SimulationView::SimulationView(QWidget* parent, std::size_t capacity)
   motion_plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   motion_plot_->yAxis2->setLabelColor(kForceColor);
   motion_plot_->yAxis2->setTickLabelColor(kForceColor);
+  // A few ticks: the plots are ~100 px tall in the dock at 1080p.
+  for (QCPAxis* axis : {motion_plot_->yAxis, motion_plot_->yAxis2, power_plot_->yAxis}) axis->ticker()->setTickCount(3);
   // The force first, so that the displacements are drawn over it.
   force_trace_ = std::make_unique<TraceGraph>(motion_plot_, motion_plot_->yAxis2, kForceColor, kForceBandAlpha);
   x_trace_ = std::make_unique<TraceGraph>(motion_plot_, motion_plot_->yAxis, kXColor);

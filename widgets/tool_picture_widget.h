@@ -39,7 +39,7 @@ class ToolPictureWidget : public QWidget {
   void setUnits(const DisplayUnits* units);  // the diameter in mm or inch; nullptr = mm
   const std::optional<MillingSetup>& cutter() const { return cutter_; }
   QSize sizeHint() const override { return {360, 180}; }
-  QSize minimumSizeHint() const override { return {260, 160}; }
+  QSize minimumSizeHint() const override { return {260, 130}; }  // the tools dock is short beside tall plots
 
  protected:
   void paintEvent(QPaintEvent* event) override;
