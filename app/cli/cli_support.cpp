@@ -63,19 +63,25 @@ QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments
 }
 
 QList<QCommandLineOption> cutPointOptions() {
-  return {{"tool", "Tool id (required).", "ID"},
-          {"speed", "Spindle speed [rpm], 1..1e5 (required).", "RPM"},
-          {"depth", "Axial depth of cut [mm], 0..1000 (required).", "MM"},
-          {"feed", "Feed per tooth [mm/tooth], 1e-6..10 (required).", "MM_PER_TOOTH"}};
+  const QString stored = " (default: the project's operating_point; required without one).";
+  return {{"tool", "Tool id" + stored, "ID"},
+          {"speed", "Spindle speed [rpm], 1..1e5" + stored, "RPM"},
+          {"depth", "Axial depth of cut [mm], 0..1000" + stored, "MM"},
+          {"feed", "Feed per tooth [mm/tooth], 1e-6..10" + stored, "MM_PER_TOOTH"}};
 }
 
-CutPointFlags readCutPoint(const QCommandLineParser& parser) {
+CutPointFlags readCutPoint(const QCommandLineParser& parser, const std::optional<OperatingPointSpec>& stored) {
+  if (!stored) {
+    for (const char* flag : {"tool", "speed", "depth", "feed"})
+      if (!parser.isSet(flag))
+        throw CliError(QString("--%1 is required: the project has no operating_point to default to").arg(flag),
+                       kExitBadInput);
+  }
   CutPointFlags p;
-  p.tool = requiredOption(parser, "tool");
-  for (const char* flag : {"speed", "depth", "feed"}) requiredOption(parser, flag);
-  p.speed_rpm = *numberOption(parser, "speed", 1.0, 1e5);
-  p.depth_mm = *numberOption(parser, "depth", 0.0, 1000.0);
-  p.feed_mm_per_tooth = *numberOption(parser, "feed", 1e-6, 10.0);
+  p.tool = parser.isSet("tool") ? parser.value("tool") : stored->tool;
+  p.speed_rpm = numberOption(parser, "speed", 1.0, 1e5).value_or(stored ? stored->speed_rpm : 0.0);
+  p.depth_mm = numberOption(parser, "depth", 0.0, 1000.0).value_or(stored ? stored->depth_mm : 0.0);
+  p.feed_mm_per_tooth = numberOption(parser, "feed", 1e-6, 10.0).value_or(stored ? stored->feed_mm_per_tooth : 0.0);
   return p;
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "document/project.h"
 #include "expert/expert_settings.h"
 #include "services/exit_code.h"
 #include "services/json_output.h"
@@ -45,7 +46,8 @@ QString parseSubcommand(QCommandLineParser& parser, const QStringList& arguments
                         const QString& description = "The .mxproj project file (at most 64 MB).");
 
 // The operating point flags shared by simulate and point: --tool, --speed [rpm], --depth [mm],
-// --feed [mm/tooth], all required and range-checked.
+// --feed [mm/tooth], range-checked. A flag left out takes the value of the project's operating_point;
+// without one, every flag is required.
 struct CutPointFlags {
   QString tool;
   double speed_rpm = 0.0;
@@ -53,7 +55,7 @@ struct CutPointFlags {
   double feed_mm_per_tooth = 0.0;
 };
 QList<QCommandLineOption> cutPointOptions();
-CutPointFlags readCutPoint(const QCommandLineParser& parser);
+CutPointFlags readCutPoint(const QCommandLineParser& parser, const std::optional<OperatingPointSpec>& stored);
 
 // The semi-discretization's cost grows with speeds x steps per tooth period (the automatic choice costs
 // about 60): at most kMaxSdmWork, about 20 s on a 2-core machine. Throws CliError(2) naming --steps

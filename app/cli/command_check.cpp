@@ -1,4 +1,5 @@
-// millexpert-cli check PROJECT: exit 0 with a summary, or exit 2 with the validation message.
+// millexpert-cli check PROJECT: exit 0 with a summary (name, tools, the stored operating_point), or exit 2
+// with the validation message.
 #include <QJsonArray>
 
 #include "cli/cli_application.h"
@@ -16,7 +17,13 @@ int runCheckCommand(const QStringList& arguments) {
   const Project project = loadProject(path);
   QJsonArray tools;
   for (const ToolSpec& t : project.tools) tools.append(t.id);
-  printJson({{"valid", true}, {"name", project.name}, {"tools", tools}});
+  QJsonObject out{{"valid", true}, {"name", project.name}, {"tools", tools}};
+  if (const std::optional<OperatingPointSpec>& p = project.operating_point)
+    out.insert("operating_point", QJsonObject{{"tool", p->tool},
+                                              {"speed_rpm", p->speed_rpm},
+                                              {"depth_mm", p->depth_mm},
+                                              {"feed_mm_per_tooth", p->feed_mm_per_tooth}});
+  printJson(out);
   return kExitOk;
 }
 

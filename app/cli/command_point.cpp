@@ -1,5 +1,6 @@
-// millexpert-cli point PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH [--method zoa|sdm]
+// millexpert-cli point PROJECT [--tool ID] [--speed RPM] [--depth MM] [--feed MM_PER_TOOTH] [--method zoa|sdm]
 //                   [--delta V] [--alpha V] [--steps M] [--dynamics modal|measured]
+// The point flags left out are the project's operating_point (the point the GUI saved).
 // Everything the lobe chart shows for one operating point: b_lim at the speed (alpha * delta-lobes,
 // Rule 1), the stability verdict ("stable": below alpha * b_lim; "verdict": stable, marginal up to 1.05 b_lim, or
 // unstable), Delta N_s (2006, section 3.B), ROS (Pareto eq. 13), peak power,
@@ -75,15 +76,15 @@ int runPointCommand(const QStringList& arguments) {
       dynamicsCommandOption(),
   });
   const QString path = parseSubcommand(parser, arguments);
-  const CutPointFlags cut = readCutPoint(parser);
-  const QString& tool = cut.tool;
-  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   const QString method = parser.value("method");
   if (method != "zoa" && method != "sdm")
     throw CliError(QString("--method = %1: must be zoa or sdm").arg(quoted(method)), kExitBadInput);
 
   const std::optional<DynamicsSource> requested = dynamicsOption(parser);
   const Project project = loadProject(path);
+  const CutPointFlags cut = readCutPoint(parser, project.operating_point);
+  const QString& tool = cut.tool;
+  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   double delta = project.expert ? project.expert->delta_per_s : 0.0;
   double alpha = project.expert ? project.expert->alpha : 1.0;
   delta = numberOption(parser, "delta", 0.0, 1e6).value_or(delta);

@@ -1,8 +1,9 @@
-// millexpert-cli simulate PROJECT --tool ID --speed RPM --depth MM --feed MM_PER_TOOTH
+// millexpert-cli simulate PROJECT [--tool ID] [--speed RPM] [--depth MM] [--feed MM_PER_TOOTH]
 //                     [--revolutions N] [--csv FILE] [--ssv-amplitude A --ssv-frequency HZ]
 //                     [--passes K] [--axial-slices N]
 // Time-domain simulation (Rubio et al. 2006 eq. 1-7, RK4) with the chatter indicators (eq. 11,
-// Pareto Rule 15) and the Smith-Tlusty suggested speed (Rule 16).
+// Pareto Rule 15) and the Smith-Tlusty suggested speed (Rule 16). The point flags left out are the
+// project's operating_point.
 #include <QSaveFile>
 #include <QTextStream>
 #include <algorithm>
@@ -68,9 +69,6 @@ int runSimulateCommand(const QStringList& arguments) {
        "N"},
   });
   const QString path = parseSubcommand(parser, arguments);
-  const CutPointFlags cut = readCutPoint(parser);
-  const QString& tool = cut.tool;
-  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   SimulationOptions options;
   options.revolutions = integerOption(parser, "revolutions", 21, 100000).value_or(60);
   options.ssv.amplitude_ratio = numberOption(parser, "ssv-amplitude", 0.0, 0.9).value_or(0.0);
@@ -79,6 +77,9 @@ int runSimulateCommand(const QStringList& arguments) {
   options.axial_slices = integerOption(parser, "axial-slices", 1, kMaxAxialSlices).value_or(0);
 
   const Project project = OutputPaths().outputOption(parser, "csv").loadProject(path);
+  const CutPointFlags cut = readCutPoint(parser, project.operating_point);
+  const QString& tool = cut.tool;
+  const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
   requireFittedModes(requireTool(project, tool), "the time-domain simulation");
   const MillingSetup setup = project.setupFor(tool);
   const OperatingPoint point{rpmToRevPerS(speed_rpm), depth_mm * 1e-3, feed_mm * 1e-3};

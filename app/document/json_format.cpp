@@ -21,7 +21,8 @@ const QStringList& keyOrder() {
                                  "material",
                                  "operation",
                                  "tools",
-                                 "expert",  // sections
+                                 "expert",
+                                 "operating_point",  // sections
                                  "spindle_power_W",
                                  "max_spindle_rpm",
                                  "max_feed_mm_s",
@@ -78,7 +79,8 @@ const QStringList& keyOrder() {
                                  "reported_chatter",  // expert
                                  "tool",
                                  "speed_rpm",
-                                 "depth_mm",  // reported chatter
+                                 "depth_mm",           // reported chatter
+                                 "feed_mm_per_tooth",  // operating point
                                  "speed_from_rpm",
                                  "speed_to_rpm",
                                  "speed_step_rpm",

@@ -187,6 +187,16 @@ struct ExpertSpec {
   bool operator==(const ExpertSpec&) const = default;
 };
 
+// The operating point the project opens at (operating_point): the GUI writes its point and active tool
+// here on save; the CLI's point and simulate take it for the flags left out.
+struct OperatingPointSpec {
+  QString tool;                    // a tool id of the project
+  double speed_rpm = 0.0;          // (0, 1e5]
+  double depth_mm = 0.0;           // axial depth of cut, (0, 1000]
+  double feed_mm_per_tooth = 0.0;  // (0, 10]
+  bool operator==(const OperatingPointSpec&) const = default;
+};
+
 struct Project {
   QString name;
   std::optional<MachineSpec> machine;
@@ -201,6 +211,7 @@ struct Project {
   std::optional<SupervisorSection> supervisor;
   std::optional<ParetoSection> pareto;
   std::optional<QStringList> operator_rules;  // one rule per element (Rule 18)
+  std::optional<OperatingPointSpec> operating_point;
   // The keys of the file this build does not know, per object, at every level but the elements of
   // arrays (tools, modes, depth steps, events, chart steps and transitions keep theirs in their
   // structs, so that they follow their element on reorder).

@@ -68,6 +68,7 @@ ProjectChanges changedSections(const Project& a, const Project& b) {
   mark(weightsOf(a.pareto) != weightsOf(b.pareto), ProjectSection::ParetoWeights);
   mark(a.operator_rules != b.operator_rules, ProjectSection::Rules);
   mark(a.document != b.document, ProjectSection::Unknown);
+  mark(a.operating_point != b.operating_point, ProjectSection::OperatingPoint);
   return f;
 }
 

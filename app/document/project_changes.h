@@ -24,14 +24,15 @@ enum class ProjectSection : unsigned {
   Supervisor = 1u << 12,
   Pareto = 1u << 13,  // everything of "pareto" but the weights
   ParetoWeights = 1u << 14,
-  Rules = 1u << 15,    // operator_rules
-  Unknown = 1u << 16,  // the file's keys this build does not know (Project::document)
+  Rules = 1u << 15,           // operator_rules
+  Unknown = 1u << 16,         // the file's keys this build does not know (Project::document)
+  OperatingPoint = 1u << 17,  // operating_point: where the project opens (no view recomputes)
 };
 Q_DECLARE_FLAGS(ProjectChanges, ProjectSection)
 Q_DECLARE_OPERATORS_FOR_FLAGS(ProjectChanges)
 
 // Every section: a loaded, new or recovered project.
-constexpr ProjectChanges kAllSections = ProjectChanges::fromInt((1u << 17) - 1);
+constexpr ProjectChanges kAllSections = ProjectChanges::fromInt((1u << 18) - 1);
 
 // The sections that differ between `before` and `after`; empty for a no-op edit.
 ProjectChanges changedSections(const Project& before, const Project& after);

@@ -82,7 +82,19 @@ void ProjectDocument::setPointSilently(const PickedPoint& point) {
   emit pointChanged(point_);
 }
 
-QString ProjectDocument::applyEdit(const Project& edited, const QString& description, int gesture_id) {
+namespace {
+
+// A stored operating point goes with its tool: an edit that removes or renames the tool drops it (the
+// point itself is written again on save, with the tool it is then picked for).
+Project withoutStalePoint(Project p) {
+  if (p.operating_point && p.findTool(p.operating_point->tool) == nullptr) p.operating_point.reset();
+  return p;
+}
+
+}  // namespace
+
+QString ProjectDocument::applyEdit(const Project& edit, const QString& description, int gesture_id) {
+  const Project edited = withoutStalePoint(edit);
   const ProjectChanges sections = changedSections(project_, edited);
   if (!sections) return {};
   try {
@@ -94,8 +106,9 @@ QString ProjectDocument::applyEdit(const Project& edited, const QString& descrip
   return {};
 }
 
-QString ProjectDocument::applyEditAndMovePoint(const Project& edited, const PickedPoint& point,
+QString ProjectDocument::applyEditAndMovePoint(const Project& edit, const PickedPoint& point,
                                                const QString& description) {
+  const Project edited = withoutStalePoint(edit);
   const ProjectChanges sections = changedSections(project_, edited);
   if (!sections && point == point_) return {};
   // Validated first: a refused edit leaves no empty macro on the stack and does not move the point.
@@ -118,6 +131,26 @@ void ProjectDocument::setPoint(const PickedPoint& point, int drag_id) {
   undo_.push(new PointCommand(this, point_, point, drag_id));
 }
 
+void ProjectDocument::setPointTool(const QString& tool) {
+  if (tool == point_tool_) return;
+  point_tool_ = tool;
+  emit pointToolChanged(point_tool_);
+}
+
+Project ProjectDocument::projectToSave() const {
+  if (point_tool_.isEmpty() || !(point_.speed_rpm > 0.0)) return project_;
+  Project p = project_;
+  p.operating_point = OperatingPointSpec{point_tool_, point_.speed_rpm, point_.depth_mm, point_.feed_mm_per_tooth};
+  return projectValidationError(p).isEmpty() ? p : project_;
+}
+
+void ProjectDocument::adoptOperatingPoint(const Project& project) {
+  if (!project.operating_point) return;
+  const OperatingPointSpec& op = *project.operating_point;
+  setPointTool(op.tool);
+  setPointSilently({op.speed_rpm, op.depth_mm, op.feed_mm_per_tooth});
+}
+
 void ProjectDocument::newProject() {
   Project p;
   p.name = tr("Untitled");
@@ -133,6 +166,10 @@ void ProjectDocument::load(const QString& path) {
   path_ = path;
   setSnapshot(p, kAllSections);
   emit filePathChanged(path_);
+  if (project_.operating_point)
+    adoptOperatingPoint(project_);
+  else if (!(point_ == PickedPoint{}))
+    setPointSilently({});  // the previous project's point is none of this one's
 }
 
 void ProjectDocument::recover(const QString& path) {
@@ -147,15 +184,18 @@ void ProjectDocument::recover(const QString& path) {
   // Pushed even when equal to the file, so that the recovery stays one unsaved, undoable step.
   undo_.push(
       new SnapshotCommand(this, project_, recovered, tr("Recover autosave"), changedSections(project_, recovered), 0));
+  adoptOperatingPoint(recovered);  // the point moves since the last save are in the autosave's
 }
 
 void ProjectDocument::save(const QString& path) {
   const QString target = path.isEmpty() ? path_ : path;
   if (target.isEmpty()) throw ProjectError(tr("no file name to save to"));
-  saveProject(project_, target);
+  const Project saved = projectToSave();
+  saveProject(saved, target);
   QFile::remove(autosavePath());
-  // The same files, now named from the new folder; the meaning is unchanged, so no undo step or signal.
-  project_ = withFrfPathsRelativeTo(project_, QFileInfo(target).absolutePath());
+  // What the file now holds: the same FRF files, named from the new folder, and the point it opens at.
+  // Neither changes what the views show, so no undo step or signal.
+  project_ = withFrfPathsRelativeTo(saved, QFileInfo(target).absolutePath());
   if (target != path_) {
     path_ = target;
     emit filePathChanged(path_);
@@ -178,7 +218,7 @@ QString ProjectDocument::autosavePath() const {
 QString ProjectDocument::writeAutosave() {
   if (!isDirty()) return {};
   try {
-    saveProject(project_, autosavePath());
+    saveProject(projectToSave(), autosavePath());
   } catch (const ProjectError& e) {
     QString message = QString::fromStdString(e.what());
     emit autosaveFailed(message);

@@ -46,14 +46,25 @@ class ProjectDocument : public QObject {
   QString applyEditAndMovePoint(const Project& edited, const PickedPoint& point, const QString& description);
   // Sets the point without an undo entry (the initial point after loading).
   void initPoint(const PickedPoint& point) { setPointSilently(point); }
+  // The tool the point is picked for (the GUI's active tool); "" until one is set. A view choice: no
+  // undo entry; emits pointToolChanged when it changes.
+  const QString& pointTool() const { return point_tool_; }
+  void setPointTool(const QString& tool);
+  // The project as save and autosave write it: operating_point holds the point and its tool when both
+  // are valid for the project (a point picked, the tool one of its tools); else the project's own stays.
+  Project projectToSave() const;
   // Loads `path` and applies its newer autosave on top as one undoable, unsaved edit.
   void recover(const QString& path);
 
   void newProject();
-  void load(const QString& path);       // throws ProjectError; clears undo history
-  void save(const QString& path = {});  // atomic (QSaveFile); throws ProjectError
-  void setAutosaveInterval(int ms);     // 0 disables; default 30 s
-  QString autosavePath() const;         // "<file>.autosave" or per-untitled file in AppDataLocation
+  // Throws ProjectError; clears undo history. A stored operating_point becomes the point and its tool;
+  // without one, there is no point until a view picks one.
+  void load(const QString& path);
+  // projectToSave(), atomically (QSaveFile); throws ProjectError. The written operating_point becomes
+  // the project's without an undo entry or a signal, as the rewritten FRF paths do.
+  void save(const QString& path = {});
+  void setAutosaveInterval(int ms);  // 0 disables; default 30 s
+  QString autosavePath() const;      // "<file>.autosave" or per-untitled file in AppDataLocation
   // Atomic; no-op when clean. On failure the previous autosave stays, autosaveFailed is emitted and
   // the message (naming the file and the cause) returned; "" otherwise. The next interval retries.
   QString writeAutosave();
@@ -63,6 +74,7 @@ class ProjectDocument : public QObject {
   // Any change of the snapshot: the sections an edit, its undo or redo touched; all on load and new.
   void changed(mx::app::ProjectChanges sections);
   void pointChanged(const mx::app::PickedPoint& point);
+  void pointToolChanged(const QString& tool);
   void dirtyChanged(bool dirty);
   void filePathChanged(const QString& path);
   void autosaveFailed(const QString& message);
@@ -72,9 +84,11 @@ class ProjectDocument : public QObject {
   friend class PointCommand;
   void setSnapshot(const Project& project, ProjectChanges sections);
   void setPointSilently(const PickedPoint& point);
+  void adoptOperatingPoint(const Project& project);
 
   Project project_;
   PickedPoint point_;
+  QString point_tool_;
   QString path_;
   QUndoStack undo_;
   QTimer autosave_;

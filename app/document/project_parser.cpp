@@ -250,6 +250,15 @@ ExpertSpec readExpert(const ObjectReader& r) {
   return e;
 }
 
+OperatingPointSpec readOperatingPoint(const ObjectReader& r) {
+  OperatingPointSpec point;
+  point.tool = r.string("tool");
+  point.speed_rpm = r.number("speed_rpm", rules::kPointSpeedRpm);
+  point.depth_mm = r.number("depth_mm", rules::kPointDepthMm);
+  point.feed_mm_per_tooth = r.number("feed_mm_per_tooth", rules::kPointFeedMmPerTooth);
+  return point;
+}
+
 }  // namespace
 
 Project projectFromJson(const QJsonObject& root) {
@@ -263,6 +272,7 @@ Project projectFromJson(const QJsonObject& root) {
   if (auto tools = r.optionalArray("tools")) p.tools = readTools(*tools);
   if (auto expert = r.optionalObject("expert")) p.expert = readExpert(*expert);
   readProcessSections(r, p);
+  if (auto point = r.optionalObject("operating_point")) p.operating_point = readOperatingPoint(*point);
   p.document = unknownKeys(root, projectToJson(p));
   validateProject(p);
   return p;

@@ -65,6 +65,11 @@ inline constexpr NumberRule kPresetSpeedRpm{B::Open, 0.0, B::Closed, 1e5, false}
 inline constexpr NumberRule kSurfaceSpeedMMin{B::Open, 0.0, B::Closed, 1e5, false};
 inline constexpr NumberRule kPresetFeedMmMin{B::Open, 0.0, B::Closed, 1e6, false};
 inline constexpr NumberRule kPresetDepthMm{B::Open, 0.0, B::Closed, 1000.0, false};
+// The project's operating point (operating_point): the spindle's speed range, the presets' depths and
+// the feed per tooth of the operation.
+inline constexpr NumberRule kPointSpeedRpm = kSpindleRpm;
+inline constexpr NumberRule kPointDepthMm = kPresetDepthMm;
+inline constexpr NumberRule kPointFeedMmPerTooth = kFeedPerToothMm;
 inline constexpr qsizetype kMaxCuttingPresets = 100;  // tools[].cutting_data
 inline constexpr qsizetype kMaxToolTypeChars = 100;   // tools[].type
 // Counts that scale every computation linearly.

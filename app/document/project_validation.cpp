@@ -271,6 +271,15 @@ void validateDeltaAgainstModes(double delta_per_s, const std::vector<ToolSpec>& 
   }
 }
 
+// The point the project opens at: a tool of the project and a cut inside the ranges of the CLI's flags.
+void validateOperatingPoint(const OperatingPointSpec& point, const std::vector<ToolSpec>& tools) {
+  const bool known = std::any_of(tools.begin(), tools.end(), [&](const ToolSpec& t) { return t.id == point.tool; });
+  if (!known) throwBadField("operating_point.tool", formatValue(point.tool), "the id of a tool of the project");
+  checkNumber("operating_point.speed_rpm", point.speed_rpm, rules::kPointSpeedRpm);
+  checkNumber("operating_point.depth_mm", point.depth_mm, rules::kPointDepthMm);
+  checkNumber("operating_point.feed_mm_per_tooth", point.feed_mm_per_tooth, rules::kPointFeedMmPerTooth);
+}
+
 }  // namespace
 
 void validateProject(const Project& project) {
@@ -283,6 +292,7 @@ void validateProject(const Project& project) {
   if (project.expert) validateDeltaAgainstModes(project.expert->delta_per_s, project.tools);
   if (project.expert) validateReportedChatter(*project.expert, project.tools);
   validateProcessSections(project);
+  if (project.operating_point) validateOperatingPoint(*project.operating_point, project.tools);
 }
 
 void validateTools(const std::vector<ToolSpec>& tools, const std::optional<OperationSpec>& operation) {

@@ -194,6 +194,14 @@ QJsonObject expertJson(QJsonObject o, const ExpertSpec& e) {
   return o;
 }
 
+QJsonObject operatingPointJson(QJsonObject o, const OperatingPointSpec& point) {
+  o.insert("tool", point.tool);
+  putNumber(o, "speed_rpm", point.speed_rpm);
+  putNumber(o, "depth_mm", point.depth_mm);
+  putNumber(o, "feed_mm_per_tooth", point.feed_mm_per_tooth);
+  return o;
+}
+
 template <typename Spec, typename Writer>
 void putSection(QJsonObject& root, const QString& key, const std::optional<Spec>& spec, Writer write) {
   if (spec) {
@@ -224,6 +232,7 @@ QJsonObject projectToJson(const Project& project) {
   }
   putSection(root, "expert", project.expert, expertJson);
   putProcessSections(root, project);
+  putSection(root, "operating_point", project.operating_point, operatingPointJson);
   return root;
 }
 

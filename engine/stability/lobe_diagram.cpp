@@ -10,6 +10,9 @@ std::vector<double> SpeedGrid::values() const {
   const auto count = static_cast<long>(std::floor((to_rev_per_s - from_rev_per_s) / step_rev_per_s + 1e-9));
   out.reserve(static_cast<size_t>(count) + 1);
   for (long i = 0; i <= count; ++i) out.push_back(from_rev_per_s + static_cast<double>(i) * step_rev_per_s);
+  // A range of a whole number of steps ends at `to` itself, not a rounding error off it, so that `to` is
+  // inside the lobes computed on the grid (e.g. q* at the expert grid's top speed).
+  if (std::abs(out.back() - to_rev_per_s) <= 1e-9 * step_rev_per_s) out.back() = to_rev_per_s;
   return out;
 }
 

@@ -10,7 +10,8 @@ struct SpeedGrid {
   double from_rev_per_s = 0.0;
   double to_rev_per_s = 0.0;
   double step_rev_per_s = 0.0;
-  std::vector<double> values() const;  // from, from + step, ... <= to (inclusive within 1e-9 step)
+  // from, from + step, ... <= to (inclusive within 1e-9 step); a whole number of steps ends at `to` exactly
+  std::vector<double> values() const;
 };
 
 struct LobeCurve {

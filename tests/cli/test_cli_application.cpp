@@ -23,9 +23,9 @@ class TestCliApplication : public QObject {
     };
     row("check", {"check", "--help"}, "Usage: millexpert-cli check [options] PROJECT", "-h, --help");
     row("simulate", {"simulate", "--help"}, "Usage: millexpert-cli simulate [options] PROJECT",
-        "--speed <RPM>          Spindle speed [rpm], 1..1e5 (required).");
+        "--speed <RPM>          Spindle speed [rpm], 1..1e5 (default: the");
     row("point -h", {"point", "-h"}, "Usage: millexpert-cli point [options] PROJECT",
-        "--feed <MM_PER_TOOTH>  Feed per tooth [mm/tooth], 1e-6..10 (required).");
+        "--feed <MM_PER_TOOTH>  Feed per tooth [mm/tooth], 1e-6..10 (default:");
     row("help point", {"help", "point"}, "Usage: millexpert-cli point [options] PROJECT", "--steps <M>");
     row("lobes with a project", {"lobes", "some.mxproj", "--help"}, "Usage: millexpert-cli lobes [options] PROJECT",
         "--tool <ID>");

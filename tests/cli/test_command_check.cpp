@@ -57,6 +57,17 @@ class TestCliCheck : public QObject {
     QCOMPARE(out["tools"].toArray().toVariantList(), QVariant(tools).toList());
   }
 
+  // The stored operating point is part of the summary; a project without one has no key.
+  void reportsTheStoredPoint() {
+    const CliRun run = runCli({"check", fixturePath("valid-full.mxproj")});
+    QCOMPARE(run.code, 0);
+    const QJsonObject point = QJsonDocument::fromJson(run.out)["operating_point"].toObject();
+    QCOMPARE(point, (QJsonObject{{"tool", "T1"}, {"speed_rpm", 8000}, {"depth_mm", 1.5}, {"feed_mm_per_tooth", 0.1}}));
+    const CliRun plain = runCli({"check", MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"});
+    QCOMPARE(plain.code, 0);
+    QVERIFY(!QJsonDocument::fromJson(plain.out).object().contains("operating_point"));
+  }
+
   // One row per validation rule; each invalid file is written to a temporary directory.
   void invalidProjects_data() {
     QTest::addColumn<QStringList>("mutations");
@@ -91,6 +102,9 @@ class TestCliCheck : public QObject {
         "tools[0].modes_x[1].stiffness_N_per_um = 0: must be in [0.001, 1e+06]");
     row("frequency <= 0", {"tools/0/modes_y/0/freq_Hz=-1"}, "tools[0].modes_y[0].freq_Hz = -1: must be in (0, 20000]");
     row("duplicate ids", {"tools/1/id=\"T1\""}, "tools[1].id = \"T1\": duplicate of tools[0].id");
+    row("point of another tool", {"operating_point/tool=\"T3\""},
+        "operating_point.tool = \"T3\": must be the id of a tool of the project");
+    row("point speed 0", {"operating_point/speed_rpm=0"}, "operating_point.speed_rpm = 0: must be in (0, 1e+05]");
     row("power <= 0", {"machine/spindle_power_W=0"}, "machine.spindle_power_W = 0: must be in (0, 1e+06]");
     row("max rpm <= 0", {"machine/max_spindle_rpm=-100"}, "machine.max_spindle_rpm = -100: must be in (0, 1e+05]");
     row("max feed <= 0", {"machine/max_feed_mm_s=0"}, "machine.max_feed_mm_s = 0: must be in (0, 1e+05]");

@@ -178,6 +178,15 @@ class TestCommandPoint : public QObject {
     if (!got.isNull()) QCOMPARE_LE(std::abs(got.toDouble() - expected.toDouble()), 1e-9 * expected.toDouble());
   }
 
+  // The grid's top speed is inside its lobes (rubio2006-adaptive-control: 400-3000 rpm; q* of its tool
+  // is at 3000 rpm).
+  void theGridsTopSpeed() {
+    const mx::test::CliRun r = mx::test::runCli({"point", MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj",
+                                                 "--tool", "C1", "--speed", "3000", "--depth", "0.5", "--feed", "0.3"});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QVERIFY(r.json["blim_mm"].toDouble() > 0.0);
+  }
+
   // The semi-discretization's work is bounded by speeds x steps: refused by the flag, before any work.
   void sdmWorkIsBounded() {
     const mx::test::CliRun r = mx::test::runCli({"point", kCase, "--tool", "R1", "--speed", "3000", "--depth", "0.1",
@@ -187,6 +196,68 @@ class TestCommandPoint : public QObject {
                             "8.02e+05 speed-steps, at most 3e+05 (about 20 s)"),
              qPrintable(r.err));
     QVERIFY(r.out.isEmpty());
+  }
+
+  // The point flags left out are the project's operating_point, the ones given win; without a stored
+  // point each is required. simulate reads them alike.
+  void flagsDefaultToTheStoredPoint_data() {
+    QTest::addColumn<QStringList>("flags");
+    QTest::addColumn<double>("speed");
+    QTest::addColumn<double>("depth");
+    QTest::addColumn<double>("feed");
+    QTest::newRow("none") << QStringList{} << 2010.0 << 1.5124 << 0.1787;
+    QTest::newRow("speed") << QStringList{"--speed", "2400"} << 2400.0 << 1.5124 << 0.1787;
+    QTest::newRow("depth and feed") << QStringList{"--depth", "0.3", "--feed", "0.05"} << 2010.0 << 0.3 << 0.05;
+    QTest::newRow("all four") << QStringList{"--tool", "R1", "--speed", "1800", "--depth", "0.3693", "--feed", "0.05"}
+                              << 1800.0 << 0.3693 << 0.05;
+  }
+  void flagsDefaultToTheStoredPoint() {
+    QFETCH(QStringList, flags);
+    QFETCH(double, speed);
+    QFETCH(double, depth);
+    QFETCH(double, feed);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString project =
+        mx::test::writeMutatedProject(kCase,
+                                      {"operating_point={\"tool\": \"R1\", \"speed_rpm\": 2010, \"depth_mm\": 1.5124, "
+                                       "\"feed_mm_per_tooth\": 0.1787}"},
+                                      dir.filePath("stored.mxproj"));
+    const mx::test::CliRun r = mx::test::runCli(QStringList{"point", project} + flags);
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json["tool"].toString(), QString("R1"));
+    QCOMPARE(r.json["speed_rpm"].toDouble(), speed);
+    QCOMPARE(r.json["depth_mm"].toDouble(), depth);
+    QCOMPARE(r.json["feed_per_tooth_mm"].toDouble(), feed);
+    const mx::test::CliRun flagged =
+        mx::test::runCli({"point", kCase, "--tool", "R1", "--speed", QString::number(speed, 'g', 17), "--depth",
+                          QString::number(depth, 'g', 17), "--feed", QString::number(feed, 'g', 17)});
+    QCOMPARE(r.json["peak_power_W"].toDouble(), flagged.json["peak_power_W"].toDouble());
+    QCOMPARE(r.json["blim_mm"].toDouble(), flagged.json["blim_mm"].toDouble());
+    const mx::test::CliRun simulated =
+        mx::test::runCli(QStringList{"simulate", project, "--revolutions", "21"} + flags);
+    QVERIFY2(simulated.code == 0, qPrintable(simulated.err));
+    QCOMPARE(simulated.json["tool"].toString(), QString("R1"));
+  }
+
+  void flagsAreRequiredWithoutAStoredPoint_data() {
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QStringList>("flags");
+    QTest::addColumn<QString>("missing");
+    QTest::newRow("point, no flag") << "point" << QStringList{} << "--tool";
+    QTest::newRow("point, no depth") << "point" << QStringList{"--tool", "R1", "--speed", "2000", "--feed", "0.1"}
+                                     << "--depth";
+    QTest::newRow("simulate, no feed") << "simulate" << QStringList{"--tool", "R1", "--speed", "2000", "--depth", "0.1"}
+                                       << "--feed";
+  }
+  void flagsAreRequiredWithoutAStoredPoint() {
+    QFETCH(QString, command);
+    QFETCH(QStringList, flags);
+    QFETCH(QString, missing);
+    const mx::test::CliRun r = mx::test::runCli(QStringList{command, kCase} + flags);
+    QCOMPARE(r.code, 2);
+    QCOMPARE(r.err.trimmed(),
+             QString("millexpert-cli: %1 is required: the project has no operating_point to default to").arg(missing));
   }
 
   // The cutting data used, after the tool's overrides, and the process-damping note: the ZOA leaves the

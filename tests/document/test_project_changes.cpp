@@ -27,6 +27,7 @@ Project everySection() {
   p.part_program = cz.part_program;
   p.supervisor = example("landers-face-milling.mxproj").supervisor;
   p.operator_rules = QStringList{"IF tool.teeth >= 2 THEN speed_rpm <= 9000"};
+  p.operating_point = OperatingPointSpec{p.tools[0].id, 3000.0, 1.0, 0.1};
   p.document.insert("x_note", "every section");
   return p;
 }
@@ -73,6 +74,8 @@ const std::vector<Edit>& edits() {
       {"operator rules", [](Project& p) { p.operator_rules->append("IF tool.teeth >= 4 THEN depth_mm <= 2"); },
        S::Rules},
       {"unknown key", [](Project& p) { p.document.insert("x_vendor", "ACME"); }, S::Unknown},
+      {"operating point", [](Project& p) { p.operating_point->depth_mm = 1.5; }, S::OperatingPoint},
+      {"operating point removed", [](Project& p) { p.operating_point.reset(); }, S::OperatingPoint},
       {"tools and machine",
        [](Project& p) {
          p.tools[0].diameter_mm += 1.0;

@@ -4,10 +4,12 @@
 #include <QDir>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <limits>
 
 #include "document/frf_paths.h"
 #include "document/project_document.h"
 #include "support/project_edits.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -19,6 +21,19 @@ const QString kProject = MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj";
 
 app::ProjectChanges lastChanges(const QSignalSpy& spy) {
   return spy.last().at(0).value<app::ProjectChanges>();
+}
+
+// A project file as MillExpert writes it, with an operating point on C1: 6000 rpm, 2 mm, 0.12 mm/tooth.
+QString savedWithPoint(const QTemporaryDir& dir) {
+  app::Project p = app::loadProject(kProject);
+  p.operating_point = app::OperatingPointSpec{"C1", 6000.0, 2.0, 0.12};
+  const QString path = dir.filePath("point.mxproj");
+  app::saveProject(p, path);
+  return path;
+}
+
+std::optional<app::OperatingPointSpec> pointInFile(const QString& path) {
+  return app::loadProject(path).operating_point;
 }
 
 }  // namespace
@@ -168,6 +183,127 @@ class TestProjectDocument : public QObject {
     doc.applyEdit(test::withBeta(doc.project(), 0.1), "beta");
     doc.applyEdit(test::withBeta(doc.project(), 0.2), "beta");
     QCOMPARE(doc.undoStack()->count(), 2);
+  }
+
+  // Opening a project with a stored point sets the point and its tool, without an undo step.
+  void loadTakesTheStoredPoint() {
+    QTemporaryDir dir;
+    app::ProjectDocument doc;
+    QSignalSpy tool(&doc, &app::ProjectDocument::pointToolChanged);
+    doc.load(savedWithPoint(dir));
+    QCOMPARE(doc.point(), app::PickedPoint({6000.0, 2.0, 0.12}));
+    QCOMPARE(doc.pointTool(), QString("C1"));
+    QCOMPARE(tool.count(), 1);
+    QVERIFY(!doc.isDirty());
+    QCOMPARE(doc.undoStack()->count(), 0);
+    // A project without one has no point until a view picks one.
+    doc.load(kProject);
+    QCOMPARE(doc.point(), app::PickedPoint());
+    QCOMPARE(doc.pointTool(), QString("C1"));  // the view's tool choice stays
+  }
+
+  // An unmodified project saves to the same bytes; a project without a point gains one on save only.
+  void saveWritesThePointAndItsTool() {
+    QTemporaryDir dir;
+    const QString path = savedWithPoint(dir);
+    const QByteArray before = test::readBytes(path);
+    app::ProjectDocument doc;
+    doc.load(path);
+    doc.save();
+    QCOMPARE(test::readBytes(path), before);
+
+    const QString plain = dir.filePath("plain.mxproj");
+    QVERIFY(QFile::copy(kProject, plain));
+    doc.load(plain);
+    doc.setPointTool("C1");
+    doc.save();
+    QVERIFY(!pointInFile(plain));  // no point picked yet: nothing to store
+    doc.initPoint({4500.0, 1.25, 0.08});
+    QVERIFY(!doc.isDirty());
+    QVERIFY(!pointInFile(plain));
+    doc.save();
+    QCOMPARE(*pointInFile(plain), (app::OperatingPointSpec{"C1", 4500.0, 1.25, 0.08}));
+    QCOMPARE(doc.project().operating_point, pointInFile(plain));  // what the file holds, without an undo step
+    QCOMPARE(doc.undoStack()->count(), 0);
+  }
+
+  // A point move is an undoable edit: the moved point is saved, and after its undo the point before it.
+  void theUndonePointIsSaved() {
+    QTemporaryDir dir;
+    const QString path = savedWithPoint(dir);
+    app::ProjectDocument doc;
+    doc.load(path);
+    doc.setPoint({7000.0, 1.5, 0.12});
+    QVERIFY(doc.isDirty());
+    doc.save();
+    QCOMPARE(*pointInFile(path), (app::OperatingPointSpec{"C1", 7000.0, 1.5, 0.12}));
+    doc.undoStack()->undo();
+    QVERIFY(doc.isDirty());
+    doc.save();
+    QCOMPARE(*pointInFile(path), (app::OperatingPointSpec{"C1", 6000.0, 2.0, 0.12}));
+    doc.setPointTool("C2");  // not a tool of the project: the point stays on C1
+    doc.undoStack()->redo();
+    doc.save();
+    QCOMPARE(*pointInFile(path), (app::OperatingPointSpec{"C1", 6000.0, 2.0, 0.12}));
+  }
+
+  // A point the file cannot hold is not written: the stored one stays.
+  void anInvalidPointKeepsTheStoredOne_data() {
+    QTest::addColumn<double>("speed_rpm");
+    QTest::addColumn<double>("depth_mm");
+    QTest::addColumn<double>("feed_mm_per_tooth");
+    QTest::newRow("depth 0") << 6000.0 << 0.0 << 0.12;
+    QTest::newRow("feed 0") << 6000.0 << 2.0 << 0.0;
+    QTest::newRow("speed above 1e5") << 100001.0 << 2.0 << 0.12;
+    QTest::newRow("depth above 1000") << 6000.0 << 1000.5 << 0.12;
+    QTest::newRow("depth nan") << 6000.0 << std::numeric_limits<double>::quiet_NaN() << 0.12;
+  }
+  void anInvalidPointKeepsTheStoredOne() {
+    QFETCH(double, speed_rpm);
+    QFETCH(double, depth_mm);
+    QFETCH(double, feed_mm_per_tooth);
+    QTemporaryDir dir;
+    const QString path = savedWithPoint(dir);
+    app::ProjectDocument doc;
+    doc.load(path);
+    doc.setPoint({speed_rpm, depth_mm, feed_mm_per_tooth});
+    doc.save();
+    QCOMPARE(*pointInFile(path), (app::OperatingPointSpec{"C1", 6000.0, 2.0, 0.12}));
+  }
+
+  // Removing the stored point's tool is not refused: the stored point goes with it.
+  void removingThePointsToolDropsTheStoredPoint() {
+    QTemporaryDir dir;
+    app::ProjectDocument doc;
+    doc.load(savedWithPoint(dir));
+    app::Project edited = doc.project();
+    app::ToolSpec other = edited.tools[0];
+    other.id = "C2";
+    edited.tools = {other};
+    QCOMPARE(doc.applyEdit(edited, "rename C1"), QString());
+    QVERIFY(!doc.project().operating_point);
+    QVERIFY(doc.project().findTool("C2"));
+    doc.undoStack()->undo();
+    QCOMPARE(doc.project().operating_point->tool, QString("C1"));
+  }
+
+  // The autosave holds the moved point; recovering it opens there.
+  void recoveryOpensAtTheAutosavedPoint() {
+    QTemporaryDir dir;
+    const QString path = savedWithPoint(dir);
+    {
+      app::ProjectDocument doc;
+      doc.setAutosaveInterval(0);
+      doc.load(path);
+      doc.setPoint({5000.0, 1.0, 0.1});
+      QCOMPARE(doc.writeAutosave(), QString());
+    }
+    app::ProjectDocument doc;
+    doc.setAutosaveInterval(0);
+    doc.recover(path);
+    QCOMPARE(doc.point(), app::PickedPoint({5000.0, 1.0, 0.1}));
+    QCOMPARE(doc.pointTool(), QString("C1"));
+    QVERIFY(doc.isDirty());
   }
 
   void aPointDragIsOneStep() {

@@ -498,6 +498,40 @@ class TestProjectFile : public QObject {
         {"expert.grid: 91 speeds",
          "x depth_divisions = 100 x 2000 feeds (operation.max_feed_per_tooth_mm = 0.2 by "
          "feed_step_mm = 1e-04) = 18200000 points: at most 5e+06"});
+    // operating_point: a tool of the project, and the ranges of the spindle, the presets' depths and the feed
+    row("point not an object", {"operating_point=[]"}, {"operating_point: expected an object, got array"});
+    row("point tool unknown", {"operating_point/tool=\"T9\""},
+        {"operating_point.tool = \"T9\": must be the id of a tool of the project"});
+    row("point tool removed", {"-tools/0"}, {"operating_point.tool = \"T1\": must be the id of a tool of the project"});
+    row("point tool missing", {"-operating_point/tool"}, {"operating_point.tool: missing (required string)"});
+    row("point tool number", {"operating_point/tool=1"}, {"operating_point.tool: expected a string, got number"});
+    row("point speed missing", {"-operating_point/speed_rpm"},
+        {"operating_point.speed_rpm: missing (required number in (0, 1e+05])"});
+    row("point speed string", {"operating_point/speed_rpm=\"8000\""},
+        {"operating_point.speed_rpm: expected a number, got string"});
+    row("point speed null", {"operating_point/speed_rpm=null"}, {"operating_point.speed_rpm: expected a number"});
+    row("point speed 0", {"operating_point/speed_rpm=0"}, {"operating_point.speed_rpm = 0: must be in (0, 1e+05]"});
+    row("point speed above 1e5", {"operating_point/speed_rpm=100000.5"},
+        {"operating_point.speed_rpm = 100000.5: must be in (0, 1e+05]"});
+    row("point speed nan", {"operating_point/speed_rpm=nan"},
+        {"operating_point.speed_rpm = nan: must be a finite number in (0, 1e+05]"});
+    row("point depth missing", {"-operating_point/depth_mm"},
+        {"operating_point.depth_mm: missing (required number in (0, 1000])"});
+    row("point depth 0", {"operating_point/depth_mm=0"}, {"operating_point.depth_mm = 0: must be in (0, 1000]"});
+    row("point depth negative", {"operating_point/depth_mm=-1"},
+        {"operating_point.depth_mm = -1: must be in (0, 1000]"});
+    row("point depth above 1000", {"operating_point/depth_mm=1000.001"},
+        {"operating_point.depth_mm = 1000.001: must be in (0, 1000]"});
+    row("point depth inf", {"operating_point/depth_mm=inf"},
+        {"operating_point.depth_mm = inf: must be a finite number in (0, 1000]"});
+    row("point feed missing", {"-operating_point/feed_mm_per_tooth"},
+        {"operating_point.feed_mm_per_tooth: missing (required number in (0, 10])"});
+    row("point feed 0", {"operating_point/feed_mm_per_tooth=0"},
+        {"operating_point.feed_mm_per_tooth = 0: must be in (0, 10]"});
+    row("point feed above 10", {"operating_point/feed_mm_per_tooth=10.5"},
+        {"operating_point.feed_mm_per_tooth = 10.5: must be in (0, 10]"});
+    row("point feed bool", {"operating_point/feed_mm_per_tooth=true"},
+        {"operating_point.feed_mm_per_tooth: expected a number, got boolean"});
   }
 
   // The count of tools is bounded: 100 pass, 101 are refused before any tool is looked at.
@@ -718,6 +752,55 @@ class TestProjectFile : public QObject {
     QCOMPARE(expert["grid"].toObject()["speed_step_rpm"].toDouble(), 50.0);
     QVERIFY(!expert.contains("c"));  // defaults are not written out
     QCOMPARE(loadProject(out).tools[0].teeth, 4);
+  }
+
+  // operating_point at the edges of its ranges: the largest speed, depth and feed and the smallest
+  // positive ones are read as they are.
+  void operatingPointEdgeValues_data() {
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<double>("value");
+    QTest::newRow("top speed") << "speed_rpm" << 1e5;
+    QTest::newRow("slowest speed") << "speed_rpm" << 1e-3;
+    QTest::newRow("deepest") << "depth_mm" << 1000.0;
+    QTest::newRow("shallowest") << "depth_mm" << 1e-6;
+    QTest::newRow("largest feed") << "feed_mm_per_tooth" << 10.0;
+    QTest::newRow("smallest feed") << "feed_mm_per_tooth" << 1e-6;
+  }
+  void operatingPointEdgeValues() {
+    QFETCH(QString, key);
+    QFETCH(double, value);
+    QJsonObject root = readJson(fixturePath("valid-full.mxproj"));
+    QJsonObject point = root["operating_point"].toObject();
+    point[key] = value;
+    root["operating_point"] = point;
+    const Project p = projectFromJson(root);
+    QCOMPARE(projectToJson(p)["operating_point"].toObject()[key].toDouble(), value);
+  }
+
+  // operating_point: read, written after expert in the documented key order with an unknown key kept,
+  // removed with that key; the round trip is exact.
+  void operatingPointRoundTrip() {
+    const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
+    const Project p = projectFromJson(mutated(base, {"operating_point/x_note=\"from the shop\""}));
+    QVERIFY(p.operating_point);
+    QCOMPARE(*p.operating_point, (OperatingPointSpec{"T1", 8000.0, 1.5, 0.1}));
+    QTemporaryDir dir;
+    const QString out = dir.filePath("point.mxproj");
+    saveProject(p, out);
+    const QByteArray text = readBytes(out);
+    QVERIFY2(
+        text.endsWith("  \"operating_point\": {\n    \"tool\": \"T1\",\n    \"speed_rpm\": 8000,\n"
+                      "    \"depth_mm\": 1.5,\n    \"feed_mm_per_tooth\": 0.1,\n    \"x_note\": \"from the shop\"\n"
+                      "  }\n}\n"),
+        text.right(200).constData());
+    QVERIFY(text.indexOf("\"expert\"") < text.indexOf("\"operating_point\""));
+    const Project reloaded = loadProject(out);
+    QCOMPARE(reloaded.operating_point, p.operating_point);
+    QCOMPARE(projectToJson(reloaded), projectToJson(p));
+    Project removed = p;
+    removed.operating_point.reset();
+    QVERIFY(!projectToJson(removed).contains("operating_point"));
+    QVERIFY(!loadProject(fixturePath("unknown-keys.mxproj")).operating_point);  // optional
   }
 
   // machine.max_torque_Nm and machine.spindle_curve: read, written back, and a row's unknown key stays.

@@ -50,6 +50,7 @@ class TestFeatureRecompute : public QObject {
     row("operator rules", ProjectSection::Rules, Feature::ExpertSession | Feature::ParetoStudy | Feature::FiredRules);
     row("name", ProjectSection::Name, {});
     row("unknown keys", ProjectSection::Unknown, {});
+    row("operating point", ProjectSection::OperatingPoint, {});
     row("weights of both systems", ProjectSection::ExpertWeights | ProjectSection::ParetoWeights,
         Feature::ExpertRerank | Feature::ParetoChoice);
     row("everything (load)", app::kAllSections, kCutViews | Feature::SurfaceFinish | Feature::TapTest);
