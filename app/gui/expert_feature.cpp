@@ -178,6 +178,7 @@ void ExpertFeature::rerank(const CostWeights& weights) {
   }
   ranking_table_->setRanking(rows, selected);
   updateOverlays();
+  placeDefaultPoint();
   emit rankingShown();
 }
 
@@ -231,6 +232,7 @@ void ExpertFeature::reportChatter(double chatter_hz) {
 void ExpertFeature::onRefined(const RefinementOutcome& outcome) {
   if (!outcome.error.isEmpty()) {
     emit statusMessage(tr("Rules 5-6 failed: %1").arg(outcome.error), 10000);
+    opening_ = false;
     return;
   }
   refinement_ = outcome.result;
@@ -250,6 +252,7 @@ void ExpertFeature::onRefined(const RefinementOutcome& outcome) {
                        10000);
   }
   rerank(refinement_ ? refinement_->weights : weights_);
+  opening_ = false;
   emit refinementShown();
 }
 
@@ -280,6 +283,30 @@ void ExpertFeature::updateOverlays() {
     chart_->setMarker("q**", revPerSToRpm(q_star_star->speed_rev_per_s), q_star_star->depth_m * 1e3,
                       QColor(140, 0, 140), kMarkers);
   if (index >= 0) drawSessionOverlays(index);
+}
+
+namespace {
+// A value of q* in shop units without the noise of the conversion from SI (0.3 mm/tooth, not
+// 0.30000000000000004), as the point is shown and saved.
+double withoutConversionNoise(double value) {
+  return QString::number(value, 'g', 12).toDouble();
+}
+}  // namespace
+
+// A project without a stored operating point opens at q* of the active tool: of the first ranking and
+// of its Rules 5-6 re-rank, unless the user has moved the point by then. Later rankings (other weights,
+// edits) leave the point where it is.
+void ExpertFeature::placeDefaultPoint() {
+  if (!opening_ || !ranking_ || context_.project().operating_point || !context_.pointIsDefault()) return;
+  const qsizetype index = runner_->toolIds().indexOf(context_.activeTool());
+  for (const ToolChoice& t : ranking_->tools) {
+    if (index < 0 || t.tool != static_cast<std::size_t>(index)) continue;
+    const app::PickedPoint q{withoutConversionNoise(revPerSToRpm(t.q.speed_rev_per_s)),
+                             withoutConversionNoise(t.q.depth_m * 1e3),
+                             withoutConversionNoise(t.q.feed_per_tooth_m * 1e3)};
+    context_.setDefaultPoint(q);
+    if (!(q == context_.point())) emit initialPointRequested(q);
+  }
 }
 
 void ExpertFeature::drawSessionOverlays(int tool) {

@@ -37,6 +37,7 @@ class ExpertFeature : public WindowFeature {
   ExpertFeature(QMainWindow* window, FeatureContext& context, widgets::LobeChartView* chart);
 
   void projectChanged(const app::Project& project, Features recompute) override;
+  void projectReplaced() override { opening_ = true; }
   void addFileActions(QMenu* file, QToolBar* toolbar) override;
   void addViewActions(QMenu* view, QToolBar* toolbar) override;
 
@@ -62,6 +63,7 @@ class ExpertFeature : public WindowFeature {
   std::vector<ChatterReport> reportedChatter() const;
   void commitWeights(const CostWeights& weights);
   void updateOverlays();
+  void placeDefaultPoint();
   void drawSessionOverlays(int tool);
   void exportReport();
 
@@ -74,6 +76,7 @@ class ExpertFeature : public WindowFeature {
   CostWeights weights_;
   std::optional<Ranking> ranking_;
   std::optional<ExpertResult> refinement_;
+  bool opening_ = false;  // a project was opened and its first session is not refined yet: q* places the point
   bool show_cost_map_ = false;
   bool show_grid_ = false;
   QString report_program_;

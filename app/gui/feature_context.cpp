@@ -14,6 +14,10 @@ void FeatureContext::setActiveTool(const QString& id) {
   emit activeToolChanged(id);
 }
 
+bool FeatureContext::pointIsDefault() const {
+  return point().speed_rpm <= 0.0 || (default_point_ && *default_point_ == point());
+}
+
 void FeatureContext::setReadout(const widgets::PointReadout& readout) {
   readout_ = readout;
   emit readoutChanged(readout_);

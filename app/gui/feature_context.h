@@ -32,6 +32,10 @@ class FeatureContext : public QObject {
   // The tool of the readouts, the shading, the markers and the simulation.
   const QString& activeTool() const { return active_tool_; }
   void setActiveTool(const QString& id);  // "" is ignored; emits activeToolChanged when it changes
+  // The point a feature placed by default (the lobes' first guess, then q*); a better default may
+  // replace the point while it is still there, i.e. until the user moves it. nullopt: none placed.
+  void setDefaultPoint(const std::optional<app::PickedPoint>& point) { default_point_ = point; }
+  bool pointIsDefault() const;  // no point yet, or the current one is the default placed
   // The readout of the operating point (power, MRR, stability) for the active tool.
   const widgets::PointReadout& readout() const { return readout_; }
   void setReadout(const widgets::PointReadout& readout);
@@ -65,6 +69,7 @@ class FeatureContext : public QObject {
   bool simulatesCurrentPoint() const;
 
   QString active_tool_;
+  std::optional<app::PickedPoint> default_point_;
   widgets::PointReadout readout_;
   QString simulated_tool_;
   app::PickedPoint simulated_point_;

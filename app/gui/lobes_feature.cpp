@@ -54,6 +54,7 @@ QWidget* LobesFeature::buildPointPanel() {
   auto* form = new QFormLayout;
   tool_combo_->setToolTip(tr("The tool whose lobes, power limit and readouts are shown"));
   method_combo_->addItems({tr("Zeroth-order approximation"), tr("Semi-discretization")});
+  feed_spin_->setObjectName("pointFeedSpin");
   feed_spin_->setRange(0.001, 5.0);
   feed_spin_->setDecimals(4);
   feed_spin_->setSingleStep(0.01);
@@ -308,35 +309,74 @@ void LobesFeature::setSnapGrid(int tool) {
                       std::isfinite(b_min) ? snapshot_->alpha * b_min * 1e3 / divisions : 0.0);
 }
 
-// The first lobes of a project: the point starts in the middle of the range at half the limit there;
-// when the power-limit curve arrives (readout thread) and it is lower, at 80 % of it (lowerInitialPoint).
+namespace {
+
+constexpr double kInitialStabilityShare = 0.5;  // of b_lim: well inside the lobes
+constexpr double kInitialPowerShare = 0.8;      // of the depth at the power limit
+constexpr double kInitialRateTolerance = 0.02;  // removal rates this close count as equal
+
+// The lowest lobe speed of the largest removal rate N b among the speeds the machine turns (up to
+// `max_rpm`), b being half the stability limit and at most 80 % of the power-limited depth where that
+// is known (`power_mm`, one per speed): within 2 % of the largest rate the deepest cut wins, rather than
+// a pocket's top. nullopt when no speed has a finite limit.
+std::optional<app::PickedPoint> initialCut(const PointEvaluator& evaluator, int tool, const std::vector<double>& speeds,
+                                           double max_rpm, const QVector<double>* power_mm) {
+  std::vector<app::PickedPoint> cuts;
+  double best_rate = 0.0;
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const double rpm = std::round(revPerSToRpm(speeds[i]));
+    if (rpm > max_rpm) break;
+    double depth = kInitialStabilityShare * evaluator.depthLimitMm(tool, rpm);
+    if (power_mm) depth = std::min(depth, kInitialPowerShare * power_mm->value(static_cast<qsizetype>(i)));
+    if (!std::isfinite(depth) || !(depth > 0.0)) continue;
+    cuts.push_back({rpm, depth, 0.0});
+    best_rate = std::max(best_rate, rpm * depth);
+  }
+  for (const app::PickedPoint& cut : cuts)
+    if (cut.speed_rpm * cut.depth_mm >= (1.0 - kInitialRateTolerance) * best_rate) return cut;
+  return std::nullopt;
+}
+
+double maxSpindleRpm(const app::Project& p) {
+  return p.machine && p.machine->max_spindle_rpm ? *p.machine->max_spindle_rpm
+                                                 : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+// The first lobes of a project without a stored operating point (q* replaces it when the expert ranking
+// arrives): the cut of initialCut at half the feed limit, until the power-limit curve is known
+// (lowerInitialPoint); the middle of the range at 1 mm when the lobes give no limit. The simulation
+// follows the point once it settles (its re-run after a pause), so that it never runs this first guess.
 void LobesFeature::pickInitialPoint(int tool) {
   const app::Project& p = context_.project();
   const auto& speeds = snapshot_->tools[static_cast<size_t>(tool)].margined.speed_rev_per_s;
   app::PickedPoint start;
   start.speed_rpm = std::round(revPerSToRpm(0.5 * (speeds.front() + speeds.back())) / 100.0) * 100.0;
-  const double blim_mm = evaluator_->depthLimitMm(tool, start.speed_rpm);
-  start.depth_mm = std::isfinite(blim_mm) ? 0.5 * blim_mm : 1.0;
+  start.depth_mm = 1.0;
+  if (const auto cut = initialCut(*evaluator_, tool, speeds, maxSpindleRpm(p), nullptr)) start = *cut;
   start.feed_mm_per_tooth = p.operation ? 0.5 * p.operation->max_feed_per_tooth_mm : 0.1;
   initial_point_ = start;
+  context_.setDefaultPoint(start);
   emit initialPointRequested(start);
-  emit context_.simulationRequested();
 }
 
+// The power-limit curve of the first point's feed is known: the cut is chosen again with it, so that
+// the point starts below the power limit, at the speed where the power allows the best cut.
 void LobesFeature::lowerInitialPoint(const PointJobResult& result) {
   if (!initial_point_ || !result.power_limit_mm || result.evaluator != evaluator_) return;
+  if (result.point.feed_mm_per_tooth != initial_point_->feed_mm_per_tooth) return;  // a curve of another feed
   const std::optional<app::PickedPoint> initial = std::exchange(initial_point_, std::nullopt);
-  if (!(*initial == context_.point())) return;
+  if (!(*initial == context_.point()) || result.power_limit_mm->isEmpty()) return;  // moved, or no power limit
   const auto& speeds = snapshot_->tools[static_cast<size_t>(result.tool)].margined.speed_rev_per_s;
-  const QVector<double>& limit = *result.power_limit_mm;
-  const double n = rpmToRevPerS(initial->speed_rpm);
-  const auto it = std::lower_bound(speeds.begin(), speeds.end(), n);
-  if (limit.size() != static_cast<qsizetype>(speeds.size()) || it == speeds.end()) return;
-  const double power_depth = limit[it - speeds.begin()];
-  if (!(power_depth > 0.0) || 0.8 * power_depth >= initial->depth_mm) return;
-  app::PickedPoint lowered = *initial;
-  lowered.depth_mm = 0.8 * power_depth;
-  emit initialPointRequested(lowered);
+  if (result.power_limit_mm->size() != static_cast<qsizetype>(speeds.size())) return;
+  std::optional<app::PickedPoint> cut =
+      initialCut(*evaluator_, result.tool, speeds, maxSpindleRpm(context_.project()), &*result.power_limit_mm);
+  if (!cut) return;
+  cut->feed_mm_per_tooth = initial->feed_mm_per_tooth;
+  if (*cut == *initial) return;
+  context_.setDefaultPoint(*cut);
+  emit initialPointRequested(*cut);
 }
 
 namespace {

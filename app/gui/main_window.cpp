@@ -50,6 +50,10 @@ MainWindow::MainWindow(QWidget* parent)
   buildActions();
   units_.setShop(widgets::readShopUnits(QSettings()));  // the user's; the views follow its changed()
 
+  // The point is picked for the active tool: a save names it in operating_point, and a file that names
+  // one opens on it.
+  connect(context_, &FeatureContext::activeToolChanged, &doc_, &app::ProjectDocument::setPointTool);
+  connect(&doc_, &app::ProjectDocument::pointToolChanged, context_, &FeatureContext::setActiveTool);
   connect(&doc_, &app::ProjectDocument::changed, this, &MainWindow::onProjectChanged);
   connect(&doc_, &app::ProjectDocument::dirtyChanged, this, &MainWindow::updateTitle);
   connect(&doc_, &app::ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);

@@ -4,6 +4,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 
+#include "feature_context.h"
 #include "main_window.h"
 #include "window_feature.h"
 
@@ -55,6 +56,7 @@ bool MainWindow::saveProject(const QString& path) {
 
 // Another project is about to be loaded: no point and no run of the new one is shown yet.
 void MainWindow::replaceProject() {
+  context_->setDefaultPoint(std::nullopt);
   doc_.initPoint({});
   for (WindowFeature* feature : features_) feature->projectReplaced();
 }

@@ -2,7 +2,7 @@
 // a mouse drag of the operating point from its stable start across a lobe into the unstable region,
 // the simulation of the released point; a drag of the c1 cost-weight slider, Ctrl+Z, Ctrl+S; then
 // millexpert-cli on the saved file against the readouts, the simulation and the ranking the window
-// showed, and a second window on the saved file against the first.
+// showed, and a second window on the saved file, which opens at the saved point, against the first.
 #include "e2e_check.h"
 
 #include <QDateTime>
@@ -174,7 +174,7 @@ void CheckScenario::openFirstWindow() {
                       .arg(seen_.initial.stable ? "stable" : "not stable"));
 }
 
-// From the initial point (half b_lim) to 1.6 times the lowest b_lim 300-1500 rpm away: across the lobe's
+// From the initial point (q*) to 1.6 times the lowest b_lim 300-1500 rpm away: across the lobe's
 // flank into the unstable region.
 void CheckScenario::dragAcrossLobe() {
   gui::MainWindow& w = *window_;
@@ -397,10 +397,23 @@ void CheckScenario::compareWithCli() {
   compareWithCliRanking(report_, "cli.rank_dragged_weights", seen_.ranking_moved, seen_.selected_moved,
                         cli("cli.rank_dragged_weights", {"rank", path_, "--c", c}));
 
-  const QJsonObject saved = app::projectToJson(app::loadProject(path_));
+  // The file's operating_point: the dragged point, which `point` takes for the flags left out.
+  const QJsonObject stored = cli("cli.point_stored", {"point", path_});
+  report_.check("cli.point_stored",
+                stored.value("tool").toString() == r.tool_id && stored.value("speed_rpm").toDouble() == r.speed_rpm &&
+                    stored.value("depth_mm").toDouble() == r.depth_mm &&
+                    stored.value("feed_per_tooth_mm").toDouble() == r.feed_mm_per_tooth,
+                QString("%1 at %2 rpm, %3 mm, %4 mm/tooth")
+                    .arg(stored.value("tool").toString(), num(stored.value("speed_rpm").toDouble()),
+                         num(stored.value("depth_mm").toDouble()), num(stored.value("feed_per_tooth_mm").toDouble())));
+
+  const app::Project saved_project = app::loadProject(path_);
+  const QJsonObject saved = app::projectToJson(saved_project);
   report_.check("file.saved_is_window", saved == seen_.project, "the saved file reads back as the window's project");
-  report_.check("file.undo_restored", saved == app::projectToJson(app::loadProject(kExample)),
-                "after Ctrl+Z the saved project equals the example (the point is not part of the file)");
+  app::Project example = app::loadProject(kExample);
+  example.operating_point = saved_project.operating_point;
+  report_.check("file.undo_restored", saved == app::projectToJson(example),
+                "after Ctrl+Z the saved project equals the example but for the operating point it stores");
 }
 
 void CheckScenario::reopenAndCompare() {
@@ -410,11 +423,13 @@ void CheckScenario::reopenAndCompare() {
   report_.check("reopen.project_json", app::projectToJson(*w.project()) == seen_.project,
                 "the reopened project equals the saved window's");
   const gui::FeatureContext* context = test::contextOf(w);
-  compareReadouts(report_, "reopen.initial_readout", context->readout(), seen_.initial);
+  report_.check(
+      "reopen.stored_point", w.document()->point() == seen_.point && context->activeTool() == seen_.dragged.tool_id,
+      QString("the window opens at %1 rpm, %2 mm on %3; saved %4 rpm, %5 mm on %6")
+          .arg(num(w.document()->point().speed_rpm), num(w.document()->point().depth_mm), context->activeTool(),
+               num(seen_.point.speed_rpm), num(seen_.point.depth_mm), seen_.dragged.tool_id));
   auto* table = part<widgets::RankingTable>(w);
   compareRankings(report_, "reopen.ranking", table->rows(), seen_.ranking);
-  w.document()->setPoint(seen_.point);
-  waitForReadout(w, kInputMs, "the readout of the first window's dragged point");
   compareReadouts(report_, "reopen.dragged_readout", context->readout(), seen_.dragged);
   const QHash<QString, QString> texts = shownTexts(*test::lobesOf(w)->readout());
   for (const QString& field : kReadoutFields)

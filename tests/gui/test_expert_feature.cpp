@@ -174,6 +174,67 @@ class TestExpertFeature : public QObject {
     QCOMPARE(gui::reportProjectName(*window.document()), project + " (with unsaved changes)");
   }
 
+  // A project without a stored operating point opens at q* of the active tool; a later ranking (other
+  // weights) leaves the point there.
+  void opensAtQStar() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.show();
+    QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(refined.wait(60000));
+    const gui::ExpertFeature* expert = test::expertOf(window);
+    auto qStar = [&]() {
+      const std::optional<Ranking> ranking = expert->runner()->rank(expert->weights().c);
+      const qsizetype tool = expert->runner()->toolIds().indexOf(test::contextOf(window)->activeTool());
+      for (const ToolChoice& t : ranking->tools)
+        if (static_cast<qsizetype>(t.tool) == tool)
+          return app::PickedPoint{t.q.speed_rev_per_s * 60.0, t.q.depth_m * 1e3, t.q.feed_per_tooth_m * 1e3};
+      return app::PickedPoint{};
+    };
+    // The point is q* in shop units to 12 significant digits (no noise of the SI conversion in the file).
+    auto isAt = [](const app::PickedPoint& p, const app::PickedPoint& q) {
+      const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-11 * std::abs(b); };
+      return near(p.speed_rpm, q.speed_rpm) && near(p.depth_mm, q.depth_mm) &&
+             near(p.feed_mm_per_tooth, q.feed_mm_per_tooth);
+    };
+    QCOMPARE(test::contextOf(window)->activeTool(), QString("R1"));
+    const app::PickedPoint first = qStar();
+    QCOMPARE(window.document()->point().speed_rpm, 5800.0);
+    QVERIFY(isAt(window.document()->point(), first));
+    QVERIFY(!window.document()->isDirty());
+    QCOMPARE(window.document()->undoStack()->count(), 0);
+
+    app::Project edited = *window.project();
+    edited.expert->c = {0.9, 0.05, 0.05};  // tool life first: another q*
+    QCOMPARE(window.document()->applyEdit(edited, "weights"), QString());
+    QVERIFY(!isAt(qStar(), first));
+    QVERIFY(isAt(window.document()->point(), first));
+  }
+
+  // A point the user moves before the ranking arrives stays where it was moved.
+  void aPointMovedBeforeTheRankingStays() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.show();
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
+    const app::PickedPoint moved{3000.0, 0.2, 0.1};
+    int ranked_before_move = -1;
+    connect(
+        test::lobesOf(window), &gui::LobesFeature::lobesShown, this,
+        [&] {
+          ranked_before_move = static_cast<int>(ranked.count());
+          window.document()->setPoint(moved);
+        },
+        Qt::SingleShotConnection);
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(refined.wait(60000));
+    QCOMPARE(ranked_before_move, 0);  // the lobes come first: the session needs them too
+    QVERIFY(ranked.count() > 0);
+    QCOMPARE(window.document()->point(), moved);
+  }
+
   void reRankTwentyTools() {
     gui::MainWindow window;
     window.setQuiet(true);

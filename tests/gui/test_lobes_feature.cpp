@@ -1,17 +1,24 @@
 // The lobe chart and the operating point (offscreen main window): open, drag the operating point on
 // the chart (the readouts show the engine's values), one undo step per drag, inch display, the tools
-// shown on the chart, and a responsive event loop while the engine thread computes.
+// shown on the chart, and a responsive event loop while the engine thread computes. Where a project
+// opens: its stored operating point, else a sensible first point (q* with an expert section); a save
+// stores the point and the active tool.
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QJsonDocument>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QUndoStack>
 #include <cmath>
+#include <functional>
 
 #include "main_window.h"
 #include "model/cutting_force.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
 #include "support/event_loop_probe.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
@@ -31,6 +38,25 @@ bool openAndShow(gui::MainWindow& window, const QString& path) {
 
 double readoutNumber(const gui::MainWindow& w, const QString& field) {
   return test::lobesOf(w)->readout()->text(field).section(' ', 0, 0).toDouble();
+}
+
+// The bundled project `name` written to `dir` with `edit` applied to its JSON.
+QString editedCopy(const QTemporaryDir& dir, const QString& name, const std::function<void(QJsonObject&)>& edit) {
+  QJsonObject root = test::readJson(test::projectsPath(name));
+  edit(root);
+  return test::writeText(dir, name, QJsonDocument(root).toJson());
+}
+
+QJsonObject pointJson(const QString& tool, double speed_rpm, double depth_mm, double feed_mm_per_tooth) {
+  return {{"tool", tool}, {"speed_rpm", speed_rpm}, {"depth_mm", depth_mm}, {"feed_mm_per_tooth", feed_mm_per_tooth}};
+}
+
+std::optional<app::OperatingPointSpec> pointInFile(const QString& path) {
+  return app::loadProject(path).operating_point;
+}
+
+double feedShown(const gui::MainWindow& w) {
+  return test::windowPart<QDoubleSpinBox>(w, "pointFeedSpin")->value();
 }
 }  // namespace
 
@@ -233,6 +259,114 @@ class TestLobesFeature : public QObject {
     QVERIFY(busy.count() >= 1);
     test::engineOf(window)->cancelAll();
     QVERIFY(ticks >= 5);
+  }
+  // A project with a stored operating point opens there, on its tool (not the first one): the chart's
+  // marker, the feed and the readouts; the expert ranking, when it arrives, leaves it there.
+  void opensAtTheStoredPoint() {
+    QTemporaryDir dir;
+    const QString path = editedCopy(dir, "rubio2006-tool-selection.mxproj", [](QJsonObject& root) {
+      root["operating_point"] = pointJson("R2", 4000, 0.3, 0.15);
+    });
+    gui::MainWindow window;
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QVERIFY(openAndShow(window, path));
+    QCOMPARE(test::contextOf(window)->activeTool(), QString("R2"));
+    QCOMPARE(window.document()->point(), app::PickedPoint({4000.0, 0.3, 0.15}));
+    QCOMPARE(test::lobesOf(window)->chart()->pointSpeed(), 4000.0);
+    QCOMPARE(test::lobesOf(window)->chart()->pointDepth(), 0.3);
+    QCOMPARE(feedShown(window), 0.15);
+    QVERIFY(test::waitForReadout(window));
+    QCOMPARE(test::contextOf(window)->readout().tool_id, QString("R2"));
+    QCOMPARE(test::contextOf(window)->readout().speed_rpm, 4000.0);
+    QVERIFY(ranked.wait(60000));
+    QCOMPARE(window.document()->point(), app::PickedPoint({4000.0, 0.3, 0.15}));
+    QCOMPARE(test::contextOf(window)->activeTool(), QString("R2"));
+    QVERIFY(!window.document()->isDirty());
+  }
+
+  // Save writes the point and the active tool as operating_point; saving the reopened file again
+  // changes no byte; a moved point is saved, and after its undo the point before it.
+  void saveStoresThePointAndTheActiveTool() {
+    QTemporaryDir dir;
+    const QString path = editedCopy(dir, "rubio2006-tool-selection.mxproj", [](QJsonObject&) {});
+    QByteArray saved;
+    app::PickedPoint opened;
+    {
+      gui::MainWindow window;
+      QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+      QVERIFY(openAndShow(window, path));
+      QVERIFY(ranked.wait(60000));
+      test::contextOf(window)->setActiveTool("R2");
+      opened = window.document()->point();
+      QVERIFY(opened.speed_rpm > 0.0);
+      QVERIFY(window.saveProject());
+      QCOMPARE(*pointInFile(path),
+               (app::OperatingPointSpec{"R2", opened.speed_rpm, opened.depth_mm, opened.feed_mm_per_tooth}));
+      saved = test::readBytes(path);
+    }
+    gui::MainWindow window;
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QVERIFY(openAndShow(window, path));
+    QVERIFY(ranked.wait(60000));
+    QCOMPARE(window.document()->point(), opened);
+    QVERIFY(window.saveProject());
+    QCOMPARE(test::readBytes(path), saved);
+
+    window.document()->setPoint({5000.0, 0.4, 0.2});
+    QVERIFY(window.document()->isDirty());
+    QVERIFY(window.saveProject());
+    QCOMPARE(*pointInFile(path), (app::OperatingPointSpec{"R2", 5000.0, 0.4, 0.2}));
+    window.document()->undoStack()->undo();
+    QVERIFY(window.saveProject());
+    QCOMPARE(test::readBytes(path), saved);
+  }
+
+  // Without a stored point a project opens at a sensible cut: q* with an expert section, else the
+  // first point of the lobes and the power-limit curve; stable, at least a quarter of b_lim, within the
+  // spindle's power and speed. library-20-tools opened at 0.019 mm and landers-face-milling (without its
+  // stored point) above the power limit and the spindle's top speed.
+  void opensAtASensiblePoint_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<bool>("ranked");  // the expert section's q*
+    QTest::addColumn<bool>("stored");  // keep the project's operating_point
+    QTest::addColumn<double>("min_depth_mm");
+    QTest::newRow("library-20-tools: q*") << "library-20-tools.mxproj" << true << true << 0.1;
+    QTest::newRow("rubio2006: q*") << "rubio2006-tool-selection.mxproj" << true << true << 0.4;
+    QTest::newRow("landers: first point") << "landers-face-milling.mxproj" << false << false << 0.5;
+    QTest::newRow("landers: stored point") << "landers-face-milling.mxproj" << false << true << 1.0;
+    QTest::newRow("cus-zuperl: first point") << "cus-zuperl-sdnrp.mxproj" << false << false << 0.5;
+  }
+  void opensAtASensiblePoint() {
+    QFETCH(QString, name);
+    QFETCH(bool, ranked);
+    QFETCH(bool, stored);
+    QFETCH(double, min_depth_mm);
+    QTemporaryDir dir;
+    const QString path = editedCopy(dir, name, [stored](QJsonObject& root) {
+      if (!stored) root.remove("operating_point");
+    });
+    gui::MainWindow window;
+    QSignalSpy ranking(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QVERIFY(openAndShow(window, path));
+    if (ranked) QVERIFY(ranking.wait(60000));
+    QTest::qWait(1000);  // the power-limit curve of the first point, on the readout thread
+    QVERIFY(test::waitForReadout(window));
+    const widgets::PointReadout& r = test::contextOf(window)->readout();
+    const app::Project& p = *window.project();
+    const QString where = QString("%1 rpm, %2 mm, %3 mm/tooth: b_lim %4 mm, %5 W of %6 W")
+                              .arg(r.speed_rpm)
+                              .arg(r.depth_mm)
+                              .arg(r.feed_mm_per_tooth)
+                              .arg(r.blim_mm)
+                              .arg(r.peak_power_w)
+                              .arg(r.power_limit_w);
+    qInfo("%s opens at %s", qPrintable(name), qPrintable(where));
+    QVERIFY2(r.valid && r.stable, qPrintable(where));
+    QVERIFY2(r.depth_mm >= min_depth_mm && r.depth_mm >= 0.25 * r.blim_mm, qPrintable(where));
+    QVERIFY2(r.peak_power_w <= r.power_limit_w, qPrintable(where));
+    QVERIFY2(r.speed_rpm <= p.machine->max_spindle_rpm.value_or(1e5), qPrintable(where));
+    QCOMPARE(window.document()->point().depth_mm, r.depth_mm);
+    QVERIFY(!window.document()->isDirty());
   }
 };
 
