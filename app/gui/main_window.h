@@ -59,6 +59,7 @@ class MainWindow : public QMainWindow {
   void buildActions();
   void addUndoButtons(QToolBar* bar);
   void applyDefaultDockSizes();
+  void showWholeTabTitles();
   void updateRecentMenu();
   void addRecentFile(const QString& path);
   // main_window_file.cpp

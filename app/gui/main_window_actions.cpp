@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QSettings>
+#include <QTabBar>
 #include <QToolBar>
 #include <QUndoStack>
 #include <utility>
@@ -113,6 +114,16 @@ void MainWindow::applyDefaultDockSizes() {
 void MainWindow::showEvent(QShowEvent* event) {
   QMainWindow::showEvent(event);
   if (std::exchange(default_layout_pending_, false)) applyDefaultDockSizes();
+  showWholeTabTitles();
+}
+
+// The tabs of tabbed docks keep their whole titles ("Operating point", not "Operating po..."); when
+// they do not fit, the bar scrolls.
+void MainWindow::showWholeTabTitles() {
+  for (QTabBar* bar : findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+    bar->setElideMode(Qt::ElideNone);
+    bar->setUsesScrollButtons(true);
+  }
 }
 
 widgets::ShopUnitsDialog* MainWindow::openPreferences() {

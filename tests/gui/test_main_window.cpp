@@ -15,6 +15,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QToolBar>
 #include <QUndoStack>
@@ -214,6 +215,9 @@ class TestMainWindow : public QObject {
     QVERIFY2(undo->toolTip().startsWith("Undo "), qPrintable(undo->toolTip()));
     QCOMPARE(undo->text(), QString("Undo"));
     QCOMPARE(button->geometry(), before);
+    const auto tab_bars = window.findChildren<QTabBar*>(Qt::FindDirectChildrenOnly);
+    QVERIFY(!tab_bars.isEmpty());  // the tabbed docks'
+    for (const QTabBar* bar : tab_bars) QCOMPARE(bar->elideMode(), Qt::ElideNone);
   }
 
   // Nothing of the docks is cut at 1920 x 1080 in the default layout: every header of the tool and
