@@ -259,10 +259,25 @@ void LobesFeature::recompute() {
     return;
   }
   if (input.tools.empty()) {
-    chart_->clear();
+    showNoTools();
     return;
   }
   engine_->submitLobes(std::move(input));
+}
+
+// A project without a tool (File > New, the last tool removed): no lobes and nothing to read out, not
+// the previous project's readouts; the start page covers the chart.
+void LobesFeature::showNoTools() {
+  chart_->clear();
+  snapshot_.reset();
+  evaluator_ = std::make_shared<PointEvaluator>();
+  context_.setEvaluator(evaluator_);
+  widgets::PointReadout none;
+  none.message = tr("No tool: add one in the tool library");
+  readout_->setReadout(none);
+  context_.setReadout(none);
+  status_engine_->setText(tr("Lobes: no tool"));
+  status_point_->setText(none.message);
 }
 
 void LobesFeature::onLobesReady(const LobeJobResult& result) {

@@ -56,6 +56,7 @@ class LobesFeature : public WindowFeature {
   void recompute();
   void onLobesReady(const LobeJobResult& result);
   void setSnapGrid(int tool);
+  void showNoTools();
   void pickInitialPoint(int tool);
   void lowerInitialPoint(const PointJobResult& result);  // below the power limit, once its curve is known
   void updateForceLimits();

@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QJsonDocument>
+#include <QListWidget>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <functional>
 
+#include "lobe_tool_panel.h"
 #include "main_window.h"
 #include "model/cutting_force.h"
 #include "stability/stability_boundary.h"
@@ -76,6 +78,29 @@ class TestLobesFeature : public QObject {
     QVERIFY(!test::lobesOf(window)->chart()->isToolVisible("R2"));
     test::lobesOf(window)->chart()->setToolVisible("R2", true);
     QVERIFY(test::lobesOf(window)->chart()->isToolVisible("R2"));
+  }
+
+  // File > New after a project: no lobes and no readout of the previous project's point.
+  void aNewProjectShowsNoReadoutOfTheOldOne() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QVERIFY(window.openProject(kRubio));
+    QVERIFY(shown.wait(20000));
+    QVERIFY(test::waitForReadout(window));
+    QCOMPARE(test::lobesOf(window)->readout()->text("tool"), QString("R1"));
+    QAction* new_project = nullptr;
+    for (QAction* a : window.findChildren<QAction*>())
+      if (a->text() == "&New project") new_project = a;
+    QVERIFY(new_project);
+    new_project->trigger();
+    QVERIFY(window.project()->tools.empty());
+    QTest::qWait(200);  // any readout still on its way from the old project
+    QCOMPARE(test::lobesOf(window)->readout()->text("tool"), QString("\u2014"));
+    QVERIFY2(test::lobesOf(window)->readout()->text("verdict").contains("No tool"),
+             qPrintable(test::lobesOf(window)->readout()->text("verdict")));
+    QVERIFY(test::lobesOf(window)->chart()->toolPanel()->toolList()->count() == 0);
   }
 
   // A press / move / release drag on the chart moves the point; the readouts equal an independent
