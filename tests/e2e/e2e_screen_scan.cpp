@@ -22,10 +22,12 @@ bool nonFinite(const QString& text) {
   return pattern.match(text).hasMatch();
 }
 
-// A refusal quotes the value the user typed: "damping = -inf: not a number", "teeth = 'nan': must be".
+// A refusal quotes the value the user typed: "damping = -inf: not a number", "teeth = 'nan': must be",
+// and an editor's note under its field: ... must be between 0 and 10; "inf" is above the maximum.
 bool nonFinite(QString text, const QStringList& user_strings) {
-  static const QRegularExpression refused(R"('?[-+]?(nan|inf|infinity)'?(?=\s*:\s*(not a number|must\b)))",
-                                          QRegularExpression::CaseInsensitiveOption);
+  static const QRegularExpression refused(
+      R"(['"]?[-+]?(nan|inf|infinity)['"]?(?=\s*(:\s*(not a number|must\b)|is (above|below|not)\b)))",
+      QRegularExpression::CaseInsensitiveOption);
   for (const QString& user : user_strings) text.remove(user);
   text.remove(refused);
   return nonFinite(text);
