@@ -121,10 +121,11 @@ QWidget* ParetoFeature::buildWeightsPanel() {
          "Module VI, the Smith-Tlusty speed N = 60 f_c / (n_t k) nearest it, the point re-selected within "
          "+-2 % of N, moved there and recorded. Otherwise the 2006 ranking: Rule 6 moves the cost weights "
          "until q** leaves +-2 % of the speed at that depth and deeper (expert.reported_chatter)"));
+  // The button under the frequency, not beside it: side by side they would make the dock wider than
+  // a 1080p window gives it.
   auto* chatter_row = new QHBoxLayout;
   chatter_row->addWidget(new QLabel(tr("Chatter frequency [Hz]")));
-  chatter_row->addWidget(chatter_hz_);
-  chatter_row->addWidget(report_chatter_);
+  chatter_row->addWidget(chatter_hz_, 1);
   auto* panel = new QWidget;
   auto* layout = new QVBoxLayout(panel);
   layout->addWidget(weights_panel_);
@@ -132,6 +133,7 @@ QWidget* ParetoFeature::buildWeightsPanel() {
   layout->addWidget(requirements_);
   layout->addWidget(record_button_);
   layout->addLayout(chatter_row);
+  layout->addWidget(report_chatter_);
   layout->addStretch(1);
   return panel;
 }

@@ -272,6 +272,28 @@ class TestMainWindow : public QObject {
     QCOMPARE(area->horizontalScrollBar()->maximum(), 0);
   }
 
+  // The Pareto weights dock is no wider than the right dock area a 1920 x 1080 window gives it.
+  void paretoWeightsFitTheirDockAt1080p() {
+    QSettings().remove("window/state");
+    QSettings().remove("window/geometry");
+    gui::MainWindow window;
+    window.setQuiet(true);
+    window.document()->setAutosaveInterval(0);
+    window.resize(1920, 1080);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
+    auto* dock = window.findChild<QDockWidget*>("paretoWeightsDock");
+    QVERIFY(dock);
+    dock->raise();
+    auto* area = qobject_cast<QScrollArea*>(dock->widget());
+    QVERIFY(area);
+    QTRY_VERIFY(area->isVisible());
+    QTest::qWait(100);
+    QVERIFY2(area->horizontalScrollBar()->maximum() == 0,
+             qPrintable(QString("the Pareto weights need %1 px more").arg(area->horizontalScrollBar()->maximum())));
+  }
+
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
     gui::MainWindow window;
     window.setQuiet(true);
