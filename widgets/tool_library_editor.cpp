@@ -149,6 +149,7 @@ QWidget* ToolLibraryEditor::buildModePane(Axis axis) {
     if (current.isValid()) model->removeMode(current.row());
   });
   auto* title = new QLabel(tr("%1 direction").arg(name), pane);
+  title->setWordWrap(true);  // a tap test's file name wraps instead of widening the dock
   title->setToolTip(tr("Modes of the tool-point FRF in the feed-normal plane, axis %1").arg(name));
   (axis == Axis::X ? titleX_ : titleY_) = title;
   auto* buttons = new FlowLayout;
@@ -182,7 +183,7 @@ void ToolLibraryEditor::showTapTests(const app::ToolSpec* tool) {
     const std::optional<app::FrfRefSpec>* ref = nullptr;
     if (tool) ref = axis == "x" ? &tool->frf_x : &tool->frf_y;
     title->setText(
-        ref && *ref ? tr("%1 direction (tap test: %2, dataset %3)").arg(axis, (*ref)->file).arg((*ref)->datasetIndex())
+        ref && *ref ? tr("%1 direction, tap test %2, dataset %3").arg(axis, (*ref)->file).arg((*ref)->datasetIndex())
                     : tr("%1 direction").arg(axis));
   }
 }

@@ -112,8 +112,8 @@ class TestToolLibraryEditor : public QObject {
     ToolLibraryEditor editor;
     editor.setProject(mx::app::loadProject(MX_PROJECTS_DIR "/tap-test-example.mxproj"));
     QCOMPARE(editor.currentToolId(), QString("T9"));
-    QVERIFY(labelShows(editor, "x direction (tap test: taps/T9-x.uff, dataset 0)"));
-    QVERIFY(labelShows(editor, "y direction (tap test: taps/T9-y.uff, dataset 0)"));
+    QVERIFY(labelShows(editor, "x direction, tap test taps/T9-x.uff, dataset 0"));
+    QVERIFY(labelShows(editor, "y direction, tap test taps/T9-y.uff, dataset 0"));
     editor.setProject(mx::app::loadProject(kRubio));
     QVERIFY(!labelShows(editor, "tap test"));
   }
