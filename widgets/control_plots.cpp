@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "plot_legend.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -20,6 +22,10 @@ const QColor kLimitColor(214, 39, 40);
 const QColor kThetaColors[] = {QColor(31, 119, 180),  QColor(255, 127, 14), QColor(44, 160, 44),  QColor(214, 39, 40),
                                QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194)};
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kMinWidth = 340;      // the view fits 1366 px wide screens
+constexpr int kLegendColumns = 5;   // at most: the force row's and the estimates' entries
+constexpr int kValueTicks = 3;      // value axes: labels that stay apart in a row of kMinRowHeight
+constexpr int kMarginsGuess = 140;  // the rows' left and right margins before the first layout
 
 // Sets (keys, values) on a graph, the common length only, skipping non-finite values.
 void setSeries(QCPGraph* graph, const QVector<double>& keys, const QVector<double>& values) {
@@ -68,7 +74,6 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumSize(400, 400);
   plot_->setToolTip(
       tr("Closed loop under the \u03b2-FROH: wheel zooms and drag pans the shared time axis; a double click fits "
          "the data."));
@@ -78,7 +83,7 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   // Dense continuous traces: fast polylines keep a repaint in milliseconds.
   plot_->setPlottingHint(QCP::phFastPolylines, true);
 
-  QCPAxisRect* force = addRow(QString(), 3);
+  QCPAxisRect* force = addRow(QString());
   force->axis(QCPAxis::atRight)->setVisible(true);
   QCPAxis* depth_axis = force->axis(QCPAxis::atRight);
   QCPAxis* force_axis = force->axis(QCPAxis::atLeft);
@@ -95,12 +100,12 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   sampled->setLineStyle(QCPGraph::lsNone);
   sampled->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
 
-  QCPAxisRect* error = addRow(QString(), 0);
+  QCPAxisRect* error = addRow(QString());
   QCPGraph* e = addGraph(1, error->axis(QCPAxis::atLeft), "error", QString(), QPen(kErrorColor, 1.2));
   e->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 3));
   error->axis(QCPAxis::atLeft)->grid()->setZeroLinePen(QPen(QColor(90, 90, 90), 1.0));
 
-  QCPAxisRect* feed = addRow(QString(), 0);
+  QCPAxisRect* feed = addRow(QString());
   QCPAxis* feed_axis = feed->axis(QCPAxis::atLeft);
   addGraph(2, feed_axis, "feed continuous", tr("Feed between samples"), QPen(QColor(44, 160, 44, 150), 1.0));
   QCPGraph* f = addGraph(2, feed_axis, "feed", tr("Control law f at the samples"), QPen(kFeedColor, 1.5));
@@ -112,12 +117,16 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
                                QPen(QColor(120, 70, 160), 1.2, Qt::DashDotLine));
   changes->setLineStyle(QCPGraph::lsImpulse);
 
-  if (rows_ == Rows::All) addRow(tr("Estimates \u03b8 [\u2013]"), 0);
+  if (rows_ == Rows::All) addRow(tr("Estimates \u03b8 [\u2013]"));
   rects_.back()->axis(QCPAxis::atBottom)->setLabel(timeAxisLabel());
+  // A first guess of the rows' height; followLayout() makes it exact after each layout.
+  plot_->setMinimumSize(kMinWidth, static_cast<int>(rects_.size()) * (kMinRowHeight + 70));
   connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] {
     fitRanges();
     plot_->replot(QCustomPlot::rpQueuedReplot);
   });
+  connect(plot_, &QCustomPlot::beforeReplot, this, [this] { fitLegends(plot_->viewport().width()); });
+  connect(plot_, &QCustomPlot::afterLayout, this, &ControlPlots::followLayout);
   relabel();
   clear();
 }
@@ -137,11 +146,12 @@ void ControlPlots::relabel() {
   rects_[0]->axis(QCPAxis::atRight)->setLabel(tr("Depth of cut b [%1]").arg(length));
   rects_[1]->axis(QCPAxis::atLeft)->setLabel(tr("Error e [%1]").arg(force));
   rects_[2]->axis(QCPAxis::atLeft)->setLabel(tr("Feed f [%1]").arg(u.symbol(Quantity::Feed)));
-  setLegendName(0, graphs_["depth"], tr("Depth of cut b [%1] (right axis)").arg(length));
-  setLegendName(1, graphs_["error"], tr("Tracking error e [%1]").arg(force));
+  graphs_["depth"]->setName(tr("Depth b [%1] (right axis)").arg(length));
+  graphs_["error"]->setName(tr("Tracking error e [%1]").arg(force));
+  for (int row = 0; row < legends_.size(); ++row) refreshLegend(row);
 }
 
-QCPAxisRect* ControlPlots::addRow(const QString& value_label, int legend_wrap) {
+QCPAxisRect* ControlPlots::addRow(const QString& value_label) {
   const int row = plot_->plotLayout()->rowCount();
   // The legend above its row, packed from the left where the axis rect starts: a strip of the legend
   // and a spacer (a legend alone would cap the width of the whole column at its own).
@@ -151,26 +161,33 @@ QCPAxisRect* ControlPlots::addRow(const QString& value_label, int legend_wrap) {
   auto* legend = new QCPLegend;
   strip->addElement(0, 0, legend);
   strip->addElement(0, 1, new QCPLayoutElement(plot_));
+  strip->setColumnSpacing(0);
   legend->setLayer(QStringLiteral("legend"));
   legend->setFont(QFont(font().family(), 9));
   legend->setBorderPen(Qt::NoPen);
   legend->setBrush(Qt::NoBrush);
+  legend->setMargins(QMargins(0, 4, 0, 1));  // flush with the axis rect's left edge
+  legend->setRowSpacing(0);
+  legend->setColumnSpacing(16);
   legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-  legend->setWrap(legend_wrap);
-  legend->setColumnSpacing(24);
+  legend->setWrap(kLegendColumns);
   auto* rect = new QCPAxisRect(plot_);
   plot_->plotLayout()->addElement(row + 1, 0, rect);
   plot_->plotLayout()->setRowStretchFactor(row, 0.001);
+  rect->setMinimumSize(50, kMinRowHeight);
   rect->setMarginGroup(QCP::msLeft | QCP::msRight, margin_group_);
   rect->setRangeDrag(Qt::Horizontal);
   rect->setRangeZoom(Qt::Horizontal);
   rect->axis(QCPAxis::atLeft)->setLabel(value_label);
+  for (QCPAxis* axis : {rect->axis(QCPAxis::atLeft), rect->axis(QCPAxis::atRight)})
+    axis->ticker()->setTickCount(kValueTicks);
   // The time axis is shared: ticks on every row, its label on the last one.
   QCPAxis* time = rect->axis(QCPAxis::atBottom);
   for (QCPAxis* axis : rect->axes()) axis->setLabelFont(QFont(font().family(), 9));
   connect(time, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, rect] { syncTime(rect); });
   rects_.push_back(rect);
   legends_.push_back(legend);
+  row_graphs_.push_back({});
   return rect;
 }
 
@@ -182,22 +199,54 @@ QCPGraph* ControlPlots::addGraph(int row, QCPAxis* value_axis, const QString& ke
   graph->setPen(pen);
   graph->setAdaptiveSampling(true);
   if (plot_->legend) graph->removeFromLegend(plot_->legend);
-  graph->addToLegend(legends_[row]);
-  setLegendName(row, graph, legend_name);
   graphs_.insert(key, graph);
+  row_graphs_[row].push_back(graph);
+  refreshLegend(row);
   return graph;
 }
 
-// Entries at their natural width, packed from the left instead of spread over the row.
-void ControlPlots::setLegendName(int row, QCPGraph* graph, const QString& name) {
-  graph->setName(name);
+// The row's named, visible graphs in their order, each entry at its natural width: packed from the left
+// instead of spread over the row.
+void ControlPlots::refreshLegend(int row) {
   QCPLegend* legend = legends_[row];
-  if (QCPPlottableLegendItem* item = legend->itemWithPlottable(graph)) {
-    const QMargins m = item->margins();
-    const int width = m.left() + legend->iconSize().width() + legend->iconTextPadding() +
-                      QFontMetrics(legend->font()).horizontalAdvance(name) + m.right() + 4;
-    item->setMaximumSize(width, QWIDGETSIZE_MAX);
+  legend->clearItems();
+  for (QCPGraph* graph : std::as_const(row_graphs_[row])) {
+    if (graph->name().isEmpty() || !graph->visible()) continue;
+    graph->addToLegend(legend);
+    QCPAbstractLegendItem* item = legend->itemWithPlottable(graph);
+    item->setMaximumSize(item->minimumOuterSizeHint().width(), QWIDGETSIZE_MAX);
   }
+  legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+}
+
+// The legends' strips span the axis rects (one margin group).
+int ControlPlots::legendWidth(int plot_width) const {
+  const QMargins m = rects_.front()->margins();
+  const int sides = m.left() + m.right() > 0 ? m.left() + m.right() : kMarginsGuess;
+  return plot_width - sides;
+}
+
+bool ControlPlots::legendsFit(int plot_width) const {
+  const int width = legendWidth(plot_width);
+  for (const QCPLegend* legend : legends_)
+    if (legend->wrap() != legendColumnsFitting(legend, width, kLegendColumns)) return false;
+  return true;
+}
+
+void ControlPlots::fitLegends(int plot_width) {
+  const int width = legendWidth(plot_width);
+  for (QCPLegend* legend : std::as_const(legends_)) fitLegendColumns(legend, width, kLegendColumns);
+}
+
+// After a layout: the minimum height that gives each row kMinRowHeight with its legend and ticks, and
+// another pass when the margins just found change the legends' columns.
+void ControlPlots::followLayout() {
+  const int needed = plot_->plotLayout()->minimumOuterSizeHint().height();
+  // Queued: a resize inside the replot would not reach the plot's viewport.
+  if (needed != plot_->minimumHeight())
+    QMetaObject::invokeMethod(
+        plot_, [plot = plot_, needed] { plot->setMinimumHeight(needed); }, Qt::QueuedConnection);
+  if (!legendsFit(plot_->viewport().width())) plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void ControlPlots::rebuildThetaGraphs(const QStringList& names) {
@@ -211,6 +260,7 @@ void ControlPlots::rebuildThetaGraphs(const QStringList& names) {
     plot_->removeGraph(g);
   }
   theta_graphs_.clear();
+  row_graphs_[3].clear();
   QCPAxis* axis = rects_[3]->axis(QCPAxis::atLeft);
   for (int i = 0; i < names.size(); ++i) {
     const QColor color = kThetaColors[static_cast<std::size_t>(i) % std::size(kThetaColors)];
@@ -232,7 +282,7 @@ void ControlPlots::setTraces(const ControlTraces& traces) {
   setSeries(graphs_["feed continuous"], t.dense_t_s, t.dense_feed_mm_s);
   const double top = t.feed_mm_s.isEmpty() ? 1.0 : *std::max_element(t.feed_mm_s.begin(), t.feed_mm_s.end());
   setSeries(graphs_["changes"], t.change_t_s, QVector<double>(t.change_t_s.size(), top));
-  graphs_["changes"]->setVisible(!t.change_t_s.isEmpty());
+  graphs_["changes"]->setVisible(!t.change_t_s.isEmpty());  // its legend entry follows in fitRanges()
   // Without the continuous feed, the samples are joined.
   graphs_["feed"]->setLineStyle(graphs_["feed continuous"]->dataCount() > 0 ? QCPGraph::lsNone : QCPGraph::lsLine);
   rebuildThetaGraphs(t.theta_names);
@@ -295,6 +345,7 @@ void ControlPlots::fitRanges() {
   else
     limit->data()->clear();
   limit->setVisible(feed_max_mm_s_ > 0.0);
+  refreshLegend(2);
   syncing_ = true;
   for (QCPAxisRect* rect : std::as_const(rects_)) rect->axis(QCPAxis::atBottom)->setRange(t0, t1);
   syncing_ = false;
@@ -366,9 +417,15 @@ QPair<double, double> ControlPlots::valueRange(int row) const {
   return {r.lower, r.upper};
 }
 
+// The legends fitted to the image's width: once with the screen's margins, again with the image's.
 bool ControlPlots::savePng(const QString& path, int width, int height) {
   if (path.isEmpty() || width <= 0 || height <= 0) return false;
-  return plot_->savePng(path, width, height);
+  fitLegends(width);
+  plot_->toPixmap(width, height);  // lays the plot out at the image's size
+  fitLegends(width);
+  const bool saved = plot_->savePng(path, width, height);
+  plot_->replot(QCustomPlot::rpQueuedReplot);  // back to the screen's legends
+  return saved;
 }
 
 bool ControlPlots::saveResponses(const ControlTraces& traces, double feed_max_mm_s, const QString& path, int width,

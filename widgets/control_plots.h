@@ -7,8 +7,12 @@
 //   (3) feed, the control law [mm/s], at the samples and between them, with the feed limit and the changes of the
 //       programmed point (N, b) as vertical lines (the Pareto paper's Fig. 6, lower panel);
 //   (4) parameter estimates theta [-] (Rows::All only).
-// Each row has its legend above it. Force, depth and feed are shown in the shop units of setUnits()
-// (the traces come in N, mm and mm/s). QCustomPlot stays behind this class.
+// Each row has its legend in a strip above it, never over the data, in as many columns as the width
+// holds without cutting a name; entries of hidden graphs (no feed limit, no programme change) are left
+// out. Each row's axis rect keeps kMinRowHeight: the widget's minimum height grows with the rows and
+// their legends, and a scroll area around it scrolls instead of squashing the rows in a short dock.
+// Force, depth and feed are shown in the shop units of setUnits() (the traces come in N, mm and mm/s).
+// QCustomPlot stays behind this class.
 #include <QHash>
 #include <QPointer>
 #include <QStringList>
@@ -31,7 +35,8 @@ namespace mx::widgets {
 class ControlPlots : public QWidget {
   Q_OBJECT
  public:
-  enum class Rows { All, Responses };  // Responses: force, error and feed (figures 9-12)
+  enum class Rows { All, Responses };        // Responses: force, error and feed (figures 9-12)
+  static constexpr int kMinRowHeight = 130;  // px of each row's axis rect
 
   explicit ControlPlots(Rows rows = Rows::All, QWidget* parent = nullptr);
 
@@ -58,9 +63,13 @@ class ControlPlots : public QWidget {
                             int height, const QString& title = {}, DisplayUnits* units = nullptr);
 
  private:
-  QCPAxisRect* addRow(const QString& value_label, int legend_wrap);
+  QCPAxisRect* addRow(const QString& value_label);
   QCPGraph* addGraph(int row, QCPAxis* value_axis, const QString& key, const QString& legend_name, const QPen& pen);
-  void setLegendName(int row, QCPGraph* graph, const QString& name);
+  void refreshLegend(int row);
+  int legendWidth(int plot_width) const;
+  bool legendsFit(int plot_width) const;
+  void fitLegends(int plot_width);
+  void followLayout();
   void relabel();
   void rebuildThetaGraphs(const QStringList& names);
   void fitRanges();
@@ -73,6 +82,7 @@ class ControlPlots : public QWidget {
   QCPMarginGroup* margin_group_;
   QVector<QCPAxisRect*> rects_;
   QVector<QCPLegend*> legends_;
+  QVector<QVector<QCPGraph*>> row_graphs_;  // each row's graphs in legend order
   QHash<QString, QCPGraph*> graphs_;
   QVector<QCPGraph*> theta_graphs_;
   QCPTextElement* title_ = nullptr;

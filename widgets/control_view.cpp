@@ -9,7 +9,9 @@
 #include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
+#include <QStyle>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "control_beta_slider.h"
 #include "control_metrics_panel.h"
@@ -23,9 +25,23 @@ namespace mx::widgets {
 
 namespace {
 constexpr int kSpacing = 8;
+constexpr double kSideBySideAspect = 1.5;  // the right column's width / height above which its charts go side by side
 
 QString betaText(double beta) {
   return QString::number(beta, 'f', 2).replace(QLatin1Char('-'), QChar(0x2212));
+}
+
+// `content` at the scroll area's width, scrolling vertically when the dock is shorter than its minimum.
+QScrollArea* verticalScroll(QWidget* content, const QString& name, QWidget* parent) {
+  auto* scroll = new QScrollArea(parent);
+  scroll->setObjectName(name);
+  scroll->setWidget(content);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  const int width = std::max(content->minimumSizeHint().width(), content->minimumWidth());
+  scroll->setMinimumWidth(width + scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent));
+  return scroll;
 }
 
 QGroupBox* group(const QString& title, QWidget* content, QWidget* parent) {
@@ -49,7 +65,8 @@ ControlView::ControlView(QWidget* parent)
       depth_(new DepthProfileEditor(this)),
       plots_(new ControlPlots(ControlPlots::Rows::All, this)),
       jc_(new JcCurvePlot(this)),
-      pole_zero_(new PoleZeroPlot(this)) {
+      pole_zero_(new PoleZeroPlot(this)),
+      charts_(new QSplitter(Qt::Vertical, this)) {
   sweep_->setObjectName(QStringLiteral("controlSweepButton"));
   sweep_->setToolTip(tr("Run the closed loop over \u03b2 in [\u22121, 1] and plot J_c(\u03b2) (figure 13)"));
   busy_bar_->setRange(0, 0);  // indeterminate
@@ -59,22 +76,25 @@ ControlView::ControlView(QWidget* parent)
   status_->setObjectName(QStringLiteral("controlStatus"));
   status_->setWordWrap(true);
 
-  auto* right = new QSplitter(Qt::Vertical, this);
-  right->addWidget(jc_);
-  right->addWidget(pole_zero_);
-  right->setStretchFactor(0, 1);
-  right->setStretchFactor(1, 1);
-  right->setChildrenCollapsible(false);
+  charts_->addWidget(jc_);
+  charts_->addWidget(pole_zero_);
+  charts_->setStretchFactor(0, 3);
+  charts_->setStretchFactor(1, 2);
+  charts_->setChildrenCollapsible(false);
+  // In a short dock the centre and right columns scroll: the plots keep a readable height.
+  plots_scroll_ = verticalScroll(plots_, QStringLiteral("controlPlotsScroll"), this);
+  charts_scroll_ = verticalScroll(charts_, QStringLiteral("controlChartsScroll"), this);
+  charts_scroll_->installEventFilter(this);
 
   auto* columns = new QSplitter(Qt::Horizontal, this);
   columns->addWidget(buildLeftColumn());
-  columns->addWidget(plots_);
-  columns->addWidget(right);
+  columns->addWidget(plots_scroll_);
+  columns->addWidget(charts_scroll_);
   columns->setStretchFactor(0, 0);
-  columns->setStretchFactor(1, 3);
-  columns->setStretchFactor(2, 2);
+  columns->setStretchFactor(1, 1);
+  columns->setStretchFactor(2, 1);
   columns->setChildrenCollapsible(false);
-  columns->setSizes({360, 960, 560});
+  columns->setSizes({360, 800, 720});
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(kSpacing, kSpacing, kSpacing, kSpacing);
   layout->addWidget(columns);
@@ -114,18 +134,31 @@ QWidget* ControlView::buildLeftColumn() {
   layout->addWidget(group(tr("Workpiece depth profile"), depth_, content));
   layout->addStretch(1);
 
-  auto* scroll = new QScrollArea(this);
-  scroll->setWidget(content);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(content->minimumSizeHint().width() + 24);
-  return scroll;
+  return verticalScroll(content, QStringLiteral("controlSettingsScroll"), this);
+}
+
+bool ControlView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == charts_scroll_ && event->type() == QEvent::Resize) arrangeCharts();
+  return QWidget::eventFilter(watched, event);
+}
+
+// Side by side when the column holds both at their minimum widths (and a scroll bar) and is wide for its
+// height; the scroll area's own size, not its viewport's, so that a scroll bar appearing does not flip them.
+void ControlView::arrangeCharts() {
+  const QSize size = charts_scroll_->size();
+  const int both = jc_->minimumWidth() + pole_zero_->minimumWidth() + charts_->handleWidth() +
+                   charts_scroll_->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+  const bool side_by_side = size.width() >= both && size.width() >= kSideBySideAspect * size.height();
+  charts_->setOrientation(side_by_side ? Qt::Horizontal : Qt::Vertical);
+}
+
+Qt::Orientation ControlView::chartsOrientation() const {
+  return charts_->orientation();
 }
 
 void ControlView::showBeta(double beta) {
   jc_->setCurrentBeta(beta);
-  pole_zero_->setCaption(tr("Poles and zeros of H_\u03b2(z), \u03b2 = %1").arg(betaText(beta)));
+  pole_zero_->setCaption(tr("Poles and zeros, \u03b2 = %1").arg(betaText(beta)));  // fits the map's width
 }
 
 void ControlView::setBeta(double beta) {

@@ -4,7 +4,9 @@
 //           settings editor and the workpiece depth-profile editor;
 //   centre: the closed loop on a shared time axis (force with the depth of cut, tracking error, feed,
 //           parameter estimates);
-//   right:  J_c(beta) with the unstable-zero region and the current beta, and the pole-zero map of H_beta.
+//   right:  J_c(beta) with the unstable-zero region and the current beta, and the pole-zero map of H_beta:
+//           side by side in a wide, short column (the bottom dock at 1080p), else one above the other.
+// The centre and right columns scroll vertically rather than squash their plots in a short dock.
 // The view never calls the engine: the main window reacts to betaChanged / settingsEdited /
 // workpieceEdited / sweepRequested, runs the engine and feeds the results back.
 #include <QPointer>
@@ -19,7 +21,9 @@ class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 class QSlider;
+class QSplitter;
 
 namespace mx::widgets {
 
@@ -71,6 +75,9 @@ class ControlView : public QWidget {
   ControlMetricsPanel* metricsPanel() const { return metrics_; }
   ControlSettingsEditor* settingsEditor() const { return settings_; }
   DepthProfileEditor* depthProfileEditor() const { return depth_; }
+  QScrollArea* plotsScroll() const { return plots_scroll_; }
+  QScrollArea* chartsScroll() const { return charts_scroll_; }
+  Qt::Orientation chartsOrientation() const;
 
  signals:
   void betaChanged(double beta);  // debounced 150 ms after the user moves the slider or spin (at once on release)
@@ -78,8 +85,12 @@ class ControlView : public QWidget {
   void workpieceEdited(const QVector<mx::widgets::DepthStepView>& steps);  // a valid profile
   void sweepRequested();                                                   // "Sweep β"
 
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
  private:
   QWidget* buildLeftColumn();
+  void arrangeCharts();
   void showBeta(double beta);  // markers and captions follow the slider at once
 
   ControlBetaSlider* beta_;
@@ -92,6 +103,9 @@ class ControlView : public QWidget {
   ControlPlots* plots_;
   JcCurvePlot* jc_;
   PoleZeroPlot* pole_zero_;
+  QSplitter* charts_;
+  QScrollArea* plots_scroll_;
+  QScrollArea* charts_scroll_;
   ControlTraces traces_;
   QPointer<DisplayUnits> units_;
   bool busy_ = false;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "glossary.h"
+#include "plot_legend.h"
 
 namespace mx::widgets {
 
@@ -16,6 +17,8 @@ const QColor kBestColor(44, 160, 44);
 const QColor kCurrentColor(214, 39, 40);
 const QColor kRegionColor(214, 39, 40, 40);
 constexpr double kBetaMin = -1.0, kBetaMax = 1.0;
+constexpr int kLegendColumns = 2;  // at most; one when the entries do not fit side by side
+constexpr double kHeadroom = 1.3;  // J_c axis up to 1.3 max J_c: the region's label above the curve
 
 QString betaText(double beta) {
   return QString::number(beta, 'f', 2).replace(QLatin1Char('-'), QChar(0x2212));
@@ -26,7 +29,8 @@ JcCurvePlot::JcCurvePlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPl
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumSize(300, 220);
+  // As wide as the longest legend entry: the current beta in the unstable-zero region with a J_c of 1.235e+04.
+  setMinimumSize(390, 250);
   plot_->setToolTip(
       tr("Cost J_c(\u03b2) (eq. 34): the area between the continuous plant output and the linear interpolation of "
          "its samples; smaller means fewer overshoots between samples. Shaded: \u03b2 where H_\u03b2 has an "
@@ -37,9 +41,12 @@ JcCurvePlot::JcCurvePlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPl
   plot_->xAxis->setRange(kBetaMin - 0.05, kBetaMax + 0.05);
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
-  plot_->legend->setBrush(QColor(255, 255, 255, 220));
-  // J_c is smallest inside the range and grows towards its ends: the top centre stays free.
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignHCenter);
+  placeLegendUnderPlot(plot_, kLegendColumns);  // never over the curve, the markers or the region
+  plot_->legend->setMargins(QMargins(6, 1, 6, 1));
+  plot_->legend->setRowSpacing(0);
+  plot_->legend->setColumnSpacing(16);
+  connect(plot_, &QCustomPlot::beforeReplot, this,
+          [this] { fitLegendColumns(plot_->legend, plot_->viewport().width(), kLegendColumns); });
   plot_->addLayer(QStringLiteral("shading"), plot_->layer(QStringLiteral("grid")), QCustomPlot::limBelow);
 
   region_ = new QCPItemRect(plot_);
@@ -54,7 +61,7 @@ JcCurvePlot::JcCurvePlot(QWidget* parent) : QWidget(parent), plot_(new QCustomPl
   region_label_->setLayer(QStringLiteral("shading"));
   region_label_->position->setTypeX(QCPItemPosition::ptPlotCoords);
   region_label_->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-  region_label_->setPositionAlignment(Qt::AlignHCenter | Qt::AlignBottom);
+  region_label_->setPositionAlignment(Qt::AlignHCenter | Qt::AlignTop);
   region_label_->setColor(QColor(160, 30, 30));
   region_label_->setFont(QFont(font().family(), 8));
   region_label_->setText(tr("unstable\nzero"));
@@ -101,8 +108,8 @@ void JcCurvePlot::setCurve(const JcCurveView& c) {
     jc.push_back(c.jc_n_s[i]);
     top = std::max(top, c.jc_n_s[i]);
   }
-  curve_->setData(beta, jc);                                 // sorts by beta
-  plot_->yAxis->setRange(0.0, top > 0.0 ? 1.5 * top : 1.0);  // room for the legend
+  curve_->setData(beta, jc);  // sorts by beta
+  plot_->yAxis->setRange(0.0, top > 0.0 ? kHeadroom * top : 1.0);
 
   threshold_ = std::isfinite(c.threshold_beta) ? std::clamp(c.threshold_beta, kBetaMin, kBetaMax) : kBetaMin;
   const bool shaded = regionShaded();
@@ -110,7 +117,7 @@ void JcCurvePlot::setCurve(const JcCurveView& c) {
   region_label_->setVisible(shaded);
   region_->topLeft->setCoords(plot_->xAxis->range().lower, 0.0);
   region_->bottomRight->setCoords(threshold_, 1.0);
-  region_label_->position->setCoords(0.5 * (plot_->xAxis->range().lower + threshold_), 0.97);
+  region_label_->position->setCoords(0.5 * (plot_->xAxis->range().lower + threshold_), 0.02);
   region_legend_->setName(tr("Unstable zero of H_\u03b2: \u03b2 < %1").arg(betaText(threshold_)));
 
   best_->data()->clear();
@@ -192,7 +199,10 @@ QString JcCurvePlot::yAxisLabel() const {
 
 bool JcCurvePlot::savePng(const QString& path, int width, int height) {
   if (path.isEmpty() || width <= 0 || height <= 0) return false;
-  return plot_->savePng(path, width, height);
+  fitLegendColumns(plot_->legend, width, kLegendColumns);  // the image's width, not the screen's
+  const bool saved = plot_->savePng(path, width, height);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+  return saved;
 }
 
 }  // namespace mx::widgets

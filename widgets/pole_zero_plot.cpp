@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "plot_legend.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -16,6 +18,7 @@ const QColor kZeroColor(44, 160, 44);
 const QColor kUnstableColor(214, 39, 40);
 constexpr int kCirclePoints = 181;
 constexpr double kCoincident = 1e-6;  // roots closer than this (relative) are one point
+constexpr int kLegendColumns = 4;     // at most: every entry in one row when the width holds them
 
 QCPCurve* addScatter(QCustomPlot* plot, const QString& name, const QCPScatterStyle& style) {
   auto* curve = new QCPCurve(plot->xAxis, plot->yAxis);
@@ -34,7 +37,7 @@ PoleZeroPlot::PoleZeroPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumSize(260, 240);
+  setMinimumSize(220, 210);  // as wide as "Unstable zeros |z| > 1"
   plot_->setToolTip(
       tr("Poles (\u00d7) and zeros (\u25cb) of the discretized plant H_\u03b2(z). A zero outside the unit circle "
          "(red) is an unstable zero: the model-following controller does not cancel it."));
@@ -43,11 +46,16 @@ PoleZeroPlot::PoleZeroPlot(QWidget* parent) : QWidget(parent), plot_(new QCustom
   for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) axis->grid()->setZeroLinePen(QPen(QColor(170, 170, 170), 1.0));
   plot_->legend->setVisible(true);
   plot_->legend->setFont(QFont(font().family(), 9));
-  plot_->legend->setBrush(QColor(255, 255, 255, 220));
-  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+  placeLegendUnderPlot(plot_, kLegendColumns);  // never over the unit circle or a root
+  plot_->legend->setMargins(QMargins(6, 1, 6, 1));
+  plot_->legend->setRowSpacing(0);
+  plot_->legend->setColumnSpacing(16);
+  connect(plot_, &QCustomPlot::beforeReplot, this,
+          [this] { fitLegendColumns(plot_->legend, plot_->viewport().width(), kLegendColumns); });
   caption_ = new QCPTextElement(plot_, QString(), QFont(font().family(), 10, QFont::Bold));
   plot_->plotLayout()->insertRow(0);
   plot_->plotLayout()->addElement(0, 0, caption_);
+  plot_->plotLayout()->setRowStretchFactor(0, 0.001);
 
   circle_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
   circle_->setName(tr("Unit circle |z| = 1"));
@@ -194,7 +202,10 @@ double PoleZeroPlot::aspectRatio() const {
 
 bool PoleZeroPlot::savePng(const QString& path, int width, int height) {
   if (path.isEmpty() || width <= 0 || height <= 0) return false;
-  return plot_->savePng(path, width, height);
+  fitLegendColumns(plot_->legend, width, kLegendColumns);  // the image's width, not the screen's
+  const bool saved = plot_->savePng(path, width, height);
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+  return saved;
 }
 
 }  // namespace mx::widgets

@@ -24,7 +24,7 @@ class PoleZeroPlot : public QWidget {
   explicit PoleZeroPlot(QWidget* parent = nullptr);
 
   void setPoleZero(const PoleZeroView& pz);  // non-finite roots are left out
-  void setCaption(const QString& caption);   // shown above the map, e.g. "H_β(z), β = 0.30"
+  void setCaption(const QString& caption);   // shown above the map, e.g. "Poles and zeros, β = 0.30"
   void clear();
 
   int poleCount() const;

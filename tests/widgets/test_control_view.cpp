@@ -1,12 +1,18 @@
 // ControlView: the beta slider and spin box stay in sync and emit one debounced betaChanged
 // per user change; the closed-loop traces fill the stacked plots (shared time axis, labelled rows, feed
 // limit); metrics show as text with units; settings and workpiece round trip without signals; the
-// figures 9-12 export writes a PNG of the requested size.
+// figures 9-12 export writes a PNG of the requested size. At 1080p (a bottom dock of 1920 x 430) the
+// stacked rows keep their height and scroll, J_c and the pole-zero map stand side by side, and no legend
+// covers a plot or cuts a name.
+#include <qcustomplot.h>
+
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
@@ -20,6 +26,7 @@
 #include "display_units.h"
 #include "jc_curve_plot.h"
 #include "pole_zero_plot.h"
+#include "support/plot_layout_checks.h"
 #include "test_registry.h"
 
 using namespace mx::widgets;
@@ -74,6 +81,48 @@ ControlTraces syntheticTraces(int samples = 300, int dense_per_sample = 10, int 
   c.depth_t_s = {0.0, 1.0, 1.8, 2.4, samples * kPeriod};
   c.depth_mm = {1.0, 2.0, 1.5, 0.5, 0.5};
   return c;
+}
+
+// A view with every legend entry there is: five estimates, programme changes, an unstable zero and the
+// current beta in the unstable-zero region (the longest J_c entry).
+void fillForLayout(ControlView& view) {
+  view.setBeta(-0.8);
+  ControlTraces t = syntheticTraces(300, 10, 5);
+  t.change_t_s = {1.0, 1.8};
+  view.setTraces(t);
+  JcCurveView c;
+  for (int i = 0; i <= 40; ++i) {
+    c.beta << -1.0 + 0.05 * i;
+    c.jc_n_s << 2000.0 + 9000.0 * (c.beta.back() + 0.3) * (c.beta.back() + 0.3);
+  }
+  c.best_beta = -0.3;
+  c.threshold_beta = -0.62;
+  view.setJcCurve(c);
+  ControlMetricsView m;
+  m.jc_n_s = 12345.6;
+  view.setMetrics(m);
+  view.setPoleZero({{{0.0, 0.0}, {0.0, 0.0}, {0.61, 0.0}}, {{-0.4, 0.0}, {-1.3, 0.0}}});
+}
+
+QCustomPlot* plotIn(const QWidget* widget) {
+  return widget->findChild<QCustomPlot*>();
+}
+
+// The entries a legend draws (a re-flowed legend can have empty cells).
+int drawnEntries(const QCPLegend* legend) {
+  int n = 0;
+  for (int i = 0; i < legend->itemCount(); ++i) n += legend->item(i) ? 1 : 0;
+  return n;
+}
+
+// Shows the view at `size` and lets the plots settle: a layout can refit the legends and resize the rows.
+bool showAt(ControlView& view, const QSize& size) {
+  view.resize(size);
+  view.show();
+  if (!QTest::qWaitForWindowExposed(&view)) return false;
+  QTest::qWait(100);
+  for (QCustomPlot* plot : view.findChildren<QCustomPlot*>()) plot->replot();
+  return true;
 }
 }  // namespace
 
@@ -208,7 +257,7 @@ class TestControlView : public QObject {
     QCOMPARE(all.timeAxisLabel(), QString("Time t [s]"));
     all.setTraces(syntheticTraces(30, 2, 4));
     QCOMPARE(all.legendNames(0).size(), 5);
-    QVERIFY(all.legendNames(0).contains("Depth of cut b [mm] (right axis)"));
+    QVERIFY(all.legendNames(0).contains("Depth b [mm] (right axis)"));
     QCOMPARE(all.legendNames(3), QStringList({"a1", "a2", "b0", "b1"}));
     ControlPlots responses(ControlPlots::Rows::Responses);
     QCOMPARE(responses.rowCount(), 3);
@@ -236,10 +285,12 @@ class TestControlView : public QObject {
     plots.setTraces(t);
     QCOMPARE(plots.graphPointCount("changes"), 0);
     QVERIFY(!plots.legendNames(2).contains("Change of programmed N or b"));
+    QCOMPARE(drawnEntries(mx::test::legendsOf(plotIn(&plots))[2]), 2);  // no entries of hidden graphs (no limit)
     t.change_t_s = {t.t_s[10], t.t_s[20]};
     plots.setTraces(t);
     QCOMPARE(plots.graphPointCount("changes"), 2);
     QVERIFY(plots.legendNames(2).contains("Change of programmed N or b"));
+    QCOMPARE(drawnEntries(mx::test::legendsOf(plotIn(&plots))[2]), 3);
     QVERIFY(plots.valueRange(2).second >= *std::max_element(t.feed_mm_s.begin(), t.feed_mm_s.end()));
   }
 
@@ -261,6 +312,8 @@ class TestControlView : public QObject {
     view.setSettings(s);
     QCOMPARE(view.graphPointCount("feed limit"), points);
     if (points > 0) QVERIFY(view.plots()->valueRange(2).second > limit);  // the limit is in view
+    QCOMPARE(view.plots()->legendNames(2).contains("Feed limit f_max"), points > 0);
+    QCOMPARE(drawnEntries(mx::test::legendsOf(plotIn(view.plots()))[2]), points > 0 ? 3 : 2);
   }
 
   void metricsShownWithUnits() {
@@ -401,6 +454,89 @@ class TestControlView : public QObject {
     view.show();
     QTest::qWait(200);
     QVERIFY(view.grab().save(dir + "/control_view.png"));
+  }
+
+  // The bottom dock at 1080p: 1920 x 430. The view fits it (the dock does not scroll); the closed-loop rows
+  // keep kMinRowHeight each and scroll in their column; J_c and the pole-zero map stand side by side,
+  // whole; no legend over a plot, no name cut, value-axis tick labels apart.
+  void readsWellInADockAt1080p() {
+    ControlView view;
+    fillForLayout(view);
+    QVERIFY(showAt(view, QSize(1920, 430)));
+    QCOMPARE_LE(view.minimumSizeHint().height(), 300);  // the columns scroll, never the dock
+    QCustomPlot* rows = plotIn(view.plots());
+    QCOMPARE(rows->axisRects().size(), 4);
+    for (const QCPAxisRect* rect : rows->axisRects()) {
+      QCOMPARE_GE(rect->rect().height(), ControlPlots::kMinRowHeight);
+      for (const QCPAxis* axis : {rect->axis(QCPAxis::atLeft), rect->axis(QCPAxis::atRight)})
+        if (axis->visible()) QCOMPARE(mx::test::tickLabelProblem(axis), QString());
+    }
+    QCOMPARE_GT(view.plotsScroll()->verticalScrollBar()->maximum(), 0);  // the rows scroll, not squashed
+    QCOMPARE(view.chartsOrientation(), Qt::Horizontal);
+    QCOMPARE(view.chartsScroll()->verticalScrollBar()->maximum(), 0);  // both charts whole
+    for (const QWidget* w : {static_cast<QWidget*>(view.plots()), static_cast<QWidget*>(view.jcPlot()),
+                             static_cast<QWidget*>(view.poleZeroPlot())}) {
+      QCOMPARE(mx::test::legendProblem(plotIn(w)), QString());
+      QCOMPARE(mx::test::captionProblem(plotIn(w)), QString());
+    }
+    QCOMPARE(view.plots()->legendNames(2).size(), 4);  // feed, between samples, limit, changes
+    QCOMPARE(view.plots()->legendNames(3).size(), 5);
+  }
+
+  // A tall dock: the charts one above the other, the rows taller than their minimum with nothing to scroll.
+  void tallDockStacksTheCharts() {
+    ControlView view;
+    fillForLayout(view);
+    QVERIFY(showAt(view, QSize(1920, 1000)));
+    QCOMPARE(view.chartsOrientation(), Qt::Vertical);
+    QCOMPARE(view.plotsScroll()->verticalScrollBar()->maximum(), 0);
+    for (const QCPAxisRect* rect : plotIn(view.plots())->axisRects())
+      QCOMPARE_GT(rect->rect().height(), ControlPlots::kMinRowHeight);
+    for (const QWidget* w : {static_cast<QWidget*>(view.jcPlot()), static_cast<QWidget*>(view.poleZeroPlot())})
+      QCOMPARE(mx::test::legendProblem(plotIn(w)), QString());
+  }
+
+  // The rows' legends take as many columns as the width holds without cutting a name: all five force
+  // entries in one line when wide, more lines when narrow; never over a row.
+  void rowLegendsFitTheWidth_data() {
+    QTest::addColumn<int>("width");
+    QTest::addColumn<int>("force_legend_rows");
+    QTest::newRow("narrow 360") << 360 << 5;
+    QTest::newRow("dock 900") << 900 << 2;
+    QTest::newRow("wide 1500") << 1500 << 1;
+  }
+  void rowLegendsFitTheWidth() {
+    QFETCH(int, width);
+    QFETCH(int, force_legend_rows);
+    QScrollArea area;  // as in the view
+    area.setWidgetResizable(true);
+    area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* plots = new ControlPlots;
+    area.setWidget(plots);
+    ControlTraces t = syntheticTraces(100, 4, 5);
+    t.change_t_s = {0.3};
+    plots->setTraces(t);
+    area.resize(width, 430);
+    area.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&area));
+    QTest::qWait(100);
+    QCustomPlot* plot = plotIn(plots);
+    plot->replot();
+    QCOMPARE(mx::test::legendProblem(plot), QString());
+    const QList<QCPLegend*> legends = mx::test::legendsOf(plot);
+    QCOMPARE(legends.size(), 4);
+    QCOMPARE(legends.front()->rowCount(), force_legend_rows);
+    for (const QCPAxisRect* rect : plot->axisRects()) QCOMPARE_GE(rect->rect().height(), ControlPlots::kMinRowHeight);
+  }
+
+  // The export lays its legends out for the image's width: at 1600 px every row's legend is one line.
+  void exportFitsItsLegendsToTheImage() {
+    QTemporaryDir dir;
+    ControlPlots plots(ControlPlots::Rows::Responses);
+    plots.resize(500, 700);
+    plots.setTraces(syntheticTraces(100, 4, 4));
+    QVERIFY(plots.savePng(dir.filePath("responses.png"), 1600, 1200));
+    for (const QCPLegend* legend : mx::test::legendsOf(plotIn(&plots))) QCOMPARE(legend->rowCount(), 1);
   }
 
   // Shop units: the force rows, the depth and the feed axis relabel, the traces and metrics convert.

@@ -1,6 +1,9 @@
 // JcCurvePlot: the J_c(beta) sweep (non-finite values left out), the unstable-zero region shaded below
 // the threshold, the minimum starred, the current beta marked with the J_c its closed-loop run computed
-// (never the sweep's interpolation), labelled axes and legend entries.
+// (never the sweep's interpolation), labelled axes and legend entries; the legend under the plot, the
+// region's label inside it above the curve.
+#include <qcustomplot.h>
+
 #include <QApplication>
 #include <QImage>
 #include <QTemporaryDir>
@@ -8,6 +11,7 @@
 #include <limits>
 
 #include "jc_curve_plot.h"
+#include "support/plot_layout_checks.h"
 #include "test_registry.h"
 
 using mx::widgets::JcCurvePlot;
@@ -27,6 +31,16 @@ JcCurveView parabola() {
   c.best_beta = -0.3;
   c.threshold_beta = -0.62;
   return c;
+}
+
+// The legend's longest entries: five-digit costs and the current beta in the unstable-zero region.
+JcCurvePlot* longestEntries(JcCurvePlot* plot) {
+  JcCurveView c = parabola();
+  for (double& jc : c.jc_n_s) jc *= 5000.0;
+  plot->setCurve(c);
+  plot->setCurrentBeta(-0.83);
+  plot->setComputedJc(12345.6);
+  return plot;
 }
 }  // namespace
 
@@ -150,6 +164,41 @@ class TestJcCurvePlot : public QObject {
     c.best_beta = 0.42;  // between sweep points: starred at the nearest point's J_c
     plot.setCurve(c);
     QCOMPARE(*plot.bestBeta(), 0.42);
+  }
+
+  // The legend under the plot, never over the curve, the region or the markers: at the plot's minimum
+  // size in one column with no name cut, two columns when wide. The region's label inside the axis rect
+  // and above the curve in the region.
+  void legendUnderThePlot_data() {
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<int>("columns");
+    QTest::newRow("minimum 390x250") << QSize(390, 250) << 1;
+    QTest::newRow("dock at 1080p 390x370") << QSize(390, 370) << 1;
+    QTest::newRow("wide 1200x500") << QSize(1200, 500) << 2;
+  }
+  void legendUnderThePlot() {
+    QFETCH(QSize, size);
+    QFETCH(int, columns);
+    JcCurvePlot plot;
+    longestEntries(&plot);
+    QVERIFY(size.width() >= plot.minimumWidth() && size.height() >= plot.minimumHeight());
+    plot.resize(size);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    auto* custom = plot.findChild<QCustomPlot*>();
+    custom->replot();
+    QCOMPARE(mx::test::legendProblem(custom), QString());
+    QCOMPARE(custom->legend->columnCount(), columns);
+    QCPItemText* label = nullptr;
+    for (int i = 0; i < custom->itemCount(); ++i)
+      if (auto* text = qobject_cast<QCPItemText*>(custom->item(i)); text && text->text().contains("unstable"))
+        label = text;
+    QVERIFY(label && label->visible());
+    const QRect data = custom->axisRect()->rect();
+    QVERIFY(data.contains(label->topLeft->pixelPosition().toPoint()));
+    QVERIFY(data.contains(label->bottomRight->pixelPosition().toPoint()));
+    const double highest = 5000.0 * (2.0 + 5.0 * 0.7 * 0.7);  // J_c at beta = -1
+    if (size.height() >= 370) QCOMPARE_LT(label->bottom->pixelPosition().y(), custom->yAxis->coordToPixel(highest));
   }
 
   void savesPng() {

@@ -1,12 +1,15 @@
 // PoleZeroPlot: poles and zeros of H_beta plotted (non-finite roots left out), zeros outside the unit
 // circle counted and shown as unstable, coincident roots labelled with their multiplicity, labelled
-// axes, and an equal aspect whatever the plot's shape.
+// axes, and an equal aspect whatever the plot's shape; the legend under the map, never over it.
+#include <qcustomplot.h>
+
 #include <QApplication>
 #include <QTemporaryDir>
 #include <cmath>
 #include <limits>
 
 #include "pole_zero_plot.h"
+#include "support/plot_layout_checks.h"
 #include "test_registry.h"
 
 using mx::widgets::PoleZeroPlot;
@@ -77,6 +80,35 @@ class TestPoleZeroPlot : public QObject {
     QCOMPARE(plot.multiplicityLabelCount(), 0);
     plot.clear();
     QCOMPARE(plot.poleCount(), 0);
+  }
+
+  // The legend under the map (the unit circle and every root stay uncovered), in as many columns as the
+  // width holds with no name cut; the circle and the roots inside the axes' ranges.
+  void legendUnderTheMap_data() {
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<int>("columns");
+    QTest::newRow("minimum 220x210") << QSize(220, 210) << 1;
+    QTest::newRow("dock at 1080p 260x370") << QSize(260, 370) << 1;
+    QTest::newRow("stacked 360x300") << QSize(360, 300) << 2;
+    QTest::newRow("wide 700x400") << QSize(700, 400) << 4;
+  }
+  void legendUnderTheMap() {
+    QFETCH(QSize, size);
+    QFETCH(int, columns);
+    PoleZeroPlot plot;
+    plot.setCaption("Poles and zeros, \u03b2 = \u22120.80");
+    plot.setPoleZero({{{0.0, 0.0}, {0.0, 0.0}, {0.61, 0.0}}, {{-0.4, 0.0}, {-1.3, 0.0}}});
+    QVERIFY(size.width() >= plot.minimumWidth() && size.height() >= plot.minimumHeight());
+    plot.resize(size);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    auto* custom = plot.findChild<QCustomPlot*>();
+    custom->replot();
+    QCOMPARE(mx::test::legendProblem(custom), QString());
+    QCOMPARE(mx::test::captionProblem(custom), QString());
+    QCOMPARE(custom->legend->itemCount() >= 4 ? custom->legend->columnCount() : -1, columns);
+    QVERIFY(plot.xRange().first < -1.3 && plot.xRange().second > 1.0);
+    QVERIFY(plot.yRange().first < -1.0 && plot.yRange().second > 1.0);
   }
 
   void equalAspect_data() {
