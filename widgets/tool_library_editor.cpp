@@ -182,9 +182,9 @@ void ToolLibraryEditor::showTapTests(const app::ToolSpec* tool) {
   for (const auto& [title, axis] : {std::pair{titleX_, QString("x")}, {titleY_, QString("y")}}) {
     const std::optional<app::FrfRefSpec>* ref = nullptr;
     if (tool) ref = axis == "x" ? &tool->frf_x : &tool->frf_y;
-    title->setText(
-        ref && *ref ? tr("%1 direction, tap test %2, dataset %3").arg(axis, (*ref)->file).arg((*ref)->datasetIndex())
-                    : tr("%1 direction").arg(axis));
+    title->setText(ref && *ref
+                       ? tr("%1 direction, tap test %2, dataset %3").arg(axis, (*ref)->file).arg((*ref)->datasetIndex())
+                       : tr("%1 direction").arg(axis));
   }
 }
 
