@@ -46,6 +46,21 @@ bool openQuietly(gui::MainWindow& window, const QString& path) {
   window.setQuiet(true);
   return window.openProject(path);
 }
+
+// No saved window layout: a window made next starts in the default one.
+void forgetSavedLayout() {
+  QSettings().remove("window/state");
+  QSettings().remove("window/geometry");
+}
+
+// `window` on screen at 1920 x 1080 with `path` open.
+bool openAt1080p(gui::MainWindow& window, const QString& path) {
+  window.setQuiet(true);
+  window.document()->setAutosaveInterval(0);
+  window.resize(1920, 1080);
+  window.show();
+  return QTest::qWaitForWindowExposed(&window) && window.openProject(path);
+}
 }  // namespace
 
 class TestMainWindow : public QObject {
@@ -193,15 +208,9 @@ class TestMainWindow : public QObject {
   // Without a saved layout the chart keeps most of the height at 1920 x 1080 (the bottom docks about
   // a third); the toolbar's Undo keeps its place and width whatever it undoes.
   void defaultLayoutLeavesTheChartTheHeight() {
-    QSettings().remove("window/state");
-    QSettings().remove("window/geometry");
+    forgetSavedLayout();
     gui::MainWindow window;
-    window.setQuiet(true);
-    window.document()->setAutosaveInterval(0);
-    window.resize(1920, 1080);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(openAt1080p(window, kRubio));
     QTRY_VERIFY2(window.centralWidget()->height() >= 1080 / 2,
                  qPrintable(QString::number(window.centralWidget()->height())));
     auto* toolbar = window.findChild<QToolBar*>("mainToolbar");
@@ -224,15 +233,9 @@ class TestMainWindow : public QObject {
   // mode tables is as wide as its text (the tool table scrolls, the mode tables fit), the five tool
   // buttons are whole, and the cost weights fit their dock without scrolling.
   void defaultLayoutCutsNothingAt1080p() {
-    QSettings().remove("window/state");
-    QSettings().remove("window/geometry");
+    forgetSavedLayout();
     gui::MainWindow window;
-    window.setQuiet(true);
-    window.document()->setAutosaveInterval(0);
-    window.resize(1920, 1080);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(openAt1080p(window, kRubio));
     auto* editor = window.findChild<widgets::ToolLibraryEditor*>();
     QVERIFY(editor);
     QTRY_VERIFY(editor->modeModel(widgets::ModeTableModel::Axis::Y)->rowCount() > 0);
@@ -274,15 +277,9 @@ class TestMainWindow : public QObject {
 
   // The Pareto weights dock is no wider than the right dock area a 1920 x 1080 window gives it.
   void paretoWeightsFitTheirDockAt1080p() {
-    QSettings().remove("window/state");
-    QSettings().remove("window/geometry");
+    forgetSavedLayout();
     gui::MainWindow window;
-    window.setQuiet(true);
-    window.document()->setAutosaveInterval(0);
-    window.resize(1920, 1080);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
+    QVERIFY(openAt1080p(window, MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
     auto* dock = window.findChild<QDockWidget*>("paretoWeightsDock");
     QVERIFY(dock);
     dock->raise();
