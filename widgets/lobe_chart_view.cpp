@@ -635,18 +635,10 @@ void LobeChartView::showCursorLimit(const QPointF& pixel) {
   panel_->setCursorText(text);
 }
 
-// As many legend columns as the widest entry leaves room for in the plot's width (at most two).
+// As many legend columns (at most two) as the entries fit in the plot's width at their full size.
 void LobeChartView::fitLegendColumns() {
-  const QFontMetrics metrics(plot_->legend->font());
-  int widest = 0;
-  for (const QString& name : legendNames()) widest = std::max(widest, metrics.horizontalAdvance(name));
-  const int entry = widest + plot_->legend->iconSize().width() + 4 * plot_->legend->iconTextPadding() + 20;
-  const int columns = std::clamp(plot_->width() / std::max(entry, 1), 1, kLegendColumns);
-  if (plot_->legend->wrap() != columns) {
-    plot_->legend->setWrap(columns);
-    plot_->legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+  if (widgets::fitLegendColumns(plot_->legend, plot_->width(), kLegendColumns))
     plot_->replot(QCustomPlot::rpQueuedReplot);
-  }
 }
 
 void LobeChartView::resizeEvent(QResizeEvent* event) {
