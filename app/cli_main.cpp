@@ -3,11 +3,12 @@
 #include <clocale>
 
 #include "cli/cli_application.h"
+#include "mx_version.h"
 
 int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
   QCoreApplication::setApplicationName("millexpert-cli");
-  QCoreApplication::setApplicationVersion(MX_VERSION);
+  QCoreApplication::setApplicationVersion(mx::app::kVersion);
   std::setlocale(LC_NUMERIC, "C");
   return mx::app::runCli(QCoreApplication::arguments());
 }

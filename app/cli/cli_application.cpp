@@ -8,6 +8,7 @@
 #include "core/invalid_input.h"
 #include "document/project.h"
 #include "document/shortened_text.h"
+#include "mx_version.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -61,7 +62,7 @@ int runCli(const QStringList& arguments) {
     return arguments.size() < 2 ? kExitBadInput : kExitOk;
   }
   if (arguments.at(1) == "--version") {
-    QTextStream(stdout) << "millexpert-cli " << MX_APP_VERSION << Qt::endl;
+    QTextStream(stdout) << "millexpert-cli " << kVersion << Qt::endl;
     return kExitOk;
   }
   const bool help = arguments.at(1) == "help";  // "help COMMAND" is "COMMAND --help"

@@ -30,9 +30,17 @@ widgets::StartEntry describe(const QString& path) {
 }  // namespace
 
 QStringList exampleProjectDirs() {
+  return exampleProjectDirs(QCoreApplication::applicationDirPath());
+}
+
+QStringList exampleProjectDirs(const QString& executable_dir) {
   QStringList dirs;
-  dirs << QDir(QCoreApplication::applicationDirPath()).absoluteFilePath("../share/" + kSubfolder);
-  dirs << QFileInfo(QStringLiteral(MX_DEFAULT_PROJECT)).absolutePath();
+  dirs << QDir(executable_dir).absoluteFilePath("../share/" + kSubfolder);
+  // An installed copy never reads the source tree it was built from, even on the machine that built it.
+  const QString build_dir = QFileInfo(QStringLiteral(MX_BUILD_DIR)).canonicalFilePath();
+  const QString from = QFileInfo(executable_dir).canonicalFilePath();
+  if (!build_dir.isEmpty() && (from == build_dir || from.startsWith(build_dir + '/')))
+    dirs << QFileInfo(QStringLiteral(MX_DEFAULT_PROJECT)).absolutePath();
   for (const QString& data : QStandardPaths::standardLocations(QStandardPaths::GenericDataLocation))
     dirs << QDir(data).absoluteFilePath(kSubfolder);
   for (QString& dir : dirs) dir = QDir::cleanPath(dir);

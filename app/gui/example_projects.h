@@ -1,9 +1,9 @@
 #pragma once
 // The example projects shipped with MillExpert (projects/*.mxproj, docs: README "Layout"). Looked for
 // in order: <prefix>/share/millexpert/projects beside the executable's <prefix>/bin (an install,
-// wherever it was relocated), the source tree of a build that is not installed (MX_DEFAULT_PROJECT's
-// folder), then the system's data folders (QStandardPaths, e.g. /usr/share/millexpert/projects). The
-// first folder that holds any example is the one used.
+// wherever it was relocated), the source tree (MX_DEFAULT_PROJECT's folder) only when the executable
+// runs from the build folder (MX_BUILD_DIR), then the system's data folders (QStandardPaths, e.g.
+// /usr/share/millexpert/projects). The first folder that holds any example is the one used.
 #include <QString>
 #include <QStringList>
 #include <QVector>
@@ -13,7 +13,9 @@
 namespace mx::gui {
 
 QStringList exampleProjectDirs();  // the candidate folders, in the order above
-QString exampleProjectsDir();      // the first that holds a .mxproj; "" when none does
+// The same for an executable in executable_dir (exampleProjectDirs() passes the running one's).
+QStringList exampleProjectDirs(const QString& executable_dir);
+QString exampleProjectsDir();  // the first that holds a .mxproj; "" when none does
 // The examples by file name, each with the project's name and description (read from the file; a
 // file that is not a JSON object is listed by its file name).
 QVector<widgets::StartEntry> exampleProjects();

@@ -15,6 +15,7 @@
 #include "lobes_feature.h"
 #include "machining_feature.h"
 #include "main_window.h"
+#include "mx_version.h"
 #include "pareto_feature.h"
 #include "simulation_feature.h"
 #include "supervisor_feature.h"
@@ -22,15 +23,30 @@
 #include "tap_test_feature.h"
 #include "tap_test_panel.h"
 
+namespace {
+
+// --help and --version print and quit: they need no display (a terminal over ssh, help2man at build time).
+bool onlyPrints(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    for (const char* flag : {"--help", "-h", "-?", "--help-all", "--version", "-v"})
+      if (qstrcmp(argv[i], flag) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  if (onlyPrints(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
   Q_INIT_RESOURCE(resources);  // the .qrc lives in the static millexpert_gui_core
   std::setlocale(LC_NUMERIC, "C");
   QApplication::setApplicationName("MillExpert");
   QApplication::setOrganizationName("MillExpert");
+  QApplication::setApplicationVersion(mx::app::kVersion);
   QCommandLineParser parser;
   parser.setApplicationDescription("MillExpert: milling stability lobes, expert tool selection and control.");
   parser.addHelpOption();
+  parser.addVersionOption();
   parser.addPositionalArgument("project", "Project file (.mxproj); default: the bundled example.");
   parser.addOption({"point", "Initial operating point: speed [rpm], depth [mm] and optionally feed [mm/tooth].",
                     "RPM,MM[,MM_PER_TOOTH]"});

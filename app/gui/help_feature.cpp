@@ -10,6 +10,7 @@
 
 #include "example_projects.h"
 #include "guide_window.h"
+#include "mx_version.h"
 
 // Q_INIT_RESOURCE names a global function: outside the namespace. The resource lives in the static
 // millexpert_gui_core, which no executable references otherwise.
@@ -45,7 +46,7 @@ QString HelpFeature::aboutText() {
             "guide cites.</p>"
             "<p>Built with Qt %2 (LGPL v3, The Qt Company) and QCustomPlot (GPL v3, Emanuel Eichhammer), "
             "used under their licenses.</p>")
-      .arg(QStringLiteral(MX_REPORT_VERSION), QString::fromLatin1(qVersion()));
+      .arg(QString::fromLatin1(app::kVersion), QString::fromLatin1(qVersion()));
 }
 
 void HelpFeature::projectChanged(const app::Project& project, Features /*recompute*/) {

@@ -24,6 +24,7 @@
 #include "document/input_files.h"
 #include "document/output_file.h"
 #include "lobe_chart_view.h"
+#include "mx_version.h"
 
 namespace {
 
@@ -163,11 +164,15 @@ QString outputProblem(const QStringList& args, const QString& control_project) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");  // batch tool
   QApplication app(argc, argv);
+  QApplication::setApplicationName("millexpert-plot");
+  QApplication::setApplicationVersion(mx::app::kVersion);
   std::setlocale(LC_NUMERIC, "C");
   QCommandLineParser parser;
   parser.setApplicationDescription("Render 'millexpert-cli lobes' JSON files into a chart.");
   parser.addHelpOption();
+  parser.addVersionOption();
   parser.addPositionalArgument("out", "Output .png or .pdf");
   parser.addPositionalArgument("curves", "FILE.json[=LABEL] ...; curves 2k and 2k+1 share a colour (solid, dashed).");
   parser.addOption({"title", "Chart title.", "TEXT"});

@@ -14,6 +14,7 @@
 #include "core/invalid_input.h"
 #include "document/output_file.h"
 #include "document/project.h"
+#include "mx_version.h"
 #include "report_data.h"
 #include "report_writer.h"
 #include "services/exit_code.h"
@@ -101,9 +102,7 @@ int main(int argc, char** argv) {
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");  // batch tool
   QApplication app(argc, argv);
   QApplication::setApplicationName("millexpert-report");
-#ifdef MX_VERSION
-  QApplication::setApplicationVersion(MX_VERSION);
-#endif
+  QApplication::setApplicationVersion(mx::app::kVersion);
   std::setlocale(LC_NUMERIC, "C");
   try {
     return run(app);

@@ -5,11 +5,8 @@
 #include <stdexcept>
 
 #include "model/milling_setup.h"
+#include "mx_version.h"
 #include "report_figures.h"
-
-#ifndef MX_REPORT_VERSION
-#define MX_REPORT_VERSION "unknown"
-#endif
 
 namespace mx::gui {
 
@@ -81,7 +78,7 @@ void require(bool ok, const QString& path) {
 }  // namespace
 
 ReportData collectReportData(const QString& project_path, const ReportOptions& options) {
-  ReportData d = app::computeReportData(project_path, {options.c, options.sweep_step, QString(MX_REPORT_VERSION)});
+  ReportData d = app::computeReportData(project_path, {options.c, options.sweep_step, QString(app::kVersion)});
   const QDir dir(options.image_dir);
   const ReportFigureRenderer renderer(options.image_width, options.image_height, options.units);
   d.lobe_image = dir.filePath("figure-1-lobes.png");

@@ -1,10 +1,11 @@
-// The example projects: looked for beside an install's bin/ first, then in the source tree (a build
-// that is not installed, as here), then the system's data folders; listed by file name with each
-// project's name and description.
+// The example projects: looked for beside an install's bin/ first, then in the source tree (only for
+// an executable in the build folder, as here), then the system's data folders; listed by file name
+// with each project's name and description.
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 
 #include "example_projects.h"
 #include "test_registry.h"
@@ -21,6 +22,14 @@ class TestExampleProjects : public QObject {
     QCOMPARE(dirs.at(1), QDir::cleanPath(MX_PROJECTS_DIR));
     const QString data = QStandardPaths::standardLocations(QStandardPaths::GenericDataLocation).value(0);
     QVERIFY2(dirs.contains(QDir::cleanPath(data + "/millexpert/projects")), qPrintable(dirs.join(", ")));
+  }
+
+  void anInstalledExecutableNeverLooksInTheSourceTree() {
+    QTemporaryDir prefix;
+    QVERIFY(QDir(prefix.path()).mkpath("bin"));
+    const QStringList dirs = gui::exampleProjectDirs(prefix.filePath("bin"));
+    QCOMPARE(dirs.value(0), QDir::cleanPath(prefix.filePath("share/millexpert/projects")));
+    QVERIFY2(!dirs.contains(QDir::cleanPath(MX_PROJECTS_DIR)), qPrintable(dirs.join(", ")));
   }
 
   void theSourceTreeExamplesAreListedWithTheirNames() {
