@@ -1,30 +1,23 @@
 #include "gcode/gcode_interpreter.h"
 
 #include <cmath>
-#include <numbers>
+#include <optional>
 #include <string>
+
+#include "gcode/arc_geometry.h"
+#include "gcode/heidenhain_interpreter.h"
 
 namespace mx {
 
 GcodeInterpreter::GcodeInterpreter(GcodeInterpreterSettings settings) : settings_(settings) {}
 
-namespace {
-
-double arcSweep(double a0, double a1, bool clockwise, bool full) {
-  constexpr double two_pi = 2.0 * std::numbers::pi;
-  if (full) return two_pi;
-  double d = clockwise ? a0 - a1 : a1 - a0;
-  while (d <= 0.0) d += two_pi;
-  while (d > two_pi) d -= two_pi;
-  return d;
-}
-
-}  // namespace
-
 GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
+  if (program.dialect.dialect == GcodeDialect::Heidenhain) return interpretHeidenhain(program, settings_);
   GcodeRun out;
   out.motions.reserve(program.blocks.size());
-  bool inch = settings_.start_inch;
+  const bool sinumerik = program.dialect.dialect == GcodeDialect::Sinumerik;
+  bool inch = settings_.start_inch;       // lengths
+  bool feed_inch = settings_.start_inch;  // F in inch/min
   bool incremental = false;
   int mode = -1;  // 0..3, -1 none yet
   double feed = std::numeric_limits<double>::quiet_NaN();
@@ -41,9 +34,17 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
       const int g = static_cast<int>(std::lround(w.value));
       switch (g) {
         case 20:
-          inch = true;
+        case 700:
+          inch = feed_inch = true;
           break;
         case 21:
+        case 710:
+          inch = feed_inch = false;
+          break;
+        case 70:  // Sinumerik: lengths in inch, F in the machine's basic unit (mm)
+          inch = true;
+          break;
+        case 71:
           inch = false;
           break;
         case 90:
@@ -66,15 +67,18 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
       }
     }
     const double unit = inch ? kInch : 1e-3;
-    m.inch = inch;
+    const double feed_unit = feed_inch ? kInch : 1e-3;
+    m.inch = feed_inch;
     m.incremental = incremental;
-    if (const auto* f = b.find('F'); f && f->known) {
-      feed = f->value * unit / 60.0;
+    // Sinumerik's G4 F.. / S.. give the dwell in seconds / revolutions: not a feed or a speed.
+    const bool dwell_words = dwell && sinumerik;
+    if (const auto* f = b.find('F'); f && f->known && !dwell_words) {
+      feed = f->value * feed_unit / 60.0;
       m.feed_word = true;
       if (!(f->value > 0.0))
         out.warnings.push_back({b.line, f->column, b.text.substr(f->column - 1, f->length), "F must be > 0"});
     }
-    if (const auto* s = b.find('S'); s && s->known) {
+    if (const auto* s = b.find('S'); s && s->known && !dwell_words) {
       speed = s->value / 60.0;
       m.speed_word = true;
     }
@@ -86,7 +90,7 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
 
     if (dwell) {
       m.kind = MotionKind::Dwell;
-      if (const auto* p = b.find('P')) m.dwell_s = p->value;
+      if (const auto* p = b.find(sinumerik ? 'F' : 'P')) m.dwell_s = p->value;
       out.motions.push_back(m);
       continue;
     }
@@ -101,6 +105,7 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
     }
     const auto* wi = b.find('I');
     const auto* wj = b.find('J');
+    const auto* wr = b.findAddress("CR");  // Sinumerik arc radius
     const bool arc_mode = mode == 2 || mode == 3;
     if (!has_axis && !(arc_mode && (wi || wj) && block_mode >= 0)) {
       out.motions.push_back(m);  // no motion in this block
@@ -112,28 +117,31 @@ GcodeRun GcodeInterpreter::run(const GcodeProgram& program) const {
       warned_no_mode = true;
     }
     const double dx = m.end_m[0] - m.start_m[0], dy = m.end_m[1] - m.start_m[1], dz = m.end_m[2] - m.start_m[2];
+    const arc::Point start{m.start_m[0], m.start_m[1]}, end{m.end_m[0], m.end_m[1]};
+    std::optional<arc::Point> centre;
+    if (arc_mode && (wi || wj))
+      centre = arc::Point{start[0] + (wi ? wi->value * unit : 0.0), start[1] + (wj ? wj->value * unit : 0.0)};
+    else if (arc_mode && wr)
+      centre = arc::centreFromRadius(start, end, wr->value * unit, mode == 2);
     if (mode <= 0) {
       m.kind = MotionKind::Rapid;
       m.length_m = std::sqrt(dx * dx + dy * dy + dz * dz);
-    } else if (mode == 1 || (!wi && !wj)) {
-      if (mode != 1) out.warnings.push_back({b.line, 0, b.text, "arc without I or J: treated as a straight feed move"});
+    } else if (mode == 1 || !centre) {
+      if (mode != 1)
+        out.warnings.push_back({b.line, 0, b.text,
+                                wr ? "arc radius shorter than half the chord: treated as a straight feed move"
+                                   : "arc without I or J: treated as a straight feed move"});
       m.kind = MotionKind::Linear;
       m.length_m = std::sqrt(dx * dx + dy * dy + dz * dz);
     } else {
       m.kind = mode == 2 ? MotionKind::ArcCw : MotionKind::ArcCcw;
-      const double cx = m.start_m[0] + (wi ? wi->value * unit : 0.0);
-      const double cy = m.start_m[1] + (wj ? wj->value * unit : 0.0);
-      const double r0 = std::hypot(m.start_m[0] - cx, m.start_m[1] - cy);
-      const double r1 = std::hypot(m.end_m[0] - cx, m.end_m[1] - cy);
+      const double r0 = std::hypot(start[0] - (*centre)[0], start[1] - (*centre)[1]);
+      const double r1 = std::hypot(end[0] - (*centre)[0], end[1] - (*centre)[1]);
       if (std::abs(r0 - r1) > std::max(1e-5, 1e-3 * r0))
         out.warnings.push_back({b.line, 0, b.text,
                                 "arc end radius " + std::to_string(r1 * 1e3) + " mm differs from start radius " +
                                     std::to_string(r0 * 1e3) + " mm"});
-      const bool full = std::hypot(dx, dy) < 1e-9;
-      const double sweep = arcSweep(std::atan2(m.start_m[1] - cy, m.start_m[0] - cx),
-                                    std::atan2(m.end_m[1] - cy, m.end_m[0] - cx), mode == 2, full);
-      const double r = 0.5 * (r0 + r1);
-      m.length_m = std::hypot(r * sweep, dz);
+      m.length_m = std::hypot(arc::length(start, end, *centre, mode == 2), dz);
     }
     if (m.isFeedMove() && !(feed > 0.0)) {
       m.feed_missing = true;

@@ -1,5 +1,6 @@
 #pragma once
-// Modal interpretation of a GcodeProgram, block by block: units (G20 inch / G21 mm), distance mode
+// Modal interpretation of a GcodeProgram, block by block (Heidenhain: heidenhain_interpreter.h): units
+// (G20 inch / G21 mm; Sinumerik G700 / G710, and G70 / G71 for lengths only), distance mode
 // (G90 absolute / G91 incremental), motion mode (G0 G1 G2 G3), the plane G17, the current feed F and
 // spindle speed S, and the position. For every block it gives the resolved motion in SI units: start
 // and end points, path length (arc length for G2/G3 with I,J centre offsets in the G17 plane, helical
@@ -9,6 +10,8 @@
 //  - F is read in the units in effect in its block (mm/min or in/min) and kept in m/s; a later unit
 //    change does not rescale it.
 //  - I and J are always incremental from the arc start.
+//  - Sinumerik arcs may give their radius (CR=, > 0 at most half a turn) instead of I, J; its G4 takes
+//    the dwell from F (seconds).
 //  - The start point is settings.start_m (the program zero unless told otherwise).
 //  - A feed move (G1/G2/G3) with no F anywhere before it is flagged feed_missing and warned about.
 #include <array>
@@ -31,7 +34,7 @@ struct GcodeMotion {
   bool feed_word = false;                                             // the block carries its own F word
   bool speed_word = false;                                            // the block carries its own S word
   bool feed_missing = false;                                          // feed move without any F so far
-  bool inch = false;                                                  // G20 in effect for this block
+  bool inch = false;                                                  // F in inch/min (G20; Sinumerik G700)
   bool incremental = false;                                           // G91 in effect for this block
   double dwell_s = 0.0;                                               // G4 P
 

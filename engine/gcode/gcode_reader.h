@@ -1,15 +1,25 @@
 #pragma once
-// Reads a G-code part program: the common subset G0 G1 G2 G3 G4 G17 G20 G21 G90 G91 with the words
-// F S X Y Z I J P (and N sequence numbers), the common M words M0-M9 and M30 (known, not interpreted),
-// comments in parentheses or after ';'. Letters are case-insensitive, spaces between words are optional
-// ("G1X10F200"), numbers may carry a sign and a decimal point ("-.5", "10."). Anything else (other G and
-// M codes, T, R words, macro syntax, stray characters) is kept verbatim in the block and listed as a
-// warning with line, column and text.
+// Reads a part program in its dialect (gcode_dialect.h; detected when not named).
+// ISO and its relatives (sinumerik, linuxcnc): the common subset G0 G1 G2 G3 G4 G17 G20 G21 G90 G91
+// with the words F S X Y Z I J P (and N sequence numbers), the common M words M0-M9 and M30 (known, not
+// interpreted), comments in parentheses or after ';', a block delete '/' and a tape marker '%'. Letters
+// are case-insensitive, spaces between words are optional ("G1X10F200"), numbers may carry a sign and
+// a decimal point ("-.5", "10.").
+//  - sinumerik adds G64 (continuous path), S1= (the spindle's address), CR= (arc radius), CYCLE...(...)
+//    and MSG(...) calls (kept verbatim, not interpreted), NAME=value assignments and $ variables;
+//  - linuxcnc adds G64 (path blending), M52 P (the adaptive-feed input), #<name> and #123 parameters
+//    (assignments kept verbatim), o-word subroutine and flow lines (kept verbatim, warned about);
+//  - words whose value is an expression ("X[#1*2]", "X=IC(5)") are kept verbatim and warned about.
+// heidenhain: Klartext blocks (heidenhain_lexer.cpp). Other G and M codes, T words and unknown
+// keywords are kept verbatim in the block and listed as a warning with line, column and text; text
+// that cannot be split into words at all (stray characters such as '@' or '$' in ISO) refuses the
+// program with its line and column.
 // Line ends: "\n" and "\r\n" (kept per line); a last line without line end is kept and warned about.
 // Comment bytes (UTF-8 or not) are kept unchanged.
 // Limits: a line is at most kMaxGcodeLineLength bytes, and a word's value lies in the range of its
 // letter (GcodeWordLimits); past them the program is refused, since no machine runs it and the models
 // would run without bound on it.
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -32,16 +42,14 @@ struct GcodeWordLimits {
 
 class GcodeReader {
  public:
-  // Parses program text. Throws InvalidInput, with the line and column, for a line longer than
-  // kMaxGcodeLineLength or a word outside GcodeWordLimits; any other text is kept and warned about.
-  // An empty text gives an empty program.
-  static GcodeProgram parse(std::string_view text);
+  // Parses program text in `dialect`, or in the detected one (detectDialect). Throws InvalidInput, with
+  // the line and column, for an undetectable dialect, a line longer than kMaxGcodeLineLength, text that
+  // cannot be split into words, or a word outside GcodeWordLimits; unknown words are kept and warned
+  // about. An empty text gives an empty ISO program.
+  static GcodeProgram parse(std::string_view text, std::optional<GcodeDialect> dialect = std::nullopt);
   // Reads and parses a file; throws InvalidInput ("gcode file = <path>: cannot be read", or over
   // kPartProgramFileLimit, or not a regular file) on failure.
-  static GcodeProgram readFile(const std::string& path);
-
- private:
-  static void lexLine(GcodeBlock& block, std::vector<GcodeWarning>& warnings);
+  static GcodeProgram readFile(const std::string& path, std::optional<GcodeDialect> dialect = std::nullopt);
 };
 
 }  // namespace mx

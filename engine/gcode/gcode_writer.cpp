@@ -36,37 +36,65 @@ std::string GcodeWriter::sanitizeComment(const std::string& text) {
   return s;
 }
 
-std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e) {
-  struct Change {
-    std::size_t pos, len;
-    std::string text;
-    int order;
-  };
-  std::vector<Change> changes;
-  auto wordChange = [&](char letter, double value, int decimals, int order) {
-    const std::string num = formatNumber(value, decimals);
-    for (const auto& w : b.words)
-      if (w.known && w.letter == letter) {
-        const char written = b.text[w.column - 1];  // keep the letter's case
-        std::string text = std::string(1, written) + num;
-        // The line may go on with a '.' or a digit the old number did not take ("S30..2" is S30. and a
-        // stray ".2"); a space keeps the new number from running into it.
-        const std::size_t after = w.column - 1 + w.length;
-        if (after < b.text.size() && (b.text[after] == '.' || (b.text[after] >= '0' && b.text[after] <= '9')))
-          text += ' ';
-        changes.push_back({w.column - 1, w.length, std::move(text), order});
-        return;
-      }
-    const std::size_t at = b.words_end;
-    changes.push_back({at, 0, std::string(at > 0 ? " " : "") + letter + num, order});
-  };
+namespace {
+
+bool semicolonComments(GcodeDialect d) {
+  return d == GcodeDialect::Heidenhain || d == GcodeDialect::Sinumerik;
+}
+
+struct Change {
+  std::size_t pos, len;
+  std::string text;
+  int order;
+};
+
+// The change that gives the block's F or S word the number, or inserts one.
+Change wordChange(const GcodeBlock& b, char letter, double value, int decimals, int order, GcodeDialect d) {
+  const std::string num = GcodeWriter::formatNumber(value, decimals);
+  const GcodeWord* w = letter == 'F' ? b.feedWord() : b.speedWord();
+  if (w) {
+    const std::size_t at = w->column - 1;
+    // A word with a number keeps its address and separator; a symbolic one ("F AUTO") is replaced whole.
+    const std::size_t keep = w->has_value ? w->value_at : 0;
+    std::string text = w->has_value ? num : std::string(1, letter) + num;
+    if (!w->has_value && b.text[at] >= 'a' && b.text[at] <= 'z') text[0] = static_cast<char>(text[0] - 'A' + 'a');
+    return {at + keep, w->length - keep, std::move(text), order};
+  }
+  const std::size_t at = letter == 'F' ? b.feed_insert_at : b.speed_insert_at;
+  if (at == std::string::npos || at > b.text.size())
+    throw InvalidInput("gcode edit of line " + std::to_string(b.line) + ": a " + std::string(dialectTitle(d)) + " " +
+                       (b.keyword.empty() ? std::string("block") : b.keyword + " block") + " takes no " + letter +
+                       " word");
+  return {at, 0, std::string(at > 0 ? " " : "") + letter + num, order};
+}
+
+void appendComment(std::string& out, const GcodeBlock& b, const std::string& comment, GcodeDialect d) {
+  if (!semicolonComments(d)) {
+    if (!out.empty()) out += ' ';
+    out += '(' + GcodeWriter::sanitizeComment(comment) + ')';
+    return;
+  }
+  std::string text = comment;
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  const bool open_to_end = !b.comments.empty() &&
+                           b.comments.back().column - 1 + b.comments.back().length == b.text.size() &&
+                           (b.text[b.comments.back().column - 1] == ';' || b.text[b.comments.back().column - 1] == '*');
+  out += open_to_end ? " " : (out.empty() ? "; " : " ; ");
+  out += text;
+}
+
+}  // namespace
+
+std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e, GcodeDialect d) {
   // NaN means "leave the word alone"; an infinite value is a controller's failure, never written.
   for (const auto& [letter, value] : {std::pair{'F', e.feed}, std::pair{'S', e.speed_rpm}})
     if (std::isinf(value))
       throw InvalidInput("gcode edit of line " + std::to_string(b.line) + ": " + letter + " = " +
                          (value > 0 ? "inf" : "-inf") + ": only a finite value is written");
-  if (e.feed == e.feed) wordChange('F', e.feed, e.feed_decimals, 0);
-  if (e.speed_rpm == e.speed_rpm) wordChange('S', e.speed_rpm, e.speed_decimals, 1);
+  std::vector<Change> changes;
+  if (e.feed == e.feed) changes.push_back(wordChange(b, 'F', e.feed, e.feed_decimals, 0, d));
+  if (e.speed_rpm == e.speed_rpm) changes.push_back(wordChange(b, 'S', e.speed_rpm, e.speed_decimals, 1, d));
   std::sort(changes.begin(), changes.end(),
             [](const Change& a, const Change& c) { return a.pos != c.pos ? a.pos < c.pos : a.order < c.order; });
   std::string out;
@@ -78,50 +106,81 @@ std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e)
     cursor = c.pos + c.len;
   }
   out.append(b.text, cursor, std::string::npos);
-  if (!e.comment.empty()) {
-    if (!out.empty()) out += ' ';
-    out += '(';
-    out += sanitizeComment(e.comment);
-    out += ')';
-  }
+  if (!e.comment.empty()) appendComment(out, b, e.comment, d);
   return out;
 }
 
-std::string GcodeWriter::headerText(const GcodeHeader& h, const std::string& eol) {
+std::string GcodeWriter::headerText(const GcodeHeader& h, const std::string& eol, bool semicolon) {
+  const auto line = [&](const std::string& text) {
+    std::string out(semicolon ? "; " : "(");
+    out += semicolon ? text : sanitizeComment(text);
+    if (!semicolon) out += ')';
+    out += eol;
+    return out;
+  };
   std::string s;
-  s += "(MillExpert optimised part program)" + eol;
-  s += "(project: " + sanitizeComment(h.project) + ")" + eol;
-  s += "(controller: " + sanitizeComment(h.controller) + ")" + eol;
-  s += "(date: " + sanitizeComment(h.date) + ")" + eol;
+  s += line("MillExpert optimised part program");
+  s += line("project: " + h.project);
+  s += line("controller: " + h.controller);
+  s += line("date: " + h.date);
   return s;
 }
+
+namespace {
+
+// The leading lines a header goes after: a '%' tape marker line; on Sinumerik also "%_N_..." and
+// ";$PATH=..." (the controller reads them first).
+std::size_t headerPosition(const GcodeProgram& p) {
+  const GcodeDialect d = p.dialect.dialect;
+  std::size_t i = 0;
+  for (; i < p.blocks.size(); ++i) {
+    const GcodeBlock& b = p.blocks[i];
+    const std::size_t first = b.text.find_first_not_of(" \t");
+    const bool marker = first != std::string::npos && b.text[first] == '%' && b.words.empty() &&
+                        (d == GcodeDialect::Sinumerik || b.text.find_first_not_of(" \t%") == std::string::npos);
+    const bool path = d == GcodeDialect::Sinumerik && b.text.rfind(";$PATH", 0) == 0;
+    if (!marker && !path) break;
+  }
+  return i;
+}
+
+}  // namespace
 
 std::string GcodeWriter::write(const GcodeProgram& p, const std::vector<GcodeBlockEdit>& edits,
                                const GcodeHeader* header) {
   if (!edits.empty() && edits.size() != p.blocks.size())
     throw InvalidInput("gcode edits = " + std::to_string(edits.size()) + " entries: must be 0 or " +
                        std::to_string(p.blocks.size()) + " (one per block)");
+  const GcodeDialect d = p.dialect.dialect;
+  const bool heidenhain = d == GcodeDialect::Heidenhain;
+  const std::size_t header_at = header && !heidenhain ? headerPosition(p) : std::string::npos;
+  // Heidenhain: the BEGIN PGM block carries the header, or the first block when there is none.
+  std::size_t header_block = std::string::npos;
+  if (header && heidenhain && !p.blocks.empty()) {
+    header_block = 0;
+    for (std::size_t i = 0; i < p.blocks.size(); ++i)
+      if (p.blocks[i].keyword == "BEGIN PGM") {
+        header_block = i;
+        break;
+      }
+  }
   std::string out;
   out.reserve(p.blocks.size() * 40 + 256);
-  std::size_t first = 0;
-  if (header) {
-    // keep a leading tape marker line first
-    if (!p.blocks.empty() && p.blocks[0].text.find('%') != std::string::npos && p.blocks[0].words.empty() &&
-        p.blocks[0].text.find_first_not_of(" \t%") == std::string::npos) {
-      out += p.blocks[0].text;
-      out += p.blocks[0].eol.empty() ? p.lineEnd() : p.blocks[0].eol;
-      first = 1;
-    }
-    out += headerText(*header, p.lineEnd());
-  }
-  for (std::size_t i = first; i < p.blocks.size(); ++i) {
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+    if (i == header_at) out += headerText(*header, p.lineEnd(), semicolonComments(d));
     const auto& b = p.blocks[i];
-    if (edits.empty() || edits[i].empty())
-      out += b.text;
-    else
-      out += applyEdit(b, edits[i]);
-    out += b.eol;
+    GcodeBlockEdit e = edits.empty() ? GcodeBlockEdit{} : edits[i];
+    if (i == header_block) {
+      const std::string note = "MillExpert optimised part program, project: " + header->project +
+                               ", controller: " + header->controller + ", date: " + header->date;
+      e.comment = e.comment.empty() ? note : note + "; " + e.comment;
+    }
+    out += e.empty() ? b.text : applyEdit(b, e, d);
+    // A header after a last line without line end must not run into it.
+    out += b.eol.empty() && i + 1 == header_at ? p.lineEnd() : b.eol;
   }
+  if (header_at != std::string::npos && header_at >= p.blocks.size())
+    out += headerText(*header, p.lineEnd(), semicolonComments(d));
   return out;
 }
 

@@ -1,11 +1,19 @@
 #pragma once
-// Writes a GcodeProgram back, changing only F and S words and appending comments. Blocks are never
-// dropped or reordered; a block without an edit is written byte-for-byte as read (its line end too).
-//  - F / S: an existing word of that letter is replaced in place (the letter's case is kept); otherwise
-//    " F<value>" / " S<value>" is inserted after the block's last word, before its comments.
-//  - comment: appended at the end of the line as " (text)"; '(' and ')' in the text become '[' ']'.
-//  - header: comment lines with the project, the controller and the date, inserted at the top (after a
-//    leading '%' tape marker line), with the program's own line end.
+// Writes a GcodeProgram back in its own dialect, changing only F and S words and appending comments.
+// Blocks are never dropped or reordered; a block without an edit is written byte-for-byte as read (its
+// line end too).
+//  - F / S: the block's editable word (GcodeBlock::feed_word, speed_word) gets the new number in place;
+//    its address and separator are kept ("f 250" -> "f 180", "S1=2000" -> "S1=2400", Heidenhain
+//    "F AUTO" -> "F180"). Otherwise " F<value>" / " S<value>" is inserted where the block takes one
+//    (ISO: after its last word; Heidenhain: F before the M words of a motion block, S after the tool
+//    axis of a TOOL CALL); a block of a dialect that takes no such word is refused.
+//  - comment: appended at the end of the line: " (text)" in ISO and LinuxCNC, '(' ')' in the text
+//    becoming '[' ']'; " ; text" in Heidenhain and Sinumerik, or " text" inside a comment that already
+//    runs to the end of the line.
+//  - header: the project, the controller and the date. ISO, LinuxCNC, Sinumerik: comment lines at the
+//    top (after a leading '%' tape marker line, and after Sinumerik's "%_N_" and ";$PATH=" lines) with
+//    the program's own line end. Heidenhain numbers its blocks, so no line is inserted: the header is a
+//    comment on the BEGIN PGM block.
 // Numbers are written with std::to_chars (locale independent), trailing zeros removed.
 #include <limits>
 #include <string>
@@ -36,14 +44,16 @@ class GcodeWriter {
   // edits: empty (no change) or exactly one per block; throws InvalidInput otherwise.
   static std::string write(const GcodeProgram& program, const std::vector<GcodeBlockEdit>& edits,
                            const GcodeHeader* header = nullptr);
-  // The header lines alone (each ending with eol).
-  static std::string headerText(const GcodeHeader& header, const std::string& eol);
+  // The header lines alone (each ending with eol), as ISO comments or, with semicolon, ';' comments.
+  static std::string headerText(const GcodeHeader& header, const std::string& eol, bool semicolon = false);
   // Fixed notation with at most `decimals` decimals, trailing zeros and a bare '.' removed.
   static std::string formatNumber(double value, int decimals);
   // The text with '(' ')' replaced by '[' ']' and line breaks by spaces.
   static std::string sanitizeComment(const std::string& text);
-  // The block's text with the edit applied (line end not included).
-  static std::string applyEdit(const GcodeBlock& block, const GcodeBlockEdit& edit);
+  // The block's text with the edit applied (line end not included). Throws InvalidInput for a non-finite
+  // F or S, or a word the block cannot take in its dialect.
+  static std::string applyEdit(const GcodeBlock& block, const GcodeBlockEdit& edit,
+                               GcodeDialect dialect = GcodeDialect::Iso);
 };
 
 }  // namespace mx

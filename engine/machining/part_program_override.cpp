@@ -45,6 +45,38 @@ bool sameFeed(double a, double b) {
   return a == a && b == b && std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
 }
 
+// LinuxCNC's adaptive-feed input (M52 P1 on, M52 P0 or M52 off) scales every F by an analogue input: a
+// changed F under it is not the feed the machine will run, which the operator is told once.
+class AdaptiveFeedInput {
+ public:
+  explicit AdaptiveFeedInput(const GcodeProgram& p) : program_(p) {
+    if (p.dialect.dialect != GcodeDialect::LinuxCnc) return;
+    on_.resize(p.blocks.size(), 0);
+    int enabled_at = 0;
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      for (const GcodeWord& w : p.blocks[i].words)
+        if (w.known && w.address == "M" && std::abs(w.value - 52.0) < 1e-9) {
+          const GcodeWord* p_word = p.blocks[i].find('P');
+          enabled_at = p_word && p_word->value != 0.0 ? p.blocks[i].line : 0;
+        }
+      on_[i] = enabled_at;
+    }
+  }
+  void warnIfScaling(std::size_t block, std::vector<GcodeWarning>& warnings) const {
+    if (warned_ || on_.empty() || on_[block] == 0) return;
+    warned_ = true;
+    const GcodeBlock& b = program_.blocks[block];
+    warnings.push_back({b.line, 0, b.text,
+                        "M52 P1 (line " + std::to_string(on_[block]) +
+                            ") is in effect: the machine's adaptive-feed input scales the new F further"});
+  }
+
+ private:
+  const GcodeProgram& program_;
+  std::vector<int> on_;  // per block: the line of the M52 P1 in effect, 0 when off
+  mutable bool warned_ = false;
+};
+
 }  // namespace
 
 PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const {
@@ -59,6 +91,9 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
   double out_feed = std::numeric_limits<double>::quiet_NaN();   // feed in effect in the output [m/s]
   double out_speed = std::numeric_limits<double>::quiet_NaN();  // speed in effect in the output [rev/s]
   double path = 0.0;
+  constexpr std::size_t kNone = std::string::npos;
+  std::size_t speed_carrier = kNone;  // the last block that has or takes an S word
+  const AdaptiveFeedInput adaptive_input(r.program);
 
   for (std::size_t i = 0; i < r.program.blocks.size(); ++i) {
     const auto& b = r.program.blocks[i];
@@ -70,21 +105,32 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
     e.feed_decimals = decimals;
 
     // Spindle speed: every S word becomes the expert system's speed; a feed move with no S in effect
-    // gets one.
+    // gets one, in its own block or, where the dialect keeps S elsewhere (Heidenhain: in the TOOL CALL),
+    // in the last block before it that takes one.
     bool speed_changed = false;
     if (m.speed_word) out_speed = m.speed_rev_per_s;
-    if (speed_override && ((m.speed_word && std::abs(m.speed_rev_per_s * 60.0 - target_rpm) > 1e-9) ||
-                           (m.isFeedMove() && !sameFeed(out_speed, settings_.speed_rev_per_s)))) {
-      e.speed_rpm = target_rpm;
+    if (b.speedWord() || b.speed_insert_at != std::string::npos) speed_carrier = i;
+    const bool wrong_word = m.speed_word && std::abs(m.speed_rev_per_s * 60.0 - target_rpm) > 1e-9;
+    if (speed_override && (wrong_word || (m.isFeedMove() && !sameFeed(out_speed, settings_.speed_rev_per_s)))) {
+      const std::size_t carrier = wrong_word ? i : speed_carrier;
+      if (carrier == kNone)
+        throw InvalidInput("part program line " + std::to_string(b.line) +
+                           ": a feed move with no spindle speed before it, "
+                           "and no block before it that takes an S word in " +
+                           std::string(dialectTitle(r.program.dialect.dialect)) + " (a TOOL CALL): add one");
+      const std::string speed_reason = "S " + GcodeWriter::formatNumber(target_rpm, 0) + " rpm from the expert system";
+      r.edits[carrier].speed_rpm = target_rpm;
       out_speed = settings_.speed_rev_per_s;
       speed_changed = true;
-      reason = "S " + GcodeWriter::formatNumber(target_rpm, 0) + " rpm from the expert system";
+      if (carrier == i)
+        reason = speed_reason;
+      else if (r.edits[carrier].comment.empty())
+        r.edits[carrier].comment = "MX: " + speed_reason;
     }
     // The F word of the block, unless edited below, sets the output's modal feed.
     if (m.feed_word) out_feed = m.feed_m_per_s;
     if (!m.isFeedMove()) {
       if (!reason.empty()) e.comment = "MX: " + reason;
-      if (!e.empty()) ++r.changed_blocks;
       continue;
     }
 
@@ -148,8 +194,8 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
                GcodeWriter::formatNumber(s.depth_m * 1e3, 3) + " mm, ";
       }
       e.comment = c + reason;
-      ++r.changed_blocks;
     }
+    if (feed_changed) adaptive_input.warnIfScaling(i, r.warnings);
     FeedOverrideRow row;
     row.block = i + 1;
     row.line = b.line;
@@ -163,7 +209,9 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
     row.reason = reason;
     r.rows.push_back(std::move(row));
   }
-  r.warnings = r.program.warnings;
+  r.changed_blocks = static_cast<std::size_t>(
+      std::count_if(r.edits.begin(), r.edits.end(), [](const GcodeBlockEdit& e) { return !e.empty(); }));
+  r.warnings.insert(r.warnings.begin(), r.program.warnings.begin(), r.program.warnings.end());
   r.warnings.insert(r.warnings.end(), r.run.warnings.begin(), r.run.warnings.end());
   std::stable_sort(r.warnings.begin(), r.warnings.end(),
                    [](const GcodeWarning& a, const GcodeWarning& c) { return a.line < c.line; });

@@ -61,7 +61,7 @@ class TestGcodeReader : public QObject {
     QTest::newRow("M98 (subprogram call)") << "M98 P100" << 1;
     QTest::newRow("M99") << "M99" << 1;
     QTest::newRow("M3.5") << "M3.5" << 1;
-    QTest::newRow("M without a number") << "M" << 1;
+    QTest::newRow("M without a number") << "G0 Z5 M" << 1;
   }
   void commonMWords() {
     QFETCH(QString, block);
@@ -109,9 +109,8 @@ class TestGcodeReader : public QObject {
       const char* text;
     };
     // M6 (line 2) and M3 (line 3) are common M words: known, not warned about.
-    const W expected[] = {{1, 9, "G54"},       {2, 1, "T1"},      {4, 13, "G40"}, {5, 1, "#100=2.5"},
-                          {6, 4, "X[#100*2]"}, {7, 8, "R5"},      {7, 11, "Q2"},  {8, 1, "G18"},
-                          {9, 1, "@@"},        {9, 4, "garbage"}, {9, 12, "line"}};
+    const W expected[] = {{1, 9, "G54"}, {2, 1, "T1"},  {4, 13, "G40"}, {5, 1, "#100=2.5"}, {6, 4, "X[#100*2]"},
+                          {7, 8, "R5"},  {7, 11, "Q2"}, {8, 1, "G18"},  {9, 1, "garbage"},  {9, 9, "line"}};
     QCOMPARE(p.warnings.size(), std::size(expected));
     for (std::size_t i = 0; i < std::size(expected); ++i) {
       QCOMPARE(p.warnings[i].line, expected[i].line);
@@ -182,7 +181,17 @@ class TestGcodeReader : public QObject {
                            << "line 1, column 7: Fnan: a word's value must be a finite number";
     QTest::newRow("S -Infinity") << "S-Infinity\n"
                                  << "line 1, column 1: S-Infinity: a word's value must be a finite number";
-    QTest::newRow("unknown letter with nan is kept") << "Qnan\n" << QString();
+    QTest::newRow("unknown letter with nan is kept") << "G1 X1 Qnan\n" << QString();
+    QTest::newRow("stray number after a word")
+        << "G1 S30..2 F200\n"
+        << "line 1, column 8: .2: cannot be split into ISO / Fanuc words (a letter with a number, or a comment)";
+    QTest::newRow("stray characters") << "G1 X1\n@@ garbage line\n"
+                                      << "line 2, column 1: @@: cannot be split into ISO / Fanuc words (a letter "
+                                         "with a number, or a comment)";
+    QTest::newRow("not G-code at all") << "{\"name\": 1}\n"
+                                       << "line 1: {\"name\": 1}: not a block of a known dialect (iso, heidenhain, "
+                                          "sinumerik, linuxcnc): the dialect cannot be detected; name it if the "
+                                          "program is one of them";
     QTest::newRow("line at the limit") << QString("(") + QString(4094, 'x') + ")\n" << QString();
     QTest::newRow("line past the limit") << QString("(") + QString(4095, 'x') + ")\n"
                                          << "line 1: 4097 characters: a block has at most 4096";

@@ -68,6 +68,39 @@ int checkOnlyFeedSpeedComments(const std::string& input, const std::string& outp
   return differing;
 }
 
+// The block without comments, its editable F and S words, and blanks (any dialect).
+std::string dialectSkeleton(const GcodeBlock& b) {
+  struct Span {
+    std::size_t pos, len;
+  };
+  std::vector<Span> cut;
+  for (const auto& c : b.comments) cut.push_back({c.column - 1, c.length});
+  for (const GcodeWord* w : {b.feedWord(), b.speedWord()})
+    if (w) cut.push_back({w->column - 1, w->length});
+  std::sort(cut.begin(), cut.end(), [](const Span& a, const Span& c) { return a.pos > c.pos; });
+  std::string t = b.text;
+  for (const auto& span : cut) t.erase(span.pos, span.len);
+  std::string out;
+  for (char c : t)
+    if (c != ' ' && c != '\t') out += c;
+  return out + "|" + b.eol;
+}
+
+// The new F of every feed move of the pocket, overridden at 400 N in its dialect.
+std::vector<double> overriddenFeeds(const std::string& file, std::string* output = nullptr) {
+  const std::string text = gcodeSample(file);
+  const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), PartProgramOverrideSettings{})
+                     .run(std::string_view(text));
+  const std::string out = r.writeProgram(kHeader);
+  if (output) *output = out;
+  const GcodeProgram back = GcodeReader::parse(out);
+  const GcodeRun run = GcodeInterpreter().run(back);
+  std::vector<double> feeds;
+  for (const GcodeMotion& m : run.motions)
+    if (m.isFeedMove()) feeds.push_back(m.feed_m_per_s);
+  return feeds;
+}
+
 PartProgramOverrideSettings stockTopZero() {
   PartProgramOverrideSettings s;
   s.stock_top_z_m = 0.0;
@@ -263,6 +296,68 @@ class TestPartProgramOverride : public QObject {
                                                   "the stock where no controller sets the feed: add an F word to this "
                                                   "line or an earlier one"));
     }
+  }
+  // The pocket in every dialect: read back in its own dialect, the output has the same blocks in the
+  // same order, only F / S words and comments changed (header lines aside), and its feed moves run at
+  // the feeds of the ISO program's override.
+  void dialectRoundTrip_data() {
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<int>("header_lines");
+    QTest::newRow("Heidenhain") << "heidenhain_pocket.h" << 0;
+    QTest::newRow("Sinumerik") << "sinumerik_pocket.mpf" << 4;
+    QTest::newRow("LinuxCNC") << "linuxcnc_pocket.ngc" << 4;
+  }
+  void dialectRoundTrip() {
+    QFETCH(QString, file);
+    QFETCH(int, header_lines);
+    std::string out;
+    const std::vector<double> feeds = overriddenFeeds(file.toStdString(), &out);
+    const std::vector<double> iso = overriddenFeeds("pocket_mm.nc");
+    QCOMPARE(feeds.size(), iso.size());
+    for (std::size_t i = 0; i < iso.size(); ++i) QVERIFY(std::abs(feeds[i] - iso[i]) < 1e-12);
+    const GcodeProgram in = GcodeReader::parse(gcodeSample(file.toStdString()));
+    const GcodeProgram back = GcodeReader::parse(out);
+    QCOMPARE(back.dialect.dialect, in.dialect.dialect);
+    QCOMPARE(back.blocks.size(), in.blocks.size() + std::size_t(header_lines));
+    std::size_t k = 0, changed = 0;
+    int headers = 0;
+    for (const GcodeBlock& b : back.blocks) {
+      if (k < in.blocks.size() && dialectSkeleton(b) == dialectSkeleton(in.blocks[k])) {
+        if (b.text != in.blocks[k++].text) ++changed;
+        continue;
+      }
+      QVERIFY2(b.words.empty() && b.comments.size() == 1, b.text.c_str());  // an inserted header line
+      ++headers;
+    }
+    QCOMPARE(headers, header_lines);
+    QCOMPARE(k, in.blocks.size());
+    QVERIFY(changed >= 2);
+  }
+  // Heidenhain keeps S in the TOOL CALL: the expert system's speed changes it, and a TOOL CALL without
+  // S gets one; a feed move with no TOOL CALL before it cannot.
+  void heidenhainSpeedGoesToTheToolCall() {
+    PartProgramOverrideSettings s;
+    s.speed_rev_per_s = 2134.0 / 60.0;
+    const auto r = PartProgramOverrider(identity, s).run(std::string_view(gcodeSample("heidenhain_pocket.h")));
+    QCOMPARE(r.edits[4].speed_rpm, 2134.0);  // 4 TOOL CALL 1 Z S1500 F600
+    for (std::size_t i = 0; i < r.edits.size(); ++i)
+      if (i != 4) QVERIFY(std::isnan(r.edits[i].speed_rpm));
+    const auto inserted =
+        PartProgramOverrider(identity, s).run(std::string_view("TOOL CALL 1 Z F600\nL Z-1 F100\nL X+10\n"));
+    const std::string first = inserted.writeProgram(kHeader).substr(0, inserted.writeProgram(kHeader).find('\n'));
+    QVERIFY2(first.rfind("TOOL CALL 1 Z S2134 F600 ; MillExpert optimised part program", 0) == 0, first.c_str());
+    QVERIFY(first.find("MX: S 2134 rpm from the expert system") != std::string::npos);
+    QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                             PartProgramOverrider(identity, s).run(std::string_view("BEGIN PGM A MM\nL Z-1 F100\n")));
+  }
+  // LinuxCNC's M52 P1 scales every F by the adaptive-feed input: the operator is told once.
+  void linuxCncAdaptiveFeedInputWarned() {
+    const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), PartProgramOverrideSettings{})
+                       .run(std::string_view(gcodeSample("linuxcnc_pocket.ngc")));
+    int told = 0;
+    for (const GcodeWarning& w : r.warnings)
+      if (w.message.find("M52 P1 (line 7) is in effect") != std::string::npos) ++told;
+    QCOMPARE(told, 1);
   }
   void csvTable() {
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), stockTopZero())

@@ -10,6 +10,10 @@ namespace mx::test {
 inline constexpr const char* kGcodeSamples[] = {"pocket_mm.nc", "crlf.nc",      "inch.nc",          "unknown_words.nc",
                                                 "missing_f.nc", "truncated.nc", "utf8_comments.nc", "empty.nc"};
 
+// The same pocket in every dialect (pocket_mm.nc is the ISO one).
+inline constexpr const char* kDialectSamples[] = {"pocket_mm.nc", "heidenhain_pocket.h", "sinumerik_pocket.mpf",
+                                                  "linuxcnc_pocket.ngc"};
+
 inline std::string gcodeSample(const std::string& name) {
   std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
   std::ostringstream ss;

@@ -6,5 +6,5 @@ G1 Z-2 F100 G40
 G1 X[#100*2] F400
 G1 X30 R5 Q2
 G18
-@@ garbage line
+garbage line
 G1 Y10
