@@ -2,7 +2,7 @@
 # packaging.deb: builds the .deb of this build folder with cpack into a scratch folder, unpacks it with
 # dpkg -x into a scratch root and checks what an install gives: the four programs and their --version,
 # a check of every installed example, the desktop entry, MIME type, icons, man pages, and a Depends line
-# naming the Qt 6 libraries. A missing cpack or dpkg fails the test: it never passes untested.
+# naming the Qt 6 libraries. A missing cpack, dpkg or desktop tool fails the test: it never passes untested.
 #   test_deb_package.sh CPACK BUILD_DIR SOURCE_DIR VERSION
 set -euo pipefail
 cpack=$1 build=$2 source=$3 version=$4
@@ -10,7 +10,7 @@ fail() {
   echo "packaging.deb: $*" >&2
   exit 1
 }
-for tool in "$cpack" dpkg dpkg-deb dpkg-shlibdeps; do
+for tool in "$cpack" dpkg dpkg-deb dpkg-shlibdeps desktop-file-validate update-mime-database; do
   command -v "$tool" >/dev/null || fail "$tool is missing (bash packaging/bootstrap.sh installs it)"
 done
 
@@ -62,13 +62,17 @@ for program in millexpert millexpert-cli millexpert-report millexpert-plot; do
   zcat "$root/usr/share/man/man1/$program.1.gz" | grep -q "$version" || fail "man page of $program names no $version"
 done
 
-# The desktop entry names the icon and the MIME type, which the MIME XML maps to *.mxproj.
+# The desktop entry is valid and names the icon and the MIME type; the MIME database built from the
+# installed XML, as shared-mime-info's trigger builds it on an install, maps *.mxproj to that type.
 desktop="$root/usr/share/applications/millexpert.desktop"
+desktop-file-validate "$desktop" || fail "desktop-file-validate: $desktop is not valid (above)"
 grep -qx "Icon=millexpert" "$desktop" || fail "the desktop entry names no Icon=millexpert"
 grep -qx "MimeType=application/x-millexpert-project;" "$desktop" || fail "the desktop entry names no MIME type"
-mime="$root/usr/share/mime/packages/millexpert.xml"
-grep -q '<mime-type type="application/x-millexpert-project">' "$mime" || fail "$mime: no application/x-millexpert-project"
-grep -q '<glob pattern="\*.mxproj"/>' "$mime" || fail "$mime: no *.mxproj glob"
+update-mime-database "$root/usr/share/mime" || fail "update-mime-database refused the installed MIME XML"
+grep -qxF "50:application/x-millexpert-project:*.mxproj" "$root/usr/share/mime/globs2" ||
+  fail "the MIME database maps no *.mxproj to application/x-millexpert-project"
+grep -qxF "application/x-millexpert-project:millexpert" "$root/usr/share/mime/icons" ||
+  fail "the MIME database gives application/x-millexpert-project no millexpert icon"
 for size in 16 48 256; do  # a PNG's width and height are the big-endian words at bytes 16 and 20
   png="$root/usr/share/icons/hicolor/${size}x${size}/apps/millexpert.png"
   dims=$(od -An -tu1 -j16 -N8 "$png" | awk '{print $3 * 256 + $4, $7 * 256 + $8}')
