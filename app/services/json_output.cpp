@@ -52,6 +52,7 @@ const QSet<QString>& documentedNullKeys() {
       "k",                      //   ... and its lobe number
       "reselected",             // pareto --feedback: no re-selection
       "csv",                    // override: no --csv given
+      "tool_table",             // override --afc: no --afc-tool given
       "chatter_time_s",         // supervise: no chatter detected
       "settling_s",             // supervise: a force transient that never settles
       "followed",               // pareto: message-only advice has no bound to follow
