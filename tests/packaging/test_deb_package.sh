@@ -91,4 +91,12 @@ for project in "$projects"/*.mxproj; do
 done
 "$bin/millexpert-cli" lobes "$projects/tap-test-example.mxproj" --tool T9 --dynamics measured \
   --from 3000 --to 3100 --step 100 >/dev/null || fail "lobes on the installed tap-test example failed"
+# The installed window opens its default example from <root>/usr/share beside its bin/ (the system's
+# data folders emptied, the source tree out of an installed copy's reach): without it, the window would
+# show its start page, take no screenshot and exit 1 after 60 s.
+mkdir "$work/data"
+XDG_DATA_DIRS="$work/data" XDG_DATA_HOME="$work/data" QT_QPA_PLATFORM=offscreen \
+  "$bin/millexpert" --screenshot "$work/window.png" >"$work/window.log" 2>&1 ||
+  { cat "$work/window.log" >&2; fail "the installed millexpert did not open its default example"; }
+[ -s "$work/window.png" ] || fail "the installed millexpert wrote no screenshot"
 echo "packaging.deb: $count installed examples check; passed in $((SECONDS - started)) s"
