@@ -2,6 +2,7 @@
 
 #include <QAbstractTableModel>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -236,7 +237,9 @@ PartProgramPanel::PartProgramPanel(QWidget* parent)
       changed_only_box_(new QCheckBox(tr("Show changed blocks only"), this)),
       open_button_(new QPushButton(tr("Open program..."), this)),
       export_program_button_(new QPushButton(tr("Export program..."), this)),
-      export_csv_button_(new QPushButton(tr("Export CSV..."), this)) {
+      export_csv_button_(new QPushButton(tr("Export CSV..."), this)),
+      export_afc_button_(new QPushButton(tr("Export AFC table..."), this)),
+      dialect_box_(new QComboBox(this)) {
   setToolTip(
       tr("Part-program override: the programmed feed F and speed S of each block beside the proposed "
          "ones, the reason and the predicted cutting force."));
@@ -251,11 +254,30 @@ PartProgramPanel::PartProgramPanel(QWidget* parent)
   export_program_button_->setToolTip(tr("Write the program with the proposed F and S."));
   export_csv_button_->setObjectName(QStringLiteral("partProgramExportCsv"));
   export_csv_button_->setToolTip(tr("Write the table (one row per block, units in the header) as CSV."));
+  export_afc_button_->setObjectName(QStringLiteral("partProgramExportAfc"));
+  export_afc_button_->setToolTip(
+      tr("Heidenhain programs: write the AFC.TAB row (adaptive feed control) for the tool, taught at the project's "
+         "operating point; its reference power AFC-LOAD is shown below."));
+  dialect_box_->setObjectName(QStringLiteral("partProgramDialect"));
+  dialect_box_->addItem(tr("Detect"), QString());
+  dialect_box_->addItem(tr("ISO / Fanuc"), QStringLiteral("iso"));
+  dialect_box_->addItem(tr("Heidenhain Klartext"), QStringLiteral("heidenhain"));
+  dialect_box_->addItem(tr("Siemens Sinumerik"), QStringLiteral("sinumerik"));
+  dialect_box_->addItem(tr("LinuxCNC"), QStringLiteral("linuxcnc"));
+  dialect_box_->setToolTip(
+      tr("The controller dialect the program is written in; the optimised program is written in the same one. "
+         "Detect: from the program's own syntax (BEGIN PGM, CYCLE...(), #<name>, ...)."));
+  auto* dialect_label = new QLabel(tr("Dialect:"), this);
+  dialect_label->setBuddy(dialect_box_);
   changed_only_box_->setObjectName(QStringLiteral("partProgramChangedOnly"));
   changed_only_box_->setToolTip(tr("Hide the blocks whose F and S are kept."));
   buttons->addWidget(open_button_);
   buttons->addWidget(export_program_button_);
   buttons->addWidget(export_csv_button_);
+  buttons->addWidget(export_afc_button_);
+  buttons->addSpacing(2 * kSpacing);
+  buttons->addWidget(dialect_label);
+  buttons->addWidget(dialect_box_);
   buttons->addSpacing(2 * kSpacing);
   buttons->addWidget(changed_only_box_);
   buttons->addStretch(1);
@@ -318,6 +340,8 @@ PartProgramPanel::PartProgramPanel(QWidget* parent)
   connect(open_button_, &QPushButton::clicked, this, &PartProgramPanel::openRequested);
   connect(export_program_button_, &QPushButton::clicked, this, &PartProgramPanel::exportProgramRequested);
   connect(export_csv_button_, &QPushButton::clicked, this, &PartProgramPanel::exportCsvRequested);
+  connect(export_afc_button_, &QPushButton::clicked, this, &PartProgramPanel::exportAfcRequested);
+  connect(dialect_box_, &QComboBox::currentIndexChanged, this, [this] { emit dialectChanged(dialectChoice()); });
   connect(changed_only_box_, &QCheckBox::toggled, this, [this](bool on) { model_->setChangedOnly(on); });
   clear();
 }
@@ -369,6 +393,8 @@ void PartProgramPanel::clear() {
   warnings_label_->setText(tr("Warnings: 0"));
   export_program_button_->setEnabled(false);
   export_csv_button_->setEnabled(false);
+  export_afc_button_->setEnabled(false);
+  dialect_.clear();
   status_label_->clear();
   updateHeader();
 }
@@ -386,10 +412,26 @@ void PartProgramPanel::updateHeader() {
     header_label_->setText(tr("No program: open one to see the proposed feeds and speeds."));
     return;
   }
+  const QString file = dialect_.isEmpty() ? path_ : tr("%1 \u2014 %2").arg(path_, dialect_);
   header_label_->setText(tr("%1 \u2014 controller: %2 \u2014 %3 of %4 blocks changed")
-                             .arg(path_, controller_.isEmpty() ? tr("\u2013") : controller_)
+                             .arg(file, controller_.isEmpty() ? tr("\u2013") : controller_)
                              .arg(changed_count_)
                              .arg(model_->rows().size()));
+}
+
+QString PartProgramPanel::dialectChoice() const {
+  return dialect_box_->currentData().toString();
+}
+
+void PartProgramPanel::setDialectChoice(const QString& name) {
+  const int index = dialect_box_->findData(name);
+  if (index >= 0) dialect_box_->setCurrentIndex(index);
+}
+
+void PartProgramPanel::setDialect(const QString& description, bool afc) {
+  dialect_ = description;
+  export_afc_button_->setEnabled(has_program_ && afc);
+  updateHeader();
 }
 
 void PartProgramPanel::setStatus(const QString& text) {

@@ -2,7 +2,8 @@
 // Part-program override panel: the blocks of an opened NC program with the proposed feed F
 // and speed S beside the programmed ones, the reason of each change, the depth of cut and the predicted
 // cutting force per block; the parser warnings below; buttons to open a program and to export the
-// overridden program and the CSV (the main window shows the file dialogs and does the work).
+// overridden program, the CSV and (Heidenhain programs) the AFC table; the controller dialect to read
+// the program in (detected by default). The main window shows the file dialogs and does the work.
 // Model/view: a private table model serves the rows on demand, so a program of 100 000 blocks is set
 // in milliseconds. Read-only. Unchanged proposals show "="; changed cells are highlighted. Feeds, depth
 // and force are shown in the shop units of setUnits(), whatever the program's own unit (G20/G21).
@@ -15,6 +16,7 @@
 #include "display_units.h"
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
@@ -67,6 +69,15 @@ class PartProgramPanel : public QWidget {
   QPushButton* openButton() const { return open_button_; }
   QPushButton* exportProgramButton() const { return export_program_button_; }
   QPushButton* exportCsvButton() const { return export_csv_button_; }
+  QPushButton* exportAfcButton() const { return export_afc_button_; }
+  QComboBox* dialectBox() const { return dialect_box_; }
+  // The dialect chosen to read programs in: "iso", "heidenhain", "sinumerik", "linuxcnc", or empty to
+  // detect it.
+  QString dialectChoice() const;
+  void setDialectChoice(const QString& name);
+  // The dialect the shown program was read in, as the header says it ("Heidenhain Klartext, detected
+  // at line 1: BEGIN PGM"); afc: the AFC export applies (a Heidenhain program).
+  void setDialect(const QString& description, bool afc);
 
   // Additions.
   bool hasProgram() const { return has_program_; }
@@ -82,10 +93,12 @@ class PartProgramPanel : public QWidget {
   static QColor highlightColor();
 
  signals:
-  void openRequested();           // "Open program..." (the main window shows the file dialog)
-  void exportProgramRequested();  // "Export program..." (enabled only when a program is loaded)
-  void exportCsvRequested();      // "Export CSV..."
-  void lineActivated(int line);   // double click on a row or a warning
+  void openRequested();                      // "Open program..." (the main window shows the file dialog)
+  void exportProgramRequested();             // "Export program..." (enabled only when a program is loaded)
+  void exportCsvRequested();                 // "Export CSV..."
+  void exportAfcRequested();                 // "Export AFC table..." (Heidenhain programs)
+  void dialectChanged(const QString& name);  // the dialect choice changed (empty: detect)
+  void lineActivated(int line);              // double click on a row or a warning
 
  private:
   void updateHeader();
@@ -102,7 +115,9 @@ class PartProgramPanel : public QWidget {
   QPushButton* open_button_;
   QPushButton* export_program_button_;
   QPushButton* export_csv_button_;
-  QString path_, controller_, feed_unit_ = QStringLiteral("mm/min");
+  QPushButton* export_afc_button_;
+  QComboBox* dialect_box_;
+  QString path_, controller_, dialect_, feed_unit_ = QStringLiteral("mm/min");
   int changed_count_ = 0;
   bool has_program_ = false;
 };

@@ -149,14 +149,23 @@ void MachiningFeature::connectPanels() {
   connect(surface_panel_, &widgets::SurfaceFinishPanel::runRequested, this, &MachiningFeature::runSurfaceFinish);
   connect(surface_notice_, &widgets::NoticeStack::actionTriggered, this, &MachiningFeature::addSdnrpSection);
   connect(program_panel_, &widgets::PartProgramPanel::openRequested, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(window_, tr("Open part program"), QString(),
-                                                      tr("G-code (*.nc *.ngc *.tap *.gcode);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        window_, tr("Open part program"), QString(),
+        tr("Part programs (*.nc *.ngc *.tap *.gcode *.h *.H *.mpf *.MPF *.spf *.SPF);;All files (*)"));
     if (!path.isEmpty()) openPartProgram(path);
   });
   connect(program_panel_, &widgets::PartProgramPanel::exportProgramRequested, this, [this] {
     const QString path = QFileDialog::getSaveFileName(window_, tr("Export optimised program"), QString(),
-                                                      tr("G-code (*.nc);;All files (*)"));
+                                                      tr("Part programs (*.nc *.ngc *.h *.mpf);;All files (*)"));
     if (!path.isEmpty()) exportPartProgram(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::exportAfcRequested, this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(window_, tr("Export AFC table"), "AFC.TAB", tr("Heidenhain table (*.TAB *.tab)"));
+    if (!path.isEmpty()) exportAfcTable(path);
+  });
+  connect(program_panel_, &widgets::PartProgramPanel::dialectChanged, this, [this] {
+    if (!override_path_.isEmpty()) openPartProgram(override_path_);
   });
   connect(program_panel_, &widgets::PartProgramPanel::exportCsvRequested, this, [this] {
     const QString path =
@@ -241,21 +250,54 @@ void MachiningFeature::showSurfaceFinish(const SdnrpResult& v, const SdnrpResult
   emit surfaceFinishShown();
 }
 
+struct MachiningFeature::ProgramOverride {
+  app::OverrideOutcome outcome;
+  std::optional<app::AfcOutcome> afc;
+  QString afc_error;
+};
+
+namespace {
+
+std::optional<GcodeDialect> dialectOf(const QString& name) {
+  return name.isEmpty() ? std::nullopt : dialectFromName(name.toStdString());
+}
+
+QString dialectDescription(const DialectDetection& d, bool named) {
+  const QString title = QString::fromStdString(std::string(dialectTitle(d.dialect)));
+  if (named) return QObject::tr("%1 (chosen)").arg(title);
+  if (d.line == 0) return QObject::tr("%1 (no other dialect's syntax found)").arg(title);
+  return QObject::tr("%1, detected at line %2: %3").arg(title).arg(d.line).arg(QString::fromStdString(d.evidence));
+}
+
+}  // namespace
+
 void MachiningFeature::openPartProgram(const QString& path) {
   app::OverrideRequest request;
-  GcodeProgram program;
   try {
     request = app::overrideRequestFromProject(document_.project());
-    program = GcodeReader::readFile(path.toStdString());
   } catch (const std::exception& e) {
     emit errorRaised(tr("Part program"), e.what());
     return;
   }
   const quint64 generation = ++override_generation_;
+  const std::optional<GcodeDialect> dialect = dialectOf(program_panel_->dialectChoice());
+  const app::Project project = document_.project();
   program_panel_->setStatus(tr("Running the %1 controller along %2...").arg(request.controllerName(), path));
-  runEngineTask<app::OverrideOutcome>(
-      channel_, pool_, [request, program] { return app::runOverride(request, program); },
-      [this, generation, path](TaskResult<app::OverrideOutcome> r) {
+  runEngineTask<ProgramOverride>(
+      channel_, pool_,
+      [request, project, path, dialect] {
+        const GcodeProgram program = GcodeReader::readFile(path.toStdString(), dialect);
+        ProgramOverride out{app::runOverride(request, program), std::nullopt, {}};
+        if (program.dialect.dialect == GcodeDialect::Heidenhain) {
+          try {
+            out.afc = app::afcFromProject(project, program, std::nullopt);
+          } catch (const std::exception& e) {
+            out.afc_error = e.what();
+          }
+        }
+        return out;
+      },
+      [this, generation, path](TaskResult<ProgramOverride> r) {
         if (generation != override_generation_) return;
         if (!r.value) {
           program_panel_->setStatus(tr("Override failed: %1").arg(r.error));
@@ -266,8 +308,10 @@ void MachiningFeature::openPartProgram(const QString& path) {
       });
 }
 
-void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome outcome) {
-  override_ = std::make_shared<app::OverrideOutcome>(std::move(outcome));
+void MachiningFeature::showOverride(const QString& path, ProgramOverride result) {
+  override_ = std::make_shared<app::OverrideOutcome>(std::move(result.outcome));
+  afc_ = std::move(result.afc);
+  afc_error_ = result.afc_error;
   override_path_ = path;
   QVector<widgets::PartProgramWarningView> warnings;
   for (const GcodeWarning& w : override_->result.warnings)
@@ -276,14 +320,26 @@ void MachiningFeature::showOverride(const QString& path, app::OverrideOutcome ou
   const bool inch = !override_->result.run.motions.empty() && override_->result.run.motions.front().inch;
   program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
                              override_->controller);
+  const DialectDetection& dialect = override_->result.program.dialect;
+  program_panel_->setDialect(dialectDescription(dialect, !program_panel_->dialectChoice().isEmpty()),
+                             dialect.dialect == GcodeDialect::Heidenhain);
   double peak = 0.0;
   for (const FeedOverrideRow& f : override_->result.rows)
     if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);
-  program_panel_->setStatus(tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4")
-                                .arg(override_->result.program.blocks.size())
-                                .arg(override_->result.changed_blocks)
-                                .arg(override_->result.warnings.size())
-                                .arg(units_->shop().format(widgets::Quantity::Force, peak)));
+  QString status = tr("%1 blocks, %2 changed, %3 warning(s); largest predicted force %4")
+                       .arg(override_->result.program.blocks.size())
+                       .arg(override_->result.changed_blocks)
+                       .arg(override_->result.warnings.size())
+                       .arg(units_->shop().format(widgets::Quantity::Force, peak));
+  if (afc_)
+    status += tr("; AFC: reference power AFC-LOAD %1 kW for tool %2 (T%3), FMAX %4 %")
+                  .arg(afc_->teach_in.afc_load_W * 1e-3, 0, 'f', 3)
+                  .arg(afc_->tool)
+                  .arg(afc_->tool_number)
+                  .arg(afc_->teach_in.setting.fmax_percent);
+  else if (!afc_error_.isEmpty())
+    status += tr("; no AFC setting: %1").arg(afc_error_);
+  program_panel_->setStatus(status);
   emit partProgramShown();
 }
 
@@ -299,6 +355,25 @@ bool MachiningFeature::exportPartProgram(const QString& path) {
     return false;
   }
   emit statusMessage(tr("Optimised program written to %1").arg(path), 8000);
+  return true;
+}
+
+bool MachiningFeature::exportAfcTable(const QString& path) {
+  if (!afc_) {
+    emit errorRaised(tr("Export AFC table"),
+                     afc_error_.isEmpty() ? tr("Open a Heidenhain program first.") : afc_error_);
+    return false;
+  }
+  QString error;
+  if (!writeAtomically(path, QByteArray::fromStdString(afcTableText(afc_->teach_in.setting)), &error)) {
+    emit errorRaised(tr("Export AFC table"), tr("%1: %2").arg(path, error));
+    return false;
+  }
+  emit statusMessage(tr("AFC table written to %1; enter AFC %2 and AFC-LOAD %3 kW in the tool table for T%4")
+                         .arg(path, QString::fromStdString(afc_->teach_in.setting.name))
+                         .arg(afc_->teach_in.afc_load_W * 1e-3, 0, 'f', 3)
+                         .arg(afc_->tool_number),
+                     8000);
   return true;
 }
 

@@ -10,6 +10,7 @@
 #include "engine_channel.h"
 #include "feature_context.h"
 #include "sdnrp/sdnrp_simulator.h"
+#include "services/afc_request.h"
 #include "services/part_program_request.h"
 #include "window_feature.h"
 
@@ -33,9 +34,12 @@ class MachiningFeature : public WindowFeature {
   // SDNRP with the panel's Ra, disturbance, duration; with "Compare" also the same run without SDNRP
   // (SdnrpSettings::control = false), both in one engine task.
   void runSurfaceFinish();
-  void openPartProgram(const QString& path);       // override with the project's controller
+  // Reads the program (in the panel's dialect, or the detected one) and overrides it with the project's
+  // controller, both on the engine thread; a Heidenhain program also gets its AFC setting there.
+  void openPartProgram(const QString& path);
   bool exportPartProgram(const QString& path);     // the optimised program
   bool exportPartProgramCsv(const QString& path);  // the per-block feed-override table
+  bool exportAfcTable(const QString& path);        // Heidenhain: the AFC.TAB row of the tool
   widgets::SurfaceFinishPanel* surfacePanel() const { return surface_panel_; }
   widgets::NoticeStack* surfaceNotice() const { return surface_notice_; }
   widgets::PartProgramPanel* programPanel() const { return program_panel_; }
@@ -49,7 +53,8 @@ class MachiningFeature : public WindowFeature {
   void connectPanels();
   void showSurfaceFinish(const SdnrpResult& result, const SdnrpResult* baseline);
   void addSdnrpSection();
-  void showOverride(const QString& path, app::OverrideOutcome outcome);
+  struct ProgramOverride;
+  void showOverride(const QString& path, ProgramOverride outcome);
 
   QMainWindow* window_;
   const app::ProjectDocument& document_;
@@ -61,6 +66,8 @@ class MachiningFeature : public WindowFeature {
   widgets::PartProgramPanel* program_panel_;
   quint64 sdnrp_generation_ = 0, override_generation_ = 0;
   std::shared_ptr<const app::OverrideOutcome> override_;
+  std::optional<app::AfcOutcome> afc_;
+  QString afc_error_;  // why a Heidenhain program has no AFC setting (no operating_point, ...)
   QString override_path_;
 };
 

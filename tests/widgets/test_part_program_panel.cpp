@@ -3,6 +3,7 @@
 // their activation, the buttons and signals, and a 100 000-block program set in well under a second.
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QHeaderView>
@@ -112,6 +113,31 @@ class TestPartProgramPanel : public QObject {
     QCOMPARE(panel.feedUnit(), unit);
   }
 
+  // The dialect to read programs in: detect by default, one entry per dialect; the AFC export is
+  // offered for a shown Heidenhain program only; the header names the dialect read.
+  void dialectChoiceAndAfcButton() {
+    PartProgramPanel panel;
+    QCOMPARE(panel.dialectChoice(), QString());
+    QCOMPARE(panel.dialectBox()->count(), 5);
+    QSignalSpy changed(&panel, &PartProgramPanel::dialectChanged);
+    panel.setDialectChoice("sinumerik");
+    QCOMPARE(panel.dialectChoice(), QString("sinumerik"));
+    QCOMPARE(changed.size(), 1);
+    QCOMPARE(changed.at(0).at(0).toString(), QString("sinumerik"));
+    panel.setDialect("Heidenhain Klartext, detected at line 1: BEGIN PGM", true);
+    QVERIFY(!panel.exportAfcButton()->isEnabled());  // no program shown
+    loadSample(panel);
+    panel.setDialect("Heidenhain Klartext, detected at line 1: BEGIN PGM", true);
+    QVERIFY(panel.exportAfcButton()->isEnabled());
+    QVERIFY(panel.headerText().startsWith(programPath("part.nc") + " \u2014 Heidenhain Klartext, detected at line 1"));
+    QSignalSpy afc(&panel, &PartProgramPanel::exportAfcRequested);
+    QTest::mouseClick(panel.exportAfcButton(), Qt::LeftButton);
+    QCOMPARE(afc.size(), 1);
+    panel.setDialect("ISO / Fanuc (chosen)", false);
+    QVERIFY(!panel.exportAfcButton()->isEnabled());
+    panel.clear();
+    QVERIFY(!panel.exportAfcButton()->isEnabled());
+  }
   void rowsAndChangedCount() {
     PartProgramPanel panel;
     loadSample(panel);
