@@ -1,6 +1,7 @@
 #include "control_view.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
