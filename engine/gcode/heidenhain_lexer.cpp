@@ -247,7 +247,8 @@ class HeidenhainLexer {
     for (std::size_t i = from; i < b_.words.size(); ++i) {
       GcodeWord& w = b_.words[i];
       if (after_m) {
-        w.known = true;  // an M word's own parameters
+        w.known = true;  // an M word's own parameters; ranged, since the interpreter takes axes from them
+        checkWordRange(b_, w);
         continue;
       }
       w.known = knownMotionAddress(w.address);

@@ -122,6 +122,9 @@ class TestHeidenhainLexer : public QObject {
     QTest::newRow("feed past its range") << "7 L X+1 F2000000"
                                          << "line 1, column 9: F2000000 = 2e+06: must be in [0, 1e+06] per minute "
                                             "(feed)";
+    QTest::newRow("M word's parameter past its range") << "5 L X+1 M3 Y+2000000"
+                                                       << "line 1, column 12: Y+2000000 = 2e+06: must be in [-1e+06, "
+                                                          "1e+06] (coordinate)";
   }
   void refused() {
     QFETCH(QString, line);
