@@ -1,0 +1,1 @@
+5 L X+10 Y+5 R0 F AUTO M3
