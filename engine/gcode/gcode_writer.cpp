@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/invalid_input.h"
+#include "gcode/gcode_reader.h"
 
 namespace mx {
 
@@ -58,6 +59,14 @@ Change wordChange(const GcodeBlock& b, char letter, double value, int decimals, 
     const std::size_t keep = w->has_value ? w->value_at : 0;
     std::string text = w->has_value ? num : std::string(1, letter) + num;
     if (!w->has_value && b.text[at] >= 'a' && b.text[at] <= 'z') text[0] = static_cast<char>(text[0] - 'A' + 'a');
+    // The new number must not run into what follows: a digit or '.' would lengthen it, and on Sinumerik
+    // a letter would make a name of it ("S1.5e3=8" -> "S88731e3=8", an assignment).
+    const std::size_t after = at + w->length;
+    if (after < b.text.size()) {
+      const char c = b.text[after];
+      const bool letter_after = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+      if ((c >= '0' && c <= '9') || c == '.' || (d == GcodeDialect::Sinumerik && letter_after)) text += ' ';
+    }
     return {at + keep, w->length - keep, std::move(text), order};
   }
   const std::size_t at = letter == 'F' ? b.feed_insert_at : b.speed_insert_at;
@@ -65,7 +74,12 @@ Change wordChange(const GcodeBlock& b, char letter, double value, int decimals, 
     throw InvalidInput("gcode edit of line " + std::to_string(b.line) + ": a " + std::string(dialectTitle(d)) + " " +
                        (b.keyword.empty() ? std::string("block") : b.keyword + " block") + " takes no " + letter +
                        " word");
-  return {at, 0, std::string(at > 0 ? " " : "") + letter + num, order};
+  std::string text(at > 0 ? " " : "");
+  text += letter;
+  text += num;
+  // A word inserted before text that is not a blank or a comment's ';' must not run into it.
+  if (at < b.text.size() && b.text[at] != ' ' && b.text[at] != '\t' && b.text[at] != ';') text += ' ';
+  return {at, 0, std::move(text), order};
 }
 
 void appendComment(std::string& out, const GcodeBlock& b, const std::string& comment, GcodeDialect d) {
@@ -106,7 +120,15 @@ std::string GcodeWriter::applyEdit(const GcodeBlock& b, const GcodeBlockEdit& e,
     cursor = c.pos + c.len;
   }
   out.append(b.text, cursor, std::string::npos);
-  if (!e.comment.empty()) appendComment(out, b, e.comment, d);
+  if (!e.comment.empty()) {
+    // Our comment is cut so that the block stays within the reader's line limit.
+    const std::size_t room = kMaxGcodeLineLength > out.size() + 4 ? kMaxGcodeLineLength - out.size() - 4 : 0;
+    std::string comment = e.comment.substr(0, room);
+    while (comment.size() < e.comment.size() && !comment.empty() &&
+           (static_cast<unsigned char>(e.comment[comment.size()]) & 0xC0) == 0x80)
+      comment.pop_back();  // not inside a UTF-8 sequence
+    if (!comment.empty()) appendComment(out, b, comment, d);
+  }
   return out;
 }
 

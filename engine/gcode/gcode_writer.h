@@ -9,7 +9,7 @@
 //    axis of a TOOL CALL); a block of a dialect that takes no such word is refused.
 //  - comment: appended at the end of the line: " (text)" in ISO and LinuxCNC, '(' ')' in the text
 //    becoming '[' ']'; " ; text" in Heidenhain and Sinumerik, or " text" inside a comment that already
-//    runs to the end of the line.
+//    runs to the end of the line. It is cut where the block would pass kMaxGcodeLineLength.
 //  - header: the project, the controller and the date. ISO, LinuxCNC, Sinumerik: comment lines at the
 //    top (after a leading '%' tape marker line, and after Sinumerik's "%_N_" and ";$PATH=" lines) with
 //    the program's own line end. Heidenhain numbers its blocks, so no line is inserted: the header is a

@@ -171,7 +171,8 @@ class HeidenhainLexer {
   void joinAuto(GcodeWord& w) {
     std::size_t p = w.column - 1 + w.length;
     while (p < s_.size() && (s_[p] == ' ' || s_[p] == '\t')) ++p;
-    if (upperOf(p, std::min(s_.size(), p + 4)) == "AUTO" && (p + 4 == s_.size() || !tokenChar(s_[p + 4]))) {
+    if (upperOf(p, std::min(s_.size(), p + 4)) == "AUTO" &&
+        (p + 4 == s_.size() || isSpace(s_[p + 4]) || s_[p + 4] == ';')) {
       w.address = "FAUTO";
       w.length = p + 4 - (w.column - 1);
     }
@@ -247,8 +248,7 @@ class HeidenhainLexer {
     for (std::size_t i = from; i < b_.words.size(); ++i) {
       GcodeWord& w = b_.words[i];
       if (after_m) {
-        w.known = true;  // an M word's own parameters; ranged, since the interpreter takes axes from them
-        checkWordRange(b_, w);
+        w.known = false;  // an M word's own parameter (M103 F20): not an axis or feed of the block
         continue;
       }
       w.known = knownMotionAddress(w.address);

@@ -90,6 +90,7 @@ class IsoLexer {
   GcodeDialect d_;
   std::vector<GcodeWarning>& warnings_;
   std::size_t pos_ = 0;
+  bool flow_line_ = false;  // a LinuxCNC o-word line: no words of its own to edit or insert
 
   void warn(std::size_t at, std::size_t len, const std::string& message) {
     warnings_.push_back({b_.line, at + 1, std::string(s_.substr(at, len)), message});
@@ -124,19 +125,29 @@ class IsoLexer {
     return std::string_view::npos;
   }
   // A value after '=' or a parameter reference: a quoted string, or up to a blank, comment or line end
-  // outside brackets.
-  std::size_t valueEnd(std::size_t p) const {
+  // outside brackets. An empty value, an unclosed bracket or string cannot be split into words: the
+  // program is refused from `word` on.
+  std::size_t valueEnd(std::size_t word, std::size_t p) {
+    const std::size_t start = p;
     if (p < s_.size() && s_[p] == '"') {
       const std::size_t q = s_.find('"', p + 1);
-      return q == std::string_view::npos ? s_.size() : q + 1;
+      if (q == std::string_view::npos) refuse(word, s_.size() - word);
+      return q + 1;
     }
     int depth = 0;
     for (; p < s_.size(); ++p) {
       const char c = s_[p];
+      if (c == '"') {
+        const std::size_t q = s_.find('"', p + 1);
+        if (q == std::string_view::npos) refuse(word, s_.size() - word);
+        p = q;
+        continue;
+      }
       if (c == '[' || (c == '(' && d_ == GcodeDialect::Sinumerik)) ++depth;
       if ((c == ']' || (c == ')' && d_ == GcodeDialect::Sinumerik)) && depth > 0) --depth;
       if (depth == 0 && (isSpace(c) || c == ';' || (c == '(' && d_ != GcodeDialect::Sinumerik))) break;
     }
+    if (depth > 0 || p == start) refuse(word, std::max(p, start + 1) - word);
     return p;
   }
 
@@ -155,6 +166,7 @@ class IsoLexer {
       while (end > first && isSpace(s_[end - 1])) --end;
       warn(first, end - first, "o-word (subroutine or flow control): kept verbatim, not interpreted");
       endToken(end);
+      flow_line_ = true;
     }
   }
 
@@ -191,7 +203,7 @@ class IsoLexer {
     if (q < s_.size() && s_[q] == '=') {
       ++q;
       while (q < s_.size() && isSpace(s_[q])) ++q;
-      p = valueEnd(q);
+      p = valueEnd(pos_, q);
     }
     if (d_ != GcodeDialect::LinuxCnc) warn(pos_, p - pos_, "parameter (macro variable): kept verbatim, not evaluated");
     endToken(p);
@@ -200,8 +212,8 @@ class IsoLexer {
   void lexSystemVariable() {
     std::size_t p = pos_ + 1;
     while (p < s_.size() && isNameChar(s_[p])) ++p;
-    if (p < s_.size() && s_[p] == '[') {  // an indexed variable, "$P_UIFR[1]"
-      p = balanced(p, '[', ']');
+    if (p < s_.size() && (s_[p] == '[' || s_[p] == '(')) {  // "$P_UIFR[1]", "$P_UIFRANS(X,10)"
+      p = balanced(p, s_[p], s_[p] == '[' ? ']' : ')');
       if (p == std::string_view::npos) refuse(pos_, s_.size() - pos_);
     }
     std::size_t q = p;
@@ -209,7 +221,7 @@ class IsoLexer {
     if (q < s_.size() && s_[q] == '=') {
       ++q;
       while (q < s_.size() && isSpace(s_[q])) ++q;
-      p = valueEnd(q);
+      p = valueEnd(pos_, q);
     }
     warn(pos_, p - pos_, "system variable: kept verbatim, not evaluated");
     endToken(p);
@@ -224,7 +236,9 @@ class IsoLexer {
     const std::string name = upperName(pos_, p);
     std::size_t q = p;
     while (q < s_.size() && (s_[q] == ' ' || s_[q] == '\t')) ++q;
-    if (q < s_.size() && s_[q] == '(') return lexCall(name, q), true;
+    // A call's name starts with two letters ("CYCLE81", "MSG"): "S1500 (note)" is a word and a comment.
+    const bool call_name = name.size() >= 2 && isLetter(name[1]);
+    if (q < s_.size() && s_[q] == '(' && call_name) return lexCall(name, q), true;
     if (q < s_.size() && s_[q] == '=' && (q + 1 >= s_.size() || s_[q + 1] != '=')) return lexAssignment(name, q), true;
     return false;
   }
@@ -255,7 +269,7 @@ class IsoLexer {
   void lexAssignment(const std::string& name, std::size_t equals) {
     std::size_t v = equals + 1;
     while (v < s_.size() && (s_[v] == ' ' || s_[v] == '\t')) ++v;
-    const std::size_t end = valueEnd(v);
+    const std::size_t end = valueEnd(pos_, v);
     GcodeWord w;
     w.letter = name[0];
     w.address = name;
@@ -315,7 +329,7 @@ class IsoLexer {
       end = balanced(value_start, '[', ']');
       if (end == std::string_view::npos) refuse(pos_, s_.size() - pos_);
     } else {
-      end = valueEnd(value_start);
+      end = valueEnd(pos_, value_start);
     }
     GcodeWord w;
     w.letter = upper(s_[pos_]);
@@ -344,8 +358,9 @@ class IsoLexer {
   }
 
   void markEditableWords() {
-    // Sinumerik's G4 F.. / S.. are a dwell in seconds / revolutions: no feed or speed to edit or add.
-    if (d_ == GcodeDialect::Sinumerik && b_.hasG(4)) {
+    // Sinumerik's G4 F.. / S.. are a dwell in seconds / revolutions, and an o-word line is flow control:
+    // no feed or speed to edit or add.
+    if ((d_ == GcodeDialect::Sinumerik && b_.hasG(4)) || flow_line_) {
       b_.feed_insert_at = b_.speed_insert_at = std::string::npos;
       return;
     }

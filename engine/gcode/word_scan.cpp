@@ -67,7 +67,8 @@ void checkWordRange(const GcodeBlock& b, const GcodeWord& w) {
   if (!w.has_value) return;
   double lo = 0.0, hi = 0.0;
   const char* what = "";
-  switch (w.letter) {
+  // Sinumerik's arc radius CR= is a length like R.
+  switch (w.address == "CR" ? 'R' : w.letter) {
     case 'S':
       hi = GcodeWordLimits::kMaxSpindleRpm, what = " rpm (spindle speed)";
       break;

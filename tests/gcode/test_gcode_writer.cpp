@@ -93,9 +93,19 @@ class TestGcodeWriter : public QObject {
     QTest::newRow("Heidenhain comment joins the block's own") << "heidenhain"
                                                               << "7 L Z-2 F150 ; plunge" << keep << keep << "MX: kept"
                                                               << "7 L Z-2 F150 ; plunge MX: kept";
+    QTest::newRow("Heidenhain S kept apart from a quoted tool name")
+        << "heidenhain"
+        << "1 TOOL CALL \"MILL_D10\"F2000" << keep << 2400.0 << ""
+        << "1 TOOL CALL \"MILL_D10\" S2400 F2000";
+    QTest::newRow("Heidenhain F kept apart before M") << "heidenhain"
+                                                      << "2 L \"X\"M3" << 450.0 << keep << ""
+                                                      << "2 L \"X\" F450 M3";
     QTest::newRow("Sinumerik spindle address") << "sinumerik"
                                                << "N20 G0 Z5 S1=1500 M3" << keep << 2400.0 << ""
                                                << "N20 G0 Z5 S1=2400 M3";
+    QTest::newRow("Sinumerik S kept apart from a following name") << "sinumerik"
+                                                                  << "N20 S1.5e308=800" << keep << 2400.0 << ""
+                                                                  << "N20 S2400 e308=800";
     QTest::newRow("Sinumerik comment") << "sinumerik"
                                        << "N50 G1 X40 F600" << 450.0 << keep << "MX: a (b)"
                                        << "N50 G1 X40 F450 ; MX: a (b)";
@@ -152,6 +162,15 @@ class TestGcodeWriter : public QObject {
              std::string("0 BEGIN PGM POCKET MM ; MillExpert optimised part program, project: demo, "
                          "controller: model-based, date: 2024-05-01"));
     for (std::size_t i = 1; i < in.blocks.size(); ++i) QCOMPARE(out.blocks[i].text, in.blocks[i].text);
+  }
+  // A comment that would take a block past the reader's 4096 bytes is cut: the program reads again.
+  void commentCutAtTheLineLimit() {
+    const std::string line = "0 BEGIN PGM " + std::string(4070, 'A') + " MM";
+    const GcodeHeader h{"a project with a long name", "model-based", "2024-05-01"};
+    const GcodeProgram p = GcodeReader::parse(line + "\n", GcodeDialect::Heidenhain);
+    const std::string out = GcodeWriter::write(p, {}, &h);
+    QVERIFY(out.size() > 4080 && out.size() <= 4096 + 1);
+    QCOMPARE(GcodeReader::parse(out, GcodeDialect::Heidenhain).blocks.size(), std::size_t(1));
   }
   void replaceFeed() {
     QCOMPARE(edited("N50 G1 X40. F600", feedEdit(450)), std::string("N50 G1 X40. F450"));

@@ -81,6 +81,13 @@ class TestHeidenhainInterpreter : public QObject {
     QVERIFY(std::abs(run.motions[1].speed_rev_per_s - 2000.0 / 60.0) < 1e-12);
     QVERIFY(run.motions[0].speed_word && !run.motions[1].speed_word);
   }
+  // The numbers after an M word are its own ("M103 F20"): never an axis or a feed of the block.
+  void mWordParametersAreNotAxes() {
+    const GcodeRun run = runOf("L X+0 Y+0 F100\nL M3 Y+5\nL X+10 M103 F20\n");
+    QCOMPARE(run.motions[1].kind, MotionKind::None);
+    QCOMPARE(run.motions[1].end_m[1], 0.0);
+    QVERIFY(std::abs(run.motions[2].feed_m_per_s - 100e-3 / 60.0) < 1e-15);
+  }
   void inchProgram() {
     const GcodeRun run = runOf("BEGIN PGM P INCH\nL X+0 Y+0 F10\nL X+2\nEND PGM P INCH\n");
     QVERIFY(run.motions[2].inch);

@@ -140,6 +140,16 @@ class TestIsoLexer : public QObject {
     const GcodeProgram p = read(line.toStdString() + "\n", *dialectFromName(dialect.toStdString()));
     QVERIFY2(p.warnings.empty(), p.warnings.empty() ? "" : p.warnings[0].message.c_str());
   }
+  // A word before a parenthesis stays a word on Sinumerik ("S78591(note)": S78591 and a comment), and a
+  // LinuxCNC o-word line takes no inserted F or S.
+  void wordsBesideConstructs() {
+    const GcodeProgram sin = read("G1 X1 F214821.2S78591(note)\n", GcodeDialect::Sinumerik);
+    QCOMPARE(sin.blocks[0].speedWord()->value, 78591.0);
+    QCOMPARE(sin.blocks[0].comments.size(), std::size_t(1));
+    const GcodeProgram o = read("o100 sub\n", GcodeDialect::LinuxCnc);
+    QCOMPARE(o.blocks[0].feed_insert_at, std::string::npos);
+    QCOMPARE(o.blocks[0].speed_insert_at, std::string::npos);
+  }
   void refused_data() {
     QTest::addColumn<QString>("dialect");
     QTest::addColumn<QString>("line");
@@ -156,6 +166,27 @@ class TestIsoLexer : public QObject {
                                                 << "G1 X[1+2 F100"
                                                 << "line 1, column 4: X[1+2 F100: cannot be split into LinuxCNC words "
                                                    "(a letter with a number, or a comment)";
+    QTest::newRow("LinuxCNC: empty assignment") << "linuxcnc"
+                                                << "#<depth> ="
+                                                << "line 1, column 1: #<depth> =: cannot be split into LinuxCNC words "
+                                                   "(a letter with a number, or a comment)";
+    QTest::newRow("LinuxCNC: unclosed bracket value") << "linuxcnc"
+                                                      << "#1 = [#1"
+                                                      << "line 1, column 1: #1 = [#1: cannot be split into LinuxCNC "
+                                                         "words (a letter with a number, or a comment)";
+    QTest::newRow("Sinumerik: empty assignment") << "sinumerik"
+                                                 << "N10 R1="
+                                                 << "line 1, column 5: R1=: cannot be split into Siemens Sinumerik "
+                                                    "words (a letter with a number, or a comment)";
+    QTest::newRow("Sinumerik: unclosed call in a value")
+        << "sinumerik"
+        << "$P_UIFR[1]=CTRANS(X,2.5"
+        << "line 1, column 1: $P_UIFR[1]=CTRANS(X,2.5: cannot be split into Siemens Sinumerik words (a letter "
+           "with a number, or a comment)";
+    QTest::newRow("Sinumerik: arc radius past its range")
+        << "sinumerik"
+        << "G2 X60 Y10 CR=2000000"
+        << "line 1, column 12: CR=2000000 = 2e+06: must be in [-1e+06, 1e+06] (coordinate)";
     QTest::newRow("LinuxCNC: bare hash") << "linuxcnc"
                                          << "G1 # X1"
                                          << "line 1, column 4: #: cannot be split into LinuxCNC words (a letter with "
