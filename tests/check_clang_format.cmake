@@ -32,6 +32,8 @@ if(NOT _sources)
   file(GLOB_RECURSE _sources ${SCAN_DIR}/*.cpp ${SCAN_DIR}/*.h)
   list(FILTER _sources EXCLUDE REGEX "^${SCAN_DIR}/(.*/)?(build|\\.git)/")
 endif()
+# Heidenhain part programs are .h files too: the examples, test data and fuzz corpora are not C++.
+list(FILTER _sources EXCLUDE REGEX "^${SCAN_DIR}/(projects|tests/data|tests/fuzz/corpus)/")
 if(EXCLUDE_DIR)
   list(FILTER _sources EXCLUDE REGEX "^${EXCLUDE_DIR}/")
 endif()
