@@ -151,6 +151,16 @@ class IsoLexer {
     return p;
   }
 
+  // After a name ending at p: the end of its " = value", or p when no '=' follows.
+  std::size_t assignedValueEnd(std::size_t p) {
+    std::size_t q = p;
+    while (q < s_.size() && isSpace(s_[q])) ++q;
+    if (q >= s_.size() || s_[q] != '=') return p;
+    ++q;
+    while (q < s_.size() && isSpace(s_[q])) ++q;
+    return valueEnd(pos_, q);
+  }
+
   // Block delete '/', a tape marker '%' (Sinumerik: its "%_N_NAME_MPF" header) and, on LinuxCNC, an
   // o-word line.
   void lexLineStart() {
@@ -198,13 +208,7 @@ class IsoLexer {
       while (p < s_.size() && isDigit(s_[p])) ++p;
       if (p == pos_ + 1) refuse(pos_, std::max(skipToken(pos_), pos_ + 1) - pos_);
     }
-    std::size_t q = p;
-    while (q < s_.size() && isSpace(s_[q])) ++q;
-    if (q < s_.size() && s_[q] == '=') {
-      ++q;
-      while (q < s_.size() && isSpace(s_[q])) ++q;
-      p = valueEnd(pos_, q);
-    }
+    p = assignedValueEnd(p);
     if (d_ != GcodeDialect::LinuxCnc) warn(pos_, p - pos_, "parameter (macro variable): kept verbatim, not evaluated");
     endToken(p);
   }
@@ -216,13 +220,7 @@ class IsoLexer {
       p = balanced(p, s_[p], s_[p] == '[' ? ']' : ')');
       if (p == std::string_view::npos) refuse(pos_, s_.size() - pos_);
     }
-    std::size_t q = p;
-    while (q < s_.size() && isSpace(s_[q])) ++q;
-    if (q < s_.size() && s_[q] == '=') {
-      ++q;
-      while (q < s_.size() && isSpace(s_[q])) ++q;
-      p = valueEnd(pos_, q);
-    }
+    p = assignedValueEnd(p);
     warn(pos_, p - pos_, "system variable: kept verbatim, not evaluated");
     endToken(p);
   }

@@ -9,19 +9,18 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
+#include "support/text_lines.h"
 #include "test_registry.h"
 
 namespace {
 const QString kSdnrp = QStringLiteral(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj");
-QString sample(const char* name) {
-  return QStringLiteral(MX_TEST_DATA_DIR "/gcode/") + name;
+// A test program, or an example of projects/ ("programs/...").
+QString sample(const QString& name) {
+  return name.startsWith("programs/") ? QStringLiteral(MX_PROJECTS_DIR "/") + name
+                                      : QStringLiteral(MX_TEST_DATA_DIR "/gcode/") + name;
 }
 
-QStringList lines(const QString& path) {
-  QFile f(path);
-  f.open(QIODevice::ReadOnly);
-  return QString::fromUtf8(f.readAll()).split('\n');
-}
+using mx::test::fileLines;
 
 // The line without our comment and without F / S numbers: what must not change.
 QString stripped(QString line) {
@@ -46,9 +45,9 @@ class TestCommandOverride : public QObject {
     QTest::addColumn<QString>("dialect");
     QTest::addColumn<int>("header_lines");
     QTest::newRow("ISO") << sample("pocket_mm.nc") << "iso" << 4;
-    QTest::newRow("Heidenhain") << sample("heidenhain_pocket.h") << "heidenhain" << 0;
-    QTest::newRow("Sinumerik") << sample("sinumerik_pocket.mpf") << "sinumerik" << 4;
-    QTest::newRow("LinuxCNC") << sample("linuxcnc_pocket.ngc") << "linuxcnc" << 4;
+    QTest::newRow("Heidenhain") << sample("programs/pocket_mm.h") << "heidenhain" << 0;
+    QTest::newRow("Sinumerik") << sample("programs/pocket_mm.mpf") << "sinumerik" << 4;
+    QTest::newRow("LinuxCNC") << sample("programs/pocket_mm.ngc") << "linuxcnc" << 4;
   }
   void dialects() {
     QFETCH(QString, program);
@@ -61,7 +60,7 @@ class TestCommandOverride : public QObject {
     QCOMPARE(r.json["dialect"].toString(), dialect);
     QCOMPARE(r.json["dialect_source"].toString(), dialect == "iso" ? QString("default") : QString("detected"));
     QCOMPARE(r.json["changed_blocks"].toInt(), 2);
-    const QStringList in = lines(program), res = lines(out);
+    const QStringList in = fileLines(program), res = fileLines(out);
     QCOMPARE(res.size(), in.size() + header_lines);
     int k = 0;
     for (const QString& line : res) {
@@ -80,7 +79,7 @@ class TestCommandOverride : public QObject {
         mx::test::runCli({"override", program, kSdnrp, "--out", named, "--dialect", dialect});
     QCOMPARE(again.code, 0);
     QCOMPARE(again.json["dialect_source"].toString(), QString("named"));
-    QCOMPARE(lines(named).size(), res.size());
+    QCOMPARE(fileLines(named).size(), res.size());
   }
   void refused_data() {
     QTest::addColumn<QByteArray>("program");
@@ -125,7 +124,7 @@ class TestCommandOverride : public QObject {
     QTemporaryDir dir;
     const QString afc = dir.filePath("AFC.TAB"), tool = dir.filePath("TOOL.TAB");
     const mx::test::CliRun r =
-        mx::test::runCli({"override", sample("heidenhain_pocket.h"), kSdnrp, "--out", dir.filePath("out.h"), "--afc",
+        mx::test::runCli({"override", sample("programs/pocket_mm.h"), kSdnrp, "--out", dir.filePath("out.h"), "--afc",
                           afc, "--afc-tool", tool, "--afc-overload", "F"});
     QCOMPARE(r.code, 0);
     const QJsonObject a = r.json["afc"].toObject();
@@ -136,14 +135,14 @@ class TestCommandOverride : public QObject {
     QCOMPARE(a["fmax_limited_by"].toString(), QString("chip load"));
     QCOMPARE(a["OVLD"].toString(), QString("F"));
     QCOMPARE(a["tool_number"].toInt(), 1);  // TOOL CALL 1
-    const QStringList table = lines(afc);
+    const QStringList table = fileLines(afc);
     QCOMPARE(table.value(0), QString("BEGIN AFC .TAB MM"));
     QCOMPARE(table.value(1).split(' ', Qt::SkipEmptyParts),
              QStringList({"NR", "AFC", "FMIN", "FMAX", "FIDL", "FENT", "OVLD", "POUT", "SENS", "PLC"}));
     QCOMPARE(table.value(2).split(' ', Qt::SkipEmptyParts),
              QStringList({"0", "MX_R21616B", "50", "145", "100", "100", "F", "8", "100", "0"}));
     QCOMPARE(table.value(3), QString("[END]"));
-    const QStringList tools = lines(tool);
+    const QStringList tools = fileLines(tool);
     QCOMPARE(tools.value(2).split(' ', Qt::SkipEmptyParts),
              QStringList({"1", "R216-16B20-040", "MX_R21616B", QString::number(a["afc_load_kW"].toDouble(), 'f', 3)}));
   }

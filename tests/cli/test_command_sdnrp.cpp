@@ -15,6 +15,7 @@
 #include "support/cli_runner.h"
 #include "support/hostile_files.h"
 #include "support/json_mutation.h"
+#include "support/text_lines.h"
 #include "test_registry.h"
 
 namespace {
@@ -23,11 +24,7 @@ const QString kAdaptive = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-co
 const QString kPocket = QStringLiteral(MX_TEST_DATA_DIR "/gcode/pocket_mm.nc");
 const QString kInch = QStringLiteral(MX_TEST_DATA_DIR "/gcode/inch.nc");
 
-QStringList lines(const QString& path) {
-  QFile f(path);
-  f.open(QIODevice::ReadOnly);
-  return QString::fromUtf8(f.readAll()).split('\n');
-}
+using mx::test::fileLines;
 
 // A block with its F/S words and "(MX: ...)" comment removed: what must stay identical.
 QString stripped(QString line) {
@@ -70,7 +67,7 @@ class TestCliSdnrp : public QObject {
     const mx::test::CliRun r =
         mx::test::runCli({"sdnrp", kSdnrp, "--ra", "0.81", "--seconds", "2", "--csv", dir.filePath("s.csv")});
     QCOMPARE(r.code, 0);
-    const QStringList rows = lines(dir.filePath("s.csv"));
+    const QStringList rows = fileLines(dir.filePath("s.csv"));
     QVERIFY(rows[0].startsWith("t_s,Ra_um,Ra_dynamic_um,F_N,F_dynamic_N,feed_mm_min,speed_rpm"));
     QCOMPARE_GE(rows.size(), 200);  // every 10 ms over 2 s
     const mx::test::CliRun bad = mx::test::runCli({"sdnrp", kSdnrp, "--ra", "3"});
@@ -141,7 +138,7 @@ class TestCliSdnrp : public QObject {
       QVERIFY2(r.json.contains(key), key);
     QVERIFY(r.json["changed_blocks"].toInt() >= 1);
     QCOMPARE(r.json.contains("closed_loop"), project == kAdaptive);
-    const QStringList in = lines(program), res = lines(out);
+    const QStringList in = fileLines(program), res = fileLines(out);
     // Header: four comment lines after a leading '%' line.
     const int header = 4;
     QVERIFY(res.join('\n').contains("(MillExpert optimised part program)"));
@@ -152,7 +149,8 @@ class TestCliSdnrp : public QObject {
       const QString& b = res[i < first ? i : i + header];
       QCOMPARE(stripped(b), stripped(a));
     }
-    QCOMPARE(lines(csv).value(0), QString("block,line,original_F_mm_min,new_F_mm_min,S_rpm,reason,predicted_force_N"));
+    QCOMPARE(fileLines(csv).value(0),
+             QString("block,line,original_F_mm_min,new_F_mm_min,S_rpm,reason,predicted_force_N"));
   }
   void overrideErrors_data() {
     QTest::addColumn<QStringList>("args");

@@ -65,11 +65,11 @@ class TestGcodeDialect : public QObject {
     QTest::addColumn<QString>("dialect");
     QTest::newRow("ISO") << "pocket_mm.nc"
                          << "iso";
-    QTest::newRow("Heidenhain") << "heidenhain_pocket.h"
+    QTest::newRow("Heidenhain") << "programs/pocket_mm.h"
                                 << "heidenhain";
-    QTest::newRow("Sinumerik") << "sinumerik_pocket.mpf"
+    QTest::newRow("Sinumerik") << "programs/pocket_mm.mpf"
                                << "sinumerik";
-    QTest::newRow("LinuxCNC") << "linuxcnc_pocket.ngc"
+    QTest::newRow("LinuxCNC") << "programs/pocket_mm.ngc"
                               << "linuxcnc";
   }
   void samples() {

@@ -144,7 +144,7 @@ class TestGcodeWriter : public QObject {
   }
   // Sinumerik reads its "%_N_" and ";$PATH" lines first: the header follows them, as ';' comments.
   void sinumerikHeader() {
-    const std::string text = gcodeSample("sinumerik_pocket.mpf");
+    const std::string text = gcodeSample("programs/pocket_mm.mpf");
     const GcodeHeader h{"demo", "model-based", "2024-05-01"};
     const std::string out = GcodeWriter::write(GcodeReader::parse(text), {}, &h);
     const std::size_t after_path = text.find('\n', text.find(";$PATH")) + 1;
@@ -153,7 +153,7 @@ class TestGcodeWriter : public QObject {
   }
   // Heidenhain numbers its blocks: the header rides on BEGIN PGM, and no line is added.
   void heidenhainHeader() {
-    const std::string text = gcodeSample("heidenhain_pocket.h");
+    const std::string text = gcodeSample("programs/pocket_mm.h");
     const GcodeHeader h{"demo", "model-based", "2024-05-01"};
     const GcodeProgram in = GcodeReader::parse(text);
     const GcodeProgram out = GcodeReader::parse(GcodeWriter::write(in, {}, &h));

@@ -30,7 +30,7 @@ class TestHeidenhainInterpreter : public QObject {
   // CR with R-) give the same feed moves.
   void samePocketAsIso() {
     const GcodeRun iso = GcodeInterpreter().run(GcodeReader::parse(test::gcodeSample("pocket_mm.nc")));
-    const GcodeRun klartext = GcodeInterpreter().run(GcodeReader::parse(test::gcodeSample("heidenhain_pocket.h")));
+    const GcodeRun klartext = GcodeInterpreter().run(GcodeReader::parse(test::gcodeSample("programs/pocket_mm.h")));
     QVERIFY(klartext.warnings.empty());
     const auto a = feedMoves(iso), b = feedMoves(klartext);
     QCOMPARE(b.size(), a.size());

@@ -21,7 +21,7 @@ class TestHeidenhainLexer : public QObject {
   Q_OBJECT
  private slots:
   void sampleReadsWithoutWarnings() {
-    const std::string text = test::gcodeSample("heidenhain_pocket.h");
+    const std::string text = test::gcodeSample("programs/pocket_mm.h");
     const GcodeProgram p = GcodeReader::parse(text);
     QCOMPARE(p.dialect.dialect, GcodeDialect::Heidenhain);
     QVERIFY2(p.warnings.empty(), p.warnings.empty() ? "" : p.warnings[0].message.c_str());

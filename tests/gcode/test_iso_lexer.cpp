@@ -24,8 +24,8 @@ class TestIsoLexer : public QObject {
   void samplesRead_data() {
     QTest::addColumn<QString>("file");
     QTest::addColumn<int>("warnings");
-    QTest::newRow("Sinumerik") << "sinumerik_pocket.mpf" << 0;
-    QTest::newRow("LinuxCNC") << "linuxcnc_pocket.ngc" << 0;
+    QTest::newRow("Sinumerik") << "programs/pocket_mm.mpf" << 0;
+    QTest::newRow("LinuxCNC") << "programs/pocket_mm.ngc" << 0;
   }
   void samplesRead() {
     QFETCH(QString, file);

@@ -64,7 +64,7 @@ class TestMachiningFeature : public QObject {
     auto* machining = test::windowPart<gui::MachiningFeature>(window, "machiningFeature");
     widgets::PartProgramPanel* panel = machining->programPanel();
     QSignalSpy shown(machining, &gui::MachiningFeature::partProgramShown);
-    machining->openPartProgram(MX_TEST_DATA_DIR "/gcode/heidenhain_pocket.h");
+    machining->openPartProgram(MX_PROJECTS_DIR "/programs/pocket_mm.h");
     QVERIFY(shown.wait(20000));
     QVERIFY2(panel->headerText().contains("Heidenhain Klartext, detected at line 1: BEGIN PGM"),
              qPrintable(panel->headerText()));

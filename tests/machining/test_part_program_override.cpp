@@ -303,9 +303,9 @@ class TestPartProgramOverride : public QObject {
   void dialectRoundTrip_data() {
     QTest::addColumn<QString>("file");
     QTest::addColumn<int>("header_lines");
-    QTest::newRow("Heidenhain") << "heidenhain_pocket.h" << 0;
-    QTest::newRow("Sinumerik") << "sinumerik_pocket.mpf" << 4;
-    QTest::newRow("LinuxCNC") << "linuxcnc_pocket.ngc" << 4;
+    QTest::newRow("Heidenhain") << "programs/pocket_mm.h" << 0;
+    QTest::newRow("Sinumerik") << "programs/pocket_mm.mpf" << 4;
+    QTest::newRow("LinuxCNC") << "programs/pocket_mm.ngc" << 4;
   }
   void dialectRoundTrip() {
     QFETCH(QString, file);
@@ -338,7 +338,7 @@ class TestPartProgramOverride : public QObject {
   void heidenhainSpeedGoesToTheToolCall() {
     PartProgramOverrideSettings s;
     s.speed_rev_per_s = 2134.0 / 60.0;
-    const auto r = PartProgramOverrider(identity, s).run(std::string_view(gcodeSample("heidenhain_pocket.h")));
+    const auto r = PartProgramOverrider(identity, s).run(std::string_view(gcodeSample("programs/pocket_mm.h")));
     QCOMPARE(r.edits[4].speed_rpm, 2134.0);  // 4 TOOL CALL 1 Z S1500 F600
     for (std::size_t i = 0; i < r.edits.size(); ++i)
       if (i != 4) QVERIFY(std::isnan(r.edits[i].speed_rpm));
@@ -353,7 +353,7 @@ class TestPartProgramOverride : public QObject {
   // LinuxCNC's M52 P1 scales every F by the adaptive-feed input: the operator is told once.
   void linuxCncAdaptiveFeedInputWarned() {
     const auto r = PartProgramOverrider(modelBasedFeedController(landers(400.0)), PartProgramOverrideSettings{})
-                       .run(std::string_view(gcodeSample("linuxcnc_pocket.ngc")));
+                       .run(std::string_view(gcodeSample("programs/pocket_mm.ngc")));
     int told = 0;
     for (const GcodeWarning& w : r.warnings)
       if (w.message.find("M52 P1 (line 7) is in effect") != std::string::npos) ++told;

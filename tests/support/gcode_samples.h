@@ -1,5 +1,6 @@
 #pragma once
-// Test helper: the sample part programs of tests/data/gcode, read byte for byte.
+// Test helper: the sample part programs of tests/data/gcode, and the examples of projects/programs
+// ("programs/..."), read byte for byte.
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -10,12 +11,15 @@ namespace mx::test {
 inline constexpr const char* kGcodeSamples[] = {"pocket_mm.nc", "crlf.nc",      "inch.nc",          "unknown_words.nc",
                                                 "missing_f.nc", "truncated.nc", "utf8_comments.nc", "empty.nc"};
 
-// The same pocket in every dialect (pocket_mm.nc is the ISO one).
-inline constexpr const char* kDialectSamples[] = {"pocket_mm.nc", "heidenhain_pocket.h", "sinumerik_pocket.mpf",
-                                                  "linuxcnc_pocket.ngc"};
+// The same pocket in every dialect (pocket_mm.nc is the ISO one), the examples shipped in projects/.
+inline constexpr const char* kDialectSamples[] = {"pocket_mm.nc", "programs/pocket_mm.h", "programs/pocket_mm.mpf",
+                                                  "programs/pocket_mm.ngc"};
 
 inline std::string gcodeSample(const std::string& name) {
-  std::ifstream in(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name, std::ios::binary);
+  const bool example = name.rfind("programs/", 0) == 0;
+  std::ifstream in(
+      example ? std::string(MX_PROJECTS_DIR) + "/" + name : std::string(MX_TEST_DATA_DIR) + "/gcode/" + name,
+      std::ios::binary);
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
