@@ -321,8 +321,11 @@ void MachiningFeature::showOverride(const QString& path, ProgramOverride result)
   program_panel_->setProgram(path, partProgramRows(override_->result), warnings, inch ? "in/min" : "mm/min",
                              override_->controller);
   const DialectDetection& dialect = override_->result.program.dialect;
-  program_panel_->setDialect(dialectDescription(dialect, !program_panel_->dialectChoice().isEmpty()),
-                             dialect.dialect == GcodeDialect::Heidenhain);
+  QString description = dialectDescription(dialect, !program_panel_->dialectChoice().isEmpty());
+  if (afc_)
+    description +=
+        tr(" \u2014 AFC-LOAD %1 kW for T%2").arg(afc_->teach_in.afc_load_W * 1e-3, 0, 'f', 3).arg(afc_->tool_number);
+  program_panel_->setDialect(description, dialect.dialect == GcodeDialect::Heidenhain);
   double peak = 0.0;
   for (const FeedOverrideRow& f : override_->result.rows)
     if (std::isfinite(f.predicted_force_N)) peak = std::max(peak, f.predicted_force_N);

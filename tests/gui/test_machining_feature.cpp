@@ -66,7 +66,8 @@ class TestMachiningFeature : public QObject {
     QSignalSpy shown(machining, &gui::MachiningFeature::partProgramShown);
     machining->openPartProgram(MX_PROJECTS_DIR "/programs/pocket_mm.h");
     QVERIFY(shown.wait(20000));
-    QVERIFY2(panel->headerText().contains("Heidenhain Klartext, detected at line 1: BEGIN PGM"),
+    QVERIFY2(panel->headerText().contains("Heidenhain Klartext, detected at line 1: BEGIN PGM \u2014 AFC-LOAD 0.115 kW "
+                                          "for T1"),
              qPrintable(panel->headerText()));
     QCOMPARE(panel->changedCount(), 2);
     QVERIFY(panel->exportAfcButton()->isEnabled());
