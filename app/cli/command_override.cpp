@@ -58,9 +58,11 @@ QJsonObject afcJson(const AfcOutcome& afc, const QString& table, const QString& 
 
 int runOverrideCommand(const QStringList& arguments) {
   QCommandLineParser parser;
-  parser.setApplicationDescription("Optimise the feeds of a G-code part program with a force controller.");
+  parser.setApplicationDescription(
+      "Optimise the feeds of a part program (ISO/Fanuc, Heidenhain Klartext, Siemens Sinumerik or LinuxCNC) with a "
+      "force controller; the program is written back in its own dialect.");
   parser.addHelpOption();
-  parser.addPositionalArgument("PROGRAM", "The G-code part program (.nc, at most 16 MB).");
+  parser.addPositionalArgument("PROGRAM", "The part program (.nc, .h, .mpf, .ngc, ...; at most 16 MB).");
   parser.addPositionalArgument("PROJECT", "The .mxproj project file.");
   parser.addOptions({
       {"out", "Write the optimised program to FILE (required).", "FILE"},
