@@ -3,10 +3,11 @@
 set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
-  qt6-base-dev qt6-base-dev-tools libqt6sql6-sqlite qt6-svg-dev
+  qt6-base-dev qt6-base-dev-tools libqt6sql6-sqlite libqt6sql6-psql postgresql qt6-svg-dev
   libqcustomplot-dev libeigen3-dev libsundials-dev libfftw3-dev
   libbenchmark-dev xvfb xauth x11-apps xdotool fonts-dejavu-core poppler-utils
   clang-format-14 clang-tidy-14 clang-14 libclang-rt-14-dev libzip-dev git help2man shared-mime-info desktop-file-utils
+  slurm-wlm munge
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

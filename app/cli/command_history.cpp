@@ -45,7 +45,7 @@ LearningRecord recordFromJson(const QString& text, const Project& project) {
   const MachineSpec& machine = project.requireMachine();
   r.tool = {tool->id, tool->diameter_mm, tool->teeth};
   r.material = project.material->name;
-  r.machine = {machine.spindle_power_W, machine.max_spindle_rpm};
+  r.machine = {machine.name, machine.spindle_power_W, machine.max_spindle_rpm};
   if (!o.value("weights").isArray()) throw CliError("--add-json: weights must be an array", kExitBadInput);
   for (const QJsonValue w : o.value("weights").toArray()) {
     if (!w.isDouble()) throw CliError("--add-json: weights must be numbers", kExitBadInput);

@@ -103,7 +103,7 @@ void ParetoFeature::recordOperatingPoint() {
     const qint64 id =
         db.insert(study->learningRecord(weights_panel_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
                                         automatic ? app::LearningSource::Automatic : app::LearningSource::Operator));
-    emit statusMessage(tr("Recorded point %1 in %2").arg(id).arg(db.path()), 8000);
+    emit statusMessage(tr("Recorded point %1 in %2").arg(id).arg(db.location()), 8000);
   } catch (const std::exception& e) {
     emit errorRaised(tr("Learning database"), QString::fromStdString(e.what()));
     return;
@@ -143,7 +143,7 @@ void ParetoFeature::refreshHistory() {
       if (!f.source.isEmpty() && app::learningSourceName(r.source) != f.source) continue;
       rows.append(historyRow(r));
     }
-    for (const app::LearningRecord& r : db.history({std::nullopt, std::nullopt, 0})) {
+    for (const app::LearningRecord& r : db.history({std::nullopt, std::nullopt, std::nullopt, 0})) {
       if (!tools.contains(r.tool.id)) tools << r.tool.id;
       if (!materials.contains(r.material)) materials << r.material;
     }
@@ -152,7 +152,7 @@ void ParetoFeature::refreshHistory() {
     history_->setToolChoices(tools);
     history_->setMaterialChoices(materials);
     history_->setRows(rows);
-    history_->setStatus(tr("%1 of %2 entries - %3").arg(rows.size()).arg(db.count()).arg(db.path()));
+    history_->setStatus(tr("%1 of %2 entries - %3").arg(rows.size()).arg(db.count()).arg(db.location()));
   } catch (const std::exception& e) {
     history_->setRows({});
     history_->setStatus(tr("Learning database unavailable: %1").arg(e.what()));

@@ -38,6 +38,7 @@ const QSet<QString>& documentedNullKeys() {
       "chatter_frequency_Hz",   // lobes, simulate, pareto: no chatter
       "ROS",                    // point: outside the lobes' robustness measure
       "ros",                    // pareto: no speed security at the point
+      "machine",                // history: the record names no machine
       "q_star_star",            // rank: Rule 5 found no better point
       "rule5",                  // rank: Rule 5 did not run
       "max_force_N",            // rank, point: the tool has no force limit

@@ -54,6 +54,7 @@ void validateLearningRecord(const LearningRecord& r) {
   require(positive(r.tool.diameter_mm), QString("tool.diameter_mm = %1: must be > 0").arg(r.tool.diameter_mm));
   require(r.tool.teeth >= 1, QString("tool.teeth = %1: must be >= 1").arg(r.tool.teeth));
   require(!r.material.isEmpty(), "material: must not be empty");
+  require(!r.machine.name || !r.machine.name->isEmpty(), "machine.name: must not be empty when given");
   require(std::isfinite(r.machine.spindle_power_W) && r.machine.spindle_power_W >= 0.0,
           QString("machine.spindle_power_W = %1: must be >= 0").arg(r.machine.spindle_power_W));
   require(!r.machine.max_spindle_rpm || positive(*r.machine.max_spindle_rpm),
@@ -72,6 +73,7 @@ QJsonObject learningEntryJson(const LearningRecord& r) {
   return {{"time", learningTimeText(r.time)},
           {"tool", r.tool.id},
           {"material", r.material},
+          {"machine", r.machine.name ? QJsonValue(*r.machine.name) : QJsonValue(QJsonValue::Null)},
           {"weights", weights},
           {"q",
            QJsonObject{

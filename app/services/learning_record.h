@@ -25,6 +25,7 @@ struct LearningTool {
 };
 
 struct LearningMachine {
+  std::optional<QString> name;  // the project's machine.name: which machine of the shop wrote it
   double spindle_power_W = 0.0;
   std::optional<double> max_spindle_rpm;  // no limit when absent
 };
@@ -37,6 +38,7 @@ struct LearningPoint {
 
 struct LearningRecord {
   qint64 id = 0;                // assigned by the database
+  QString uid;                  // unique over every database; a new UUID when left empty at insertion
   QDateTime time;               // UTC; "now" when left invalid at insertion
   std::vector<double> weights;  // on the simplex (>= 0, sum 1)
   LearningTool tool;
@@ -53,7 +55,8 @@ struct LearningRecord {
 // material, non-positive diameter/teeth/speed/depth/feed, a non-numeric objective term).
 void validateLearningRecord(const LearningRecord& record);
 
-// The CLI `history` entry: {"time","tool","material","weights","q","objectives","source"}.
+// The CLI `history` entry: {"time","tool","material","machine","weights","q","objectives","source"};
+// "machine" is null when the record names none.
 QJsonObject learningEntryJson(const LearningRecord& record);
 
 // UTC ISO 8601 with milliseconds ("2024-05-01T08:30:00.125Z"): sorts lexicographically by time.

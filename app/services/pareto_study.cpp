@@ -253,7 +253,7 @@ LearningRecord ParetoStudy::learningRecord(const ParetoWeights& w, const ParetoP
   r.tool = {t.id, t.diameter_mm, t.teeth};
   r.material = project_.material ? project_.material->name : QString("unknown");
   const MachineSpec& machine = project_.requireMachine();
-  r.machine = {machine.spindle_power_W, machine.max_spindle_rpm};
+  r.machine = {machine.name, machine.spindle_power_W, machine.max_spindle_rpm};
   r.q = {revPerSToRpm(p.speed_rev_per_s), p.depth_m * 1e3, p.feed_per_tooth_m * 1e3};
   r.objectives = QJsonObject{{"tol", p.tol()},
                              {"mrr_cm3_s", p.mrr() * 1e6},

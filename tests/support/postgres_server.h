@@ -1,0 +1,183 @@
+#pragma once
+// A real PostgreSQL server for a test, on loopback: initdb into the test's own temporary folder,
+// started on a free port of 127.0.0.1, stopped by its process id (../shared/notes/real-services.md).
+// initdb refuses root, so as root the server runs as the "postgres" user of the Debian package, and
+// every folder above its data folder is made enterable (search permission only). The binaries are
+// those CMake found (MX_PG_BINDIR). start() returns why the server could not start: the test fails
+// with it, never skips.
+#include <netinet/in.h>
+#include <pwd.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+#include <QThread>
+#include <csignal>
+
+namespace mx::test {
+
+// A TCP port of 127.0.0.1 that was free a moment ago (the kernel's pick for port 0).
+inline int freeLoopbackPort() {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return 0;
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  socklen_t length = sizeof address;
+  int port = 0;
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+      ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+    port = ntohs(address.sin_port);
+  ::close(fd);
+  return port;
+}
+
+class PostgresServer {
+ public:
+  PostgresServer() = default;
+  PostgresServer(const PostgresServer&) = delete;
+  PostgresServer& operator=(const PostgresServer&) = delete;
+  ~PostgresServer() { stop(); }
+
+  // Empty on success, else why the server did not start (with the tail of its log).
+  QString start() {
+    const QString bindir = QString::fromUtf8(MX_PG_BINDIR);
+    if (bindir.isEmpty() || !QFileInfo(bindir + "/initdb").isExecutable())
+      return "PostgreSQL's initdb was not found when the build was configured (MX_PG_BINDIR); install the "
+             "package postgresql (packaging/bootstrap.sh) and configure again";
+    if (!dir_.isValid()) return "cannot create a temporary folder: " + dir_.errorString();
+    if (QString why = prepareFolders(); !why.isEmpty()) return why;
+    port_ = freeLoopbackPort();
+    if (port_ == 0) return "no free TCP port on 127.0.0.1";
+    QString output;
+    if (!runAsServerUser(bindir + "/initdb",
+                         {"-D", data(), "-A", "trust", "-U", "postgres", "-E", "UTF8", "--locale=C", "--no-sync"},
+                         120000, &output))
+      return "initdb failed: " + output.right(2000);
+    // fsync off: the tests kill clients, never the server, and 4000 commits must not wait for a disk.
+    const QString options =
+        QString("-p %1 -k %2 -c listen_addresses=127.0.0.1 -c fsync=off -c max_connections=60").arg(port_).arg(data());
+    if (!runAsServerUser(bindir + "/pg_ctl", {"-D", data(), "-o", options, "-l", log(), "-w", "-t", "60", "start"},
+                         90000, &output))
+      return QString("pg_ctl start failed: %1\nserver log:\n%2").arg(output.right(1000), logTail());
+    pid_ = postmasterPid();
+    if (pid_ <= 0) return "the server started but wrote no postmaster.pid\nserver log:\n" + logTail();
+    return {};
+  }
+
+  // Fast shutdown by process id (SIGINT), then SIGKILL if it has not ended within 20 s.
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(static_cast<pid_t>(pid_), SIGINT);
+    QElapsedTimer clock;
+    clock.start();
+    while (::kill(static_cast<pid_t>(pid_), 0) == 0 && clock.elapsed() < 20000) QThread::msleep(20);
+    if (::kill(static_cast<pid_t>(pid_), 0) == 0) ::kill(static_cast<pid_t>(pid_), SIGKILL);
+    pid_ = 0;
+  }
+
+  qint64 pid() const { return pid_; }
+  int port() const { return port_; }
+  QString url(const QString& database = "postgres") const {
+    return QString("postgresql://postgres@127.0.0.1:%1/%2").arg(port_).arg(database);
+  }
+
+  // Creates an empty database (its name: lower-case letters, digits, '_'); false with why on failure.
+  bool createDatabase(const QString& name, QString* why = nullptr) const {
+    return exec("CREATE DATABASE " + name, why);
+  }
+
+  // Runs one statement in the "postgres" database over a short-lived connection.
+  bool exec(const QString& sql, QString* why = nullptr) const {
+    const QString connection = QString("mx_test_pg_admin_%1").arg(++counter_);
+    bool ok = false;
+    {
+      QSqlDatabase db = QSqlDatabase::addDatabase("QPSQL", connection);
+      db.setHostName("127.0.0.1");
+      db.setPort(port_);
+      db.setUserName("postgres");
+      db.setDatabaseName("postgres");
+      ok = db.open();
+      QSqlQuery query(db);
+      ok = ok && query.exec(sql);
+      if (!ok && why != nullptr) *why = query.lastError().text() + db.lastError().text();
+      db.close();
+    }
+    QSqlDatabase::removeDatabase(connection);
+    return ok;
+  }
+
+  QString logTail() const {
+    QFile f(log());
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll().right(3000)) : QString("(no log)");
+  }
+
+ private:
+  QString data() const { return dir_.filePath("data"); }
+  QString log() const { return dir_.filePath("server.log"); }
+
+  static bool isRoot() { return ::geteuid() == 0; }
+
+  // The data folder owned by the server's user, and every folder above it enterable by that user.
+  QString prepareFolders() {
+    if (!QDir().mkpath(data())) return "cannot create " + data();
+    if (!isRoot()) return {};
+    const passwd* user = ::getpwnam("postgres");
+    if (user == nullptr)
+      return "running as root, but there is no user 'postgres' to run the server (package postgresql)";
+    if (::chown(QFile::encodeName(data()).constData(), user->pw_uid, user->pw_gid) != 0 ||
+        ::chown(QFile::encodeName(dir_.path()).constData(), user->pw_uid, user->pw_gid) != 0)
+      return "cannot hand " + data() + " to the user postgres";
+    for (QDir folder(dir_.path()); !folder.isRoot(); folder.cdUp()) {
+      struct stat info {};
+      const QByteArray path = QFile::encodeName(folder.absolutePath());
+      if (::stat(path.constData(), &info) == 0 && (info.st_mode & S_IXOTH) == 0)
+        ::chmod(path.constData(), (info.st_mode & 07777) | S_IXOTH);
+    }
+    return {};
+  }
+
+  static bool runAsServerUser(const QString& program, QStringList arguments, int timeout_ms, QString* output) {
+    QProcess process;
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    if (isRoot()) {
+      arguments.prepend(program);
+      arguments.prepend("--");
+      arguments.prepend("postgres");
+      arguments.prepend("-u");
+      process.start("runuser", arguments);
+    } else {
+      process.start(program, arguments);
+    }
+    const bool finished = process.waitForFinished(timeout_ms);
+    *output = QString::fromUtf8(process.readAll());
+    if (!finished) {
+      process.kill();
+      process.waitForFinished();
+      *output += QString("\n(timed out after %1 ms)").arg(timeout_ms);
+    }
+    if (process.error() == QProcess::FailedToStart) *output += "\n(cannot start " + process.program() + ")";
+    return finished && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
+  }
+
+  qint64 postmasterPid() const {
+    QFile f(data() + "/postmaster.pid");
+    return f.open(QIODevice::ReadOnly) ? f.readLine().trimmed().toLongLong() : 0;
+  }
+
+  QTemporaryDir dir_;
+  int port_ = 0;
+  qint64 pid_ = 0;
+  static inline int counter_ = 0;
+};
+
+}  // namespace mx::test
