@@ -26,7 +26,7 @@
 //     and the re-selection as above without the Rule 15 check; "feedback" adds "reported_by": "operator".
 //   --front-limit N: at most N points in "pareto_set" (default 2000, 0: all), the best J first; added
 //     keys "pareto_set_size" (the whole set) and "pareto_set_truncated".
-//   --db FILE: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
+//   --db FILE|URL: records q (source "automatic") and the re-selected point (source "feedback"; ids in the
 //     added key "recorded") in the
 //     Rule 14 learning database; without --db nothing is recorded.
 // Rule 11 by default: the project's minimum MRR (pareto.requirements; shop default 25 % of Q's largest
@@ -118,7 +118,10 @@ int runParetoCommand(const QStringList& arguments) {
       {"require", "Rule 11 requirement KEY=LO:HI (KEY mrr_cm3_s, tol, surf or ros).", "KEY=LO:HI"},
       {"auto-weights", "Rule 12: gradient ascent on the weights (pareto.auto_weights step/tolerance)."},
       {"feedback", "Module VI: Rule 15 chatter check of q; on chatter, Rule 16 speed and a re-selection."},
-      {"db", "Record the programmed point(s) in this Rule 14 learning database.", "FILE"},
+      {"db",
+       "Record the programmed point(s) in this Rule 14 learning database: an SQLite file or "
+       "postgresql://user@host[:port]/db (the password from PGPASSWORD or ~/.pgpass).",
+       "FILE|URL"},
       {"chatter-hz", "Module VI: the operator reports chatter at F Hz at q (implies --feedback; Rule 16).", "F"},
       {"front-limit", "At most N points in pareto_set, the best J first (default 2000; 0: all).", "N"},
       {"objective", "weighted, min_cost or max_rate (default: pareto.objective, else weighted).", "KIND"},
@@ -138,7 +141,9 @@ int runParetoCommand(const QStringList& arguments) {
     paretoNormalisationFromName(parser.value("normalisation"), "--normalisation");  // checks the name
 
   const std::optional<DynamicsSource> dynamics = dynamicsOption(parser);
-  Project project = OutputPaths().outputOption(parser, "db").loadProject(path);
+  OutputPaths files;
+  if (parser.isSet("db") && !isLearningUrl(parser.value("db"))) files.outputOption(parser, "db");  // a file we write
+  Project project = files.loadProject(path);
   if (parser.isSet("normalisation") && project.pareto) project.pareto->normalisation = parser.value("normalisation");
   const ParetoStudy study(std::move(project), dynamics);
   reportDynamicsNote(study.dynamics(), study.request().tool);

@@ -22,10 +22,6 @@ constexpr int kMaxConnectTimeoutS = 3600;
       QString("learning database '%1': %2").arg(redactedLearningLocation(text), why).toStdString());
 }
 
-bool isUrl(const QString& text) {
-  return text.startsWith("postgresql://", Qt::CaseInsensitive) || text.startsWith("postgres://", Qt::CaseInsensitive);
-}
-
 QString allowedOptions() {
   QStringList names;
   for (const char* name : kUrlOptions) names << QString::fromLatin1(name);
@@ -81,6 +77,10 @@ constexpr const char* kApplication = "MillExpert";
 
 }  // namespace
 
+bool isLearningUrl(const QString& text) {
+  return text.startsWith("postgresql://", Qt::CaseInsensitive) || text.startsWith("postgres://", Qt::CaseInsensitive);
+}
+
 QString redactedLearningLocation(QString text) {
   static const QRegularExpression userPassword("(://[^/@:]*:)[^/@]*@");
   static const QRegularExpression passwordOption("(password=)[^&]*");
@@ -100,7 +100,7 @@ QString LearningLocation::display() const {
 
 LearningLocation parseLearningLocation(const QString& text) {
   if (text.trimmed().isEmpty()) refuse(text, "no file name or URL given");
-  if (isUrl(text)) return parseUrl(text.trimmed());
+  if (isLearningUrl(text.trimmed())) return parseUrl(text.trimmed());
   LearningLocation l;
   l.file = text;
   return l;

@@ -30,6 +30,8 @@ struct LearningLocation {
 // host or database, a port outside 1..65535, an option other than sslmode, sslrootcert, sslcert,
 // sslkey, connect_timeout (1..3600 s) or target_session_attrs.
 LearningLocation parseLearningLocation(const QString& text);
+// Whether the text is a postgresql:// or postgres:// URL (and not a file path), valid or not.
+bool isLearningUrl(const QString& text);
 // The text with any password replaced by "***": what an error message may show of it.
 QString redactedLearningLocation(QString text);
 
