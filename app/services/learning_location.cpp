@@ -53,7 +53,12 @@ QString connectOptions(const QString& text, const QUrlQuery& query) {
 
 LearningLocation parseUrl(const QString& text) {
   const QUrl url(text, QUrl::StrictMode);
-  if (!url.isValid()) refuse(text, QString("not a valid URL (%1)").arg(url.errorString()));
+  if (!url.isValid()) {
+    // QUrl's own message may quote the user information, and so a password: shown only without one.
+    const QString detail = text.contains('@') ? QString("postgresql://[user@]host[:port]/database[?options]")
+                                              : url.errorString();
+    refuse(text, QString("not a valid URL (%1)").arg(detail));
+  }
   if (!url.password().isEmpty())
     refuse(text, "a password is not accepted in the URL; give it in PGPASSWORD or ~/.pgpass");
   LearningLocation l;
