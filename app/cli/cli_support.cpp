@@ -100,8 +100,24 @@ void checkSdmWork(double speeds, int steps, const QString& range) {
                  kExitBadInput);
 }
 
+namespace {
+thread_local JsonCapture* active_capture = nullptr;
+}  // namespace
+
+JsonCapture::JsonCapture() : outer_(active_capture) {
+  active_capture = this;
+}
+
+JsonCapture::~JsonCapture() {
+  active_capture = outer_;
+}
+
 void printJson(const QJsonObject& object) {
   checkJsonOutput(object);
+  if (active_capture != nullptr) {
+    active_capture->object = object;
+    return;
+  }
   QTextStream out(stdout);
   out << QJsonDocument(object).toJson(QJsonDocument::Compact) << Qt::endl;
 }

@@ -66,7 +66,23 @@ void checkSdmWork(double speeds, int steps, const QString& range);
 // Applies --method (zoa|sdm) when the parser has it set.
 void applyMethodOption(const QCommandLineParser& parser, ExpertSettings& settings);
 
+// Checks the object (checkJsonOutput) and prints it as one compact line on stdout, or hands it to the
+// JsonCapture active on this thread.
 void printJson(const QJsonObject& object);
+
+// While alive, printJson on this thread stores its object here instead of printing it: `batch` runs a
+// command that has no JSON-building function of its own (cli_computations.h) in-process this way.
+class JsonCapture {
+ public:
+  JsonCapture();
+  ~JsonCapture();
+  JsonCapture(const JsonCapture&) = delete;
+  JsonCapture& operator=(const JsonCapture&) = delete;
+  std::optional<QJsonObject> object;
+
+ private:
+  JsonCapture* outer_;
+};
 
 // Writes `lines` (CSV or other text) atomically to `path` (QSaveFile); `flag` names the option in
 // errors: not a regular file or a new one (outputFileProblem), cannot open -> CliError(2), write

@@ -11,6 +11,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_computations.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/lobe_inputs.h"
@@ -91,11 +92,8 @@ LobesRequest readRequest(const QCommandLineParser& parser, const Project& projec
 
 }  // namespace
 
-int runLobesCommand(const QStringList& arguments) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription("Stability lobes of one tool: alpha * delta-margined b_lim(N).");
-  parser.addHelpOption();
-  parser.addOptions({
+QList<QCommandLineOption> lobesOptions() {
+  return {
       {"tool", "Tool id.", "ID"},
       {"method", "zoa (zeroth-order approximation) or sdm (semi-discretization).", "METHOD", "zoa"},
       {"from", "First speed [rpm]; default: the project's expert grid, else 1000.", "RPM"},
@@ -114,9 +112,10 @@ int runLobesCommand(const QStringList& arguments) {
        "exactly.",
        "N"},
       dynamicsCommandOption(),
-  });
-  const QString path = parseSubcommand(parser, arguments);
-  const Project project = loadProject(path);
+  };
+}
+
+QJsonObject lobesJson(const QCommandLineParser& parser, const Project& project) {
   const LobesRequest request = readRequest(parser, project);
   const StabilityMethod method =
       request.method == "zoa" ? StabilityMethod::ZeroOrder : StabilityMethod::SemiDiscretization;
@@ -164,7 +163,16 @@ int runLobesCommand(const QStringList& arguments) {
     for (double n : speeds) steps.append(request.steps == kAutoSdmSteps ? autoSdmSteps(setup, n) : request.steps);
     out.insert("sdm_steps", steps);
   }
-  printJson(out);
+  return out;
+}
+
+int runLobesCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Stability lobes of one tool: alpha * delta-margined b_lim(N).");
+  parser.addHelpOption();
+  parser.addOptions(lobesOptions());
+  const QString path = parseSubcommand(parser, arguments);
+  printJson(lobesJson(parser, loadProject(path)));
   return kExitOk;
 }
 

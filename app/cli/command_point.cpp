@@ -13,6 +13,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_computations.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
@@ -59,12 +60,9 @@ PointLobeSpeeds pointLobeSpeeds(const Project& project, double speed_rpm) {
 
 }  // namespace
 
-int runPointCommand(const QStringList& arguments) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription("Stability margin, power and MRR of one operating point.");
-  parser.addHelpOption();
-  parser.addOptions(cutPointOptions());
-  parser.addOptions({
+QList<QCommandLineOption> pointOptions() {
+  QList<QCommandLineOption> options = cutPointOptions();
+  options.append({
       {"method", "zoa or sdm (default zoa).", "METHOD", "zoa"},
       {"delta", "Stability margin delta [1/s]; default: the project's.", "V"},
       {"alpha", "Depth factor alpha in (0, 1]; default: the project's.", "V"},
@@ -75,13 +73,19 @@ int runPointCommand(const QStringList& arguments) {
       {"delay-order", "Semi-discretization: degree 1-3 of the delayed-state interpolation (default 3).", "P"},
       dynamicsCommandOption(),
   });
-  const QString path = parseSubcommand(parser, arguments);
+  return options;
+}
+
+QString pointMethod(const QCommandLineParser& parser) {
   const QString method = parser.value("method");
   if (method != "zoa" && method != "sdm")
     throw CliError(QString("--method = %1: must be zoa or sdm").arg(quoted(method)), kExitBadInput);
+  return method;
+}
 
+QJsonObject pointJson(const QCommandLineParser& parser, const Project& project) {
+  const QString method = pointMethod(parser);
   const std::optional<DynamicsSource> requested = dynamicsOption(parser);
-  const Project project = loadProject(path);
   const CutPointFlags cut = readCutPoint(parser, project.operating_point);
   const QString& tool = cut.tool;
   const double speed_rpm = cut.speed_rpm, depth_mm = cut.depth_mm, feed_mm = cut.feed_mm_per_tooth;
@@ -149,7 +153,18 @@ int runPointCommand(const QStringList& arguments) {
     out.insert("force_fraction", perf.peak_force_n / force_limit);
     out.insert("force_ok", perf.peak_force_n <= force_limit);
   }
-  printJson(out);
+  return out;
+}
+
+int runPointCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Stability margin, power and MRR of one operating point.");
+  parser.addHelpOption();
+  parser.addOptions(pointOptions());
+  const QString path = parseSubcommand(parser, arguments);
+  pointMethod(parser);  // a bad flag is reported before a bad project
+  dynamicsOption(parser);
+  printJson(pointJson(parser, loadProject(path)));
   return kExitOk;
 }
 

@@ -31,6 +31,7 @@
 
 #include "cli/cli_application.h"
 #include "cli/cli_commands.h"
+#include "cli/cli_computations.h"
 #include "cli/cli_dynamics.h"
 #include "cli/cli_support.h"
 #include "document/project.h"
@@ -99,11 +100,8 @@ QJsonArray reportedChatterArray(const std::vector<ChatterReportSpec>& reports, c
 
 }  // namespace
 
-int runRankCommand(const QStringList& arguments) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription("Rank the project's tools and select the cutting parameters (expert system).");
-  parser.addHelpOption();
-  parser.addOptions({
+QList<QCommandLineOption> rankOptions() {
+  return {
       {"c", "Tool-cost weights c1,c2,c3 (power, MRR, Delta N_s); sum 1. Default: the project's.", "C1,C2,C3"},
       {"cr", "Resultant-cost weights c1r,c2r,c3r (C, C_t, C_f); sum 1. Default: the project's.", "C1R,C2R,C3R"},
       {"no-simulation", "Rule 4 only: no time-domain refinement (q_star_star null, no Rule 6)."},
@@ -114,12 +112,18 @@ int runRankCommand(const QStringList& arguments) {
        "Rule 6 moves the weights until the chosen point leaves +-2 % of SPEED at DEPTH and deeper.",
        "SPEED:DEPTH[:FREQ_HZ]"},
       {"chatter-tool", "The tool of the --chatter-at reports (default: the tool Rule 4 selects).", "ID"},
-  });
-  const QString path = parseSubcommand(parser, arguments);
-  std::optional<std::vector<double>> c, cr;
-  if (parser.isSet("c")) c = parseWeightList("c", parser.value("c"), 3);
-  if (parser.isSet("cr")) cr = parseWeightList("cr", parser.value("cr"), 3);
-  const Project project = loadProject(path);
+  };
+}
+
+RankWeightFlags readRankWeights(const QCommandLineParser& parser) {
+  RankWeightFlags weights;
+  if (parser.isSet("c")) weights.c = parseWeightList("c", parser.value("c"), 3);
+  if (parser.isSet("cr")) weights.cr = parseWeightList("cr", parser.value("cr"), 3);
+  return weights;
+}
+
+RankOutput rankJson(const QCommandLineParser& parser, const Project& project) {
+  const RankWeightFlags weights = readRankWeights(parser);
   ExpertRequest request = expertRequestFromProject(project);
   applyMethodOption(parser, request.settings);
   const bool simulate = !parser.isSet("no-simulation");
@@ -129,8 +133,8 @@ int runRankCommand(const QStringList& arguments) {
     reportDynamicsNote(dynamics[static_cast<std::size_t>(i)], request.tool_ids[i]);
     dynamics_used.insert(request.tool_ids[i], dynamicsName(dynamics[static_cast<std::size_t>(i)].used));
   }
-  if (c) std::copy(c->begin(), c->end(), request.weights.c.begin());
-  if (cr) std::copy(cr->begin(), cr->end(), request.weights.cr.begin());
+  if (weights.c) std::copy(weights.c->begin(), weights.c->end(), request.weights.c.begin());
+  if (weights.cr) std::copy(weights.cr->begin(), weights.cr->end(), request.weights.cr.begin());
 
   const ExpertRules rules(project, request.tool_ids);
   request.weights.c = rules.boundWeights(request.weights.c);
@@ -197,10 +201,20 @@ int runRankCommand(const QStringList& arguments) {
     fired.insert("tool", out.value("selected"));
     out.insert("rules", fired);
   }
-  printJson(out);
-  const QString unresolved = unresolvedChatterMessage(result, reports, request.tool_ids,
-                                                      request.settings.refinement.max_malfunction_iterations);
-  if (!unresolved.isEmpty()) throw CliError(unresolved, kExitComputationFailed);
+  return {out, unresolvedChatterMessage(result, reports, request.tool_ids,
+                                        request.settings.refinement.max_malfunction_iterations)};
+}
+
+int runRankCommand(const QStringList& arguments) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Rank the project's tools and select the cutting parameters (expert system).");
+  parser.addHelpOption();
+  parser.addOptions(rankOptions());
+  const QString path = parseSubcommand(parser, arguments);
+  readRankWeights(parser);  // a bad flag is reported before a bad project
+  const RankOutput output = rankJson(parser, loadProject(path));
+  printJson(output.json);
+  if (!output.unresolved_chatter.isEmpty()) throw CliError(output.unresolved_chatter, kExitComputationFailed);
   return kExitOk;
 }
 
