@@ -31,6 +31,9 @@ const CliCommand* findCommand(const QString& name) {
        &runCoefficientsCommand},
       {"materials", "list the materials library, or copy an entry into a project's material section",
        &runMaterialsCommand},
+      {"batch", "one computation over the cases of a manifest (projects x tools x machines x materials x operations)",
+       &runBatchCommand},
+      {"batch-merge", "one table from batch results files: per machine x material x operation", &runBatchMergeCommand},
   };
   for (const CliCommand& c : commands)
     if (name == QLatin1String(c.name)) return &c;

@@ -32,5 +32,7 @@ int runLibraryImportCommand(const QStringList& arguments);
 int runLibraryExportCommand(const QStringList& arguments);
 int runCoefficientsCommand(const QStringList& arguments);
 int runMaterialsCommand(const QStringList& arguments);
+int runBatchCommand(const QStringList& arguments);
+int runBatchMergeCommand(const QStringList& arguments);
 
 }  // namespace mx::app

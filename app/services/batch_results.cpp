@@ -1,0 +1,68 @@
+#include "services/batch_results.h"
+
+#include <QJsonDocument>
+
+#include "services/service_errors.h"
+
+namespace mx::app {
+
+namespace {
+
+std::optional<QJsonObject> resultLine(const QByteArray& text) {
+  QJsonParseError error;
+  const QJsonDocument document = QJsonDocument::fromJson(text, &error);
+  if (error.error != QJsonParseError::NoError || !document.isObject()) return std::nullopt;
+  if (!document.object().value("hash").isString()) return std::nullopt;
+  return document.object();
+}
+
+}  // namespace
+
+BatchResultLines readBatchResultLines(const QString& path) {
+  BatchResultLines out;
+  QFile file(path);
+  if (!file.exists()) return out;
+  if (!file.open(QIODevice::ReadOnly)) throw InputError(QString("%1: cannot read the results file").arg(path));
+  qint64 number = 0;
+  while (!file.atEnd()) {
+    const QByteArray line = file.readLine();
+    ++number;
+    const bool whole = line.endsWith('\n');
+    const std::optional<QJsonObject> object = whole ? resultLine(line) : std::nullopt;
+    if (object) {
+      out.lines.push_back(*object);
+      out.whole_bytes = file.pos();
+      continue;
+    }
+    if (!file.atEnd())
+      throw InputError(QString("%1:%2: not a results line (a JSON object with \"hash\"); only the last line "
+                               "may be torn")
+                           .arg(path)
+                           .arg(number));
+    out.torn_last_line = true;
+  }
+  return out;
+}
+
+QSet<QString> resumeBatchResults(const QString& path) {
+  const BatchResultLines read = readBatchResultLines(path);
+  if (read.torn_last_line && !QFile::resize(path, read.whole_bytes))
+    throw InputError(QString("%1: cannot cut off the torn last line").arg(path));
+  QSet<QString> hashes;
+  for (const QJsonObject& line : read.lines) hashes.insert(line.value("hash").toString());
+  return hashes;
+}
+
+BatchResultsWriter::BatchResultsWriter(const QString& path) : file_(path) {
+  if (!file_.open(QIODevice::WriteOnly | QIODevice::Append))
+    throw InputError(QString("--out = '%1': cannot open for appending: %2").arg(path, file_.errorString()));
+}
+
+void BatchResultsWriter::append(const QJsonObject& line) {
+  const QByteArray text = QJsonDocument(line).toJson(QJsonDocument::Compact).append('\n');
+  const std::lock_guard lock(mutex_);
+  if (file_.write(text) != text.size() || !file_.flush())
+    throw ComputationError(QString("%1: write failed: %2").arg(file_.fileName(), file_.errorString()));
+}
+
+}  // namespace mx::app
