@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/invalid_input.h"
+#include "gcode/word_scan.h"
 
 namespace mx {
 namespace {
@@ -27,21 +28,20 @@ const DialectInfo& infoOf(GcodeDialect d) {
   return kDialects[0];
 }
 
-bool isDigit(char c) {
-  return c >= '0' && c <= '9';
-}
+using gcode_scan::isDigit;
+
 bool isAlnum(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
 }
 
-// The line upper-cased, with comments in parentheses and after ';' removed and runs of blanks made
+// The (upper-cased) line with comments in parentheses and after ';' removed and runs of blanks made
 // one space: markers are searched for only in the program's own words.
 // keep_parens: for Sinumerik, whose parentheses hold call arguments, not comments.
-std::string codeOf(std::string_view line, bool keep_parens = false) {
+std::string codeOf(std::string_view upper_line, bool keep_parens = false) {
   std::string out;
-  out.reserve(line.size());
+  out.reserve(upper_line.size());
   bool in_paren = false;
-  for (const char c : line) {
+  for (const char c : upper_line) {
     if (in_paren) {
       in_paren = c != ')';
       continue;
@@ -55,7 +55,7 @@ std::string codeOf(std::string_view line, bool keep_parens = false) {
       if (!out.empty() && out.back() != ' ') out += ' ';
       continue;
     }
-    out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    out += c;
   }
   if (!out.empty() && out.back() == ' ') out.pop_back();
   return out;
@@ -188,23 +188,20 @@ DialectDetection detectDialect(std::string_view text) {
   int first_code_line = 0;
   std::string first_code, first_raw;
   int line = 0;
-  std::string raw_upper;
   for (std::size_t start = 0; start < text.size();) {
     const std::size_t nl = text.find('\n', start);
     const std::string_view raw = text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
     start = nl == std::string_view::npos ? text.size() : nl + 1;
     ++line;
-    const std::string code = codeOf(raw);
+    const std::string raw_upper = gcode_scan::upperCopy(raw);
+    const std::string code = codeOf(raw_upper);
     if (first_code_line == 0 && !code.empty()) first_code_line = line, first_code = code, first_raw = raw;
-    raw_upper.assign(raw.size(), ' ');
-    for (std::size_t i = 0; i < raw.size(); ++i)
-      raw_upper[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(raw[i])));
     std::string evidence;
     GcodeDialect dialect = GcodeDialect::Iso;
     if (code.empty() && raw_upper.find('(') == std::string::npos) continue;
     if (heidenhainMarker(code, evidence))
       dialect = GcodeDialect::Heidenhain;
-    else if (sinumerikMarker(code, codeOf(raw, true), evidence))
+    else if (sinumerikMarker(code, codeOf(raw_upper, true), evidence))
       dialect = GcodeDialect::Sinumerik;
     else if (linuxCncMarker(raw_upper, code, evidence))
       dialect = GcodeDialect::LinuxCnc;

@@ -146,15 +146,15 @@ class HeidenhainLexer {
         value = s_[p] == '+' ? 1.0 : -1.0;
       } else {
         other(start, end);
-        return note(upperOf(start, end)), endToken(end);  // "Q1=+5", "0:", a name: kept as it is
+        return note(upperCopy(s_.substr(start, end - start))), endToken(end);  // "Q1=+5", "0:", a name: kept as it is
       }
     }
     if (letters_end == start) {  // a number ("TOOL CALL 1", "CHF 2")
       other(start, end);
-      return note(upperOf(start, end)), endToken(end);
+      return note(upperCopy(s_.substr(start, end - start))), endToken(end);
     }
     GcodeWord w;
-    w.address = upperOf(start, letters_end);
+    w.address = upperCopy(s_.substr(start, letters_end - start));
     w.letter = w.address[0];
     w.column = start + 1;
     w.length = end - start;
@@ -171,17 +171,10 @@ class HeidenhainLexer {
   void joinAuto(GcodeWord& w) {
     std::size_t p = w.column - 1 + w.length;
     while (p < s_.size() && (s_[p] == ' ' || s_[p] == '\t')) ++p;
-    if (upperOf(p, std::min(s_.size(), p + 4)) == "AUTO" &&
-        (p + 4 == s_.size() || isSpace(s_[p + 4]) || s_[p + 4] == ';')) {
+    if (upperCopy(s_.substr(p, 4)) == "AUTO" && (p + 4 == s_.size() || isSpace(s_[p + 4]) || s_[p + 4] == ';')) {
       w.address = "FAUTO";
       w.length = p + 4 - (w.column - 1);
     }
-  }
-
-  std::string upperOf(std::size_t from, std::size_t to) const {
-    std::string out;
-    for (std::size_t i = from; i < to; ++i) out += upper(s_[i]);
-    return out;
   }
 
   void note(const std::string& token) {

@@ -231,7 +231,7 @@ class IsoLexer {
     std::size_t p = pos_;
     while (p < s_.size() && isLetter(s_[p])) ++p;
     while (p < s_.size() && isNameChar(s_[p])) ++p;
-    const std::string name = upperName(pos_, p);
+    const std::string name = upperCopy(s_.substr(pos_, p - pos_));
     std::size_t q = p;
     while (q < s_.size() && (s_[q] == ' ' || s_[q] == '\t')) ++q;
     // A call's name starts with two letters ("CYCLE81", "MSG"): "S1500 (note)" is a word and a comment.
@@ -239,12 +239,6 @@ class IsoLexer {
     if (q < s_.size() && s_[q] == '(' && call_name) return lexCall(name, q), true;
     if (q < s_.size() && s_[q] == '=' && (q + 1 >= s_.size() || s_[q + 1] != '=')) return lexAssignment(name, q), true;
     return false;
-  }
-
-  std::string upperName(std::size_t from, std::size_t to) const {
-    std::string name;
-    for (std::size_t i = from; i < to; ++i) name += upper(s_[i]);
-    return name;
   }
 
   void lexCall(const std::string& name, std::size_t open) {

@@ -1,6 +1,6 @@
 #pragma once
-// Character classes and number scanning shared by the dialect lexers (gcode_reader.cpp,
-// heidenhain_lexer.cpp), and the range check of known words.
+// Character classes, case folding and number scanning shared by the dialect lexers (iso_lexer.cpp,
+// heidenhain_lexer.cpp) and the dialect detection, and the range check of known words.
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -20,6 +20,12 @@ inline bool isDigit(char c) {
 }
 inline char upper(char c) {
   return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
+// The text with its ASCII letters upper-cased (words and keywords are case-blind in every dialect).
+inline std::string upperCopy(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = upper(c);
+  return out;
 }
 
 // Scans [sign] digits [. digits] from pos; returns the end (== pos when no number).

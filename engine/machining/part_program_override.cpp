@@ -47,34 +47,25 @@ bool sameFeed(double a, double b) {
 
 // LinuxCNC's adaptive-feed input (M52 P1 on, M52 P0 or M52 off) scales every F by an analogue input: a
 // changed F under it is not the feed the machine will run, which the operator is told once.
-class AdaptiveFeedInput {
- public:
-  explicit AdaptiveFeedInput(const GcodeProgram& p) : program_(p) {
-    if (p.dialect.dialect != GcodeDialect::LinuxCnc) return;
-    on_.resize(p.blocks.size(), 0);
-    int enabled_at = 0;
-    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
-      for (const GcodeWord& w : p.blocks[i].words)
-        if (w.known && w.address == "M" && std::abs(w.value - 52.0) < 1e-9) {
-          const GcodeWord* p_word = p.blocks[i].find('P');
-          enabled_at = p_word && p_word->value != 0.0 ? p.blocks[i].line : 0;
-        }
-      on_[i] = enabled_at;
-    }
+// Followed block by block, in LinuxCNC programs only.
+struct AdaptiveFeedInput {
+  int enabled_at = 0;  // the line of the M52 P1 in effect, 0 when off
+  bool warned = false;
+
+  void follow(const GcodeBlock& b) {
+    for (const GcodeWord& w : b.words)
+      if (w.known && w.address == "M" && std::abs(w.value - 52.0) < 1e-9) {
+        const GcodeWord* p_word = b.find('P');
+        enabled_at = p_word && p_word->value != 0.0 ? b.line : 0;
+      }
   }
-  void warnIfScaling(std::size_t block, std::vector<GcodeWarning>& warnings) const {
-    if (warned_ || on_.empty() || on_[block] == 0) return;
-    warned_ = true;
-    const GcodeBlock& b = program_.blocks[block];
+  void warnIfScaling(const GcodeBlock& b, std::vector<GcodeWarning>& warnings) {
+    if (warned || enabled_at == 0) return;
+    warned = true;
     warnings.push_back({b.line, 0, b.text,
-                        "M52 P1 (line " + std::to_string(on_[block]) +
+                        "M52 P1 (line " + std::to_string(enabled_at) +
                             ") is in effect: the machine's adaptive-feed input scales the new F further"});
   }
-
- private:
-  const GcodeProgram& program_;
-  std::vector<int> on_;  // per block: the line of the M52 P1 in effect, 0 when off
-  mutable bool warned_ = false;
 };
 
 }  // namespace
@@ -93,12 +84,14 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
   double path = 0.0;
   constexpr std::size_t kNone = std::string::npos;
   std::size_t speed_carrier = kNone;  // the last block that has or takes an S word
-  const AdaptiveFeedInput adaptive_input(r.program);
+  const bool linuxcnc = r.program.dialect.dialect == GcodeDialect::LinuxCnc;
+  AdaptiveFeedInput adaptive_input;
 
   for (std::size_t i = 0; i < r.program.blocks.size(); ++i) {
     const auto& b = r.program.blocks[i];
     const auto& m = r.run.motions[i];
     auto& e = r.edits[i];
+    if (linuxcnc) adaptive_input.follow(b);
     std::string reason;
     const double unit = m.inch ? GcodeInterpreter::kInch : 1e-3;
     const int decimals = m.inch ? settings_.feed_decimals_inch : settings_.feed_decimals_mm;
@@ -195,7 +188,7 @@ PartProgramOverrideResult PartProgramOverrider::run(GcodeProgram program) const 
       }
       e.comment = c + reason;
     }
-    if (feed_changed) adaptive_input.warnIfScaling(i, r.warnings);
+    if (feed_changed) adaptive_input.warnIfScaling(b, r.warnings);
     FeedOverrideRow row;
     row.block = i + 1;
     row.line = b.line;
