@@ -11,6 +11,7 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
+#include "support/postgres_server.h"
 #include "test_registry.h"
 
 namespace {
@@ -330,6 +331,24 @@ class TestCliPareto : public QObject {
   void projectChecks() {
     const mx::test::CliRun r = mx::test::runCli({"check", kCase});
     QVERIFY2(r.code == 0, qPrintable(r.err));
+  }
+
+  // --db takes the shop's PostgreSQL server as well as a file: the point is recorded there.
+  void recordsOnASharedServer() {
+    mx::test::PostgresServer server;
+    const QString why = server.start();
+    QVERIFY2(why.isEmpty(), qPrintable("the PostgreSQL server did not start: " + why));
+    QVERIFY(server.createDatabase("shop"));
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--db", server.url("shop")});
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json["recorded"].toArray().size(), 1);
+    const mx::test::CliRun h = mx::test::runCli({"history", kCase, "--db", server.url("shop")});
+    QVERIFY2(h.code == 0, qPrintable(h.err));
+    const QJsonArray entries = h.json["entries"].toArray();
+    QCOMPARE(entries.size(), 1);
+    QCOMPARE(entries[0].toObject()["source"].toString(), QString("automatic"));
+    QCOMPARE(entries[0].toObject()["q"].toObject()["speed_rpm"].toDouble(),
+             r.json["q"].toObject()["speed_rpm"].toDouble());
   }
 };
 
