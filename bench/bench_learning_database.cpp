@@ -54,33 +54,35 @@ QString benchLocation(bool postgres, QString* why) {
   return server->createDatabase(name, why) ? server->url(name) : QString();
 }
 
-void BM_LearningInsert(benchmark::State& state) {
+// A new database of the benchmark's back end (argument 1: PostgreSQL), or none (the run is skipped with
+// the reason).
+std::unique_ptr<mx::app::LearningDatabase> benchDatabase(benchmark::State& state) {
   QString why;
   const QString location = benchLocation(state.range(0) == 1, &why);
   if (location.isEmpty()) {
     state.SkipWithError(qPrintable("no database: " + why));
-    return;
+    return nullptr;
   }
-  mx::app::LearningDatabase db(location);
+  return std::make_unique<mx::app::LearningDatabase>(location);
+}
+
+void BM_LearningInsert(benchmark::State& state) {
+  const auto db = benchDatabase(state);
+  if (!db) return;
   int i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(db.insert(benchRecord(i++)));
+  for (auto _ : state) benchmark::DoNotOptimize(db->insert(benchRecord(i++)));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_LearningInsert)->ArgName("postgres")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_LearningHistory500(benchmark::State& state) {
-  QString why;
-  const QString location = benchLocation(state.range(0) == 1, &why);
-  if (location.isEmpty()) {
-    state.SkipWithError(qPrintable("no database: " + why));
-    return;
-  }
-  mx::app::LearningDatabase db(location);
+  const auto db = benchDatabase(state);
+  if (!db) return;
   std::vector<mx::app::LearningRecord> records;
   for (int i = 0; i < 2000; ++i) records.push_back(benchRecord(i));
-  db.insertAll(records);
+  db->insertAll(records);
   for (auto _ : state) {
-    const auto history = db.history({std::nullopt, std::nullopt, std::nullopt, 500});
+    const auto history = db->history({std::nullopt, std::nullopt, std::nullopt, 500});
     if (history.size() != 500 || history.front().weights.size() != 4) state.SkipWithError("wrong history");
   }
   state.SetItemsProcessed(state.iterations() * 500);

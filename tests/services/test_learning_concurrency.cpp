@@ -24,12 +24,6 @@ constexpr int kWriters = 8;
 constexpr int kRecordsPerWriter = 500;
 constexpr int kBatchRecords = 20000;  // one transaction that lasts seconds: the kill lands inside it
 
-QVariant rawScalar(const LearningDatabase& db, const QString& sql) {
-  QSqlQuery q(QSqlDatabase::database(db.connectionName(), false));
-  if (!q.exec(sql) || !q.next()) return {};
-  return q.value(0);
-}
-
 bool allFinished(const std::vector<std::unique_ptr<QProcess>>& writers) {
   return std::all_of(writers.begin(), writers.end(), [](const auto& w) {
     return mx::test::hasEnded(w->processId()) || w->state() == QProcess::NotRunning;
@@ -37,10 +31,6 @@ bool allFinished(const std::vector<std::unique_ptr<QProcess>>& writers) {
 }
 
 }  // namespace
-
-#define MX_NEW_DATABASE(var, name)              \
-  const QString var = backends_.location(name); \
-  if (var.isEmpty()) return
 
 class TestLearningConcurrency : public QObject {
   Q_OBJECT
@@ -78,9 +68,10 @@ class TestLearningConcurrency : public QObject {
           static_cast<long long>(clock.elapsed()), snapshots);
     QVERIFY(snapshots >= 1);
     QCOMPARE(reader.count(), kWriters * kRecordsPerWriter);
-    QCOMPARE(rawScalar(reader, "SELECT COUNT(DISTINCT record_uid) FROM learning_entry").toInt(),
+    QCOMPARE(mx::test::rawScalar(reader, "SELECT COUNT(DISTINCT record_uid) FROM learning_entry").toInt(),
              kWriters * kRecordsPerWriter);
-    QCOMPARE(rawScalar(reader, "SELECT COUNT(*) FROM learning_weight").toInt(), 4 * kWriters * kRecordsPerWriter);
+    QCOMPARE(mx::test::rawScalar(reader, "SELECT COUNT(*) FROM learning_weight").toInt(),
+             4 * kWriters * kRecordsPerWriter);
     for (int w = 0; w < kWriters; ++w) {
       mx::app::LearningHistoryQuery query;
       query.machine = QString("M%1").arg(w);
@@ -115,7 +106,7 @@ class TestLearningConcurrency : public QObject {
     // Nothing of it is stored, and nothing of it holds a lock: the server ended the dead session.
     QVERIFY(waitUntilNoOpenTransaction(db));
     QCOMPARE(db.count(), 1);
-    QCOMPARE(rawScalar(db, "SELECT COUNT(*) FROM learning_weight").toInt(), 4);
+    QCOMPARE(mx::test::rawScalar(db, "SELECT COUNT(*) FROM learning_weight").toInt(), 4);
     QVERIFY(db.checkConsistency().ok());
     mx::app::LearningRecord after = recordBefore();
     after.uid.clear();
@@ -140,9 +131,9 @@ class TestLearningConcurrency : public QObject {
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < 10000) {
-      if (rawScalar(db,
-                    "SELECT COUNT(*) FROM pg_stat_activity WHERE state LIKE 'idle in transaction%'"
-                    " OR (state = 'active' AND pid <> pg_backend_pid() AND backend_type = 'client backend')")
+      if (mx::test::rawScalar(db,
+                              "SELECT COUNT(*) FROM pg_stat_activity WHERE state LIKE 'idle in transaction%'"
+                              " OR (state = 'active' AND pid <> pg_backend_pid() AND backend_type = 'client backend')")
               .toInt() == 0)
         return true;
       QThread::msleep(20);

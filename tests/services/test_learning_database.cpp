@@ -52,13 +52,6 @@ QString errorOf(F fn) {
   return mx::test::messageOf<LearningDatabaseError>(fn);
 }
 
-// A statement on the database's own connection, behind the class's back.
-QVariant rawScalar(const LearningDatabase& db, const QString& sql) {
-  QSqlQuery q(QSqlDatabase::database(db.connectionName(), false));
-  if (!q.exec(sql) || !q.next()) return {};
-  return q.value(0);
-}
-
 bool rawExec(const LearningDatabase& db, const QString& sql) {
   return QSqlQuery(QSqlDatabase::database(db.connectionName(), false)).exec(sql);
 }
@@ -86,11 +79,6 @@ struct RawDb {
 
 }  // namespace
 
-// A new empty database of the current back end, or return from the test (the failure is recorded).
-#define MX_NEW_DATABASE(var, name)              \
-  const QString var = backends_.location(name); \
-  if (var.isEmpty()) return
-
 class TestLearningDatabase : public QObject {
   Q_OBJECT
   mx::test::LearningBackends backends_;
@@ -109,15 +97,15 @@ class TestLearningDatabase : public QObject {
       QCOMPARE(db.journalMode(), backends_.postgres() ? QString() : QString("wal"));
       QCOMPARE(db.count(), 0);
       QVERIFY(db.checkConsistency().ok());
-      QCOMPARE(rawScalar(db, "SELECT version FROM learning_schema").toInt(), latest);
-      QCOMPARE(rawScalar(db, "SELECT application FROM learning_schema").toString(),
+      QCOMPARE(mx::test::rawScalar(db, "SELECT version FROM learning_schema").toInt(), latest);
+      QCOMPARE(mx::test::rawScalar(db, "SELECT application FROM learning_schema").toString(),
                QString(mx::app::kLearningApplication));
       const QString indexes =
           backends_.postgres()
               ? "SELECT COUNT(*) FROM pg_indexes WHERE indexname LIKE 'learning_entry_%'"
                 " AND indexname <> 'learning_entry_pkey'"
               : "SELECT COUNT(*) FROM sqlite_master WHERE type = 'index' AND name LIKE 'learning_entry_%'";
-      QCOMPARE(rawScalar(db, indexes).toInt(), 6);  // tool, material, mrr, time, uid, machine
+      QCOMPARE(mx::test::rawScalar(db, indexes).toInt(), 6);  // tool, material, mrr, time, uid, machine
     }
     if (!backends_.postgres()) {
       QVERIFY(QFile::exists(location));
@@ -217,7 +205,7 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(ids[0], first);
     QVERIFY(ids[1] != first);
     QCOMPARE(db.count(), 2);
-    QCOMPARE(rawScalar(db, "SELECT COUNT(*) FROM learning_weight").toInt(), 8);  // no weights written twice
+    QCOMPARE(mx::test::rawScalar(db, "SELECT COUNT(*) FROM learning_weight").toInt(), 8);  // no weights written twice
     QVERIFY(db.checkConsistency().ok());
   }
 

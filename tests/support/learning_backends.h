@@ -4,6 +4,8 @@
 // in a test gives a new, empty database of the current row: a file in the test's folder, or a new
 // database on a real PostgreSQL server started on first use (postgres_server.h), which QVERIFY2
 // reports when it cannot start.
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
 #include <memory>
@@ -65,4 +67,19 @@ class LearningBackends {
   int databases_ = 0;
 };
 
+// A statement on a LearningDatabase's own connection (same thread), behind the class's back: the first
+// value of its first row, or an invalid QVariant.
+template <typename Database>
+QVariant rawScalar(const Database& db, const QString& sql) {
+  QSqlQuery q(QSqlDatabase::database(db.connectionName(), false));
+  if (!q.exec(sql) || !q.next()) return {};
+  return q.value(0);
+}
+
 }  // namespace mx::test
+
+// In a test of a class with a LearningBackends member backends_: a new empty database of the current
+// back end in `var`, or return from the test (the failure is recorded).
+#define MX_NEW_DATABASE(var, name)              \
+  const QString var = backends_.location(name); \
+  if (var.isEmpty()) return
