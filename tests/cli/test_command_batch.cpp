@@ -2,6 +2,7 @@
 // for a bad manifest (before any case runs), results equal to the single commands', resume after a
 // torn last line, --jobs 2 equal to --jobs 1, and the merged table.
 #include <QFile>
+#include <QProcess>
 #include <QSet>
 
 #include "support/batch_manifests.h"
@@ -99,6 +100,47 @@ class TestCliBatch : public QObject {
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QVERIFY(!QFile::exists(out));  // nothing ran
+  }
+
+  // The ranges' edges are accepted: the largest spindle power, full immersion, the smallest Kr.
+  void edgeValuesAreAccepted() {
+    QTemporaryDir dir;
+    mx::test::copyRubio(dir);
+    QJsonObject manifest = mx::test::lobesManifest();
+    manifest["tools"] = QJsonArray{"R1"};
+    manifest["machines"] = QJsonArray{QJsonObject{{"name", "Edge"}, {"spindle_power_W", 1e6}}};
+    manifest["materials"] = QJsonArray{QJsonObject{{"name", "Edge"}, {"Kt_N_mm2", 1e5}, {"Kr", 0.0}}};
+    manifest["operations"] =
+        QJsonArray{QJsonObject{{"milling", "up"}, {"radial_immersion", 1.0}, {"max_feed_per_tooth_mm", 0.15}}};
+    const CliRun r = batch(mx::test::writeManifest(dir, manifest), dir.filePath("out.jsonl"));
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    QCOMPARE(r.json["cases"].toInt(), 1);
+    const QJsonObject line = mx::test::jsonLines(dir.filePath("out.jsonl"))[0];
+    QCOMPARE(line["machine"].toObject()["spindle_power_W"].toDouble(), 1e6);
+    QCOMPARE(line["operation"].toObject()["radial_immersion"].toDouble(), 1.0);
+  }
+
+  // A Kubernetes Indexed Job's pod: JOB_COMPLETION_INDEX of --shard-count.
+  void kubernetesIndex() {
+    QTemporaryDir dir;
+    mx::test::copyRubio(dir);
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char* slurm : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_MIN", "SLURM_ARRAY_TASK_COUNT"})
+      env.remove(slurm);
+    env.insert("JOB_COMPLETION_INDEX", "2");
+    p.setProcessEnvironment(env);
+    p.start(MX_CLI_PATH, {"batch", mx::test::writeManifest(dir, mx::test::lobesManifest()), "--out",
+                          dir.filePath("out.jsonl"), "--shard-count", "3"});
+    QVERIFY(p.waitForFinished(60000));
+    QCOMPARE(p.exitCode(), 0);
+    const QJsonObject summary = QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+    QCOMPARE(summary["shard"].toObject()["source"].toString(), QString("Kubernetes"));
+    QCOMPARE(summary["shard"].toObject()["index"].toInt(), 2);
+    QList<qint64> cases;
+    for (const QJsonObject& line : mx::test::jsonLines(dir.filePath("out.jsonl")))
+      cases.append(line["case"].toInteger());
+    QCOMPARE(cases, (QList<qint64>{2, 5}));
   }
 
   void badFlags_data() {
