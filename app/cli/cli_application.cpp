@@ -39,6 +39,10 @@ const char* kUsage =
     "            (a record: CSV time_s,Fx_N,Fy_N,Fz_N, or UFF 58 type 1 time responses of Fx, Fy, Fz)\n"
     "  materials the materials library [--library FILE]; --apply ID --into PROJECT copies an entry into\n"
     "            the project's material section\n"
+    "  batch     one computation over a manifest's cases: batch MANIFEST.json --out RESULTS.jsonl\n"
+    "            [--shard I/N] [--jobs K] [--shard-count N] (docs/shop-scale.md)\n"
+    "  batch-merge  one table from batch results: batch-merge RESULTS.jsonl... --out SUMMARY.json\n"
+    "            [--csv FILE] [--html FILE]\n"
     "An output (--csv, --out, --output, --db) is never an input of the command, another output, or an\n"
     "existing file that is not a regular file (device, FIFO, directory, socket): exit 2 before any work.\n"
     "Run 'millexpert-cli <command> --help' or 'millexpert-cli help <command>' for the options of a command.\n";

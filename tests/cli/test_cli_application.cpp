@@ -46,6 +46,9 @@ class TestCliApplication : public QObject {
     row("frf-fit", {"frf-fit", "--help"}, "Usage: millexpert-cli frf-fit [options] FILE", "--modes <N>");
     row("frf-export", {"frf-export", "--help"}, "Usage: millexpert-cli frf-export [options] PROJECT",
         "--output <FILE>");
+    row("batch", {"batch", "--help"}, "Usage: millexpert-cli batch [options] MANIFEST", "--shard <I/N>");
+    row("batch-merge", {"batch-merge", "--help"}, "Usage: millexpert-cli batch-merge [options] RESULTS.jsonl...",
+        "--html <FILE>");
   }
 
   void commandHelp() {
