@@ -29,6 +29,7 @@ constexpr ColumnSpec kColumns[HistoryView::ColumnCount] = {
     {"Time", "When the point was programmed (UTC, ISO 8601)"},
     {"Tool", "Tool id"},
     {"Material", "Workpiece material"},
+    {"Machine", "The machine that ran the point (the project's machine name; \u2014 when none was named)"},
     {"Source",
      "Who chose the point: operator, automatic (expert system), rule (operator rules) or feedback "
      "(Rule 15/16 re-selection)"},
@@ -45,6 +46,8 @@ constexpr ColumnSpec kColumns[HistoryView::ColumnCount] = {
     {"ROS [\u2013]", "Robustness: normalised distance to the stability boundary (eq. 13)"},
 };
 
+const QString kNoMachine = QStringLiteral("\u2014");  // the record names no machine
+
 const char* const kSources[] = {"operator", "automatic", "rule", "feedback"};
 
 QString fixed(double v, int decimals) {
@@ -57,6 +60,7 @@ HistoryView::HistoryView(QWidget* parent)
     : QWidget(parent),
       tool_(new QComboBox(this)),
       material_(new QComboBox(this)),
+      machine_(new QComboBox(this)),
       source_(new QComboBox(this)),
       mrr_box_(new QCheckBox(this)),
       mrr_lo_(new QDoubleSpinBox(this)),
@@ -70,6 +74,7 @@ HistoryView::HistoryView(QWidget* parent)
          "first."));
   tool_->setObjectName("history_tool");
   material_->setObjectName("history_material");
+  machine_->setObjectName("history_machine");
   source_->setObjectName("history_source");
   mrr_box_->setObjectName("history_mrr_enable");
   mrr_lo_->setObjectName("history_mrr_lo");
@@ -81,6 +86,7 @@ HistoryView::HistoryView(QWidget* parent)
 
   tool_->setToolTip(tr("Show only the points of this tool (Any: all tools)."));
   material_->setToolTip(tr("Show only the points of this workpiece material (Any: all materials)."));
+  machine_->setToolTip(tr("Show only the points run on this machine (Any: all machines)."));
   source_->setToolTip(
       tr("Show only the points chosen by the operator, the expert system (automatic), the "
          "operator rules (rule) or the chatter feedback (feedback)."));
@@ -95,6 +101,7 @@ HistoryView::HistoryView(QWidget* parent)
 
   setChoices(tool_, {});
   setChoices(material_, {});
+  setChoices(machine_, {});
   QStringList sources;
   for (const char* s : kSources) sources << QString::fromLatin1(s);
   setChoices(source_, sources);
@@ -126,6 +133,7 @@ HistoryView::HistoryView(QWidget* parent)
   };
   addLabelled(tr("Tool"), tool_);
   addLabelled(tr("Material"), material_);
+  addLabelled(tr("Machine"), machine_);
   addLabelled(tr("Source"), source_);
   filters->addWidget(mrr_box_);
   filters->addWidget(mrr_lo_);
@@ -148,7 +156,7 @@ HistoryView::HistoryView(QWidget* parent)
   last_filter_ = filter();
   updateButtons();
 
-  for (QComboBox* combo : {tool_, material_, source_})
+  for (QComboBox* combo : {tool_, material_, machine_, source_})
     connect(combo, &QComboBox::currentIndexChanged, this, &HistoryView::emitIfChanged);
   connect(mrr_box_, &QCheckBox::toggled, this, [this](bool on) {
     mrr_lo_->setEnabled(on);
@@ -189,6 +197,10 @@ void HistoryView::setToolChoices(const QStringList& tools) {
 
 void HistoryView::setMaterialChoices(const QStringList& materials) {
   setChoices(material_, materials);
+}
+
+void HistoryView::setMachineChoices(const QStringList& machines) {
+  setChoices(machine_, machines);
 }
 
 void HistoryView::setUnits(DisplayUnits* units) {
@@ -246,6 +258,7 @@ HistoryFilter HistoryView::filter() const {
   HistoryFilter f;
   f.tool = tool_->currentData().toString();
   f.material = material_->currentData().toString();
+  f.machine = machine_->currentData().toString();
   f.source = source_->currentData().toString();
   if (mrr_box_->isChecked()) {
     f.mrr_lo = mrrFromSpin(mrr_lo_, band_[0]);
@@ -257,6 +270,7 @@ HistoryFilter HistoryView::filter() const {
 void HistoryView::setFilter(const HistoryFilter& f) {
   selectValue(tool_, f.tool);
   selectValue(material_, f.material);
+  selectValue(machine_, f.machine);
   selectValue(source_, f.source);
   const bool band = f.mrr_lo && f.mrr_hi;
   {
@@ -308,6 +322,7 @@ void HistoryView::setRows(const QVector<HistoryRow>& rows) {
       cells[TimeColumn] = h.time;
       cells[ToolColumn] = h.tool;
       cells[MaterialColumn] = h.material;
+      cells[MachineColumn] = h.machine.isEmpty() ? kNoMachine : h.machine;
       cells[SourceColumn] = h.source;
       for (int i = 0; i < std::min<int>(4, static_cast<int>(h.weights.size())); ++i)
         cells[WeightColumn0 + i] = fixed(h.weights[i], 3);

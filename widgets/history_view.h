@@ -1,6 +1,6 @@
 #pragma once
 // The Rule 14 learning-database history (Pareto paper): the programmed points with the weights that
-// produced them, newest first, filtered by tool, material, source and an MRR band. The view does not
+// produced them, newest first, filtered by tool, material, machine, source and an MRR band. The view does not
 // touch the database: the main window queries it (app/services/learning_database.h) on filterChanged() or
 // refreshRequested() and calls setRows() with the result.
 //
@@ -33,6 +33,7 @@ struct HistoryRow {
   qint64 id = 0;
   QString time;                    // ISO 8601
   QString tool, material, source;  // source: operator, automatic, rule, feedback
+  QString machine;                 // the project's machine.name; "" when the record names none
   QVector<double> weights;         // 3 (2006 c) or 4 (Pareto: TOL, MRR, SURF, ROS)
   double speed_rpm = 0, depth_mm = 0, feed_mm_per_tooth = 0, mrr_cm3_s = 0;
   std::optional<double> tol, surf, ros;
@@ -40,6 +41,7 @@ struct HistoryRow {
 
 struct HistoryFilter {
   QString tool, material, source;        // empty = any
+  QString machine;                       // empty = any
   std::optional<double> mrr_lo, mrr_hi;  // cm³/s; both set or both unset
   bool operator==(const HistoryFilter&) const = default;
 };
@@ -51,6 +53,7 @@ class HistoryView : public QWidget {
     TimeColumn,
     ToolColumn,
     MaterialColumn,
+    MachineColumn,
     SourceColumn,
     WeightColumn0,  // w_TOL (or c1), then w_MRR, w_SURF, w_ROS
     SpeedColumn = WeightColumn0 + 4,
@@ -73,6 +76,7 @@ class HistoryView : public QWidget {
   // Filter combos ("Any" first); no signal. The current choice is kept, even when missing from the list.
   void setToolChoices(const QStringList& tools);
   void setMaterialChoices(const QStringList& materials);
+  void setMachineChoices(const QStringList& machines);
   HistoryFilter filter() const;
   void setFilter(const HistoryFilter& f);  // no signal; an MRR band is used only when both bounds are set
   int selectedRow() const;                 // -1 when none
@@ -84,6 +88,7 @@ class HistoryView : public QWidget {
   QPushButton* refreshButton() const { return refresh_; }
   QComboBox* toolCombo() const { return tool_; }
   QComboBox* materialCombo() const { return material_; }
+  QComboBox* machineCombo() const { return machine_; }
   QComboBox* sourceCombo() const { return source_; }
   QCheckBox* mrrBox() const { return mrr_box_; }
   QDoubleSpinBox* mrrLoSpin() const { return mrr_lo_; }
@@ -114,6 +119,7 @@ class HistoryView : public QWidget {
   HistoryFilter last_filter_;
   QComboBox* tool_;
   QComboBox* material_;
+  QComboBox* machine_;
   QComboBox* source_;
   QCheckBox* mrr_box_;
   QDoubleSpinBox* mrr_lo_;

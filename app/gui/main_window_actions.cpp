@@ -54,9 +54,9 @@ void MainWindow::buildActions() {
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
-  add(edit, tr("&Preferences..."), QKeySequence::Preferences,
-      tr("Shop units: mm or inch, m/min or SFM, mm/min or IPM, W, kW or hp, N or lbf, cm\u00b3/min or in\u00b3/min"),
-      [this] { openPreferences(); });
+  const QString units_tip =
+      tr("Shop units: mm or inch, m/min or SFM, mm/min or IPM, W, kW or hp, N or lbf, cm\u00b3/min or in\u00b3/min");
+  add(edit, tr("&Preferences..."), QKeySequence::Preferences, units_tip, [this] { openPreferences(); });
   bar->addSeparator();
   addUndoButtons(bar);
 
@@ -65,6 +65,11 @@ void MainWindow::buildActions() {
   for (WindowFeature* feature : features_) feature->addViewActions(view, bar);
   view->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+
+  QMenu* settings_menu = menuBar()->addMenu(tr("&Settings"));
+  settings_menu->setObjectName("settingsMenu");
+  add(settings_menu, tr("Shop &units..."), QKeySequence(), units_tip, [this] { openPreferences(); });
+  for (WindowFeature* feature : features_) feature->addSettingsActions(settings_menu);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   for (WindowFeature* feature : features_) feature->addHelpActions(help);

@@ -10,6 +10,7 @@
 #include "document/frf_paths.h"
 #include "feature_dock.h"
 #include "history_view.h"
+#include "learning_client.h"
 #include "lobe_chart_view.h"
 #include "monitoring_panel.h"
 #include "notice_stack.h"
@@ -90,7 +91,8 @@ ParetoFeature::ParetoFeature(QMainWindow* window, FeatureContext& context, widge
       rules_editor_(new widgets::OperatorRulesEditor),
       record_button_(new QPushButton(tr("Record point in learning database"))),
       report_chatter_(new QPushButton(tr("Report chatter (Rule 16 / Rule 6)"))),
-      chatter_hz_(new QDoubleSpinBox) {
+      chatter_hz_(new QDoubleSpinBox),
+      learning_(new LearningClient(this)) {
   setObjectName("paretoFeature");
   front_notice_->setObjectName("paretoFrontNotice");
   requirements_->setUnits(context.units());
@@ -194,6 +196,7 @@ void ParetoFeature::connectSignals() {
     updateMonitoring();
   });
   connect(&context_, &FeatureContext::simulationStateChanged, this, &ParetoFeature::updateMonitoring);
+  connectLearning();
 }
 
 // A new study waits for the edits to pause; new weights alone re-select from the current one.

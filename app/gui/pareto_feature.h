@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QTimer>
 #include <optional>
+#include <set>
 
 #include "feature_context.h"
 #include "services/pareto_study.h"
@@ -22,6 +23,7 @@
 
 namespace mx::widgets {
 class HistoryView;
+class LearningDatabaseDialog;
 class LobeChartView;
 class MonitoringPanel;
 class NoticeStack;
@@ -35,7 +37,9 @@ struct ParetoPointView;
 
 namespace mx::gui {
 
+class LearningClient;
 class ParetoRunner;
+struct LearningHistoryResult;
 
 // The project's pareto.weights (equal weights when absent).
 ParetoWeights projectParetoWeightsOf(const app::Project& project);
@@ -48,11 +52,18 @@ class ParetoFeature : public WindowFeature {
   ParetoFeature(QMainWindow* window, FeatureContext& context, widgets::LobeChartView* chart);
 
   void projectChanged(const app::Project& project, Features recompute) override;
+  void addSettingsActions(QMenu* settings) override;  // Learning database...
 
   ParetoRunner* runner() const { return runner_; }
   const std::optional<app::ParetoChoice>& choice() const { return choice_; }
-  QString learningDatabasePath() const;  // default: LearningDatabase::defaultPath()
-  void setLearningDatabasePath(const QString& path);
+  // The learning database's file path or URL; default: LearningDatabase::configuredOrDefault().
+  QString learningDatabasePath() const;
+  void setLearningDatabasePath(const QString& path);  // and refreshes the history
+  // No record or history query is waiting for the learning thread (tests wait for it).
+  bool learningIdle() const;
+  // Settings > Learning database...: window-modal; accepting it stores the setting and points the
+  // feature at the chosen location. Returns the open dialog (tests).
+  widgets::LearningDatabaseDialog* openLearningDatabaseSettings();
   void recordOperatingPoint();            // Rule 14, source operator or automatic
   void moveToChoice();                    // the operating point := the Pareto choice (undoable)
   void reportChatter(double chatter_hz);  // Module VI: Rule 16 speed, re-selection, record, simulate
@@ -61,7 +72,7 @@ class ParetoFeature : public WindowFeature {
 
  signals:
   void paretoShown();   // the choice was recomputed (study ready, weights or requirement changed)
-  void historyShown();  // the history view was refreshed from the database
+  void historyShown();  // the history view shows the database's answer (rows or the error)
 
  private:
   // pareto_feature.cpp: the study, the selection and its commits.
@@ -86,7 +97,10 @@ class ParetoFeature : public WindowFeature {
   // pareto_feature_learning.cpp: the learning database, monitoring and operator rules.
   std::optional<ParetoPoint> currentParetoPoint() const;
   void recordFeedback(const ParetoPoint& q);  // Rule 16's re-selected point, source feedback
-  void refreshHistory();
+  void refreshHistory();                      // queued to the learning thread; showHistory() or showHistoryError()
+  void showHistory(const LearningHistoryResult& result);
+  void showHistoryError(const QString& message);
+  void connectLearning();
   void onRulesEdited(const QStringList& rules);
   void updateFiredRules();
   // Rule 17: the readouts of the current point, and its simulation only when it is of this very point.
@@ -108,7 +122,10 @@ class ParetoFeature : public WindowFeature {
   QDoubleSpinBox* chatter_hz_;
   QTimer rebuild_timer_;  // one study per burst of edits
   std::optional<app::ParetoChoice> choice_;
+  LearningClient* learning_;  // the database on its own thread
   QString learning_db_path_;
+  std::set<quint64> feedback_records_;  // Rule 16 records not yet answered: no status of their own
+  widgets::LearningDatabaseDialog* learning_dialog_ = nullptr;
 };
 
 }  // namespace mx::gui

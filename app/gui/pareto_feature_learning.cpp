@@ -4,8 +4,10 @@
 #include <QJsonArray>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "history_view.h"
+#include "learning_client.h"
 #include "monitoring_panel.h"
 #include "operator_rules_editor.h"
 #include "pareto_feature.h"
@@ -29,6 +31,7 @@ widgets::HistoryRow historyRow(const app::LearningRecord& r) {
   row.time = app::learningTimeText(r.time);
   row.tool = r.tool.id;
   row.material = r.material;
+  row.machine = r.machine.name.value_or(QString());
   row.source = app::learningSourceName(r.source);
   for (double w : r.weights) row.weights.append(w);
   row.speed_rpm = r.q.speed_rpm;
@@ -43,6 +46,15 @@ widgets::HistoryRow historyRow(const app::LearningRecord& r) {
   row.surf = objective("surf");
   row.ros = objective("ros");
   return row;
+}
+
+// The file path, or the URL without its options: what the status line shows.
+QString shownLocation(const QString& location) {
+  try {
+    return app::parseLearningLocation(location).display();
+  } catch (const std::invalid_argument&) {
+    return location;
+  }
 }
 
 bool samePoint(const ParetoPoint& a, const ParetoPoint& b) {
@@ -65,12 +77,16 @@ QVector<widgets::MonitoringPeak> spectrumPeaks(const SimulationSummary& summary)
 }  // namespace
 
 QString ParetoFeature::learningDatabasePath() const {
-  return learning_db_path_.isEmpty() ? app::LearningDatabase::defaultPath() : learning_db_path_;
+  return learning_db_path_.isEmpty() ? app::LearningDatabase::configuredOrDefault() : learning_db_path_;
 }
 
 void ParetoFeature::setLearningDatabasePath(const QString& path) {
   learning_db_path_ = path;
   refreshHistory();
+}
+
+bool ParetoFeature::learningIdle() const {
+  return learning_->idle();
 }
 
 // The current operating point in engine form, with the Pareto objectives when the active tool is the
@@ -96,67 +112,70 @@ void ParetoFeature::recordOperatingPoint() {
   }
   // Automatic when the point is the system's Pareto choice, operator otherwise.
   const bool automatic = choice_ && samePoint(choice_->point(), *q);
-  try {
-    app::LearningDatabase db(learningDatabasePath());
-    const SimulationSummary* simulation = context_.currentSimulation();  // of this point, or none
-    const double eta = simulation ? simulation->eta : std::numeric_limits<double>::quiet_NaN();
-    const qint64 id =
-        db.insert(study->learningRecord(weights_panel_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
-                                        automatic ? app::LearningSource::Automatic : app::LearningSource::Operator));
-    emit statusMessage(tr("Recorded point %1 in %2").arg(id).arg(db.location()), 8000);
-  } catch (const std::exception& e) {
-    emit errorRaised(tr("Learning database"), QString::fromStdString(e.what()));
-    return;
-  }
-  refreshHistory();
+  const SimulationSummary* simulation = context_.currentSimulation();  // of this point, or none
+  const double eta = simulation ? simulation->eta : std::numeric_limits<double>::quiet_NaN();
+  const app::LearningRecord record =
+      study->learningRecord(weights_panel_->weights(), *q, std::isfinite(eta) ? eta : 0.0,
+                            automatic ? app::LearningSource::Automatic : app::LearningSource::Operator);
+  emit statusMessage(tr("Recording the point in %1...").arg(shownLocation(learningDatabasePath())), 0);
+  learning_->record(learningDatabasePath(), record);
+  refreshHistory();  // queued after the record: it shows it
 }
 
 void ParetoFeature::recordFeedback(const ParetoPoint& q) {
-  try {
-    app::LearningDatabase db(learningDatabasePath());
-    db.insert(runner_->study()->learningRecord(weights_panel_->weights(), q, 0.0, app::LearningSource::Feedback));
-  } catch (const std::exception& e) {
-    emit statusMessage(tr("Learning database: %1").arg(e.what()), 10000);
-  }
+  feedback_records_.insert(learning_->record(
+      learningDatabasePath(),
+      runner_->study()->learningRecord(weights_panel_->weights(), q, 0.0, app::LearningSource::Feedback)));
   refreshHistory();
+}
+
+void ParetoFeature::connectLearning() {
+  connect(learning_, &LearningClient::recorded, this, [this](quint64 generation, qint64 id, const QString& location) {
+    if (feedback_records_.erase(generation) == 0)  // Rule 16 has said what it did already
+      emit statusMessage(tr("Recorded point %1 in %2").arg(id).arg(location), 8000);
+  });
+  connect(learning_, &LearningClient::recordFailed, this, [this](quint64 generation, const QString& message) {
+    if (feedback_records_.erase(generation) > 0)
+      emit statusMessage(tr("Learning database: %1").arg(message), 10000);
+    else {
+      emit statusMessage(tr("Not recorded: %1").arg(message), 10000);
+      emit errorRaised(tr("Learning database"), message);
+    }
+  });
+  connect(learning_, &LearningClient::historyLoaded, this,
+          [this](quint64, const LearningHistoryResult& result) { showHistory(result); });
+  connect(learning_, &LearningClient::historyFailed, this,
+          [this](quint64, const QString& message) { showHistoryError(message); });
 }
 
 void ParetoFeature::refreshHistory() {
   const widgets::HistoryFilter f = history_->filter();
-  try {
-    app::LearningDatabase db(learningDatabasePath());
-    std::vector<app::LearningRecord> records;
-    if (f.mrr_lo && f.mrr_hi) {
-      records = db.withMrrIn(*f.mrr_lo, *f.mrr_hi, 500);
-    } else {
-      app::LearningHistoryQuery query;
-      if (!f.tool.isEmpty()) query.tool = f.tool;
-      if (!f.material.isEmpty()) query.material = f.material;
-      query.limit = 500;
-      records = db.history(query);
-    }
-    QVector<widgets::HistoryRow> rows;
-    QStringList tools, materials;
-    for (const app::LearningRecord& r : records) {
-      if (!f.tool.isEmpty() && r.tool.id != f.tool) continue;
-      if (!f.material.isEmpty() && r.material != f.material) continue;
-      if (!f.source.isEmpty() && app::learningSourceName(r.source) != f.source) continue;
-      rows.append(historyRow(r));
-    }
-    for (const app::LearningRecord& r : db.history({std::nullopt, std::nullopt, std::nullopt, 0})) {
-      if (!tools.contains(r.tool.id)) tools << r.tool.id;
-      if (!materials.contains(r.material)) materials << r.material;
-    }
-    tools.sort();
-    materials.sort();
-    history_->setToolChoices(tools);
-    history_->setMaterialChoices(materials);
-    history_->setRows(rows);
-    history_->setStatus(tr("%1 of %2 entries - %3").arg(rows.size()).arg(db.count()).arg(db.location()));
-  } catch (const std::exception& e) {
-    history_->setRows({});
-    history_->setStatus(tr("Learning database unavailable: %1").arg(e.what()));
-  }
+  LearningHistoryRequest request;
+  request.tool = f.tool;
+  request.material = f.material;
+  request.machine = f.machine;
+  request.source = f.source;
+  request.mrr_lo = f.mrr_lo;
+  request.mrr_hi = f.mrr_hi;
+  history_->setStatus(tr("Loading history from %1...").arg(shownLocation(learningDatabasePath())));
+  learning_->loadHistory(learningDatabasePath(), request);
+}
+
+void ParetoFeature::showHistory(const LearningHistoryResult& result) {
+  QVector<widgets::HistoryRow> rows;
+  rows.reserve(static_cast<int>(result.records.size()));
+  for (const app::LearningRecord& r : result.records) rows.append(historyRow(r));
+  history_->setToolChoices(result.tools);
+  history_->setMaterialChoices(result.materials);
+  history_->setMachineChoices(result.machines);
+  history_->setRows(rows);
+  history_->setStatus(tr("%1 of %2 entries - %3").arg(rows.size()).arg(result.total).arg(result.location));
+  emit historyShown();
+}
+
+void ParetoFeature::showHistoryError(const QString& message) {
+  history_->setRows({});
+  history_->setStatus(tr("Learning database unavailable: %1").arg(message));
   emit historyShown();
 }
 

@@ -27,9 +27,10 @@ class WindowFeature : public QObject {
   virtual void projectReplaced() {}
   // Stop the feature's engine-thread work (the window closes, or Cancel was pressed).
   virtual void stop() {}
-  // Its actions in the File, View and Help menus and on the toolbar, in the order the window asks.
+  // Its actions in the File, View, Settings and Help menus and on the toolbar, in the order the window asks.
   virtual void addFileActions(QMenu* /*file*/, QToolBar* /*toolbar*/) {}
   virtual void addViewActions(QMenu* /*view*/, QToolBar* /*toolbar*/) {}
+  virtual void addSettingsActions(QMenu* /*settings*/) {}
   virtual void addHelpActions(QMenu* /*help*/) {}
 
  signals:

@@ -89,7 +89,7 @@ class TestHelpFeature : public QObject {
     gui::MainWindow window;
     QStringList menus;
     for (QAction* a : window.menuBar()->actions()) menus << a->text();
-    QCOMPARE(menus, QStringList({"&File", "&Edit", "&View", "&Help"}));
+    QCOMPARE(menus, QStringList({"&File", "&Edit", "&View", "&Settings", "&Help"}));
     QMenu* help = window.menuBar()->actions().last()->menu();
     QStringList entries;
     for (QAction* a : help->actions())

@@ -42,6 +42,11 @@ bool openCase(gui::MainWindow& window) {
   return test::paretoOf(window)->runner()->study() != nullptr && test::paretoOf(window)->choice().has_value();
 }
 
+// The learning thread has answered every record and history query (and the view shows the answer).
+bool waitForLearning(const gui::MainWindow& window) {
+  return QTest::qWaitFor([&window] { return test::paretoOf(window)->learningIdle(); }, 30000);
+}
+
 widgets::ParetoWeightsPanel* weightsPanelOf(const gui::MainWindow& w) {
   return test::windowPart<widgets::ParetoWeightsPanel>(w);
 }
@@ -193,12 +198,14 @@ class TestParetoFeature : public QObject {
     gui::MainWindow window;
     QVERIFY(openCase(window));
     test::paretoOf(window)->setLearningDatabasePath(dir.filePath("learning.sqlite"));
+    QVERIFY(waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 0);
     // Move to the Pareto choice (commit the current weights), record it: source automatic.
     const ParetoWeights w = weightsPanelOf(window)->weights();
     weightsPanelOf(window)->setWeights(w);
     emit weightsPanelOf(window)->weightsCommitted(w);
     test::paretoOf(window)->recordOperatingPoint();
+    QVERIFY(waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
     const widgets::HistoryRow row = test::windowPart<widgets::HistoryView>(window)->rows().front();
     QCOMPARE(row.source, QString("automatic"));
@@ -230,6 +237,7 @@ class TestParetoFeature : public QObject {
       if (kk >= 1 && (best == 0.0 || std::abs(60.0 * 668.0 / (3.0 * kk) - n0) < std::abs(best - n0)))
         best = 60.0 * 668.0 / (3.0 * kk);
     QCOMPARE_LE(std::abs(n1 - best), 0.02 * best + 1e-9);
+    QVERIFY(waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().front().source, QString("feedback"));
   }

@@ -1,5 +1,6 @@
 // The Rule 14 history view: rows formatted in the C locale (weights of Pareto and 2006 points, "–" for
-// missing objectives), the filter widgets produce the right HistoryFilter with one filterChanged() per
+// missing objectives, "—" for a record without a machine), the filter widgets (tool, material, machine,
+// source, MRR band) produce the right HistoryFilter with one filterChanged() per
 // user change and none from setFilter(), the apply button and double-click emit the selected Pareto
 // row's weights, and setRows() keeps the selection by id.
 #include <QApplication>
@@ -26,8 +27,10 @@ namespace {
 
 const QString kDash = QStringLiteral("\u2013");
 
-HistoryRow row(qint64 id, const QString& tool, QVector<double> weights, std::optional<double> tol = 38.71) {
+HistoryRow row(qint64 id, const QString& tool, QVector<double> weights, std::optional<double> tol = 38.71,
+               const QString& machine = {}) {
   HistoryRow r;
+  r.machine = machine;
   r.id = id;
   r.time = QString("2024-05-0%1T08:00:00.125Z").arg(id % 10);
   r.tool = tool;
@@ -45,11 +48,13 @@ HistoryRow row(qint64 id, const QString& tool, QVector<double> weights, std::opt
 }
 
 QVector<HistoryRow> sampleRows() {
-  return {row(12, "R1", {0.1, 0.6, 0.1, 0.2}), row(11, "R2", {0.2, 0.725, 0.075}, std::nullopt),
-          row(10, "R1", {0.25, 0.25, 0.25, 0.25})};
+  return {row(12, "R1", {0.1, 0.6, 0.1, 0.2}, 38.71, "VMC-7 Hermle C42"),
+          row(11, "R2", {0.2, 0.725, 0.075}, std::nullopt), row(10, "R1", {0.25, 0.25, 0.25, 0.25})};
 }
 
-enum Action { ChooseTool, ChooseMaterial, ChooseSource, CheckMrr, EditMrrLo, EditMrrHi };
+const QString kNoMachine = QStringLiteral("\u2014");
+
+enum Action { ChooseTool, ChooseMaterial, ChooseMachine, ChooseSource, CheckMrr, EditMrrLo, EditMrrHi };
 
 }  // namespace
 
@@ -58,10 +63,22 @@ class TestHistoryView : public QObject {
  private slots:
   void columns() {
     HistoryView view;
-    const QStringList want = {"Time",           "Tool",           "Material",        "Source",
-                              "w_TOL [\u2013]", "w_MRR [\u2013]", "w_SURF [\u2013]", "w_ROS [\u2013]",
-                              "Speed [rpm]",    "Depth [mm]",     "Feed [mm/tooth]", "MRR [cm\u00b3/min]",
-                              "TOL [min]",      "SURF [\u00b5m]", "ROS [\u2013]"};
+    const QStringList want = {"Time",
+                              "Tool",
+                              "Material",
+                              "Machine",
+                              "Source",
+                              "w_TOL [\u2013]",
+                              "w_MRR [\u2013]",
+                              "w_SURF [\u2013]",
+                              "w_ROS [\u2013]",
+                              "Speed [rpm]",
+                              "Depth [mm]",
+                              "Feed [mm/tooth]",
+                              "MRR [cm\u00b3/min]",
+                              "TOL [min]",
+                              "SURF [\u00b5m]",
+                              "ROS [\u2013]"};
     QCOMPARE(view.table()->columnCount(), want.size());
     for (int c = 0; c < want.size(); ++c) {
       QCOMPARE(view.table()->horizontalHeaderItem(c)->text(), want[c]);
@@ -79,6 +96,7 @@ class TestHistoryView : public QObject {
                                   << QStringList{"2024-05-02T08:00:00.125Z",
                                                  "R1",
                                                  "Al 7075",
+                                                 "VMC-7 Hermle C42",
                                                  "automatic",
                                                  "0.100",
                                                  "0.600",
@@ -95,6 +113,7 @@ class TestHistoryView : public QObject {
                                              << QStringList{"2024-05-01T08:00:00.125Z",
                                                             "R2",
                                                             "Al 7075",
+                                                            kNoMachine,
                                                             "automatic",
                                                             "0.200",
                                                             "0.725",
@@ -141,6 +160,8 @@ class TestHistoryView : public QObject {
     HistoryView view;
     QCOMPARE(view.filter(), HistoryFilter{});
     QCOMPARE(view.toolCombo()->itemText(0), QString("Any"));
+    QCOMPARE(view.machineCombo()->itemText(0), QString("Any"));
+    QCOMPARE(view.machineCombo()->count(), 1);
     QCOMPARE(view.sourceCombo()->count(), 5);
     QVERIFY(!view.mrrLoSpin()->isEnabled());
   }
@@ -150,38 +171,42 @@ class TestHistoryView : public QObject {
     QTest::addColumn<double>("value");
     QTest::addColumn<QString>("tool");
     QTest::addColumn<QString>("material");
+    QTest::addColumn<QString>("machine");
     QTest::addColumn<QString>("source");
     QTest::addColumn<double>("lo");  // NaN = no band
     QTest::addColumn<double>("hi");
     const double none = std::numeric_limits<double>::quiet_NaN();
     // Start: tool R1, material Any, source Any, band [1, 3] unchecked.
-    QTest::newRow("tool R2") << int(ChooseTool) << 2.0 << QString("R2") << QString("") << QString("") << none << none;
-    QTest::newRow("tool Any") << int(ChooseTool) << 0.0 << QString("") << QString("") << QString("") << none << none;
-    QTest::newRow("material") << int(ChooseMaterial) << 2.0 << QString("R1") << QString("Steel") << QString("") << none
+    const QString any;
+    QTest::newRow("tool R2") << int(ChooseTool) << 2.0 << QString("R2") << any << any << any << none << none;
+    QTest::newRow("tool Any") << int(ChooseTool) << 0.0 << any << any << any << any << none << none;
+    QTest::newRow("material") << int(ChooseMaterial) << 2.0 << QString("R1") << QString("Steel") << any << any << none
                               << none;
-    QTest::newRow("source feedback") << int(ChooseSource) << 4.0 << QString("R1") << QString("") << QString("feedback")
+    QTest::newRow("machine") << int(ChooseMachine) << 2.0 << QString("R1") << any << QString("VMC-7 Hermle C42") << any
+                             << none << none;
+    QTest::newRow("source feedback") << int(ChooseSource) << 4.0 << QString("R1") << any << any << QString("feedback")
                                      << none << none;
-    QTest::newRow("source operator") << int(ChooseSource) << 1.0 << QString("R1") << QString("") << QString("operator")
+    QTest::newRow("source operator") << int(ChooseSource) << 1.0 << QString("R1") << any << any << QString("operator")
                                      << none << none;
-    QTest::newRow("MRR band on") << int(CheckMrr) << 1.0 << QString("R1") << QString("") << QString("") << 1.0 << 3.0;
-    QTest::newRow("MRR lo") << int(EditMrrLo) << 2.5 << QString("R1") << QString("") << QString("") << 2.5 << 3.0;
-    QTest::newRow("MRR lo above hi") << int(EditMrrLo) << 5.0 << QString("R1") << QString("") << QString("") << 5.0
-                                     << 5.0;
-    QTest::newRow("MRR hi below lo") << int(EditMrrHi) << 0.5 << QString("R1") << QString("") << QString("") << 0.5
-                                     << 0.5;
-    QTest::newRow("MRR hi to 0") << int(EditMrrHi) << 0.0 << QString("R1") << QString("") << QString("") << 0.0 << 0.0;
+    QTest::newRow("MRR band on") << int(CheckMrr) << 1.0 << QString("R1") << any << any << any << 1.0 << 3.0;
+    QTest::newRow("MRR lo") << int(EditMrrLo) << 2.5 << QString("R1") << any << any << any << 2.5 << 3.0;
+    QTest::newRow("MRR lo above hi") << int(EditMrrLo) << 5.0 << QString("R1") << any << any << any << 5.0 << 5.0;
+    QTest::newRow("MRR hi below lo") << int(EditMrrHi) << 0.5 << QString("R1") << any << any << any << 0.5 << 0.5;
+    QTest::newRow("MRR hi to 0") << int(EditMrrHi) << 0.0 << QString("R1") << any << any << any << 0.0 << 0.0;
   }
   void filterFromWidgets() {
     QFETCH(int, action);
     QFETCH(double, value);
     QFETCH(QString, tool);
     QFETCH(QString, material);
+    QFETCH(QString, machine);
     QFETCH(QString, source);
     QFETCH(double, lo);
     QFETCH(double, hi);
     HistoryView view;
     view.setToolChoices({"R1", "R2", "R3"});
     view.setMaterialChoices({"Al 7075", "Steel"});
+    view.setMachineChoices({"DMU 50", "VMC-7 Hermle C42"});
     HistoryFilter start;
     start.tool = "R1";
     view.setFilter(start);
@@ -202,6 +227,9 @@ class TestHistoryView : public QObject {
       case ChooseMaterial:
         view.materialCombo()->setCurrentIndex(index);
         break;
+      case ChooseMachine:
+        view.machineCombo()->setCurrentIndex(index);
+        break;
       case ChooseSource:
         view.sourceCombo()->setCurrentIndex(index);
         break;
@@ -218,6 +246,7 @@ class TestHistoryView : public QObject {
     HistoryFilter want;
     want.tool = tool;
     want.material = material;
+    want.machine = machine;
     want.source = source;
     if (!std::isnan(lo)) {
       want.mrr_lo = lo;
@@ -246,16 +275,19 @@ class TestHistoryView : public QObject {
     HistoryView view;
     view.setToolChoices({"R1", "R2"});
     view.setMaterialChoices({"Steel"});
+    view.setMachineChoices({"DMU 50"});
     QSignalSpy changed(&view, &HistoryView::filterChanged);
     HistoryFilter f;
     f.tool = "R9";  // not among the choices: added
     f.material = "Steel";
+    f.machine = "VMC-7";  // not among the choices: added
     f.source = "rule";
     f.mrr_lo = 0.5;
     f.mrr_hi = 2.25;
     view.setFilter(f);
     QCOMPARE(view.filter(), f);
     QCOMPARE(view.toolCombo()->currentText(), QString("R9"));
+    QCOMPARE(view.machineCombo()->currentText(), QString("VMC-7"));
     QVERIFY(view.mrrBox()->isChecked());
     QVERIFY(view.mrrHiSpin()->isEnabled());
     // Choices replaced: the current tool is kept, no signal.
@@ -279,6 +311,22 @@ class TestHistoryView : public QObject {
     view.mrrBox()->click();
     QCOMPARE(changed.count(), 1);
     QCOMPARE(changed.at(0).at(0).value<HistoryFilter>(), HistoryFilter{});
+  }
+
+  // The machine choices as given after "Any", no empty entry (records without a machine); a record
+  // without a machine shows "—" in its column.
+  void machineColumnAndChoices() {
+    HistoryView view;
+    view.setMachineChoices({"DMU 50", "", "VMC-7 Hermle C42", "DMU 50"});
+    QCOMPARE(view.machineCombo()->count(), 3);
+    QCOMPARE(view.machineCombo()->itemText(1), QString("DMU 50"));
+    QCOMPARE(view.machineCombo()->itemText(2), QString("VMC-7 Hermle C42"));
+    view.setRows(sampleRows());
+    QCOMPARE(view.table()->item(0, HistoryView::MachineColumn)->text(), QString("VMC-7 Hermle C42"));
+    QCOMPARE(view.table()->item(1, HistoryView::MachineColumn)->text(), kNoMachine);
+    QCOMPARE(view.table()->item(2, HistoryView::MachineColumn)->text(), kNoMachine);
+    QCOMPARE(HistoryView::MachineColumn, HistoryView::MaterialColumn + 1);
+    QVERIFY(view.table()->horizontalHeaderItem(HistoryView::MachineColumn)->toolTip().contains("machine"));
   }
 
   void applyButton() {
@@ -390,9 +438,9 @@ class TestHistoryView : public QObject {
 
   void everyControlHasATooltip() {
     HistoryView view;
-    for (QWidget* w : std::initializer_list<QWidget*>{view.table(), view.applyButton(), view.refreshButton(),
-                                                      view.toolCombo(), view.materialCombo(), view.sourceCombo(),
-                                                      view.mrrBox(), view.mrrLoSpin(), view.mrrHiSpin()})
+    for (QWidget* w : std::initializer_list<QWidget*>{
+             view.table(), view.applyButton(), view.refreshButton(), view.toolCombo(), view.materialCombo(),
+             view.machineCombo(), view.sourceCombo(), view.mrrBox(), view.mrrLoSpin(), view.mrrHiSpin()})
       QVERIFY2(!w->toolTip().isEmpty(), qPrintable(w->objectName()));
     QCOMPARE(view.mrrLoSpin()->suffix(), QString(" cm\u00b3/min"));
     QVERIFY(view.mrrBox()->text().contains("[cm\u00b3/min]"));
