@@ -24,6 +24,7 @@
 #include <optional>
 
 #include "e2e_driver.h"
+#include "e2e_learning.h"
 #include "e2e_report.h"
 #include "e2e_window.h"
 #include "guide_window.h"
@@ -70,6 +71,8 @@ struct Shot {
   const char* material = "";        // copied from the materials library through the material panel's picker
   bool start_page = false;          // a window without a project: the start page, `project` a recent one
   bool guide = false;               // Help > User guide open beside the window (a grab of the screen)
+  bool learning = false;            // the learning database seeded, its history shown
+  bool learning_settings = false;   // Settings > Learning database open, its connection tested
 };
 
 const Shot kShots[] = {
@@ -121,6 +124,12 @@ const Shot kShots[] = {
      .material = "Al7075-T6"},
     {.file = "start-screen.png", .project = "rubio-pareto-case.mxproj", .start_page = true},
     {.file = "user-guide.png", .project = "rubio2006-tool-selection.mxproj", .guide = true},
+    {.file = "learning-history.png", .project = "rubio-pareto-case.mxproj", .docks = "historyDock", .learning = true},
+    {.file = "learning-database-settings.png",
+     .project = "rubio-pareto-case.mxproj",
+     .docks = "historyDock",
+     .learning = true,
+     .learning_settings = true},
 };
 
 QString projectFile(const char* relative) {
@@ -217,6 +226,7 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
     std::unique_ptr<gui::MainWindow> window = startPage(projectFile(shot.project));
     return saveShot(report, shot, folder, window->grab().toImage(), *window);
   }
+  if (shot.learning) seedLearningDatabase(report);
   std::unique_ptr<gui::MainWindow> owner = showWindow();
   gui::MainWindow& window = *owner;
   // Each shot in its own units, whatever an earlier run left in the settings.
@@ -325,9 +335,11 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
         return true;
       },
       kShotMs, QString("%1: %2").arg(shot.file, waits.join(", ")));
+  if (shot.learning) waitForLearningHistory(window, kShotMs);
   QTest::qWait(300);  // the last repaints (queued replots) before the grab
 
   QDialog* dialog = shot.preferences ? window.openPreferences() : nullptr;
+  if (shot.learning_settings) dialog = learningDatabaseDialog(window, kShotMs);
   if (*shot.library) dialog = importDialog(report, window, projectFile(shot.library));
   if (dialog) {
     dialog->move(window.geometry().center() - dialog->rect().center());
