@@ -45,15 +45,9 @@ void writeHtml(QTextStream& out, const QJsonObject& summary) {
   out << "</table>\n</body></html>\n";
 }
 
-std::vector<BatchResultsInput> readInputs(const QStringList& paths) {
-  std::vector<BatchResultsInput> inputs;
-  for (const QString& path : paths) {
+void checkInputs(const QStringList& paths) {
+  for (const QString& path : paths)
     if (!QFileInfo(path).isFile()) throw CliError(QString("RESULTS = %1: not a file").arg(quoted(path)), kExitBadInput);
-    inputs.push_back({path, readBatchResultLines(path)});
-    if (inputs.back().read.torn_last_line)
-      QTextStream(stderr) << "note: " << path << ": a torn last line is left out (a job still running or killed)\n";
-  }
-  return inputs;
 }
 
 }  // namespace
@@ -74,7 +68,11 @@ int runBatchMergeCommand(const QStringList& arguments) {
   for (const QString& path : paths) checked.input("RESULTS", path);
   checked.output("--out", out).outputOption(parser, "csv").outputOption(parser, "html").check();
 
-  const QJsonObject summary = mergeBatchResults(readInputs(paths));
+  checkInputs(paths);
+  const QJsonObject summary = mergeBatchResults(paths);
+  if (const qint64 torn = summary.value("torn_lines").toInteger(); torn > 0)
+    QTextStream(stderr) << "note: " << torn
+                        << " file(s) end in a torn line, left out (a job still running or killed)\n";
   writeTextFileAtomically("--out", out, [&](QTextStream& s) { s << QJsonDocument(summary).toJson(); });
   if (parser.isSet("csv"))
     writeTextFileAtomically("--csv", parser.value("csv"), [&](QTextStream& s) { writeCsv(s, summary); });

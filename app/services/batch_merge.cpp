@@ -1,18 +1,27 @@
 #include "services/batch_merge.h"
 
+#include <QCryptographicHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <map>
 
+#include "services/batch_results.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
 
 namespace {
 
-struct Placed {
-  QJsonObject line;
-  QString where;  // "FILE:LINE"
+// What the table keeps of one case.
+struct CaseRecord {
+  qint64 index = 0;
+  QString where;      // "FILE:LINE", for messages
+  QByteArray digest;  // SHA-256 of the result and the error: two files agree when their digests do
+  QString row_key;
+  QJsonObject row;  // the row's head, should this case open it
+  QJsonObject entry;
+  QString computation;
+  bool failed = false;
 };
 
 QString compact(const QJsonValue& value) {
@@ -68,23 +77,6 @@ QJsonObject entryOf(const QJsonObject& line) {
   return entry;
 }
 
-std::map<QString, Placed> uniqueCases(const std::vector<BatchResultsInput>& inputs, qint64& duplicates) {
-  std::map<QString, Placed> unique;
-  for (const BatchResultsInput& input : inputs)
-    for (std::size_t i = 0; i < input.read.lines.size(); ++i) {
-      const QJsonObject& line = input.read.lines[i];
-      const QString where = QString("%1:%2").arg(input.path).arg(i + 1);
-      const auto [it, inserted] = unique.emplace(line.value("hash").toString(), Placed{line, where});
-      if (inserted) continue;
-      ++duplicates;
-      if (it->second.line.value("result") != line.value("result") ||
-          it->second.line.value("error") != line.value("error"))
-        throw ComputationError(
-            QString("hash %1: different results in %2 and %3").arg(it->first, it->second.where, where));
-    }
-  return unique;
-}
-
 QString rowKey(const QJsonObject& line) {
   return compact(line.value("project")) + '\x1f' + compact(line.value("machine")) + '\x1f' +
          compact(line.value("material")) + '\x1f' + compact(line.value("operation"));
@@ -100,38 +92,78 @@ QJsonObject newRow(const QJsonObject& line) {
           {"entries", QJsonArray{}}};
 }
 
+QByteArray digestOf(const QJsonObject& line) {
+  const QJsonObject outcome{{"result", line.value("result")}, {"error", line.value("error")}};
+  return QCryptographicHash::hash(QJsonDocument(outcome).toJson(QJsonDocument::Compact), QCryptographicHash::Sha256);
+}
+
+CaseRecord recordOf(const QJsonObject& line, const QString& where) {
+  return {line.value("case").toInteger(),
+          where,
+          digestOf(line),
+          rowKey(line),
+          newRow(line),
+          entryOf(line),
+          computationOf(line.value("result").toObject()),
+          line.contains("error")};
+}
+
+struct MergedCases {
+  std::map<QString, CaseRecord> by_hash;
+  qint64 duplicates = 0;
+  qint64 torn_lines = 0;
+};
+
+void addLine(MergedCases& merged, const QJsonObject& line, const QString& where) {
+  const QString hash = line.value("hash").toString();
+  const auto found = merged.by_hash.find(hash);
+  if (found == merged.by_hash.end()) {
+    merged.by_hash.emplace(hash, recordOf(line, where));
+    return;
+  }
+  ++merged.duplicates;
+  if (found->second.digest != digestOf(line))
+    throw ComputationError(QString("hash %1: different results in %2 and %3").arg(hash, found->second.where, where));
+}
+
+MergedCases readCases(const QStringList& paths) {
+  MergedCases merged;
+  for (const QString& path : paths) {
+    qint64 number = 0;
+    const BatchResultsScan scan = scanBatchResults(
+        path, [&](const QJsonObject& line) { addLine(merged, line, QString("%1:%2").arg(path).arg(++number)); });
+    if (scan.torn_last_line) ++merged.torn_lines;
+  }
+  return merged;
+}
+
 }  // namespace
 
-QJsonObject mergeBatchResults(const std::vector<BatchResultsInput>& inputs) {
-  qint64 duplicates = 0, failed = 0, torn = 0;
-  const std::map<QString, Placed> unique = uniqueCases(inputs, duplicates);
-  std::map<qint64, QJsonObject> by_case;  // the table in case order
-  for (const auto& [hash, placed] : unique) by_case.emplace(placed.line.value("case").toInteger(), placed.line);
+QJsonObject mergeBatchResults(const QStringList& paths) {
+  const MergedCases merged = readCases(paths);
+  std::map<qint64, const CaseRecord*> by_case;  // the table in case order
+  for (const auto& [hash, record] : merged.by_hash) by_case.emplace(record.index, &record);
   QString computation;
+  qint64 failed = 0;
   std::map<QString, QJsonObject> rows;
-  std::map<qint64, QString> row_order;
-  for (const auto& [index, line] : by_case) {
-    if (line.contains("error")) ++failed;
-    if (computation.isEmpty()) computation = computationOf(line.value("result").toObject());
-    const QString key = rowKey(line);
-    auto [it, inserted] = rows.emplace(key, newRow(line));
-    if (inserted) row_order.emplace(index, key);
+  std::vector<QString> row_order;
+  for (const auto& [index, record] : by_case) {
+    if (record->failed) ++failed;
+    if (computation.isEmpty()) computation = record->computation;
+    auto [it, inserted] = rows.emplace(record->row_key, record->row);
+    if (inserted) row_order.push_back(record->row_key);
     QJsonArray entries = it->second.value("entries").toArray();
-    entries.append(entryOf(line));
+    entries.append(record->entry);
     it->second.insert("entries", entries);
   }
-  QJsonArray table, files;
-  for (const auto& [index, key] : row_order) table.append(rows.at(key));
-  for (const BatchResultsInput& input : inputs) {
-    files.append(input.path);
-    if (input.read.torn_last_line) ++torn;
-  }
+  QJsonArray table;
+  for (const QString& key : row_order) table.append(rows.at(key));
   return {{"computation", computation.isEmpty() ? QJsonValue() : QJsonValue(computation)},
-          {"files", files},
-          {"cases", static_cast<qint64>(unique.size())},
-          {"duplicates", duplicates},
+          {"files", QJsonArray::fromStringList(paths)},
+          {"cases", static_cast<qint64>(merged.by_hash.size())},
+          {"duplicates", merged.duplicates},
           {"failed", failed},
-          {"torn_lines", torn},
+          {"torn_lines", merged.torn_lines},
           {"rows", table}};
 }
 

@@ -9,18 +9,13 @@
 #include <QStringList>
 #include <vector>
 
-#include "services/batch_results.h"
-
 namespace mx::app {
 
-struct BatchResultsInput {
-  QString path;
-  BatchResultLines read;
-};
-
-// {"computation", "files", "cases", "duplicates", "failed", "torn_lines", "rows": [...]}. Throws
-// ComputationError (exit 1) naming the hash and both places when one hash has two different results.
-QJsonObject mergeBatchResults(const std::vector<BatchResultsInput>& inputs);
+// Reads the results files one line at a time, keeping per case only what its row shows and a digest
+// of its result. {"computation", "files", "cases", "duplicates", "failed", "torn_lines", "rows": [...]}.
+// Throws ComputationError (exit 1) naming the hash and both places when one hash has two different
+// results, InputError (exit 2) for a bad line before a file's last.
+QJsonObject mergeBatchResults(const QStringList& paths);
 
 // The summary's rows flattened to one line per row and tool, for CSV and HTML: batchTableHeader() columns.
 QStringList batchTableHeader();

@@ -18,38 +18,36 @@ std::optional<QJsonObject> resultLine(const QByteArray& text) {
 
 }  // namespace
 
-BatchResultLines readBatchResultLines(const QString& path) {
-  BatchResultLines out;
+BatchResultsScan scanBatchResults(const QString& path, const std::function<void(const QJsonObject&)>& line) {
+  BatchResultsScan scan;
   QFile file(path);
-  if (!file.exists()) return out;
+  if (!file.exists()) return scan;
   if (!file.open(QIODevice::ReadOnly)) throw InputError(QString("%1: cannot read the results file").arg(path));
-  qint64 number = 0;
   while (!file.atEnd()) {
-    const QByteArray line = file.readLine();
-    ++number;
-    const bool whole = line.endsWith('\n');
-    const std::optional<QJsonObject> object = whole ? resultLine(line) : std::nullopt;
+    const QByteArray text = file.readLine();
+    const std::optional<QJsonObject> object = text.endsWith('\n') ? resultLine(text) : std::nullopt;
     if (object) {
-      out.lines.push_back(*object);
-      out.whole_bytes = file.pos();
+      line(*object);
+      ++scan.whole_lines;
+      scan.whole_bytes = file.pos();
       continue;
     }
     if (!file.atEnd())
       throw InputError(QString("%1:%2: not a results line (a JSON object with \"hash\"); only the last line "
                                "may be torn")
                            .arg(path)
-                           .arg(number));
-    out.torn_last_line = true;
+                           .arg(scan.whole_lines + 1));
+    scan.torn_last_line = true;
   }
-  return out;
+  return scan;
 }
 
 QSet<QString> resumeBatchResults(const QString& path) {
-  const BatchResultLines read = readBatchResultLines(path);
-  if (read.torn_last_line && !QFile::resize(path, read.whole_bytes))
-    throw InputError(QString("%1: cannot cut off the torn last line").arg(path));
   QSet<QString> hashes;
-  for (const QJsonObject& line : read.lines) hashes.insert(line.value("hash").toString());
+  const BatchResultsScan scan =
+      scanBatchResults(path, [&](const QJsonObject& line) { hashes.insert(line.value("hash").toString()); });
+  if (scan.torn_last_line && !QFile::resize(path, scan.whole_bytes))
+    throw InputError(QString("%1: cannot cut off the torn last line").arg(path));
   return hashes;
 }
 

@@ -5,20 +5,21 @@
 #include <QJsonObject>
 #include <QSet>
 #include <QString>
+#include <functional>
 #include <mutex>
-#include <vector>
 
 namespace mx::app {
 
-struct BatchResultLines {
-  std::vector<QJsonObject> lines;  // the whole lines, in file order
-  qint64 whole_bytes = 0;          // where the whole lines end
-  bool torn_last_line = false;     // a last line without its newline, or not a JSON object with "hash"
+struct BatchResultsScan {
+  qint64 whole_lines = 0;
+  qint64 whole_bytes = 0;       // where the whole lines end
+  bool torn_last_line = false;  // a last line without its newline, or not a JSON object with "hash"
 };
 
-// Reads `path` (no lines when it does not exist). Throws InputError naming the file and line for a
-// bad line before the last one: that is not a torn write, and nothing should be appended after it.
-BatchResultLines readBatchResultLines(const QString& path);
+// Calls `line` with each whole line of `path` (none when it does not exist), one at a time so that a
+// large file is never held whole. Throws InputError naming the file and line for a bad line before the
+// last one: that is not a torn write, and nothing should be appended after it.
+BatchResultsScan scanBatchResults(const QString& path, const std::function<void(const QJsonObject&)>& line);
 
 // The hashes already computed in `path`, after cutting a torn last line off the file (so that its case
 // is redone).

@@ -342,6 +342,22 @@ class TestCliBatch : public QObject {
     }
   }
 
+  // A job still writing: its torn last line is left out of the table, the whole lines kept.
+  void mergeLeavesOutATornLine() {
+    QTemporaryDir dir;
+    // moc reads raw strings poorly: the torn line's unbalanced brace stays in an ordinary literal.
+    const QByteArray whole = R"({"case":0,"hash":"a","result":{"selected":"R1"},"project":"p"})";
+    const QString path = mx::test::writeText(dir, "a.jsonl", whole + "\n{\"case\":1,\"hash\":\"b\",\"result\":{\"sel");
+    const CliRun r = mx::test::runCli({"batch-merge", path, "--out", dir.filePath("s.json")});
+    QCOMPARE(r.code, 0);
+    QCOMPARE(r.json["cases"].toInt(), 1);
+    QVERIFY2(r.err.contains("torn line"), qPrintable(r.err));
+    const QJsonObject summary = mx::test::readJson(dir.filePath("s.json"));
+    QCOMPARE(summary["torn_lines"].toInt(), 1);
+    QCOMPARE(summary["rows"].toArray()[0].toObject()["entries"].toArray()[0].toObject()["tool"].toString(),
+             QString("R1"));
+  }
+
   void conflictingResultsAreAnError() {
     QTemporaryDir dir;
     mx::test::writeText(dir, "a.jsonl",
