@@ -1,6 +1,7 @@
 #include "cli/batch_case_runner.h"
 
 #include <QJsonArray>
+#include <QLocale>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <exception>
@@ -50,8 +51,9 @@ QString reservedReason(const QString& computation, const QString& flag) {
   return {};
 }
 
+// A number as a user would type it: the shortest text that reads back as the same double.
 QString valueText(const QJsonValue& value) {
-  return value.isString() ? value.toString() : QString::number(value.toDouble(), 'g', 17);
+  return value.isString() ? value.toString() : QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest);
 }
 
 QStringList flagsOf(const QString& computation, const QJsonObject& options) {
