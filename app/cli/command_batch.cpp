@@ -59,15 +59,13 @@ BatchPlan planBatch(const QCommandLineParser& parser, const QString& manifest_pa
   plan.manifest = readBatchManifest(manifest_path);
   plan.projects = loadProjects(plan.manifest, out);
   checkListedTools(plan.manifest, plan.projects);
+  plan.total_cases = countBatchCases(plan.manifest, plan.projects);
   plan.sections = readBatchSections(plan.manifest);
   std::optional<QString> shard_flag;
   if (parser.isSet("shard")) shard_flag = parser.value("shard");
   const std::optional<int> shard_count = integerOption(parser, "shard-count", 1, static_cast<int>(kMaxShards));
   plan.shard = batchShardFrom(shard_flag, shard_count, QProcessEnvironment::systemEnvironment());
-  const std::vector<BatchCase> all = expandBatchCases(plan.manifest, plan.projects);
-  plan.total_cases = static_cast<qint64>(all.size());
-  for (const BatchCase& c : all)
-    if (plan.shard.owns(c.index)) plan.cases.push_back(c);
+  plan.cases = expandBatchCases(plan.manifest, plan.projects, [&](qint64 c) { return plan.shard.owns(c); });
   return plan;
 }
 

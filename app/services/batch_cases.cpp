@@ -60,8 +60,26 @@ void checkListedTools(const BatchManifest& manifest, const std::vector<Project>&
                              .arg(manifest.projects[static_cast<qsizetype>(p)]));
 }
 
-std::vector<BatchCase> expandBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects) {
+qint64 countBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects) {
+  double tools = 0.0;  // per-tool computations: the tool level summed over the projects
+  for (const Project& p : projects)
+    tools += manifest.perTool() ? static_cast<double>(caseToolIds(manifest, p, {}).size()) : 1.0;
+  const double count = tools * static_cast<double>(orOne(manifest.machines.size())) *
+                       static_cast<double>(orOne(manifest.materials.size())) *
+                       static_cast<double>(orOne(manifest.operations.size()));
+  if (count > static_cast<double>(kMaxBatchCases))
+    throw InputError(QString("the manifest gives %1 cases (projects%2 x machines x materials x operations): at "
+                             "most %3; split it into several manifests")
+                         .arg(count, 0, 'g', 4)
+                         .arg(manifest.perTool() ? " x tools" : "")
+                         .arg(kMaxBatchCases));
+  return static_cast<qint64>(count);
+}
+
+std::vector<BatchCase> expandBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects,
+                                        const std::function<bool(qint64)>& keep) {
   std::vector<BatchCase> cases;
+  qint64 next = 0;
   const qsizetype machines = orOne(manifest.machines.size()), materials = orOne(manifest.materials.size()),
                   operations = orOne(manifest.operations.size());
   const auto index = [](std::size_t n, qsizetype i) { return n == 0 ? qsizetype{-1} : i; };
@@ -71,9 +89,9 @@ std::vector<BatchCase> expandBatchCases(const BatchManifest& manifest, const std
       for (qsizetype m = 0; m < machines; ++m)
         for (qsizetype a = 0; a < materials; ++a)
           for (qsizetype o = 0; o < operations; ++o)
-            cases.push_back({static_cast<qint64>(cases.size()), static_cast<qsizetype>(p), tool,
-                             index(manifest.machines.size(), m), index(manifest.materials.size(), a),
-                             index(manifest.operations.size(), o)});
+            if (const qint64 c = next++; !keep || keep(c))
+              cases.push_back({c, static_cast<qsizetype>(p), tool, index(manifest.machines.size(), m),
+                               index(manifest.materials.size(), a), index(manifest.operations.size(), o)});
   }
   return cases;
 }

@@ -5,6 +5,7 @@
 // result across reruns, shards and merged files.
 #include <QJsonObject>
 #include <QString>
+#include <functional>
 #include <vector>
 
 #include "document/project.h"
@@ -22,9 +23,16 @@ struct BatchCase {
   qsizetype operation = -1;
 };
 
+// A manifest gives at most this many cases: their loop and a shard's list stay bounded.
+inline constexpr qint64 kMaxBatchCases = 100000000;
+
 // Throws InputError naming the first listed tool that a project lacks.
 void checkListedTools(const BatchManifest& manifest, const std::vector<Project>& projects);
-std::vector<BatchCase> expandBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects);
+// The number of cases; throws InputError naming the product and kMaxBatchCases above it.
+qint64 countBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects);
+// The cases that `keep` (default: all) selects by index, in case order.
+std::vector<BatchCase> expandBatchCases(const BatchManifest& manifest, const std::vector<Project>& projects,
+                                        const std::function<bool(qint64)>& keep = {});
 
 // The project a case computes: the base with the manifest's sections in place of its own, and only
 // the case's tools (operating_point, pareto.tool and expert.reported_chatter follow them).

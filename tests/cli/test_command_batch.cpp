@@ -102,6 +102,26 @@ class TestCliBatch : public QObject {
     QVERIFY(!QFile::exists(out));  // nothing ran
   }
 
+  // 2 tools x 1000 machines x 1000 materials x 100 operations = 2e8 cases: refused before any is listed.
+  void caseCountIsBounded() {
+    QTemporaryDir dir;
+    mx::test::copyRubio(dir);
+    QJsonObject manifest = mx::test::lobesManifest();
+    const auto repeated = [](const QJsonValue& item, int n) {
+      QJsonArray out;
+      for (int i = 0; i < n; ++i) out.append(item);
+      return out;
+    };
+    manifest["machines"] = repeated(mx::test::batchMachines()[0], 1000);
+    manifest["materials"] = repeated(mx::test::batchMaterials()[0], 1000);
+    manifest["operations"] = repeated(mx::test::batchOperations()[0], 100);
+    const CliRun r = batch(mx::test::writeManifest(dir, manifest), dir.filePath("out.jsonl"));
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("the manifest gives 2e+08 cases (projects x tools x machines x materials x operations): "
+                            "at most 100000000"),
+             qPrintable(r.err));
+  }
+
   // The ranges' edges are accepted: the largest spindle power, full immersion, the smallest Kr.
   void edgeValuesAreAccepted() {
     QTemporaryDir dir;
