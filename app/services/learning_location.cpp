@@ -55,8 +55,8 @@ LearningLocation parseUrl(const QString& text) {
   const QUrl url(text, QUrl::StrictMode);
   if (!url.isValid()) {
     // QUrl's own message may quote the user information, and so a password: shown only without one.
-    const QString detail = text.contains('@') ? QString("postgresql://[user@]host[:port]/database[?options]")
-                                              : url.errorString();
+    const QString detail =
+        text.contains('@') ? QString("postgresql://[user@]host[:port]/database[?options]") : url.errorString();
     refuse(text, QString("not a valid URL (%1)").arg(detail));
   }
   if (!url.password().isEmpty())
