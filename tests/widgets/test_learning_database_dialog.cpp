@@ -58,6 +58,13 @@ class TestLearningDatabaseDialog : public QObject {
                                 << "";
     QTest::newRow("port 0") << "postgresql://u@h:0/x"
                             << "PostgreSQL URL: learning database 'postgresql://u@h:0/x': port 0 is outside 1..65535";
+    QTest::newRow("port 65536") << "postgresql://u@h:65536/x"
+                                << "PostgreSQL URL: learning database 'postgresql://u@h:65536/x': not a valid URL "
+                                   "(postgresql://[user@]host[:port]/database[?options])";
+    QTest::newRow("invalid, password quoted nowhere")
+        << "postgresql://u:sec ret@h:99999/x"
+        << "PostgreSQL URL: learning database 'postgresql://u:***@h:99999/x': not a valid URL "
+           "(postgresql://[user@]host[:port]/database[?options])";
     QTest::newRow("options") << "postgresql://u@h/x?sslmode=require&connect_timeout=5"
                              << "";
     QTest::newRow("timeout 3600 s") << "postgresql://u@h/x?connect_timeout=3600"
@@ -98,6 +105,7 @@ class TestLearningDatabaseDialog : public QObject {
     QCOMPARE(dialog.okButton()->isEnabled(), problem.isEmpty());
     QCOMPARE(dialog.testButton()->isEnabled(), problem.isEmpty());
     QVERIFY(!dialog.problem().contains("secret"));
+    QVERIFY(!dialog.problem().contains("sec ret"));
     if (problem.isEmpty()) QCOMPARE(dialog.location(), url.trimmed());
   }
 
