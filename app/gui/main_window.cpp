@@ -6,6 +6,7 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include "batch_feature.h"
 #include "control_feature.h"
 #include "editors_feature.h"
 #include "engine_runner.h"
@@ -44,6 +45,7 @@ MainWindow::MainWindow(QWidget* parent)
   addFeature(new ControlFeature(this, *context_));
   addFeature(new MachiningFeature(this, *context_));
   addFeature(new SupervisorFeature(this, *context_));
+  addFeature(new BatchFeature(this, *context_));
   auto* help = new HelpFeature(this);
   addFeature(help);
   connectHelp(help, editors, tap_test);

@@ -33,7 +33,7 @@ class TestCliApplication : public QObject {
         "--no-simulation");
     row("weights-sweep", {"weights-sweep", "--help"}, "Usage: millexpert-cli weights-sweep [options] PROJECT",
         "--simplex");
-    row("history", {"history", "--help"}, "Usage: millexpert-cli history [options] PROJECT", "--db <FILE>");
+    row("history", {"history", "--help"}, "Usage: millexpert-cli history [options] PROJECT", "--db <FILE|URL>");
     row("pareto", {"pareto", "--help"}, "Usage: millexpert-cli pareto [options] PROJECT", "-w <W1,W2,W3,W4>");
     row("control", {"control", "--help"}, "Usage: millexpert-cli control [options] PROJECT",
         "--sweep-beta <FROM:TO:STEP>");

@@ -4,6 +4,7 @@
 #include <QTest>
 #include <QtGlobal>
 
+#include "batch_feature.h"
 #include "editors_feature.h"
 #include "engine_runner.h"
 #include "expert_feature.h"
@@ -36,6 +37,9 @@ inline gui::ExpertFeature* expertOf(const gui::MainWindow& w) {
 }
 inline gui::ParetoFeature* paretoOf(const gui::MainWindow& w) {
   return windowPart<gui::ParetoFeature>(w, "paretoFeature");
+}
+inline gui::BatchFeature* batchOf(const gui::MainWindow& w) {
+  return windowPart<gui::BatchFeature>(w, "batchFeature");
 }
 inline gui::FeatureContext* contextOf(const gui::MainWindow& w) {
   return windowPart<gui::FeatureContext>(w, "featureContext");

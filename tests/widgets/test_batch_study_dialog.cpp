@@ -1,0 +1,131 @@
+// File > Batch study's dialog (widgets/batch_study_dialog.h): the choices fill the lists (every tool and
+// the project's material checked), the settings round-trip, the speed range shows for lobes only, the
+// buttons follow what is checked and whether a run is going, the domain signals carry the settings,
+// and the merged table shows its columns with units.
+#include <QComboBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+
+#include "batch_study_dialog.h"
+#include "test_registry.h"
+
+using mx::widgets::BatchStudyDialog;
+using mx::widgets::BatchStudySettings;
+
+namespace {
+mx::widgets::BatchStudyChoices choices() {
+  mx::widgets::BatchStudyChoices c;
+  c.tools = {"R1", "R2", "R3"};
+  c.materials = {"Aluminium", "Steel C45", "Ti6Al4V"};
+  c.machine = "DMU-50";
+  c.max_jobs = 2;
+  c.project_name = "shop.mxproj";
+  return c;
+}
+}  // namespace
+
+class TestBatchStudyDialog : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void choicesFillTheLists() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    const BatchStudySettings s = d.settings();
+    QCOMPARE(s.tools, (QStringList{"R1", "R2", "R3"}));
+    QCOMPARE(s.materials, QStringList{"Aluminium"});  // the project's material only
+    QCOMPARE(s.jobs, 2);
+    QCOMPARE(s.computation, QString("lobes"));
+    QCOMPARE(d.windowTitle(), QString("Batch study - shop.mxproj"));
+    QCOMPARE(d.findChild<QLabel*>("batchMachine")->text(), QString("DMU-50"));
+  }
+
+  void settingsRoundTrip() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    BatchStudySettings s;
+    s.computation = "rank";
+    s.tools = {"R1", "R3"};
+    s.materials = {"Steel C45", "Ti6Al4V"};
+    s.from_rpm = 2000;
+    s.to_rpm = 9000;
+    s.step_rpm = 25;
+    s.method = "sdm";
+    s.jobs = 1;
+    d.setSettings(s);
+    QCOMPARE(d.settings(), s);
+  }
+
+  void speedRangeForLobesOnly() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    d.show();
+    QWidget* range = d.findChild<QWidget*>("batchFrom")->parentWidget();
+    QVERIFY(range->isVisible());
+    d.computationBox()->setCurrentIndex(d.computationBox()->findData("point"));
+    QVERIFY(!range->isVisible());
+    d.computationBox()->setCurrentIndex(d.computationBox()->findData("lobes"));
+    QVERIFY(range->isVisible());
+  }
+
+  void buttonsFollowTheChecksAndTheRun() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    QVERIFY(d.runButton()->isEnabled() && d.saveButton()->isEnabled() && !d.cancelButton()->isEnabled());
+    for (int i = 0; i < d.toolList()->count(); ++i) d.toolList()->item(i)->setCheckState(Qt::Unchecked);
+    QVERIFY(!d.runButton()->isEnabled() && !d.saveButton()->isEnabled());
+    QVERIFY(d.statusLabel()->text().contains("at least one tool"));
+    d.toolList()->item(1)->setCheckState(Qt::Checked);
+    QVERIFY(d.runButton()->isEnabled());
+    QVERIFY(d.statusLabel()->text().isEmpty());
+    d.materialList()->item(0)->setCheckState(Qt::Unchecked);
+    QVERIFY(!d.runButton()->isEnabled());
+    d.materialList()->item(2)->setCheckState(Qt::Checked);
+    d.setRunning(true);
+    QVERIFY(!d.runButton()->isEnabled() && !d.saveButton()->isEnabled() && d.cancelButton()->isEnabled());
+    d.setRunning(false);
+    QVERIFY(d.runButton()->isEnabled() && !d.cancelButton()->isEnabled());
+  }
+
+  void signalsCarryTheSettings() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    QSignalSpy run(&d, &BatchStudyDialog::runRequested);
+    QSignalSpy save(&d, &BatchStudyDialog::saveRequested);
+    QSignalSpy cancel(&d, &BatchStudyDialog::cancelRequested);
+    d.materialList()->item(1)->setCheckState(Qt::Checked);
+    d.runButton()->click();
+    d.saveButton()->click();
+    QCOMPARE(run.size(), 1);
+    QCOMPARE(save.size(), 1);
+    QCOMPARE(run.at(0).at(0).value<BatchStudySettings>().materials, (QStringList{"Aluminium", "Steel C45"}));
+    d.setRunning(true);
+    d.cancelButton()->click();
+    QCOMPARE(cancel.size(), 1);
+  }
+
+  void progressAndTable() {
+    BatchStudyDialog d;
+    d.setProgress(3, 12);
+    QCOMPARE(d.progressBar()->value(), 3);
+    QCOMPARE(d.progressBar()->maximum(), 12);
+    QCOMPARE(d.progressBar()->text(), QString("3 of 12 cases"));
+    d.setProgress(0, 0);  // no case: an empty bar, not a busy one
+    QCOMPARE(d.progressBar()->maximum(), 1);
+    d.setResults({"tool", "speed_rpm", "blim_mm", "verdict"}, {{"R1", "5800", "0.49", ""}, {"R2", "4100", "1.2", ""}});
+    QTableWidget* t = d.resultsTable();
+    QCOMPARE(t->rowCount(), 2);
+    QCOMPARE(t->horizontalHeaderItem(1)->text(), QString("Speed [rpm]"));
+    QCOMPARE(t->horizontalHeaderItem(2)->text(), QString("b_lim [mm]"));
+    QCOMPARE(t->item(1, 1)->text(), QString("4100"));
+    QCOMPARE(BatchStudyDialog::columnTitle("feed_mm_per_tooth"), QString("Feed [mm/tooth]"));
+    QCOMPARE(BatchStudyDialog::columnTitle("other"), QString("other"));
+  }
+};
+
+MX_REGISTER_TEST(TestBatchStudyDialog)
+#include "test_batch_study_dialog.moc"

@@ -1,0 +1,264 @@
+#include "batch_study_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <array>
+#include <utility>
+
+namespace mx::widgets {
+
+namespace {
+
+constexpr std::array<std::pair<const char*, const char*>, 4> kComputations{{
+    {"lobes", "Stability lobes of each tool (best pocket)"},
+    {"rank", "Expert ranking of the tools (selected tool and q*)"},
+    {"pareto", "Pareto study of the tools (tool and q)"},
+    {"point", "Operating point of each tool (verdict)"},
+}};
+
+constexpr std::array<std::pair<const char*, const char*>, 12> kColumnTitles{{
+    {"project", "Project"},
+    {"machine", "Machine"},
+    {"material", "Material"},
+    {"operation", "Operation"},
+    {"case", "Case"},
+    {"tool", "Tool"},
+    {"speed_rpm", "Speed [rpm]"},
+    {"depth_mm", "Depth [mm]"},
+    {"feed_mm_per_tooth", "Feed [mm/tooth]"},
+    {"blim_mm", "b_lim [mm]"},
+    {"verdict", "Verdict"},
+    {"error", "Error"},
+}};
+
+CheckedDoubleSpinBox* rpmBox(QWidget* parent, const QString& name, double minimum, double value) {
+  auto* box = new CheckedDoubleSpinBox(parent);
+  box->setObjectName(name);
+  box->setRange(minimum, 200000.0);
+  box->setDecimals(0);
+  box->setSuffix(" rpm");
+  box->setValue(value);
+  return box;
+}
+
+}  // namespace
+
+BatchStudyDialog::BatchStudyDialog(QWidget* parent)
+    : QDialog(parent),
+      computation_(new QComboBox(this)),
+      tools_(new QListWidget(this)),
+      materials_(new QListWidget(this)),
+      machine_(new QLabel(this)),
+      save_(new QPushButton(tr("Save manifest..."), this)),
+      run_(new QPushButton(tr("Run here"), this)),
+      cancel_(new QPushButton(tr("Cancel run"), this)),
+      open_(new QPushButton(tr("Open results..."), this)),
+      progress_(new QProgressBar(this)),
+      status_(new QLabel(this)),
+      results_(new QTableWidget(this)) {
+  setObjectName("batchStudyDialog");
+  setWindowTitle(tr("Batch study"));
+  save_->setObjectName("batchSave");
+  run_->setObjectName("batchRun");
+  cancel_->setObjectName("batchCancel");
+  open_->setObjectName("batchOpen");
+  progress_->setObjectName("batchProgress");
+  progress_->setFormat(tr("%v of %m cases"));
+  progress_->setRange(0, 1);
+  progress_->setValue(0);
+  status_->setObjectName("batchStatus");
+  status_->setWordWrap(true);
+  results_->setObjectName("batchResults");
+  results_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  results_->setSortingEnabled(true);
+  results_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  results_->verticalHeader()->setVisible(false);
+
+  auto* actions = new QHBoxLayout;
+  actions->addWidget(save_);
+  actions->addWidget(run_);
+  actions->addWidget(cancel_);
+  actions->addStretch(1);
+  actions->addWidget(open_);
+  auto* close = new QDialogButtonBox(QDialogButtonBox::Close, this);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(buildForm());
+  layout->addLayout(actions);
+  layout->addWidget(progress_);
+  layout->addWidget(status_);
+  layout->addWidget(results_, 1);
+  layout->addWidget(close);
+
+  connect(save_, &QPushButton::clicked, this, [this] { emit saveRequested(settings()); });
+  connect(run_, &QPushButton::clicked, this, [this] { emit runRequested(settings()); });
+  connect(cancel_, &QPushButton::clicked, this, &BatchStudyDialog::cancelRequested);
+  connect(open_, &QPushButton::clicked, this, &BatchStudyDialog::openResultsRequested);
+  connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  connect(computation_, &QComboBox::currentIndexChanged, this,
+          [this] { speed_range_->setVisible(computation_->currentData().toString() == "lobes"); });
+  connect(tools_, &QListWidget::itemChanged, this, &BatchStudyDialog::updateButtons);
+  connect(materials_, &QListWidget::itemChanged, this, &BatchStudyDialog::updateButtons);
+  resize(1100, 760);
+  updateButtons();
+}
+
+QWidget* BatchStudyDialog::buildForm() {
+  auto* group = new QGroupBox(tr("Cases: each checked material x the project's machine and operation"), this);
+  for (const auto& [key, text] : kComputations) computation_->addItem(tr(text), QString::fromLatin1(key));
+  computation_->setObjectName("batchComputation");
+  tools_->setObjectName("batchTools");
+  materials_->setObjectName("batchMaterials");
+  machine_->setObjectName("batchMachine");
+  jobs_ = new CheckedSpinBox(group);
+  jobs_->setObjectName("batchJobs");
+  jobs_->setFieldName(tr("Jobs [cases at once]"));
+  jobs_->setRange(1, 1);
+  auto* form = new QFormLayout(group);
+  form->addRow(tr("Computation:"), computation_);
+  form->addRow(tr("Tools (rank and Pareto: compared together):"), tools_);
+  form->addRow(tr("Materials:"), materials_);
+  form->addRow(tr("Machine:"), machine_);
+  form->addRow(tr("Lobes:"), buildSpeedRange());
+  form->addRow(tr("Jobs [cases at once]:"), jobs_);
+  tools_->setMaximumHeight(110);
+  materials_->setMaximumHeight(110);
+  return group;
+}
+
+QWidget* BatchStudyDialog::buildSpeedRange() {
+  speed_range_ = new QWidget(this);
+  from_ = rpmBox(speed_range_, "batchFrom", 1.0, 4000.0);
+  from_->setFieldName(tr("First speed [rpm]"));
+  to_ = rpmBox(speed_range_, "batchTo", 1.0, 18000.0);
+  to_->setFieldName(tr("Last speed [rpm]"));
+  step_ = rpmBox(speed_range_, "batchStep", 1.0, 50.0);
+  step_->setFieldName(tr("Speed step [rpm]"));
+  method_ = new QComboBox(speed_range_);
+  method_->setObjectName("batchMethod");
+  method_->addItem(tr("ZOA (zeroth-order approximation)"), "zoa");
+  method_->addItem(tr("Semi-discretization"), "sdm");
+  auto* row = new QHBoxLayout(speed_range_);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addWidget(new QLabel(tr("speed from"), speed_range_));
+  row->addWidget(from_);
+  row->addWidget(new QLabel(tr("to"), speed_range_));
+  row->addWidget(to_);
+  row->addWidget(new QLabel(tr("step"), speed_range_));
+  row->addWidget(step_);
+  row->addWidget(method_);
+  row->addStretch(1);
+  return speed_range_;
+}
+
+void BatchStudyDialog::fillList(QListWidget* list, const QStringList& items, int checked_first) {
+  list->clear();
+  for (qsizetype i = 0; i < items.size(); ++i) {
+    auto* item = new QListWidgetItem(items[i], list);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(i < checked_first ? Qt::Checked : Qt::Unchecked);
+  }
+}
+
+void BatchStudyDialog::setChoices(const BatchStudyChoices& choices) {
+  setWindowTitle(tr("Batch study - %1").arg(choices.project_name));
+  fillList(tools_, choices.tools, static_cast<int>(choices.tools.size()));
+  fillList(materials_, choices.materials, 1);
+  machine_->setText(choices.machine);
+  jobs_->setRange(1, std::max(1, choices.max_jobs));
+  jobs_->setValue(std::max(1, choices.max_jobs));
+  updateButtons();
+}
+
+QStringList BatchStudyDialog::checkedItems(const QListWidget* list) {
+  QStringList out;
+  for (int i = 0; i < list->count(); ++i)
+    if (list->item(i)->checkState() == Qt::Checked) out << list->item(i)->text();
+  return out;
+}
+
+BatchStudySettings BatchStudyDialog::settings() const {
+  BatchStudySettings s;
+  s.computation = computation_->currentData().toString();
+  s.tools = checkedItems(tools_);
+  s.materials = checkedItems(materials_);
+  s.from_rpm = from_->value();
+  s.to_rpm = to_->value();
+  s.step_rpm = step_->value();
+  s.method = method_->currentData().toString();
+  s.jobs = jobs_->value();
+  return s;
+}
+
+void BatchStudyDialog::setSettings(const BatchStudySettings& s) {
+  computation_->setCurrentIndex(std::max(0, computation_->findData(s.computation)));
+  for (QListWidget* list : {tools_, materials_}) {
+    const QStringList& checked = list == tools_ ? s.tools : s.materials;
+    for (int i = 0; i < list->count(); ++i)
+      list->item(i)->setCheckState(checked.contains(list->item(i)->text()) ? Qt::Checked : Qt::Unchecked);
+  }
+  from_->setValue(s.from_rpm);
+  to_->setValue(s.to_rpm);
+  step_->setValue(s.step_rpm);
+  method_->setCurrentIndex(std::max(0, method_->findData(s.method)));
+  jobs_->setValue(s.jobs);
+}
+
+// A study needs a tool and a material; nothing is started twice.
+void BatchStudyDialog::updateButtons() {
+  const bool complete = !checkedItems(tools_).isEmpty() && !checkedItems(materials_).isEmpty();
+  save_->setEnabled(complete && !running_);
+  run_->setEnabled(complete && !running_);
+  cancel_->setEnabled(running_);
+  open_->setEnabled(!running_);
+  const QString incomplete = tr("Check at least one tool and one material.");
+  if (!complete && !running_)
+    setStatus(incomplete);
+  else if (status_->text() == incomplete)
+    setStatus({});
+}
+
+void BatchStudyDialog::setRunning(bool running) {
+  running_ = running;
+  updateButtons();
+}
+
+void BatchStudyDialog::setProgress(qint64 done, qint64 total) {
+  progress_->setRange(0, static_cast<int>(std::max<qint64>(total, 1)));
+  progress_->setValue(static_cast<int>(std::min(done, total)));
+}
+
+void BatchStudyDialog::setStatus(const QString& text) {
+  status_->setText(text);
+}
+
+QString BatchStudyDialog::columnTitle(const QString& key) {
+  for (const auto& [k, title] : kColumnTitles)
+    if (key == QLatin1String(k)) return tr(title);
+  return key;
+}
+
+void BatchStudyDialog::setResults(const QStringList& columns, const std::vector<QStringList>& rows) {
+  results_->setSortingEnabled(false);
+  results_->clear();
+  results_->setColumnCount(static_cast<int>(columns.size()));
+  QStringList titles;
+  for (const QString& c : columns) titles << columnTitle(c);
+  results_->setHorizontalHeaderLabels(titles);
+  results_->setRowCount(static_cast<int>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (qsizetype c = 0; c < rows[r].size() && c < columns.size(); ++c)
+      results_->setItem(static_cast<int>(r), static_cast<int>(c), new QTableWidgetItem(rows[r][c]));
+  results_->setSortingEnabled(true);
+}
+
+}  // namespace mx::widgets
