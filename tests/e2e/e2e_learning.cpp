@@ -45,6 +45,7 @@ void seedLearningDatabase(Report& report) {
   try {
     app::LearningDatabase db(app::LearningDatabase::configuredOrDefault());
     std::vector<app::LearningRecord> records;
+    records.reserve(9);
     for (int i = 0; i < 9; ++i) records.push_back(seedRecord(i));
     db.insertAll(records);
   } catch (const std::exception& e) {
