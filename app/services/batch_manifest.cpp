@@ -26,6 +26,14 @@ QString shown(const QJsonValue& value) {
   return value.isArray() ? "an array" : "an object";
 }
 
+// A key as a message can show it: control characters (a NUL would end the message) as \uXXXX.
+QString printable(const QString& text) {
+  QString out;
+  for (const QChar c : text)
+    out += c.isPrint() || c == ' ' ? QString(c) : QString("\\u%1").arg(c.unicode(), 4, 16, QChar('0'));
+  return out;
+}
+
 [[noreturn]] void fail(const QString& field, const QJsonValue& value, const QString& allowed) {
   throw InputError(QString("%1 = %2: %3").arg(field, shown(value), allowed));
 }
@@ -101,7 +109,7 @@ QString BatchManifest::projectPath(qsizetype index) const {
 BatchManifest batchManifestFromJson(const QJsonObject& root, const QString& folder) {
   for (auto it = root.begin(); it != root.end(); ++it)
     if (!kKeys.contains(it.key()))
-      fail(it.key(), it.value(), QString("unknown key; allowed: %1").arg(kKeys.join(", ")));
+      fail(printable(it.key()), it.value(), QString("unknown key; allowed: %1").arg(kKeys.join(", ")));
   BatchManifest m;
   m.folder = folder;
   const QJsonValue computation = root.value("computation");
