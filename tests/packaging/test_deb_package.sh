@@ -91,6 +91,11 @@ for project in "$projects"/*.mxproj; do
 done
 "$bin/millexpert-cli" lobes "$projects/tap-test-example.mxproj" --tool T9 --dynamics measured \
   --from 3000 --to 3100 --step 100 >/dev/null || fail "lobes on the installed tap-test example failed"
+# The batch recipes, as docs/shop-scale.md names them.
+for recipe in millexpert-batch.sbatch millexpert-batch-job.yaml; do
+  cmp -s "$root/usr/share/millexpert/batch/$recipe" "$(find "$source/packaging" -name "$recipe")" ||
+    fail "the package lacks usr/share/millexpert/batch/$recipe, or it differs from packaging/"
+done
 # The installed window opens its default example from <root>/usr/share beside its bin/ (the system's
 # data folders emptied, the source tree out of an installed copy's reach): without it, the window would
 # show its start page, take no screenshot and exit 1 after 60 s.
