@@ -24,10 +24,6 @@ bool matches(const LearningHistoryRequest& request, const app::LearningRecord& r
          (request.source.isEmpty() || app::learningSourceName(r.source) == request.source);
 }
 
-void addChoice(QStringList& choices, const QString& value) {
-  if (!value.isEmpty() && !choices.contains(value)) choices << value;
-}
-
 LearningHistoryResult queryHistory(const app::LearningDatabase& db, const LearningHistoryRequest& request) {
   LearningHistoryResult result;
   std::vector<app::LearningRecord> records;
@@ -43,11 +39,9 @@ LearningHistoryResult queryHistory(const app::LearningDatabase& db, const Learni
   }
   for (app::LearningRecord& r : records)
     if (matches(request, r)) result.records.push_back(std::move(r));
-  for (const app::LearningRecord& r : db.history({std::nullopt, std::nullopt, std::nullopt, 0})) {
-    addChoice(result.tools, r.tool.id);
-    addChoice(result.materials, r.material);
-    addChoice(result.machines, r.machine.name.value_or(QString()));
-  }
+  result.tools = db.facetValues(app::LearningFacet::Tool);
+  result.materials = db.facetValues(app::LearningFacet::Material);
+  result.machines = db.facetValues(app::LearningFacet::Machine);
   for (QStringList* choices : {&result.tools, &result.materials, &result.machines}) choices->sort();
   result.total = db.count();
   result.location = db.location();

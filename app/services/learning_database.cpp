@@ -472,6 +472,16 @@ std::optional<WeightSuggestion> LearningDatabase::suggestInitialWeights(const Jo
   }
 }
 
+QStringList LearningDatabase::facetValues(LearningFacet facet) const {
+  const char* column = facet == LearningFacet::Tool       ? "tool_id"
+                       : facet == LearningFacet::Material ? "material"
+                                                          : "machine";
+  QStringList values;
+  for (QSqlQuery q = run(QString("SELECT DISTINCT %1 FROM learning_entry WHERE %1 IS NOT NULL").arg(column)); q.next();)
+    values << q.value(0).toString();
+  return values;
+}
+
 LearningConsistency LearningDatabase::checkConsistency() const {
   LearningConsistency c;
   if (sql_.isSqlite()) {

@@ -45,6 +45,9 @@ struct LearningConsistency {
   bool ok() const { return integrity == QLatin1String("ok") && problems.isEmpty(); }
 };
 
+// What the history can be filtered by: each has the distinct values stored (facetValues).
+enum class LearningFacet { Tool, Material, Machine };
+
 class LearningDatabase {
  public:
   enum class OpenMode { CreateIfMissing, ExistingOnly };
@@ -89,6 +92,9 @@ class LearningDatabase {
   // Weights of the k most similar past jobs (weight_suggestion.h); nullopt when none qualifies.
   std::optional<WeightSuggestion> suggestInitialWeights(const JobFeatures& job, int k = 3) const;
   qint64 count() const;
+  // The distinct values of a facet over every record (records naming no machine add none): one query,
+  // whatever the number of records.
+  QStringList facetValues(LearningFacet facet) const;
   LearningConsistency checkConsistency() const;
 
  private:

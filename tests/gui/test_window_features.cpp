@@ -30,7 +30,7 @@ class TestWindowFeatures : public QObject {
     gui::MainWindow window;
     const QStringList features{"lobesFeature",      "editorsFeature", "simulationFeature", "tapTestFeature",
                                "expertFeature",     "paretoFeature",  "controlFeature",    "machiningFeature",
-                               "supervisorFeature", "helpFeature"};
+                               "supervisorFeature", "batchFeature",   "helpFeature"};
     QStringList found;
     for (const auto* f : window.findChildren<gui::WindowFeature*>(Qt::FindDirectChildrenOnly)) found << f->objectName();
     QCOMPARE(found, features);

@@ -249,6 +249,13 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(hermle.front().time.time().minute(), 5);
     QCOMPARE(db.history({std::nullopt, QString("Aluminium"), QString("DMU-50"), 100}).size(), std::size_t{3});
     QCOMPARE(db.history({std::nullopt, std::nullopt, std::nullopt, 0}).size(), std::size_t{5});  // no limit
+    LearningRecord unnamed = sample("R3", "Brass", 30, 3, kW, 1.0, 6);
+    unnamed.machine.name.reset();
+    db.insert(unnamed);
+    const auto sorted = [](QStringList l) { return l.sort(), l; };
+    QCOMPARE(sorted(db.facetValues(mx::app::LearningFacet::Tool)), (QStringList{"R1", "R2", "R3"}));
+    QCOMPARE(sorted(db.facetValues(mx::app::LearningFacet::Material)), (QStringList{"Aluminium", "Brass", "Steel"}));
+    QCOMPARE(sorted(db.facetValues(mx::app::LearningFacet::Machine)), (QStringList{"DMU-50", "HERMLE-C42"}));
   }
 
   void weightsByMrrRange() {

@@ -17,7 +17,7 @@ using mx::widgets::LearningDatabaseDialog;
 
 namespace {
 
-const QString kDefault = QStringLiteral("/home/op/.local/share/MillExpert/learning.sqlite");
+const QString kDefault = QStringLiteral("/srv/op/.local/share/MillExpert/learning.sqlite");
 
 // The host's validator: what the GUI passes in (app/gui/pareto_feature_settings.cpp).
 QString problemOf(const QString& location) {
@@ -44,8 +44,8 @@ class TestLearningDatabaseDialog : public QObject {
                            << "PostgreSQL URL: empty; enter " + form;
     QTest::newRow("other scheme") << "mysql://u@h/db"
                                   << "PostgreSQL URL 'mysql://u@h/db': must start with postgresql:// (" + form + ")";
-    QTest::newRow("a file") << "/tmp/learning.sqlite"
-                            << "PostgreSQL URL '/tmp/learning.sqlite': must start with postgresql:// (" + form + ")";
+    QTest::newRow("a file") << "/srv/learning.sqlite"
+                            << "PostgreSQL URL '/srv/learning.sqlite': must start with postgresql:// (" + form + ")";
     QTest::newRow("user, host, db") << "postgresql://u@h/learning"
                                     << "";
     QTest::newRow("postgres scheme, no user") << "postgres://h/learning"
