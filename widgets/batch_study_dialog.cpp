@@ -6,6 +6,8 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QListWidget>
 #include <QProgressBar>
@@ -13,6 +15,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <array>
+#include <optional>
 #include <utility>
 
 namespace mx::widgets {
@@ -50,6 +53,48 @@ CheckedDoubleSpinBox* rpmBox(QWidget* parent, const QString& name, double minimu
   box->setValue(value);
   return box;
 }
+
+// A section object of a summary cell ({"milling":"up","radial_immersion":0.5,...}) as a machinist reads
+// it: "up milling, a_e/D 0.5, f_z max 0.15 mm"; other cells as they are.
+QString cellText(const QString& column, const QString& text) {
+  if (column != QLatin1String("operation") || !text.startsWith('{')) return text;
+  const QJsonObject o = QJsonDocument::fromJson(text.toUtf8()).object();
+  QStringList parts;
+  if (o.contains("milling")) parts << BatchStudyDialog::tr("%1 milling").arg(o.value("milling").toString());
+  if (o.contains("radial_immersion"))
+    parts << BatchStudyDialog::tr("a_e/D %1").arg(o.value("radial_immersion").toDouble());
+  if (o.contains("max_feed_per_tooth_mm"))
+    parts << BatchStudyDialog::tr("f_z max %1 mm").arg(o.value("max_feed_per_tooth_mm").toDouble());
+  return parts.isEmpty() ? text : parts.join(", ");
+}
+
+// Decimals a numeric column is shown with: speeds whole, depths to the µm, feeds to 0.1 µm.
+int decimalsOf(const QString& column) {
+  if (column == QLatin1String("speed_rpm") || column == QLatin1String("case")) return 0;
+  if (column == QLatin1String("feed_mm_per_tooth")) return 4;
+  return 3;
+}
+
+// A cell that sorts by its number when it holds one (text order would put 9050 after 12000).
+class ResultItem : public QTableWidgetItem {
+ public:
+  ResultItem(const QString& column, const QString& text) : QTableWidgetItem(cellText(column, text)) {
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok) return;
+    number_ = value;
+    setText(QString::number(value, 'f', decimalsOf(column)));
+    setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  }
+  bool operator<(const QTableWidgetItem& other) const override {
+    const auto* o = dynamic_cast<const ResultItem*>(&other);
+    if (o && number_ && o->number_) return *number_ < *o->number_;
+    return QTableWidgetItem::operator<(other);
+  }
+
+ private:
+  std::optional<double> number_;
+};
 
 }  // namespace
 
@@ -255,9 +300,15 @@ void BatchStudyDialog::setResults(const QStringList& columns, const std::vector<
   for (const QString& c : columns) titles << columnTitle(c);
   results_->setHorizontalHeaderLabels(titles);
   results_->setRowCount(static_cast<int>(rows.size()));
+  std::vector<bool> used(static_cast<std::size_t>(columns.size()), false);
   for (std::size_t r = 0; r < rows.size(); ++r)
-    for (qsizetype c = 0; c < rows[r].size() && c < columns.size(); ++c)
-      results_->setItem(static_cast<int>(r), static_cast<int>(c), new QTableWidgetItem(rows[r][c]));
+    for (qsizetype c = 0; c < rows[r].size() && c < columns.size(); ++c) {
+      results_->setItem(static_cast<int>(r), static_cast<int>(c), new ResultItem(columns[c], rows[r][c]));
+      if (!rows[r][c].isEmpty()) used[static_cast<std::size_t>(c)] = true;
+    }
+  // A computation fills only its own columns (lobes: no depth or feed; rank: no b_lim): the others hide.
+  for (qsizetype c = 0; c < columns.size(); ++c)
+    results_->setColumnHidden(static_cast<int>(c), !rows.empty() && !used[static_cast<std::size_t>(c)]);
   results_->setSortingEnabled(true);
 }
 

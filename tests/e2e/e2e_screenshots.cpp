@@ -16,6 +16,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <memory>
 #include <optional>
 
+#include "e2e_batch.h"
 #include "e2e_driver.h"
 #include "e2e_learning.h"
 #include "e2e_report.h"
@@ -73,6 +75,7 @@ struct Shot {
   bool guide = false;               // Help > User guide open beside the window (a grab of the screen)
   bool learning = false;            // the learning database seeded, its history shown
   bool learning_settings = false;   // Settings > Learning database open, its connection tested
+  bool batch = false;               // File > Batch study run here, its merged table shown
 };
 
 const Shot kShots[] = {
@@ -130,6 +133,7 @@ const Shot kShots[] = {
      .docks = "historyDock",
      .learning = true,
      .learning_settings = true},
+    {.file = "batch-study.png", .project = "rubio2006-tool-selection.mxproj", .batch = true},
 };
 
 QString projectFile(const char* relative) {
@@ -340,6 +344,8 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
 
   QDialog* dialog = shot.preferences ? window.openPreferences() : nullptr;
   if (shot.learning_settings) dialog = learningDatabaseDialog(window, kShotMs);
+  const QTemporaryDir batch_folder;
+  if (shot.batch) dialog = batchStudyDialog(window, batch_folder.path(), kShotMs);
   if (*shot.library) dialog = importDialog(report, window, projectFile(shot.library));
   if (dialog) {
     dialog->move(window.geometry().center() - dialog->rect().center());

@@ -122,7 +122,16 @@ class TestBatchStudyDialog : public QObject {
     QCOMPARE(t->horizontalHeaderItem(1)->text(), QString("Speed [rpm]"));
     QCOMPARE(t->horizontalHeaderItem(2)->text(), QString("b_lim [mm]"));
     QCOMPARE(t->item(1, 1)->text(), QString("4100"));
+    QCOMPARE(t->item(0, 2)->text(), QString("0.490"));  // depths to the µm
+    t->sortItems(1);                                    // by speed, as numbers
+    QCOMPARE(t->item(0, 0)->text(), QString("R2"));
     QCOMPARE(BatchStudyDialog::columnTitle("feed_mm_per_tooth"), QString("Feed [mm/tooth]"));
+    QVERIFY(t->isColumnHidden(3));  // no verdict in any row
+    QVERIFY(!t->isColumnHidden(2));
+    d.setResults({"operation", "verdict"},
+                 {{R"({"max_feed_per_tooth_mm":0.15,"milling":"down","radial_immersion":0.5})", "stable"}});
+    QCOMPARE(t->item(0, 0)->text(), QString("down milling, a_e/D 0.5, f_z max 0.15 mm"));
+    QVERIFY(!t->isColumnHidden(1));
     QCOMPARE(BatchStudyDialog::columnTitle("other"), QString("other"));
   }
 };
