@@ -38,38 +38,6 @@ mx::app::LearningRecord record(const QString& tool, const std::optional<QString>
   return r;
 }
 
-// A TCP port on 127.0.0.1 that accepts connections (the kernel's backlog) and never answers: a
-// PostgreSQL client waits there for its connect_timeout.
-class SilentPort {
- public:
-  SilentPort() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t n = sizeof a;
-    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&a), n) != 0 || ::listen(fd_, 16) != 0 ||
-        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &n) != 0)
-      return;
-    port_ = ntohs(a.sin_port);
-  }
-  ~SilentPort() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  SilentPort(const SilentPort&) = delete;
-  SilentPort& operator=(const SilentPort&) = delete;
-  int port() const { return port_; }
-
- private:
-  int fd_;
-  int port_ = 0;
-};
-
-// A port of 127.0.0.1 nothing listens on (bound, then released).
-int closedPort() {
-  SilentPort probe;
-  return probe.port();
-}
-
 }  // namespace
 
 class TestLearningClient : public QObject {
@@ -236,7 +204,7 @@ class TestLearningClient : public QObject {
     QCOMPARE(tested.last().at(1).toBool(), false);
     QVERIFY2(tested.last().at(2).toString().contains(junk), qPrintable(tested.last().at(2).toString()));
     // Nothing listening: fails fast, naming the URL.
-    const QString refused = QString("postgresql://planner@127.0.0.1:%1/learning").arg(closedPort());
+    const QString refused = QString("postgresql://planner@127.0.0.1:%1/learning").arg(mx::test::freeLoopbackPort());
     client.testConnection(refused);
     QVERIFY(tested.wait(10000));
     QCOMPARE(tested.last().at(1).toBool(), false);
@@ -247,7 +215,7 @@ class TestLearningClient : public QObject {
   // pool: the GUI thread never spends more than 100 ms on one event meanwhile, a newer test answers
   // first and the older one's answer is dropped.
   void hangingServerKeepsTheGuiResponsive() {
-    SilentPort silent;
+    mx::test::SilentPort silent;
     QVERIFY(silent.port() > 0);
     const QString hanging = QString("postgresql://planner@127.0.0.1:%1/learning?connect_timeout=2").arg(silent.port());
     LearningClient client;

@@ -28,6 +28,7 @@
 #include "services/learning_location.h"
 #include "shop_units_dialog.h"
 #include "support/event_loop_probe.h"
+#include "support/pareto_window.h"
 #include "support/postgres_server.h"
 #include "support/window_features.h"
 #include "test_registry.h"
@@ -35,21 +36,6 @@
 using namespace mx;
 
 namespace {
-const char* kCase = MX_PROJECTS_DIR "/rubio-pareto-case.mxproj";
-
-bool openCase(gui::MainWindow& window) {
-  window.setQuiet(true);
-  window.resize(1600, 950);
-  window.show();
-  QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
-  if (!window.openProject(kCase)) return false;
-  for (int i = 0; i < 120 && !test::paretoOf(window)->runner()->study(); ++i) shown.wait(1000);
-  return test::paretoOf(window)->runner()->study() != nullptr && test::paretoOf(window)->choice().has_value();
-}
-
-bool waitForLearning(const gui::MainWindow& window) {
-  return QTest::qWaitFor([&window] { return test::paretoOf(window)->learningIdle(); }, 30000);
-}
 
 QAction* menuAction(const gui::MainWindow& window, const QString& menu_name, const QString& text) {
   for (QAction* m : window.menuBar()->actions())
@@ -58,30 +44,6 @@ QAction* menuAction(const gui::MainWindow& window, const QString& menu_name, con
         if (a->text() == text) return a;
   return nullptr;
 }
-
-// A TCP port of 127.0.0.1 that accepts and never answers.
-class SilentPort {
- public:
-  SilentPort() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t n = sizeof a;
-    if (fd_ >= 0 && ::bind(fd_, reinterpret_cast<sockaddr*>(&a), n) == 0 && ::listen(fd_, 16) == 0 &&
-        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &n) == 0)
-      port_ = ntohs(a.sin_port);
-  }
-  ~SilentPort() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  SilentPort(const SilentPort&) = delete;
-  SilentPort& operator=(const SilentPort&) = delete;
-  int port() const { return port_; }
-
- private:
-  int fd_;
-  int port_ = 0;
-};
 
 }  // namespace
 
@@ -116,7 +78,7 @@ class TestLearningSettings : public QObject {
   void acceptingSetsTheSettingAndTheFeature() {
     QTemporaryDir dir;
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     gui::ParetoFeature* pareto = test::paretoOf(window);
     const QString file = dir.filePath("shop/learning.sqlite");
     QVERIFY(QDir().mkpath(dir.filePath("shop")));
@@ -129,7 +91,7 @@ class TestLearningSettings : public QObject {
     QCOMPARE(app::LearningDatabase::configuredOrDefault(), file);
     QCOMPARE(pareto->learningDatabasePath(), file);
     QVERIFY(shown.count() > 0 || shown.wait(10000));
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     auto* history = test::windowPart<widgets::HistoryView>(window);
     QCOMPARE(history->statusLabel()->text(), QString("0 of 0 entries - %1").arg(file));
     // Reopened, the dialog shows the stored choice.
@@ -139,7 +101,7 @@ class TestLearningSettings : public QObject {
     dialog->okButton()->click();
     QCOMPARE(app::configuredLearningDatabase(), QString());
     QCOMPARE(pareto->learningDatabasePath(), app::LearningDatabase::defaultPath());
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
   }
 
   void recordThroughTheWorker_data() {
@@ -163,20 +125,20 @@ class TestLearningSettings : public QObject {
       location = server_->url("gui_history") + "?connect_timeout=5";
     }
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     gui::ParetoFeature* pareto = test::paretoOf(window);
     auto* history = test::windowPart<widgets::HistoryView>(window);
     pareto->setLearningDatabasePath(location);
     const QString shown = app::parseLearningLocation(location).display();
     QCOMPARE(history->statusLabel()->text(), QString("Loading history from %1...").arg(shown));
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(history->rows().size(), 0);
     QSignalSpy status(pareto, &gui::ParetoFeature::statusMessage);
     pareto->moveToChoice();
     pareto->recordOperatingPoint();
     QCOMPARE(status.last().at(0).toString(), QString("Recording the point in %1...").arg(shown));
     QVERIFY(!pareto->learningIdle());
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(status.last().at(0).toString(), QString("Recorded point 1 in %1").arg(shown));
     QCOMPARE(history->rows().size(), 1);
     QCOMPARE(history->rows().front().source, QString("automatic"));
@@ -185,7 +147,7 @@ class TestLearningSettings : public QObject {
     QCOMPARE(history->statusLabel()->text(), QString("1 of 1 entries - %1").arg(shown));
     QVERIFY(!history->statusLabel()->text().contains("connect_timeout"));
     pareto->recordOperatingPoint();
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(history->rows().size(), 2);
     app::LearningDatabase db(location, app::LearningDatabase::OpenMode::ExistingOnly);
     QCOMPARE(db.count(), 2);
@@ -194,7 +156,7 @@ class TestLearningSettings : public QObject {
   // The dialog's Test connection against a server that never answers: "Testing..." while the GUI
   // keeps handling events within 100 ms, then the failure naming the URL, and the button back.
   void testConnectionKeepsTheGuiResponsive() {
-    SilentPort silent;
+    mx::test::SilentPort silent;
     QVERIFY(silent.port() > 0);
     gui::MainWindow window;
     window.setQuiet(true);

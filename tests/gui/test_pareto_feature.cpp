@@ -24,28 +24,15 @@
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
+#include "support/pareto_window.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-const char* kCase = MX_PROJECTS_DIR "/rubio-pareto-case.mxproj";
-
-bool openCase(gui::MainWindow& window) {
-  window.setQuiet(true);
-  window.resize(1600, 950);
-  window.show();
-  QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
-  if (!window.openProject(kCase)) return false;
-  for (int i = 0; i < 120 && !test::paretoOf(window)->runner()->study(); ++i) shown.wait(1000);
-  return test::paretoOf(window)->runner()->study() != nullptr && test::paretoOf(window)->choice().has_value();
-}
 
 // The learning thread has answered every record and history query (and the view shows the answer).
-bool waitForLearning(const gui::MainWindow& window) {
-  return QTest::qWaitFor([&window] { return test::paretoOf(window)->learningIdle(); }, 30000);
-}
 
 widgets::ParetoWeightsPanel* weightsPanelOf(const gui::MainWindow& w) {
   return test::windowPart<widgets::ParetoWeightsPanel>(w);
@@ -92,7 +79,7 @@ class TestParetoFeature : public QObject {
   // The chart marks the choice of the study's tool once; a live weight move redraws that one marker.
   void choiceIsMarkedOnTheChartOfItsTool() {
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     const QString tool = test::paretoOf(window)->runner()->study()->request().tool;
     test::contextOf(window)->setActiveTool(tool);
     const QString marker = QString("Pareto q (%1)").arg(tool);
@@ -104,7 +91,7 @@ class TestParetoFeature : public QObject {
 
   void frontClickMovesPointAndWeights() {
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     const auto& study = *test::paretoOf(window)->runner()->study();
     widgets::ParetoFrontView* view = test::windowPart<widgets::ParetoFrontView>(window);
     QCOMPARE(static_cast<std::size_t>(view->points().size()), study.front().size());
@@ -148,7 +135,7 @@ class TestParetoFeature : public QObject {
 
   void requirementAndAutoWeights() {
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     const double mrr = test::paretoOf(window)->choice()->point().mrr() * 1e6;
     // Require at least twice the current MRR (Rule 11): the weights move and the choice meets it.
     widgets::RequirementsPanel* panel = test::windowPart<widgets::RequirementsPanel>(window);
@@ -168,7 +155,7 @@ class TestParetoFeature : public QObject {
 
   void operatorRulesRestrictAndFire() {
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
     widgets::OperatorRulesEditor* editor = test::windowPart<widgets::OperatorRulesEditor>(window);
     editor->textEdit()->setPlainText("speed_rpm <= 1500\nif tool.teeth >= 2 then advise depth_mm <= 0.01");
@@ -196,16 +183,16 @@ class TestParetoFeature : public QObject {
   void historyRecordsAndAppliesWeights() {
     QTemporaryDir dir;
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     test::paretoOf(window)->setLearningDatabasePath(dir.filePath("learning.sqlite"));
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 0);
     // Move to the Pareto choice (commit the current weights), record it: source automatic.
     const ParetoWeights w = weightsPanelOf(window)->weights();
     weightsPanelOf(window)->setWeights(w);
     emit weightsPanelOf(window)->weightsCommitted(w);
     test::paretoOf(window)->recordOperatingPoint();
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
     const widgets::HistoryRow row = test::windowPart<widgets::HistoryView>(window)->rows().front();
     QCOMPARE(row.source, QString("automatic"));
@@ -224,7 +211,7 @@ class TestParetoFeature : public QObject {
   void reportedChatterMovesToSmithTlustySpeed() {
     QTemporaryDir dir;
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     test::paretoOf(window)->setLearningDatabasePath(dir.filePath("learning.sqlite"));
     test::paretoOf(window)->moveToChoice();
     const double n0 = window.document()->point().speed_rpm;
@@ -237,7 +224,7 @@ class TestParetoFeature : public QObject {
       if (kk >= 1 && (best == 0.0 || std::abs(60.0 * 668.0 / (3.0 * kk) - n0) < std::abs(best - n0)))
         best = 60.0 * 668.0 / (3.0 * kk);
     QCOMPARE_LE(std::abs(n1 - best), 0.02 * best + 1e-9);
-    QVERIFY(waitForLearning(window));
+    QVERIFY(test::waitForLearning(window));
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().size(), 1);
     QCOMPARE(test::windowPart<widgets::HistoryView>(window)->rows().front().source, QString("feedback"));
   }
@@ -256,7 +243,7 @@ class TestParetoFeature : public QObject {
     QFETCH(double, speed_rpm);
     QFETCH(double, depth_mm);
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     test::contextOf(window)->setActiveTool(test::paretoOf(window)->runner()->study()->request().tool);
     widgets::MonitoringPanel* m = test::windowPart<widgets::MonitoringPanel>(window);
     QVERIFY(m->valueText("ros") != QString::fromUtf8("\u2013"));
@@ -271,7 +258,7 @@ class TestParetoFeature : public QObject {
 
   void monitoringShowsSimulationSignals() {
     gui::MainWindow window;
-    QVERIFY(openCase(window));
+    QVERIFY(test::openParetoCase(window));
     QSignalSpy finished(test::simulationOf(window), &gui::SimulationFeature::simulationShown);
     test::simulationOf(window)->start();
     QVERIFY(finished.wait(60000));
