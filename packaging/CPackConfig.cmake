@@ -16,7 +16,9 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # database (the platform plugins come with libqt6gui6, the SVG ones with libqt6svg6).
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6sql6-sqlite")
 # The desktop's caches of MIME types, icons and desktop entries; their dpkg triggers pick up our files.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "shared-mime-info, hicolor-icon-theme, desktop-file-utils")
+# The PostgreSQL driver of a shop's shared learning database (docs/learning-database.md): recommended,
+# as a single computer runs on the SQLite file alone.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "shared-mime-info, hicolor-icon-theme, desktop-file-utils, libqt6sql6-psql")
 set(CPACK_STRIP_FILES ON)
 # gzip: xz would take most of the package test's time on the 2-core machine (docs/performance.md).
 set(CPACK_DEBIAN_COMPRESSION_TYPE "gzip")

@@ -30,6 +30,8 @@ depends=$(sed -n 's/^ Depends: //p' <<<"$info")
 for lib in libqt6core6 libqt6gui6 libqt6widgets6 libqt6svg6 libqt6sql6-sqlite; do
   grep -q "\b$lib\b" <<<"$depends" || fail "Depends names no $lib: $depends"
 done
+recommends=$(sed -n 's/^ Recommends: //p' <<<"$info")
+grep -q "\blibqt6sql6-psql\b" <<<"$recommends" || fail "Recommends names no libqt6sql6-psql: $recommends"
 echo "packaging.deb: $(grep -o 'Installed-Size: [0-9]*' <<<"$info") kB"
 
 # The files a desktop needs and the man pages, in the package's own listing.
