@@ -19,6 +19,7 @@
 
 #include "support/batch_manifests.h"
 #include "support/cli_runner.h"
+#include "support/enterable_folders.h"
 #include "test_registry.h"
 
 namespace {
@@ -178,6 +179,7 @@ class TestBatchSlurm : public QObject {
     QVERIFY(QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner |
                                                   QFileDevice::ReadGroup | QFileDevice::ExeGroup |
                                                   QFileDevice::ReadOther | QFileDevice::ExeOther));
+    mx::test::makeEnterableByAll(dir.path());  // and the folders above it (a 0700 TMPDIR)
     const QString s = dir.path();
     for (const char* sub : {"state", "spool", "log", "run", "munge", "results"}) QVERIFY(QDir(s).mkpath(sub));
     const QList<int> ports = freePorts(2);

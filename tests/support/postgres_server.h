@@ -23,6 +23,8 @@
 #include <QThread>
 #include <csignal>
 
+#include "support/enterable_folders.h"
+
 namespace mx::test {
 
 // A TCP port of 127.0.0.1 that was free a moment ago (the kernel's pick for port 0).
@@ -162,12 +164,7 @@ class PostgresServer {
     if (::chown(QFile::encodeName(data()).constData(), user->pw_uid, user->pw_gid) != 0 ||
         ::chown(QFile::encodeName(dir_.path()).constData(), user->pw_uid, user->pw_gid) != 0)
       return "cannot hand " + data() + " to the user postgres";
-    for (QDir folder(dir_.path()); !folder.isRoot(); folder.cdUp()) {
-      struct stat info {};
-      const QByteArray path = QFile::encodeName(folder.absolutePath());
-      if (::stat(path.constData(), &info) == 0 && (info.st_mode & S_IXOTH) == 0)
-        ::chmod(path.constData(), (info.st_mode & 07777) | S_IXOTH);
-    }
+    makeEnterableByAll(dir_.path());
     return {};
   }
 
