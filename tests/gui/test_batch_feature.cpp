@@ -131,7 +131,7 @@ class TestBatchFeature : public QObject {
     widgets::BatchStudyDialog* dialog = batch->openDialog();
     QStringList materials;
     for (int i = 0; i < 4; ++i) materials << dialog->materialList()->item(i)->text();
-    widgets::BatchStudySettings study = lobesStudy(materials, 10);  // 8 cases of about 3 s each
+    widgets::BatchStudySettings study = lobesStudy(materials, 25);  // 8 cases of about 1 s each
     study.method = "sdm";
     const QString manifest = dir_.filePath("cancel.json");
     QSignalSpy finished(batch, &gui::BatchFeature::runFinished);
