@@ -4,9 +4,7 @@
 // 40-case manifest; its merged table and its lines (sorted by case) must equal a single-process run's.
 // Every daemon started is stopped by its process id, also on failure. A daemon that cannot start fails
 // the test with its log's tail.
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <QElapsedTimer>
@@ -20,6 +18,7 @@
 #include "support/batch_manifests.h"
 #include "support/cli_runner.h"
 #include "support/enterable_folders.h"
+#include "support/loopback_port.h"
 #include "test_registry.h"
 
 namespace {
@@ -35,25 +34,6 @@ QString tail(const QString& path, qsizetype chars = 1500) {
 }
 
 // Two TCP ports that were free a moment ago (the kernel's choice for port 0).
-QList<int> freePorts(int count) {
-  QList<int> ports;
-  QList<int> sockets;
-  for (int i = 0; i < count; ++i) {
-    const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof(address);
-    if (s < 0 || ::bind(s, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0 ||
-        ::getsockname(s, reinterpret_cast<sockaddr*>(&address), &length) != 0)
-      return {};
-    sockets.append(s);
-    ports.append(ntohs(address.sin_port));
-  }
-  for (int s : sockets) ::close(s);
-  return ports;
-}
-
 QString slurmConf(const QString& s, const QString& host, const QList<int>& ports) {
   return QString(
              "ClusterName=mx\nSlurmctldHost=%2\nSlurmctldPort=%3\nSlurmdPort=%4\nSlurmUser=root\nSlurmdUser=root\n"
@@ -182,8 +162,11 @@ class TestBatchSlurm : public QObject {
     mx::test::makeEnterableByAll(dir.path());  // and the folders above it (a 0700 TMPDIR)
     const QString s = dir.path();
     for (const char* sub : {"state", "spool", "log", "run", "munge", "results"}) QVERIFY(QDir(s).mkpath(sub));
-    const QList<int> ports = freePorts(2);
-    QCOMPARE(ports.size(), 2);
+    const QList<int> ports = [] {  // reserved together (two distinct ports), released for the daemons
+      const mx::test::LoopbackPort controller, node;
+      return QList<int>{controller.port(), node.port()};
+    }();
+    QVERIFY(ports[0] > 0 && ports[1] > 0);
     const QString host = QSysInfo::machineHostName().section('.', 0, 0);  // hostname -s
     mx::test::writeText(dir, "slurm.conf", slurmConf(s, host, ports).toUtf8());
     QFile key(dir.filePath("munge/munge.key"));

@@ -215,7 +215,7 @@ class TestLearningClient : public QObject {
   // pool: the GUI thread never spends more than 100 ms on one event meanwhile, a newer test answers
   // first and the older one's answer is dropped.
   void hangingServerKeepsTheGuiResponsive() {
-    mx::test::SilentPort silent;
+    const mx::test::LoopbackPort silent(mx::test::LoopbackPort::Mode::Listening);
     QVERIFY(silent.port() > 0);
     const QString hanging = QString("postgresql://planner@127.0.0.1:%1/learning?connect_timeout=2").arg(silent.port());
     LearningClient client;

@@ -156,7 +156,7 @@ class TestLearningSettings : public QObject {
   // The dialog's Test connection against a server that never answers: "Testing..." while the GUI
   // keeps handling events within 100 ms, then the failure naming the URL, and the button back.
   void testConnectionKeepsTheGuiResponsive() {
-    mx::test::SilentPort silent;
+    const mx::test::LoopbackPort silent(mx::test::LoopbackPort::Mode::Listening);
     QVERIFY(silent.port() > 0);
     gui::MainWindow window;
     window.setQuiet(true);

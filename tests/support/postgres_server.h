@@ -5,9 +5,7 @@
 // every folder above its data folder is made enterable (search permission only). The binaries are
 // those CMake found (MX_PG_BINDIR). start() returns why the server could not start: the test fails
 // with it, never skips.
-#include <netinet/in.h>
 #include <pwd.h>
-#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,49 +22,9 @@
 #include <csignal>
 
 #include "support/enterable_folders.h"
+#include "support/loopback_port.h"
 
 namespace mx::test {
-
-// A TCP port of 127.0.0.1 that was free a moment ago (the kernel's pick for port 0).
-inline int freeLoopbackPort() {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return 0;
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t length = sizeof address;
-  int port = 0;
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
-      ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-    port = ntohs(address.sin_port);
-  ::close(fd);
-  return port;
-}
-
-// A TCP port of 127.0.0.1 that accepts connections (the kernel's backlog) and never answers: a
-// PostgreSQL client waits there for its connect_timeout.
-class SilentPort {
- public:
-  SilentPort() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t n = sizeof a;
-    if (fd_ >= 0 && ::bind(fd_, reinterpret_cast<sockaddr*>(&a), n) == 0 && ::listen(fd_, 16) == 0 &&
-        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &n) == 0)
-      port_ = ntohs(a.sin_port);
-  }
-  ~SilentPort() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  SilentPort(const SilentPort&) = delete;
-  SilentPort& operator=(const SilentPort&) = delete;
-  int port() const { return port_; }
-
- private:
-  int fd_;
-  int port_ = 0;
-};
 
 class PostgresServer {
  public:
