@@ -19,17 +19,18 @@ namespace {
 constexpr int kPollMs = 250;
 
 // The project's material first, then the library's other names.
-QStringList materialNames(const app::Project& project) {
+QStringList materialNames(const app::Project& project, const std::vector<app::MaterialEntry>& library) {
   QStringList names;
   if (project.material) names << project.material->name;
-  for (const app::MaterialEntry& e : app::bundledMaterialLibrary())
+  for (const app::MaterialEntry& e : library)
     if (!names.contains(e.name)) names << e.name;
   return names;
 }
 
-std::optional<app::MaterialSpec> materialNamed(const app::Project& project, const QString& name) {
+std::optional<app::MaterialSpec> materialNamed(const app::Project& project,
+                                               const std::vector<app::MaterialEntry>& library, const QString& name) {
   if (project.material && project.material->name == name) return *project.material;
-  for (const app::MaterialEntry& e : app::bundledMaterialLibrary())
+  for (const app::MaterialEntry& e : library)
     if (e.name == name) return app::materialSpecOf(e);
   return std::nullopt;
 }
@@ -86,7 +87,7 @@ widgets::BatchStudyDialog* BatchFeature::openDialog() {
     const app::Project& p = context_.project();
     widgets::BatchStudyChoices choices;
     for (const app::ToolSpec& t : p.tools) choices.tools << t.id;
-    choices.materials = materialNames(p);
+    choices.materials = materialNames(p, app::bundledMaterialLibrary());
     choices.machine = p.machine && p.machine->name
                           ? *p.machine->name
                           : tr("the project's machine (no machine.name: its records name none)");
@@ -105,8 +106,9 @@ app::BatchStudyRequest BatchFeature::requestOf(const widgets::BatchStudySettings
   app::BatchStudyRequest r;
   r.computation = s.computation;
   r.tools = s.tools;
+  const std::vector<app::MaterialEntry> library = app::bundledMaterialLibrary();  // parsed once
   for (const QString& name : s.materials)
-    if (auto m = materialNamed(context_.project(), name)) r.materials.push_back(*m);
+    if (auto m = materialNamed(context_.project(), library, name)) r.materials.push_back(*m);
   if (s.computation == "lobes")
     r.options = QJsonObject{{"from", s.from_rpm}, {"to", s.to_rpm}, {"step", s.step_rpm}, {"method", s.method}};
   return r;
