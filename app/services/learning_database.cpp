@@ -286,7 +286,7 @@ void LearningDatabase::configureSqlite() {
 }
 
 // The schema version, after checking that the tables are ours: 0 for an empty database.
-int LearningDatabase::storedVersion() const {
+LearningDatabase::StoredSchema LearningDatabase::storedSchema() const {
   const bool has_schema_table = tableExists("learning_schema");
   int version = 0;
   if (has_schema_table) {
@@ -309,7 +309,7 @@ int LearningDatabase::storedVersion() const {
     fail(QString("schema version %1 was written by a newer MillExpert (this build reads up to %2)")
              .arg(version)
              .arg(latestLearningSchemaVersion()));
-  return version;
+  return {version, has_schema_table};
 }
 
 void LearningDatabase::createSchemaTable(int version) {
@@ -321,12 +321,12 @@ void LearningDatabase::createSchemaTable(int version) {
 // One migration per transaction, each re-reading the version under the write lock: concurrent first
 // openings apply every migration exactly once.
 void LearningDatabase::migrate(int target_version) {
-  if (storedVersion() >= target_version && tableExists("learning_schema")) return;  // no write lock needed
+  if (const StoredSchema now = storedSchema(); now.version >= target_version && now.has_table) return;  // no lock
   for (;;) {
     const bool done = inTransaction(sql_.beginWrite(), [&] {
       if (*sql_.lockForMigration() != '\0') run(sql_.lockForMigration());
-      const int version = storedVersion();
-      if (!tableExists("learning_schema")) createSchemaTable(version);
+      const auto [version, has_table] = storedSchema();
+      if (!has_table) createSchemaTable(version);
       if (version >= target_version) return true;
       applyMigration(version + 1);
       return false;
@@ -346,7 +346,7 @@ void LearningDatabase::applyMigration(int version) {
 }
 
 int LearningDatabase::schemaVersion() const {
-  return storedVersion();
+  return storedSchema().version;
 }
 
 QString LearningDatabase::journalMode() const {

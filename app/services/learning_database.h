@@ -100,7 +100,11 @@ class LearningDatabase {
  private:
   void open(OpenMode mode);
   void configureSqlite();
-  int storedVersion() const;
+  struct StoredSchema {
+    int version = 0;         // 0: an empty database
+    bool has_table = false;  // the version table exists (SQLite files of version 1 lack it)
+  };
+  StoredSchema storedSchema() const;
   void createSchemaTable(int version);
   void migrate(int target_version);
   void applyMigration(int target_version);
