@@ -17,6 +17,6 @@ bool registerTest(const char* source_file, TestFactory factory);
 
 #define MX_REGISTER_TEST(TestClass)                                                                                 \
   namespace {                                                                                                       \
-  const bool mx_test_registered =                                                                                   \
+  const bool mx_registered_##TestClass =                                                                            \
       mx::test::registerTest(__FILE__, []() -> std::unique_ptr<QObject> { return std::make_unique<TestClass>(); }); \
   }

@@ -9,10 +9,11 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 const QString kInsperger = QStringLiteral(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj");
 
 using Run = mx::test::CliRun;

@@ -15,7 +15,7 @@
 #include "test_registry.h"
 
 namespace {
-const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
+const QString kAdaptiveControl = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
 const QString kParetoCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
 }  // namespace
 
@@ -28,7 +28,7 @@ class TestCliControl : public QObject {
   }
   void closedLoop() {
     QFETCH(double, beta);
-    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--beta", QString::number(beta)});
+    const mx::test::CliRun r = mx::test::runCli({"control", kAdaptiveControl, "--beta", QString::number(beta)});
     QCOMPARE(r.code, 0);
     for (const char* key : {"beta", "overshoot_pct", "settling_time_s", "Jc", "unstable_zero", "max_force_N",
                             "min_feed_mm_s", "max_feed_mm_s"})
@@ -56,14 +56,14 @@ class TestCliControl : public QObject {
   // First-order formula of the reading notes: beta* = -(1 - a) / (2 (1 - c)), a = e^{-T/tau_c},
   // c = tau_c (1 - a) / T; the 0.1 ms drive moves it by less than 1e-3.
   void thresholdAgreesWithFirstOrderFormula() {
-    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--beta", "0"});
+    const mx::test::CliRun r = mx::test::runCli({"control", kAdaptiveControl, "--beta", "0"});
     const double T = r.json["sampling_period_s"].toDouble(), tau = r.json["tau_c_ms"].toDouble() * 1e-3;
     const double a = std::exp(-T / tau), c = tau * (1 - a) / T;
     QCOMPARE_LE(std::abs(r.json["threshold_beta"].toDouble() + (1 - a) / (2 * (1 - c))), 1e-3);
   }
 
   void sweep() {
-    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--sweep-beta=-1:1:0.1"});
+    const mx::test::CliRun r = mx::test::runCli({"control", kAdaptiveControl, "--sweep-beta=-1:1:0.1"});
     QCOMPARE(r.code, 0);
     const QJsonArray beta = r.json["beta"].toArray(), jc = r.json["Jc"].toArray(),
                      unstable = r.json["unstable_zero"].toArray();
@@ -85,7 +85,7 @@ class TestCliControl : public QObject {
     QTemporaryDir dir;
     const QString csv = dir.filePath("s.csv"), dense = dir.filePath("d.csv");
     const mx::test::CliRun r =
-        mx::test::runCli({"control", kProject, "--beta", "0.3", "--csv", csv, "--csv-continuous", dense});
+        mx::test::runCli({"control", kAdaptiveControl, "--beta", "0.3", "--csv", csv, "--csv-continuous", dense});
     QCOMPARE(r.code, 0);
     QFile f(csv), g(dense);
     QVERIFY(f.open(QIODevice::ReadOnly));
@@ -98,7 +98,7 @@ class TestCliControl : public QObject {
 
   // The figure 9 run (beta = -0.3) as it was before Rule 4 existed: every number of its JSON.
   void spindleReproducesTheFigure9Run() {
-    const mx::test::CliRun r = mx::test::runCli({"control", kProject, "--sample-period", "spindle"});
+    const mx::test::CliRun r = mx::test::runCli({"control", kAdaptiveControl, "--sample-period", "spindle"});
     QCOMPARE(r.code, 0);
     const std::pair<const char*, double> expected[] = {{"Jc", 172.28782454282913},
                                                        {"duration_s", 2.7692307692307683},
@@ -118,9 +118,9 @@ class TestCliControl : public QObject {
   }
 
   void rule4SavesSamples() {
-    const mx::test::CliRun spindle = mx::test::runCli({"control", kProject});
+    const mx::test::CliRun spindle = mx::test::runCli({"control", kAdaptiveControl});
     const mx::test::CliRun r =
-        mx::test::runCli({"control", kProject, "--sample-period", "rule4", "--rule4-periods", "4"});
+        mx::test::runCli({"control", kAdaptiveControl, "--sample-period", "rule4", "--rule4-periods", "4"});
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["sample_period"].toString(), QString("rule4"));
     QCOMPARE(r.json["rule4_periods"].toInt(), 4);
@@ -162,7 +162,7 @@ class TestCliControl : public QObject {
     const double T = 60.0 / 715.0;
     const QString taus = QString("%1,%2").arg(T / 8.0 * 1e3, 0, 'g', 17).arg(T / 6.0 * 1e3, 0, 'g', 17);
     const mx::test::CliRun r =
-        mx::test::runCli({"control", kProject, "--beta-study", "--tau-c-ms", taus, "--sweep-beta=-1:1:0.1"});
+        mx::test::runCli({"control", kAdaptiveControl, "--beta-study", "--tau-c-ms", taus, "--sweep-beta=-1:1:0.1"});
     QCOMPARE(r.code, 0);
     for (const char* key : {"sampling_period_s", "default_tau_c_ms", "paper", "beta", "rows", "matches_paper",
                             "tau_c_at_paper_threshold_ms", "tau_c_near_paper_threshold_ms"})
@@ -253,7 +253,7 @@ class TestCliControl : public QObject {
     QFETCH(QStringList, flags);
     QFETCH(QString, message);
     QTemporaryDir dir;
-    const QString path = mx::test::writeMutatedProject(kProject, mutations, dir.filePath("p.mxproj"));
+    const QString path = mx::test::writeMutatedProject(kAdaptiveControl, mutations, dir.filePath("p.mxproj"));
     const mx::test::CliRun r = mx::test::runCli(QStringList{"control", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));

@@ -14,10 +14,10 @@ using namespace mx;
 
 namespace {
 
-const QString kProject = mx::test::projectsPath("rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 QStringList exportArgs(const QString& output, const QStringList& extra) {
-  return QStringList{"frf-export", kProject, "--tool", "R1", "--output", output} + extra;
+  return QStringList{"frf-export", kRubio, "--tool", "R1", "--output", output} + extra;
 }
 
 }  // namespace
@@ -90,7 +90,7 @@ class TestCommandFrfExport : public QObject {
     QTemporaryDir dir;
     const QString first = dir.filePath("R1.uff");
     QCOMPARE(test::runCli(exportArgs(first, {"--format", "uff58b"})).code, 0);
-    app::Project p = app::loadProject(kProject);
+    app::Project p = app::loadProject(kRubio);
     p.folder = dir.path();
     p.tools[0].frf_x = app::FrfRefSpec{"R1.uff", 0, std::nullopt, {}};
     p.tools[0].frf_y = app::FrfRefSpec{"R1.uff", 1, std::nullopt, {}};

@@ -11,10 +11,11 @@
 
 #include "support/cli_runner.h"
 #include "support/postgres_server.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");  // Aluminium; R1, R2
+using mx::test::kRubio;
 
 using Run = mx::test::CliRun;
 Run cli(const QStringList& args) {

@@ -15,7 +15,7 @@ using mx::test::writeText;
 
 namespace {
 
-const QString kRubio = test::projectsPath("rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 QString copyOf(const QTemporaryDir& dir, const QString& source, const QString& name) {
   QString path = dir.filePath(name);

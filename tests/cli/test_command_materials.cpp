@@ -13,7 +13,7 @@ using namespace mx;
 
 namespace {
 
-const QString kRubio = test::projectsPath("rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 QString copyOfRubio(const QTemporaryDir& dir) {
   const QString path = dir.filePath("p.mxproj");

@@ -9,11 +9,12 @@
 #include <cmath>
 
 #include "support/cli_runner.h"
+#include "support/project_files.h"
 #include "support/text_lines.h"
 #include "test_registry.h"
 
 namespace {
-const QString kSdnrp = QStringLiteral(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj");
+using mx::test::kSdnrp;
 // A test program, or an example of projects/ ("programs/...").
 QString sample(const QString& name) {
   return name.startsWith("programs/") ? QStringLiteral(MX_PROJECTS_DIR "/") + name
@@ -23,7 +24,7 @@ QString sample(const QString& name) {
 using mx::test::fileLines;
 
 // The line without our comment and without F / S numbers: what must not change.
-QString stripped(QString line) {
+QString unchangedPart(QString line) {
   line.remove(QRegularExpression(R"(( ; MX: .*| \(MX: .*\)| ; MillExpert optimised.*)$)"));
   line.remove(QRegularExpression(R"((\b[FfSs](1=)?)[-+]?[0-9.]+)"));
   return line.simplified();
@@ -64,7 +65,7 @@ class TestCommandOverride : public QObject {
     QCOMPARE(res.size(), in.size() + header_lines);
     int k = 0;
     for (const QString& line : res) {
-      if (k < in.size() && stripped(line) == stripped(in[k])) {
+      if (k < in.size() && unchangedPart(line) == unchangedPart(in[k])) {
         ++k;
         continue;
       }

@@ -12,13 +12,14 @@
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
 #include "support/postgres_server.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
-const QString kCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
+using mx::test::kParetoCase;
 
 QString caseWith(const QTemporaryDir& dir, const QStringList& mutations) {
-  QFile in(kCase);
+  QFile in(kParetoCase);
   in.open(QIODevice::ReadOnly);
   const QJsonObject root = mx::test::mutated(QJsonDocument::fromJson(in.readAll()).object(), mutations);
   QString path = dir.filePath("p.mxproj");
@@ -48,7 +49,7 @@ class TestCliPareto : public QObject {
   }
   void interface() {
     QFETCH(QStringList, flags);
-    const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", kCase} + flags);
+    const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", kParetoCase} + flags);
     QVERIFY2(r.code == 0, qPrintable(r.err));
     for (const char* key :
          {"q", "feed_velocity_mm_s", "mrr_cm3_s", "tol", "surf", "ros", "eta", "power_W", "weights", "pareto_set"})
@@ -127,7 +128,7 @@ class TestCliPareto : public QObject {
     QFETCH(QStringList, flags);
     QFETCH(QString, message);
     QTemporaryDir dir;
-    const QString path = mutations.isEmpty() ? kCase : caseWith(dir, mutations);
+    const QString path = mutations.isEmpty() ? kParetoCase : caseWith(dir, mutations);
     const mx::test::CliRun r = mx::test::runCli(QStringList{"pareto", path} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
@@ -136,7 +137,7 @@ class TestCliPareto : public QObject {
   // The project's weights with its minimum MRR (25 % of Q's largest): a cut away from the grid's
   // lower corner, the requirement named as binding; without it (--no-requirement), the lower corner.
   void defaultRequirement() {
-    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--front-limit", "1"});
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kParetoCase, "--front-limit", "1"});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     QCOMPARE(r.json["normalisation"].toString(), QString("log"));
     QCOMPARE(r.json["objective"].toString(), QString("weighted"));
@@ -153,7 +154,7 @@ class TestCliPareto : public QObject {
     // 150 cm^3 at the selected MRR.
     QCOMPARE_LE(std::abs(e["machining_time_min"].toDouble() - 150.0 / r.json["mrr_cm3_s"].toDouble() / 60.0), 1e-9);
 
-    const mx::test::CliRun free = mx::test::runCli({"pareto", kCase, "--front-limit", "1", "--no-requirement"});
+    const mx::test::CliRun free = mx::test::runCli({"pareto", kParetoCase, "--front-limit", "1", "--no-requirement"});
     QCOMPARE(free.code, 0);
     QVERIFY(!free.json.contains("requirement"));
     QCOMPARE(free.json["q"].toObject()["depth_mm"].toDouble(), 0.0721329100458);
@@ -166,7 +167,7 @@ class TestCliPareto : public QObject {
     const QString objectives[3] = {"weighted", "min_cost", "max_rate"};
     for (int i = 0; i < 3; ++i) {
       const mx::test::CliRun r =
-          mx::test::runCli({"pareto", kCase, "--front-limit", "1", "--objective", objectives[i]});
+          mx::test::runCli({"pareto", kParetoCase, "--front-limit", "1", "--objective", objectives[i]});
       QVERIFY2(r.code == 0, qPrintable(r.err));
       QCOMPARE(r.json["objective"].toString(), objectives[i]);
       economics[i] = r.json["economics"].toObject();
@@ -185,7 +186,7 @@ class TestCliPareto : public QObject {
   // Module VI, reported by the operator: Rule 16 speed N_s = 60 f_c / (n_t k) nearest q, and a
   // re-selection within +-2 % of it.
   void operatorReportedChatter() {
-    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--chatter-hz", "668", "--front-limit", "1"});
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kParetoCase, "--chatter-hz", "668", "--front-limit", "1"});
     QCOMPARE(r.code, 0);
     const QJsonObject fb = r.json["feedback"].toObject();
     QCOMPARE(fb["reported_by"].toString(), QString("operator"));
@@ -202,12 +203,12 @@ class TestCliPareto : public QObject {
 
   // --front-limit keeps the N points of the whole set with the best J; 0 lists the whole set.
   void frontLimit() {
-    const mx::test::CliRun all = mx::test::runCli({"pareto", kCase, "--front-limit", "0"});
+    const mx::test::CliRun all = mx::test::runCli({"pareto", kParetoCase, "--front-limit", "0"});
     QCOMPARE(all.code, 0);
     const qint64 size = all.json["pareto_set_size"].toInteger();
     QCOMPARE(all.json["pareto_set"].toArray().size(), size);
     QCOMPARE(all.json["pareto_set_truncated"].toBool(), false);
-    const mx::test::CliRun few = mx::test::runCli({"pareto", kCase, "--front-limit", "10", "--no-requirement"});
+    const mx::test::CliRun few = mx::test::runCli({"pareto", kParetoCase, "--front-limit", "10", "--no-requirement"});
     QCOMPARE(few.code, 0);
     QCOMPARE(few.json["pareto_set_size"].toInteger(), size);
     QCOMPARE(few.json["pareto_set"].toArray().size(), 10);
@@ -320,7 +321,7 @@ class TestCliPareto : public QObject {
     QVERIFY2(sources.contains("feedback") && sources.contains("automatic"), qPrintable(sources.join(',')));
 
     // Without chatter the feedback is reported, nothing re-selected; without --db nothing is recorded.
-    const mx::test::CliRun s = mx::test::runCli({"pareto", kCase, "--feedback"});
+    const mx::test::CliRun s = mx::test::runCli({"pareto", kParetoCase, "--feedback"});
     QVERIFY2(s.code == 0, qPrintable(s.err));
     QVERIFY(!s.json["feedback"].toObject()["chatter"].toBool());
     QVERIFY(s.json["feedback"].toObject()["reselected"].isNull());
@@ -329,7 +330,7 @@ class TestCliPareto : public QObject {
 
   // Unknown sections survive: the pareto section is preserved by the project loader (check passes).
   void projectChecks() {
-    const mx::test::CliRun r = mx::test::runCli({"check", kCase});
+    const mx::test::CliRun r = mx::test::runCli({"check", kParetoCase});
     QVERIFY2(r.code == 0, qPrintable(r.err));
   }
 
@@ -339,10 +340,10 @@ class TestCliPareto : public QObject {
     const QString why = server.start();
     QVERIFY2(why.isEmpty(), qPrintable("the PostgreSQL server did not start: " + why));
     QVERIFY(server.createDatabase("shop"));
-    const mx::test::CliRun r = mx::test::runCli({"pareto", kCase, "--db", server.url("shop")});
+    const mx::test::CliRun r = mx::test::runCli({"pareto", kParetoCase, "--db", server.url("shop")});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     QCOMPARE(r.json["recorded"].toArray().size(), 1);
-    const mx::test::CliRun h = mx::test::runCli({"history", kCase, "--db", server.url("shop")});
+    const mx::test::CliRun h = mx::test::runCli({"history", kParetoCase, "--db", server.url("shop")});
     QVERIFY2(h.code == 0, qPrintable(h.err));
     const QJsonArray entries = h.json["entries"].toArray();
     QCOMPARE(entries.size(), 1);

@@ -10,10 +10,11 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
-const QString kCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
+using mx::test::kParetoCase;
 
 mx::test::CliRun point(const QString& project, const QString& speed, const QString& depth, const QString& feed) {
   return mx::test::runCli({"point", project, "--tool", "R1", "--speed", speed, "--depth", depth, "--feed", feed});
@@ -45,7 +46,7 @@ class TestCommandPoint : public QObject {
     QFETCH(double, paper_W);
     QFETCH(double, cutting_W);
     const double feed = vf_mm_s / (3.0 * speed.toDouble() / 60.0);
-    const mx::test::CliRun r = point(kCase, speed, depth, QString::number(feed, 'g', 10));
+    const mx::test::CliRun r = point(kParetoCase, speed, depth, QString::number(feed, 'g', 10));
     QCOMPARE(r.code, 0);
     const double available = r.json["available_power_W"].toDouble();
     QCOMPARE_LE(std::abs(available - paper_W), 0.05);
@@ -69,12 +70,12 @@ class TestCommandPoint : public QObject {
   void verdictBands() {
     QFETCH(double, factor);
     QFETCH(QString, verdict);
-    const mx::test::CliRun probe = point(kCase, "2400", "0.1", "0.05");
+    const mx::test::CliRun probe = point(kParetoCase, "2400", "0.1", "0.05");
     QCOMPARE(probe.code, 0);
     const double alpha_blim = probe.json["blim_mm"].toDouble();
     const double alpha = 0.95;  // expert.alpha of the case
     const double depth = factor < 0.0 ? -factor * alpha_blim : factor * alpha_blim / alpha;
-    const mx::test::CliRun r = point(kCase, "2400", QString::number(depth, 'g', 10), "0.05");
+    const mx::test::CliRun r = point(kParetoCase, "2400", QString::number(depth, 'g', 10), "0.05");
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["verdict"].toString(), verdict);
     QCOMPARE(r.json["stable"].toBool(), verdict == "stable");
@@ -83,15 +84,15 @@ class TestCommandPoint : public QObject {
   // Above the corner speed 2745.3 / (2 pi 9) rev/s = 2912.85 rpm, P_max binds; without the torque
   // P_av = P_max at every speed, and a cut of 4 mm at 0.3 mm/tooth, 1800 rpm (2035.8 W) passes only then.
   void torqueLineAgainstPmax() {
-    QCOMPARE_LE(std::abs(point(kCase, "4000", "0.5", "0.1").json["available_power_W"].toDouble() - 2745.3), 1e-9);
-    const mx::test::CliRun limited = point(kCase, "1800", "4", "0.3");
+    QCOMPARE_LE(std::abs(point(kParetoCase, "4000", "0.5", "0.1").json["available_power_W"].toDouble() - 2745.3), 1e-9);
+    const mx::test::CliRun limited = point(kParetoCase, "1800", "4", "0.3");
     QCOMPARE_LE(std::abs(limited.json["peak_power_W"].toDouble() - 2035.8), 0.5);
     QVERIFY(!limited.json["power_ok"].toBool());
     QCOMPARE_LE(std::abs(limited.json["power_fraction"].toDouble() - 2035.8 / 1696.46), 1e-3);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString plain =
-        mx::test::writeMutatedProject(kCase, {"-machine/max_torque_Nm"}, dir.filePath("plain.mxproj"));
+        mx::test::writeMutatedProject(kParetoCase, {"-machine/max_torque_Nm"}, dir.filePath("plain.mxproj"));
     const mx::test::CliRun r = point(plain, "1800", "4", "0.3");
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["available_power_W"].toDouble(), 2745.3);
@@ -103,7 +104,7 @@ class TestCommandPoint : public QObject {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString project = mx::test::writeMutatedProject(
-        kCase,
+        kParetoCase,
         {"machine/spindle_curve=[{\"speed_rpm\": 1000, \"power_W\": 500}, {\"speed_rpm\": 3000, \"power_W\": 2500}]"},
         dir.filePath("curve.mxproj"));
     // 2000 rpm: curve 1500 W, torque 1885.0 W, P_max 2745.3 W; 500 rpm: constant torque of the first
@@ -118,7 +119,7 @@ class TestCommandPoint : public QObject {
   // there is no limit key.
   void toolForceLimit() {
     const QString feed = QString::number(17.96 / (3.0 * 2010.0 / 60.0), 'g', 10);
-    const mx::test::CliRun own = point(kCase, "2010", "1.5124", feed);
+    const mx::test::CliRun own = point(kParetoCase, "2010", "1.5124", feed);
     QCOMPARE(own.code, 0);
     const double expected = 600.0 * std::sqrt(1.0 + 0.3 * 0.3) * 1.5124 * feed.toDouble();
     QCOMPARE_LE(std::abs(own.json["peak_force_N"].toDouble() - expected), 1e-3 * expected);
@@ -127,19 +128,20 @@ class TestCommandPoint : public QObject {
     QVERIFY(own.json["force_ok"].toBool());
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    const QString none = mx::test::writeMutatedProject(kCase, {"-tools/0/max_force_N"}, dir.filePath("none.mxproj"));
+    const QString none =
+        mx::test::writeMutatedProject(kParetoCase, {"-tools/0/max_force_N"}, dir.filePath("none.mxproj"));
     const mx::test::CliRun free = point(none, "2010", "1.5124", feed);
     QCOMPARE(free.code, 0);
     QVERIFY(!free.json.contains("max_force_N") && !free.json.contains("force_ok"));
     const QString limited =
-        mx::test::writeMutatedProject(kCase, {"tools/0/max_force_N=150"}, dir.filePath("limited.mxproj"));
+        mx::test::writeMutatedProject(kParetoCase, {"tools/0/max_force_N=150"}, dir.filePath("limited.mxproj"));
     const mx::test::CliRun r = point(limited, "2010", "1.5124", feed);
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["max_force_N"].toDouble(), 150.0);
     QVERIFY(!r.json["force_ok"].toBool());
     QCOMPARE_LE(std::abs(r.json["force_fraction"].toDouble() - r.json["peak_force_N"].toDouble() / 150.0), 1e-12);
     const QString breakage = mx::test::writeMutatedProject(
-        kCase, {"-tools/0/max_force_N", "control/breakage_force_N=1000", "control/safety_factor=0.5"},
+        kParetoCase, {"-tools/0/max_force_N", "control/breakage_force_N=1000", "control/safety_factor=0.5"},
         dir.filePath("breakage.mxproj"));
     const mx::test::CliRun b = point(breakage, "2010", "1.5124", feed);
     QCOMPARE(b.json["max_force_N"].toDouble(), 500.0);
@@ -159,15 +161,15 @@ class TestCommandPoint : public QObject {
   }
   void speedsOutsideTheGrid() {
     QFETCH(double, speed);
-    const mx::test::CliRun r = point(kCase, QString::number(speed, 'g', 10), "0.1", "0.05");
+    const mx::test::CliRun r = point(kParetoCase, QString::number(speed, 'g', 10), "0.1", "0.05");
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["speed_rpm"].toDouble(), speed);
     const double step = std::max(10.0, speed / 1000.0);
     const double half = std::floor(0.5 * speed / step) * step;
     const double above = std::floor(std::min(0.5 * speed, 1e5 - speed) / step) * step;
     const mx::test::CliRun lobes =
-        mx::test::runCli({"lobes", kCase, "--tool", "R1", "--from", QString::number(speed - half, 'g', 17), "--to",
-                          QString::number(speed + above, 'g', 17), "--step", QString::number(step, 'g', 17)});
+        mx::test::runCli({"lobes", kParetoCase, "--tool", "R1", "--from", QString::number(speed - half, 'g', 17),
+                          "--to", QString::number(speed + above, 'g', 17), "--step", QString::number(step, 'g', 17)});
     QCOMPARE(lobes.code, 0);
     const QJsonArray speeds = lobes.json["speed_rpm"].toArray();
     const qsizetype at = static_cast<qsizetype>(std::llround(half / step));
@@ -189,8 +191,8 @@ class TestCommandPoint : public QObject {
 
   // The semi-discretization's work is bounded by speeds x steps: refused by the flag, before any work.
   void sdmWorkIsBounded() {
-    const mx::test::CliRun r = mx::test::runCli({"point", kCase, "--tool", "R1", "--speed", "3000", "--depth", "0.1",
-                                                 "--feed", "0.05", "--method", "sdm", "--steps", "2000"});
+    const mx::test::CliRun r = mx::test::runCli({"point", kParetoCase, "--tool", "R1", "--speed", "3000", "--depth",
+                                                 "0.1", "--feed", "0.05", "--method", "sdm", "--steps", "2000"});
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains("--method sdm: 401 speeds (expert.grid 1000 to 5000 rpm by 10 rpm) x --steps 2000 = "
                             "8.02e+05 speed-steps, at most 3e+05 (about 20 s)"),
@@ -219,7 +221,7 @@ class TestCommandPoint : public QObject {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString project =
-        mx::test::writeMutatedProject(kCase,
+        mx::test::writeMutatedProject(kParetoCase,
                                       {"operating_point={\"tool\": \"R1\", \"speed_rpm\": 2010, \"depth_mm\": 1.5124, "
                                        "\"feed_mm_per_tooth\": 0.1787}"},
                                       dir.filePath("stored.mxproj"));
@@ -230,7 +232,7 @@ class TestCommandPoint : public QObject {
     QCOMPARE(r.json["depth_mm"].toDouble(), depth);
     QCOMPARE(r.json["feed_per_tooth_mm"].toDouble(), feed);
     const mx::test::CliRun flagged =
-        mx::test::runCli({"point", kCase, "--tool", "R1", "--speed", QString::number(speed, 'g', 17), "--depth",
+        mx::test::runCli({"point", kParetoCase, "--tool", "R1", "--speed", QString::number(speed, 'g', 17), "--depth",
                           QString::number(depth, 'g', 17), "--feed", QString::number(feed, 'g', 17)});
     QCOMPARE(r.json["peak_power_W"].toDouble(), flagged.json["peak_power_W"].toDouble());
     QCOMPARE(r.json["blim_mm"].toDouble(), flagged.json["blim_mm"].toDouble());
@@ -254,7 +256,7 @@ class TestCommandPoint : public QObject {
     QFETCH(QString, command);
     QFETCH(QStringList, flags);
     QFETCH(QString, missing);
-    const mx::test::CliRun r = mx::test::runCli(QStringList{command, kCase} + flags);
+    const mx::test::CliRun r = mx::test::runCli(QStringList{command, kParetoCase} + flags);
     QCOMPARE(r.code, 2);
     QCOMPARE(r.err.trimmed(),
              QString("millexpert-cli: %1 is required: the project has no operating_point to default to").arg(missing));

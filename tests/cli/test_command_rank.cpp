@@ -9,10 +9,11 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 using Run = mx::test::CliRun;
 Run cli(const QStringList& args) {

@@ -15,11 +15,12 @@
 #include "support/cli_runner.h"
 #include "support/hostile_files.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "support/text_lines.h"
 #include "test_registry.h"
 
 namespace {
-const QString kSdnrp = QStringLiteral(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj");
+using mx::test::kSdnrp;
 const QString kAdaptive = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
 const QString kPocket = QStringLiteral(MX_TEST_DATA_DIR "/gcode/pocket_mm.nc");
 const QString kInch = QStringLiteral(MX_TEST_DATA_DIR "/gcode/inch.nc");
@@ -27,7 +28,7 @@ const QString kInch = QStringLiteral(MX_TEST_DATA_DIR "/gcode/inch.nc");
 using mx::test::fileLines;
 
 // A block with its F/S words and "(MX: ...)" comment removed: what must stay identical.
-QString stripped(QString line) {
+QString unchangedBlockPart(QString line) {
   line.remove(QRegularExpression(R"( \(MX: .*\)$)"));
   line.remove(QRegularExpression(R"([FfSs][-+]?[0-9.]+)"));
   return line.simplified();
@@ -147,7 +148,7 @@ class TestCliSdnrp : public QObject {
     for (int i = 0; i < in.size(); ++i) {
       const QString& a = in[i];
       const QString& b = res[i < first ? i : i + header];
-      QCOMPARE(stripped(b), stripped(a));
+      QCOMPARE(unchangedBlockPart(b), unchangedBlockPart(a));
     }
     QCOMPARE(fileLines(csv).value(0),
              QString("block,line,original_F_mm_min,new_F_mm_min,S_rpm,reason,predicted_force_N"));

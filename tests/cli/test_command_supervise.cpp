@@ -12,10 +12,10 @@
 #include "test_registry.h"
 
 namespace {
-const QString kProject = QStringLiteral(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
+const QString kFaceMilling = QStringLiteral(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
 
 mx::test::CliRun supervise(const QString& controller) {
-  return mx::test::runCli({"supervise", kProject, "--controller", controller}, 300000);
+  return mx::test::runCli({"supervise", kFaceMilling, "--controller", controller}, 300000);
 }
 
 bool hasEvent(const QJsonObject& r, const QString& type) {
@@ -88,7 +88,7 @@ class TestCliSupervise : public QObject {
   // the re-contact after the hold overshoots more than with the model's feed.
   void bumplessRestartOvershootsMore() {
     const mx::test::CliRun r = mx::test::runCli(
-        {"supervise", kProject, "--controller", "smc1", "--reset-feed", "current", "--time-constant-ms", "400"},
+        {"supervise", kFaceMilling, "--controller", "smc1", "--reset-feed", "current", "--time-constant-ms", "400"},
         300000);
     QCOMPARE(r.code, 0);
     QCOMPARE(r.json["model_controller"].toObject(),
@@ -97,7 +97,7 @@ class TestCliSupervise : public QObject {
   }
   // The appendix's search: 1 mm (SMC I's passes) stable, 2 mm (one pass) unstable.
   void marginalDepth() {
-    const mx::test::CliRun r = mx::test::runCli({"supervise", kProject, "--marginal-depth"}, 300000);
+    const mx::test::CliRun r = mx::test::runCli({"supervise", kFaceMilling, "--marginal-depth"}, 300000);
     QCOMPARE(r.code, 0);
     QVERIFY(r.json["bracketed"].toBool());
     const double d = r.json["marginal_depth_mm"].toDouble();
@@ -110,7 +110,7 @@ class TestCliSupervise : public QObject {
   void unstableChartIsReported() {
     QTemporaryDir dir;
     const QString path = mx::test::writeMutatedProject(
-        kProject, {R"(supervisor/charts/smc1/transitions/5={"id":6,"from":[4],"to":[4],"receptivity":"true"})"},
+        kFaceMilling, {R"(supervisor/charts/smc1/transitions/5={"id":6,"from":[4],"to":[4],"receptivity":"true"})"},
         dir.filePath("p.mxproj"));
     const mx::test::CliRun r = mx::test::runCli({"supervise", path, "--controller", "smc1"}, 300000);
     QCOMPARE(r.code, 0);
@@ -153,7 +153,7 @@ class TestCliSupervise : public QObject {
   void badFlags() {
     QFETCH(QStringList, flags);
     QFETCH(QString, message);
-    const mx::test::CliRun r = mx::test::runCli(QStringList{"supervise", kProject, "--controller", "smc1"} + flags);
+    const mx::test::CliRun r = mx::test::runCli(QStringList{"supervise", kFaceMilling, "--controller", "smc1"} + flags);
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
   }
@@ -162,7 +162,7 @@ class TestCliSupervise : public QObject {
     QFETCH(QString, controller);
     QFETCH(QString, message);
     QTemporaryDir dir;
-    const QString path = mx::test::writeMutatedProject(kProject, mutations, dir.filePath("p.mxproj"));
+    const QString path = mx::test::writeMutatedProject(kFaceMilling, mutations, dir.filePath("p.mxproj"));
     const mx::test::CliRun r = mx::test::runCli({"supervise", path, "--controller", controller});
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));

@@ -30,11 +30,11 @@ constexpr unsigned kSeed = 20240501;
 constexpr int kCalibrationRuns = 3;
 constexpr qint64 kMinMaxDelayUs = 200;
 const QString kProgram = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
-const QString kProject = MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj";
+using mx::test::kSdnrp;
 const QStringList kSpeeds{"3000", "4500"};
 
 QStringList overrideArgs(const QString& out, int run) {
-  return {"override", kProgram, kProject, "--out", out, "--speed", kSpeeds[run % 2]};
+  return {"override", kProgram, kSdnrp, "--out", out, "--speed", kSpeeds[run % 2]};
 }
 
 QByteArray dateless(const QByteArray& text) {

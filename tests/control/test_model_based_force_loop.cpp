@@ -15,7 +15,7 @@ namespace {
 constexpr double kSpeed = 25.0;  // 1500 rpm [rev/s]
 constexpr double kDepth = 1e-3;
 
-ModelBasedForceLoopSettings landers(double tau_s, ResetFeed reset = ResetFeed::Current) {
+ModelBasedForceLoopSettings landersLoop(double tau_s, ResetFeed reset = ResetFeed::Current) {
   ModelBasedForceLoopSettings s;
   s.controller.reference_force_N = 150.0;
   s.time_constant_s = tau_s;
@@ -45,7 +45,7 @@ class TestModelBasedForceLoop : public QObject {
     // The force of a period answers the feed of the period before: ln(F/F_ref) shrinks by p each period.
     QFETCH(double, tau_s);
     QFETCH(double, gain_error);
-    ModelBasedForceLoop loop(landers(tau_s));
+    ModelBasedForceLoop loop(landersLoop(tau_s));
     const double p = std::exp(-0.04 / tau_s);
     QVERIFY(std::abs(loop.pole() - p) < 1e-15);
     loop.reset(10e-3, kDepth, kSpeed);
@@ -59,18 +59,18 @@ class TestModelBasedForceLoop : public QObject {
     }
   }
   void integralActionRemovesTheModelError() {
-    ModelBasedForceLoop loop(landers(0.2));
+    ModelBasedForceLoop loop(landersLoop(0.2));
     loop.reset(10e-3, kDepth, kSpeed);
     for (int k = 0; k < 400; ++k) loop.update(process(loop.feedRate(), 0.7), kSpeed);
     QVERIFY(std::abs(process(loop.feedRate(), 0.7) - 150.0) < 1e-9);
   }
   void resetFeeds() {
-    ModelBasedForceLoop current(landers(0.2, ResetFeed::Current));
+    ModelBasedForceLoop current(landersLoop(0.2, ResetFeed::Current));
     current.reset(10e-3, kDepth, kSpeed);
     QCOMPARE(current.feedRate(), 10e-3);  // bumpless: the programmed feed the axis moves at
     current.reset(80e-3, kDepth, kSpeed);
     QCOMPARE(current.feedRate(), 36e-3);  // clamped to the feed drive
-    ModelBasedForceLoop model(landers(0.2, ResetFeed::Model));
+    ModelBasedForceLoop model(landersLoop(0.2, ResetFeed::Model));
     model.reset(10e-3, kDepth, kSpeed);
     // (150 / 760)^(1/0.63) mm/tooth * 4 teeth * 25 rev/s = 7.6129 mm/s, the model's force is F_ref
     QVERIFY(std::abs(process(model.feedRate(), 1.0) - 150.0) < 1e-9);
@@ -78,7 +78,7 @@ class TestModelBasedForceLoop : public QObject {
   }
   void noWindUpAtTheFeedLimit() {
     // A process too weak to reach F_ref even at the drive's 36 mm/s: the feed sits at the maximum.
-    ModelBasedForceLoop loop(landers(0.2));
+    ModelBasedForceLoop loop(landersLoop(0.2));
     loop.reset(10e-3, kDepth, kSpeed);
     for (int k = 0; k < 200; ++k) loop.update(process(loop.feedRate(), 0.2), kSpeed);
     QCOMPARE(loop.feedRate(), 36e-3);
@@ -87,7 +87,7 @@ class TestModelBasedForceLoop : public QObject {
     QVERIFY(loop.feedRate() < 36e-3 * 0.99);
   }
   void noChipHoldsTheFeed() {
-    ModelBasedForceLoop loop(landers(0.2));
+    ModelBasedForceLoop loop(landersLoop(0.2));
     loop.reset(10e-3, kDepth, kSpeed);
     QCOMPARE(loop.update(0.0, kSpeed), 10e-3);
     QCOMPARE(loop.update(std::nan(""), kSpeed), 10e-3);
@@ -107,7 +107,7 @@ class TestModelBasedForceLoop : public QObject {
     QFETCH(double, tau_s);
     QFETCH(double, min_fraction);
     QFETCH(QString, field);
-    ModelBasedForceLoopSettings s = landers(0.2);
+    ModelBasedForceLoopSettings s = landersLoop(0.2);
     s.period_s = period_s;
     s.time_constant_s = tau_s;
     s.min_feed_fraction = min_fraction;

@@ -9,12 +9,13 @@
 #include "core/invalid_input.h"
 #include "cutting_data/coefficient_fit.h"
 #include "model/cutting_force.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 
 TestCutSetup slotting() {
   return {4, 16e-3, 2e-3, 1.0, MillingDirection::Down};

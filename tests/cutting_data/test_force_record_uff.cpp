@@ -9,20 +9,21 @@
 #include "cutting_data/force_record_uff.h"
 #include "model/cutting_force.h"
 #include "support/force_record_uff_samples.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 using mx::test::ForceUffLayout;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 constexpr double kRpm = 3000.0;  // a revolution of 20 ms
 constexpr double kKt = 6e8, kKr = 0.3, kKa = 1.5e8;
 constexpr double kSampleS = 5e-5;  // 400 samples a revolution
 constexpr int kSamples = 1321;     // 3.3 revolutions
 
 // Three teeth: their forces do not add up to a constant, so the averaging over whole revolutions counts.
-TestCutSetup slotting() {
+TestCutSetup threeToothSlotting() {
   return {3, 16e-3, 2e-3, 1.0, MillingDirection::Down};
 }
 
@@ -55,7 +56,7 @@ ForceRecord smallRecord() {
   return {{0.0, 0.001, 0.002, 0.003}, {-10.0, -12.0, -11.0, -9.0}, {100.0, 120.0, 110.0, 90.0}, {5.0, 6.0, 7.0, 8.0}};
 }
 
-double relative(double got, double want) {
+double relativeError(double got, double want) {
   return std::abs(got / want - 1.0);
 }
 
@@ -103,24 +104,24 @@ class TestForceRecordUff : public QObject {
   }
   void sameMeansAsTheCsvRecord() {
     QFETCH(ForceUffLayout, layout);
-    const ForceRecord model = modelRecord(slotting(), 0.1e-3);
+    const ForceRecord model = modelRecord(threeToothSlotting(), 0.1e-3);
     const ForceRecord uff = readForceRecordUff(mx::test::forceRecordUff(model, layout), "cut.unv");
     const ForceRecord csv =
         readForceRecordCsv(mx::test::forceRecordCsv(mx::test::storedRecord(model, layout)), "c.csv");
     QCOMPARE(uff.t_s.size(), std::size_t(kSamples));
     const TestCut a = meanOverRevolutions(uff, kRpm, 0.1e-3, "cut.unv");
     const TestCut b = meanOverRevolutions(csv, kRpm, 0.1e-3, "c.csv");
-    QVERIFY2(relative(a.fx_n, b.fx_n) < 1e-9, qPrintable(QString("%1 %2").arg(a.fx_n, 0, 'g', 17).arg(b.fx_n)));
-    QVERIFY(relative(a.fy_n, b.fy_n) < 1e-9);
-    QVERIFY(relative(a.fz_n, b.fz_n) < 1e-9);
+    QVERIFY2(relativeError(a.fx_n, b.fx_n) < 1e-9, qPrintable(QString("%1 %2").arg(a.fx_n, 0, 'g', 17).arg(b.fx_n)));
+    QVERIFY(relativeError(a.fy_n, b.fy_n) < 1e-9);
+    QVERIFY(relativeError(a.fz_n, b.fz_n) < 1e-9);
     // The slotting closed forms (Altintas eq. 2.26): the file does not move the means off the model's.
-    const TestCut exact = meanCutForces(slotting(), {kKt, kKr * kKt, kKa, 0.0, 0.0, 0.0}, 0.1e-3);
-    QVERIFY2(relative(a.fy_n, exact.fy_n) < 1e-4, qPrintable(QString::number(relative(a.fy_n, exact.fy_n))));
+    const TestCut exact = meanCutForces(threeToothSlotting(), {kKt, kKr * kKt, kKa, 0.0, 0.0, 0.0}, 0.1e-3);
+    QVERIFY2(relativeError(a.fy_n, exact.fy_n) < 1e-4, qPrintable(QString::number(relativeError(a.fy_n, exact.fy_n))));
   }
 
   // Five cuts, each a UFF record of the model's forces, averaged and fitted: K_t, K_r and K_ac to 0.1 %.
   void coefficientsComeBack() {
-    const TestCutSetup t = slotting();
+    const TestCutSetup t = threeToothSlotting();
     std::vector<TestCut> cuts;
     for (double c : {0.05e-3, 0.1e-3, 0.15e-3, 0.2e-3, 0.25e-3}) {
       const ForceRecord r = readForceRecordUff(mx::test::forceRecordUff(modelRecord(t, c)), "cut.unv");
@@ -129,12 +130,12 @@ class TestForceRecordUff : public QObject {
     const CoefficientFit fit = fitCuttingCoefficients(t, cuts);
     const CuttingCoefficients& k = fit.coefficients;
     const QString got = QString("Kt %1 Kr %2 Ka %3 (relative errors)")
-                            .arg(relative(k.Ktc_pa, kKt))
-                            .arg(relative(fit.Kr(), kKr))
-                            .arg(relative(k.Kac_pa, kKa));
-    QVERIFY2(relative(k.Ktc_pa, kKt) < 1e-3, qPrintable(got));
-    QVERIFY2(relative(fit.Kr(), kKr) < 1e-3, qPrintable(got));
-    QVERIFY2(relative(k.Kac_pa, kKa) < 1e-3, qPrintable(got));
+                            .arg(relativeError(k.Ktc_pa, kKt))
+                            .arg(relativeError(fit.Kr(), kKr))
+                            .arg(relativeError(k.Kac_pa, kKa));
+    QVERIFY2(relativeError(k.Ktc_pa, kKt) < 1e-3, qPrintable(got));
+    QVERIFY2(relativeError(fit.Kr(), kKr) < 1e-3, qPrintable(got));
+    QVERIFY2(relativeError(k.Kac_pa, kKa) < 1e-3, qPrintable(got));
     // No edge forces in the model: the edge coefficients vanish next to a cut's force per unit depth.
     const double scale = kKt * 0.05e-3;
     QVERIFY(std::abs(k.Kte_n_per_m) < 1e-3 * scale && std::abs(k.Kae_n_per_m) < 1e-3 * scale);

@@ -14,7 +14,7 @@ namespace {
 constexpr int kSweepMs = 50;
 constexpr int kPopupSweeps = 8;  // a popup the monkey left open closes after about 400 ms
 
-QString describe(const QWidget* w) {
+QString describeWindow(const QWidget* w) {
   return QString("%1 '%2'").arg(w->metaObject()->className(), w->windowTitle());
 }
 }  // namespace
@@ -35,7 +35,7 @@ bool DialogCloser::eventFilter(QObject* watched, QEvent* event) {
   if (event->type() == QEvent::Show && watched->isWidgetType()) {
     auto* dialog = qobject_cast<QDialog*>(watched);
     if (dialog && dialog->isWindow()) {
-      log_.note("dialog shown: " + describe(dialog), elapsed_ms_());
+      log_.note("dialog shown: " + describeWindow(dialog), elapsed_ms_());
       QTimer::singleShot(0, dialog, [this, dialog] { closeDialog(dialog); });
     }
   }
@@ -48,11 +48,11 @@ void DialogCloser::closeDialog(QWidget* dialog) {
   if (auto* box = qobject_cast<QMessageBox*>(dialog); box && !box->buttons().isEmpty()) {
     const QList<QAbstractButton*> buttons = box->buttons();
     QAbstractButton* button = buttons[dice_.below(int(buttons.size()))];
-    log_.note(QString("dialog answered: %1 with '%2'").arg(describe(box), button->text()), elapsed_ms_());
+    log_.note(QString("dialog answered: %1 with '%2'").arg(describeWindow(box), button->text()), elapsed_ms_());
     button->click();
     return;
   }
-  log_.note("dialog closed with Escape: " + describe(dialog), elapsed_ms_());
+  log_.note("dialog closed with Escape: " + describeWindow(dialog), elapsed_ms_());
   QTest::keyClick(dialog, Qt::Key_Escape);
   if (dialog->isVisible()) {
     if (auto* d = qobject_cast<QDialog*>(dialog))
@@ -64,7 +64,7 @@ void DialogCloser::closeDialog(QWidget* dialog) {
 
 void DialogCloser::closePopup(QWidget* popup) {
   ++popups_closed_;
-  log_.note("popup closed with Escape: " + describe(popup), elapsed_ms_());
+  log_.note("popup closed with Escape: " + describeWindow(popup), elapsed_ms_());
   QTest::keyClick(popup, Qt::Key_Escape);
   if (popup->isVisible()) popup->close();
 }
@@ -85,8 +85,8 @@ void DialogCloser::sweep() {
 
 QStringList DialogCloser::openNow() const {
   QStringList open;
-  if (QWidget* modal = QApplication::activeModalWidget()) open << describe(modal);
-  if (QWidget* popup = QApplication::activePopupWidget()) open << describe(popup);
+  if (QWidget* modal = QApplication::activeModalWidget()) open << describeWindow(modal);
+  if (QWidget* popup = QApplication::activePopupWidget()) open << describeWindow(popup);
   return open;
 }
 

@@ -1,11 +1,10 @@
 // FRFs of known modes (modal_frf.h): the single-mode values at resonance, and the seeded relative noise.
 #include "frf/modal_frf.h"
+#include "support/frf_quantity_metatype.h"
 #include "test_registry.h"
 
 using namespace mx;
 using cplx = std::complex<double>;
-
-Q_DECLARE_METATYPE(mx::FrfQuantity)
 
 class TestModalFrf : public QObject {
   Q_OBJECT

@@ -1,12 +1,11 @@
 // Mobility and accelerance to receptance: against the modal receptance they were made from, and the
 // f = 0 points that cannot be converted.
 #include "frf/receptance_conversion.h"
+#include "support/frf_quantity_metatype.h"
 #include "support/frf_samples.h"
 #include "test_registry.h"
 
 using namespace mx;
-
-Q_DECLARE_METATYPE(mx::FrfQuantity)
 
 class TestReceptanceConversion : public QObject {
   Q_OBJECT

@@ -1,10 +1,9 @@
 // Units labels of dataset 58 records 8-10 to SI factors.
 #include "frf/uff_units.h"
+#include "support/frf_quantity_metatype.h"
 #include "test_registry.h"
 
 using namespace mx;
-
-Q_DECLARE_METATYPE(mx::FrfQuantity)
 
 class TestUffUnits : public QObject {
   Q_OBJECT

@@ -5,6 +5,7 @@
 #include "core/invalid_input.h"
 #include "frf/uff_reader.h"
 #include "frf/uff_writer.h"
+#include "support/frf_quantity_metatype.h"
 #include "support/frf_samples.h"
 #include "test_registry.h"
 
@@ -12,8 +13,6 @@ using namespace mx;
 using mx::test::evenFrequencies;
 using mx::test::kTwoModes;
 using mx::test::modalFrf;
-
-Q_DECLARE_METATYPE(mx::FrfQuantity)
 
 namespace {
 

@@ -4,12 +4,13 @@
 
 #include "gcode/gcode_interpreter.h"
 #include "gcode/gcode_reader.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 GcodeRun runFile(const char* name) {
   return GcodeInterpreter().run(GcodeReader::readFile(std::string(MX_TEST_DATA_DIR) + "/gcode/" + name));
 }

@@ -12,9 +12,7 @@ namespace {
 GcodeBlock block(const std::string& line) {
   return GcodeReader::parse(line + "\n", GcodeDialect::Heidenhain).blocks.at(0);
 }
-std::string wordText(const GcodeBlock& b, const GcodeWord* w) {
-  return w ? b.text.substr(w->column - 1, w->length) : std::string("none");
-}
+using mx::test::wordText;
 }  // namespace
 
 class TestHeidenhainLexer : public QObject {

@@ -13,9 +13,7 @@ namespace {
 GcodeProgram read(const std::string& text, GcodeDialect d) {
   return GcodeReader::parse(text, d);
 }
-std::string wordText(const GcodeBlock& b, const GcodeWord* w) {
-  return w ? b.text.substr(w->column - 1, w->length) : std::string("none");
-}
+using mx::test::wordText;
 }  // namespace
 
 class TestIsoLexer : public QObject {

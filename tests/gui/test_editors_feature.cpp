@@ -33,7 +33,7 @@ namespace {
 
 constexpr int kWaitMs = 60000;
 
-bool open(gui::MainWindow& w, const char* project) {
+bool openForEditing(gui::MainWindow& w, const char* project) {
   w.setQuiet(true);
   w.resize(1600, 950);
   w.show();
@@ -96,7 +96,7 @@ class TestEditorsFeature : public QObject {
     QSignalSpy lobes(test::lobesOf(window), &gui::LobesFeature::lobesShown);
     QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
     QSignalSpy simulated(test::simulationOf(window)->runner(), &gui::SimulationRunner::finished);
-    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(openForEditing(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(waitFor(simulated, [&] { return lobes.count() > 0 && simulated.count() > 0 && refined.count() > 0; }));
     const double four_power = test::lobesOf(window)->readout()->readout().peak_power_w;
     const auto four_sim = simulated.last().at(1).value<gui::SimulationSummary>();
@@ -148,7 +148,7 @@ class TestEditorsFeature : public QObject {
   // is refused by the project's rules, with their message.
   void badInputIsAnsweredUnderTheCell() {
     gui::MainWindow window;
-    QVERIFY(open(window, "rubio2006-adaptive-control.mxproj"));
+    QVERIFY(openForEditing(window, "rubio2006-adaptive-control.mxproj"));
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     widgets::ToolLibraryEditor* editor = test::editorsOf(window)->toolEditor();
     QTableView* view = editor->toolView();
@@ -191,7 +191,7 @@ class TestEditorsFeature : public QObject {
   void paretoStudyReRuns() {
     gui::MainWindow window;
     QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
-    QVERIFY(open(window, "rubio-pareto-case.mxproj"));
+    QVERIFY(openForEditing(window, "rubio-pareto-case.mxproj"));
     QVERIFY(
         waitFor(shown, [&] { return test::paretoOf(window)->runner()->study() && test::paretoOf(window)->choice(); }));
     const auto before = test::paretoOf(window)->runner()->study();
@@ -217,7 +217,7 @@ class TestEditorsFeature : public QObject {
     gui::MainWindow window;
     auto* machining = window.findChild<gui::MachiningFeature*>("machiningFeature");
     QSignalSpy shown(machining, &gui::MachiningFeature::partProgramShown);
-    QVERIFY(open(window, "cus-zuperl-sdnrp.mxproj"));
+    QVERIFY(openForEditing(window, "cus-zuperl-sdnrp.mxproj"));
     const QString program = MX_TEST_DATA_DIR "/gcode/pocket_mm.nc";
     machining->openPartProgram(program);
     QVERIFY(shown.wait(kWaitMs));
@@ -243,7 +243,7 @@ class TestEditorsFeature : public QObject {
     gui::MainWindow window;
     auto* supervisor = window.findChild<gui::SupervisorFeature*>("supervisorFeature");
     QSignalSpy compared(supervisor, &gui::SupervisorFeature::comparisonResult);
-    QVERIFY(open(window, "landers-face-milling.mxproj"));
+    QVERIFY(openForEditing(window, "landers-face-milling.mxproj"));
     supervisor->compare();
     QVERIFY(waitFor(compared, [&] { return compared.count() >= 3; }));
     widgets::SupervisorComparison* table = supervisor->view()->comparison();

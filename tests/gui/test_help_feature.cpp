@@ -31,6 +31,7 @@
 #include "ranking_table.h"
 #include "ranking_table_model.h"
 #include "start_screen.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "tool_library_transfer.h"
@@ -39,7 +40,7 @@ using namespace mx;
 using widgets::Term;
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 gui::HelpFeature* helpOf(const gui::MainWindow& window) {
   return test::windowPart<gui::HelpFeature>(window, "helpFeature");

@@ -27,7 +27,7 @@
 using namespace mx;
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 // Shows the window (offscreen), opens `path` and waits for its lobes.
 bool openAndShow(gui::MainWindow& window, const QString& path) {

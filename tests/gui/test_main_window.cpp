@@ -23,6 +23,7 @@
 #include "document/project_validation.h"
 #include "main_window.h"
 #include "support/hostile_files.h"
+#include "support/project_files.h"
 #include "support/read_only_folder.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -31,7 +32,7 @@
 using namespace mx;
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 QString copyToTemp(const QTemporaryDir& dir, const QString& source) {
   QString target = dir.filePath("project.mxproj");

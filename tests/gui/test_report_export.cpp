@@ -21,13 +21,14 @@
 #include "report_data.h"
 #include "report_writer.h"
 #include "services/expert_request.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using namespace mx::gui;
 
 namespace {
 
-const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+using mx::test::kRubio;
 
 QString readText(const QString& path) {
   QFile file(path);

@@ -17,6 +17,7 @@
 #include "ranking_table.h"
 #include "ranking_table_model.h"
 #include "shop_units_dialog.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
@@ -25,7 +26,7 @@ using widgets::Quantity;
 using widgets::ShopUnits;
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 bool openAndShow(gui::MainWindow& window, const QString& path) {
   window.setQuiet(true);

@@ -10,6 +10,7 @@
 
 #include "main_window.h"
 #include "simulation_view.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -17,7 +18,7 @@
 using namespace mx;
 
 namespace {
-const QString kRubio = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 // Opens the project, waits for the lobes and the first simulation.
 bool openAndSimulate(gui::MainWindow& window) {

@@ -6,10 +6,11 @@
 
 #include "model/cutting_force.h"
 #include "support/fixtures.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 
 class TestCuttingForce : public QObject {
   Q_OBJECT

@@ -6,6 +6,7 @@
 
 #include "core/invalid_input.h"
 #include "model/measured_receptance.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -13,7 +14,7 @@ using cplx = std::complex<double>;
 
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 
 MeasuredAxis threeLines() {
   return {{0.0, 100.0, 250.0}, {{1e-6, 0.0}, {2e-6, -4e-6}, {-1e-6, 8e-6}}};

@@ -10,7 +10,6 @@
 #include "test_registry.h"
 
 using namespace mx;
-constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 namespace {
@@ -47,7 +46,7 @@ class TestSpindlePower : public QObject {
     SpindlePowerCurve c;
     c.max_torque_nm = 9.0;
     QVERIFY(!c.constant());
-    QCOMPARE_LE(std::abs(c.available(rps(1800)) - 0.3 * kPi * 1800.0), 1e-9);
+    QCOMPARE_LE(std::abs(c.available(rps(1800)) - 0.3 * std::numbers::pi * 1800.0), 1e-9);
     QCOMPARE_LE(std::abs(c.available(rps(1800)) - 1696.460), 1e-3);
     QCOMPARE_LE(std::abs(c.available(rps(2412)) - 2273.256), 1e-3);
     QCOMPARE(c.available(0.0), 0.0);
@@ -58,7 +57,7 @@ class TestSpindlePower : public QObject {
     SpindlePowerCurve c;
     c.max_power_w = 2745.3;
     c.max_torque_nm = 9.0;
-    const double corner = 2745.3 / (2.0 * kPi * 9.0);
+    const double corner = 2745.3 / (2.0 * std::numbers::pi * 9.0);
     QCOMPARE_LE(std::abs(corner * 60.0 - 2912.854), 0.001);
     QCOMPARE_LE(std::abs(c.available(corner) - 2745.3), 1e-9);
     QCOMPARE_LE(std::abs(c.available(0.9 * corner) - 0.9 * 2745.3), 1e-9);  // torque-limited below

@@ -11,7 +11,7 @@
 using namespace mx;
 
 namespace {
-MachiningEconomics shop() {
+MachiningEconomics shopEconomics() {
   MachiningEconomics e;
   e.machine_rate_per_s = 90.0 / 3600.0;  // 90 per hour
   e.tool_cost = 40.0;
@@ -47,12 +47,12 @@ class TestMachiningEconomics : public QObject {
  private slots:
   void byHand() {
     // 200 cm^3 at 2 cm^3/s: 100 s; tool life 50 s: 2 changes of 120 s and 2 tools of 40.
-    const PartEconomics p = partEconomics(shop(), 2e-6, 50.0);
+    const PartEconomics p = partEconomics(shopEconomics(), 2e-6, 50.0);
     QCOMPARE(p.machining_time_s, 100.0);
     QCOMPARE(p.tool_changes, 2.0);
     QCOMPARE(p.time_per_part_s, 340.0);
     QCOMPARE_LE(std::abs(p.cost_per_part - (340.0 * 90.0 / 3600.0 + 80.0)), 1e-12);
-    QVERIFY(std::isinf(partEconomics(shop(), 0.0, 50.0).cost_per_part));
+    QVERIFY(std::isinf(partEconomics(shopEconomics(), 0.0, 50.0).cost_per_part));
   }
 
   void gilbertOptimum_data() {
@@ -63,7 +63,7 @@ class TestMachiningEconomics : public QObject {
   void gilbertOptimum() {
     QFETCH(int, objective);
     const auto o = static_cast<EconomicObjective>(objective);
-    const MachiningEconomics e = shop();
+    const MachiningEconomics e = shopEconomics();
     const double expected =
         o == EconomicObjective::MinCost ? 2.02 * (120.0 + 40.0 / e.machine_rate_per_s) : 2.02 * 120.0;
     QCOMPARE_LE(std::abs(*gilbertToolLife(e, kA, o) - expected), 1e-9);
@@ -73,20 +73,20 @@ class TestMachiningEconomics : public QObject {
   }
 
   void noInteriorOptimum() {
-    QVERIFY(!gilbertToolLife(shop(), -1.0, EconomicObjective::MinCost));
-    MachiningEconomics free_machine = shop();
+    QVERIFY(!gilbertToolLife(shopEconomics(), -1.0, EconomicObjective::MinCost));
+    MachiningEconomics free_machine = shopEconomics();
     free_machine.machine_rate_per_s = 0.0;
     QVERIFY(!gilbertToolLife(free_machine, kA, EconomicObjective::MinCost));
   }
 
   void validation() {
-    MachiningEconomics e = shop();
+    MachiningEconomics e = shopEconomics();
     e.removal_volume_m3 = 0.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, e.validate());
-    e = shop();
+    e = shopEconomics();
     e.tool_cost = -1.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, e.validate());
-    e = shop();
+    e = shopEconomics();
     e.machine_rate_per_s = e.tool_cost = 0.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, e.validate());
   }

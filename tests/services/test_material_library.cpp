@@ -16,7 +16,7 @@ using namespace mx::app;
 
 namespace {
 
-const QString kRubio = mx::test::projectsPath("rubio2006-tool-selection.mxproj");
+using mx::test::kRubio;
 
 // A library of one entry: `fields` are added to (or replace) a valid aluminium entry, which then loses
 // the key `without`.

@@ -45,14 +45,14 @@ bool isMultiple(double x, double step, double tol, long* n = nullptr) {
   return k >= 1 && std::abs(x - k * step) <= tol;
 }
 
-Project caseProject() {
+Project table4Project() {
   QFile in(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
   in.open(QIODevice::ReadOnly);
   return projectFromJson(QJsonDocument::fromJson(in.readAll()).object());
 }
 // Built once: Q has 43 744 points.
 const ParetoStudy& study() {
-  static const ParetoStudy s(caseProject());
+  static const ParetoStudy s(table4Project());
   return s;
 }
 // Q's table under each Rule 9 normalisation, on the study's grid (same enumeration order).

@@ -32,7 +32,7 @@ ToolSpec dynamicTool() {
 }
 
 // dynamicTool() overriding the material's edge and axial coefficients as well.
-ToolSpec coefficientTool() {
+ToolSpec coefficientDynamicTool() {
   ToolSpec t = dynamicTool();
   t.Kte_N_mm = 24.5;
   t.Kre_N_mm = 0.1 + 0.2;
@@ -73,16 +73,16 @@ class TestToolLibraryIo : public QObject {
 
   // The edge and axial overrides are MillExpert's data: carried, and given back exactly.
   void payloadCarriesEdgeAndAxialOverrides() {
-    const QJsonObject payload = dynamicsPayload(coefficientTool());
+    const QJsonObject payload = dynamicsPayload(coefficientDynamicTool());
     QCOMPARE(payload.keys(),
              QStringList({"Ka_N_mm2", "Kae_N_mm", "Kr", "Kre_N_mm", "Kt_N_mm2", "Kte_N_mm", "helix_deg", "max_force_N",
                           "modes_x", "modes_y", "pitch_deg", "radial_depth_mm", "runout_um"}));
     QCOMPARE(payload.value("Kae_N_mm").toDouble(-1.0), 0.0);  // an override of 0 is carried, not dropped
-    QCOMPARE(withPayload(mappedTool(), payload, "lib.tbl"), coefficientTool());
+    QCOMPARE(withPayload(mappedTool(), payload, "lib.tbl"), coefficientDynamicTool());
     // Through the side file (LinuxCNC) as well.
     const std::map<QString, QJsonObject> side =
-        readSideFile(writeSideFile({coefficientTool()}), "tool.millexpert.json");
-    QCOMPARE(withPayload(mappedTool(), side.at("T7"), "tool.tbl"), coefficientTool());
+        readSideFile(writeSideFile({coefficientDynamicTool()}), "tool.millexpert.json");
+    QCOMPARE(withPayload(mappedTool(), side.at("T7"), "tool.tbl"), coefficientDynamicTool());
   }
 
   // The bounds are accepted from a payload: edge forces in [0, 1e4] N/mm, the axial coefficient in [0, 1e5].

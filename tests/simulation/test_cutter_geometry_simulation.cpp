@@ -13,12 +13,13 @@
 #include "simulation/simulation.h"
 #include "simulation/time_domain_simulator.h"
 #include "support/fixtures.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 double maxRelativeDifference(const std::vector<double>& a, const std::vector<double>& b) {

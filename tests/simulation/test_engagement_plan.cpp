@@ -6,12 +6,13 @@
 #include "model/cutting_force.h"
 #include "simulation/engagement_plan.h"
 #include "support/fixtures.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 
 // Brute force: the teeth inside the immersion at angle theta.
 int engagedAt(const MillingSetup& s, double theta) {

@@ -8,6 +8,7 @@
 #include "stability/semi_discretization.h"
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -22,12 +23,7 @@ MillingSetup inspergerTool(double a_over_d, int teeth) {
                          base.modes_y, MillingDirection::Down, a_over_d);
 }
 
-std::vector<double> rpmGrid(double from_rpm, double to_rpm, int count) {
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) out.push_back(rpmToRevPerS(from_rpm + (to_rpm - from_rpm) * i / (count - 1)));
-  return out;
-}
+using mx::test::rpmGridOfCount;
 
 LobeDiagram lobes(const MillingSetup& s, const std::vector<double>& speeds, int steps = kAutoSdmSteps,
                   int slices = kExactHelixSlices) {
@@ -58,7 +54,7 @@ class TestSdmCutterGeometry : public QObject {
     const double d = 1e-8;
     nearly.pitch_rad = {90 * kDeg + d, 90 * kDeg - d, 90 * kDeg + d, 90 * kDeg - d};
     QVERIFY(!nearly.uniformPitch());
-    const std::vector<double> speeds = rpmGrid(5000, 20000, 7);
+    const std::vector<double> speeds = rpmGridOfCount(5000, 20000, 7);
     const LobeDiagram a = lobes(uniform, speeds, 40), b = lobes(nearly, speeds, 40);
     QCOMPARE_LE(worstRelative(a, b), 1e-8);
     for (std::size_t i = 0; i < speeds.size(); ++i)
@@ -72,7 +68,7 @@ class TestSdmCutterGeometry : public QObject {
     const MillingSetup uniform = inspergerTool(1.0, 4);
     MillingSetup variable = uniform;
     variable.pitch_rad = {70 * kDeg, 110 * kDeg, 70 * kDeg, 110 * kDeg};
-    const std::vector<double> speeds = rpmGrid(17000, 20000, 4);
+    const std::vector<double> speeds = rpmGridOfCount(17000, 20000, 4);
     const LobeDiagram a = lobes(uniform, speeds), b = lobes(variable, speeds);
     for (std::size_t i = 0; i < speeds.size(); ++i) QCOMPARE_GE(b.envelope_depth_m[i] / a.envelope_depth_m[i], 1.5);
     const std::vector<double> low{rpmToRevPerS(6000.0)};
@@ -84,7 +80,7 @@ class TestSdmCutterGeometry : public QObject {
   void helixSlicesConvergeToTheExactAverage() {
     MillingSetup s = inspergerTool(0.05, 2);
     s.helix_rad = 30 * kDeg;
-    const std::vector<double> speeds = rpmGrid(5000, 25000, 9);
+    const std::vector<double> speeds = rpmGridOfCount(5000, 25000, 9);
     const LobeDiagram exact = lobes(s, speeds);
     double previous = 0.0;
     for (int n : {2, 4, 8, 16}) {
@@ -102,7 +98,7 @@ class TestSdmCutterGeometry : public QObject {
     const MillingSetup straight = inspergerTool(0.05, 2);
     MillingSetup helical = straight;
     helical.helix_rad = 30 * kDeg;
-    const std::vector<double> speeds = rpmGrid(5000, 25000, 9);
+    const std::vector<double> speeds = rpmGridOfCount(5000, 25000, 9);
     const LobeDiagram a = lobes(straight, speeds);
     QCOMPARE_GE(worstRelative(lobes(helical, speeds), a), 0.05);
     helical.helix_rad = 1e-6;
@@ -118,7 +114,7 @@ class TestSdmCutterGeometry : public QObject {
                                             MillingDirection::Up, 1.0)
                           : inspergerTool(1.0, 4);
       s.pitch_rad = {70 * kDeg, 110 * kDeg, 70 * kDeg, 110 * kDeg};
-      const std::vector<double> speeds = rpmGrid(4000, 24000, 41);
+      const std::vector<double> speeds = rpmGridOfCount(4000, 24000, 41);
       const LobeDiagram sdm = lobes(s, speeds), zoa = computeZoaLobes(s, speeds, {});
       const double low_sdm = *std::min_element(sdm.envelope_depth_m.begin(), sdm.envelope_depth_m.end());
       const double low_zoa = *std::min_element(zoa.envelope_depth_m.begin(), zoa.envelope_depth_m.end());

@@ -14,13 +14,14 @@
 
 #include "stability/semi_discretization.h"
 #include "support/fixtures.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 constexpr double kModeHz = 300.0, kZeta = 0.01, kStiffness = 5e6;
 constexpr double kCi = 1e4;  // N/m
 

@@ -17,13 +17,15 @@
 #include "stability/sdm_model.h"
 #include "stability/semi_discretization.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 
 // Insperger-Stepan benchmark (tests/support/fixtures.h) with direction and tooth count varied.
 MillingSetup insperger(double a_over_d, MillingDirection dir = MillingDirection::Down, int teeth = 2) {
@@ -32,12 +34,7 @@ MillingSetup insperger(double a_over_d, MillingDirection dir = MillingDirection:
                          base.modes_y, dir, a_over_d);
 }
 
-std::vector<double> rpmGrid(double from_rpm, double to_rpm, int count) {
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) out.push_back(rpmToRevPerS(from_rpm + (to_rpm - from_rpm) * i / (count - 1)));
-  return out;
-}
+using mx::test::rpmGridOfCount;
 
 double lnRho(const MillingSetup& s, double n, double b, int m) {
   return std::log(sdmSpectralRadius(s, n, b, m));
@@ -212,7 +209,7 @@ class TestSemiDiscretization : public QObject {
     QFETCH(double, a_over_d);
     QFETCH(bool, bound_at_40);
     const MillingSetup s = insperger(a_over_d);
-    const std::vector<double> speeds = rpmGrid(5000.0, 25000.0, 41);
+    const std::vector<double> speeds = rpmGridOfCount(5000.0, 25000.0, 41);
     std::vector<LobeDiagram> d;
     for (int m : {40, 100, 200}) {
       SdmOptions o;
@@ -322,7 +319,7 @@ class TestSemiDiscretization : public QObject {
   void defaultLobesWithinOnePercent() {
     QFETCH(double, a_over_d);
     const MillingSetup s = insperger(a_over_d);
-    const std::vector<double> speeds = rpmGrid(5000.0, 25000.0, 81);
+    const std::vector<double> speeds = rpmGridOfCount(5000.0, 25000.0, 81);
     SdmOptions reference;
     reference.steps_per_period = 240;
     const LobeDiagram ref = computeSdmLobes(s, speeds, reference);
@@ -385,7 +382,7 @@ class TestSemiDiscretization : public QObject {
     const double b_min = 2.0 * kPi / (teeth * s.tangential_coefficient_pa * alpha_xx * re_closed);
     SdmOptions o;
     o.steps_per_period = 100;
-    const LobeDiagram d = computeSdmLobes(s, rpmGrid(5000.0, 25000.0, 201), o);
+    const LobeDiagram d = computeSdmLobes(s, rpmGridOfCount(5000.0, 25000.0, 201), o);
     int checked = 0;
     for (const LobeMinimum& mn : d.minima) {
       if (mn.depth_m > 1.5 * b_min) continue;  // minima of lobe intersections / flip lobes, not Hopf lobes
@@ -400,7 +397,7 @@ class TestSemiDiscretization : public QObject {
   // 3. The delta margin (Rule 1.1): b_lim falls strictly with delta; on the boundary rho = exp(-delta T).
   void deltaMargin() {
     const MillingSetup s = insperger(1.0);
-    const std::vector<double> speeds = rpmGrid(5000.0, 25000.0, 21);
+    const std::vector<double> speeds = rpmGridOfCount(5000.0, 25000.0, 21);
     std::vector<LobeDiagram> d;
     for (double delta : {0.0, 10.0, 30.0, 50.0}) {
       SdmOptions o = firstOrder40();
@@ -440,7 +437,7 @@ class TestSemiDiscretization : public QObject {
   void stabilityInvariant() {
     QFETCH(int, setup);
     const MillingSetup s = setup == 0 ? test::rubioR1() : insperger(setup == 1 ? 1.0 : 0.05);
-    const std::vector<double> speeds = rpmGrid(4000.0, 22000.0, 13);
+    const std::vector<double> speeds = rpmGridOfCount(4000.0, 22000.0, 13);
     const LobeDiagram d = computeSdmLobes(s, speeds, firstOrder40());
     for (size_t i = 0; i < speeds.size(); ++i) {
       const double b = d.envelope_depth_m[i];
@@ -454,7 +451,7 @@ class TestSemiDiscretization : public QObject {
   // the chatter frequency is an odd multiple of half the tooth-passing frequency.
   void flipLobesAtLowImmersion() {
     const MillingSetup s = insperger(0.05);
-    const std::vector<double> speeds = rpmGrid(5000.0, 25000.0, 41);
+    const std::vector<double> speeds = rpmGridOfCount(5000.0, 25000.0, 41);
     const LobeDiagram d = computeSdmLobes(s, speeds, firstOrder40());
     int flips = 0, hopfs = 0;
     for (size_t i = 0; i < speeds.size(); ++i) {
@@ -481,7 +478,7 @@ class TestSemiDiscretization : public QObject {
   // must still return the lowest crossing. Reference: scan upward in 1 % steps from 0.2 mm.
   void lowestCrossingMatchesScan() {
     const MillingSetup s = insperger(0.05, MillingDirection::Up);
-    const std::vector<double> speeds = rpmGrid(5000.0, 25000.0, 101);  // contains 11400 and 18800 rpm
+    const std::vector<double> speeds = rpmGridOfCount(5000.0, 25000.0, 101);  // contains 11400 and 18800 rpm
     const LobeDiagram d = computeSdmLobes(s, speeds, firstOrder40());
     for (size_t i = 0; i < speeds.size(); ++i) {
       const double rpm = revPerSToRpm(speeds[i]);
@@ -503,7 +500,7 @@ class TestSemiDiscretization : public QObject {
     s.modes_x.clear();
     s.modes_y.clear();
     QCOMPARE(sdmSpectralRadius(s, 100.0, 1e-3, 40), 0.0);
-    const LobeDiagram d = computeSdmLobes(s, rpmGrid(3000.0, 6000.0, 4), SdmOptions{});
+    const LobeDiagram d = computeSdmLobes(s, rpmGridOfCount(3000.0, 6000.0, 4), SdmOptions{});
     for (double b : d.envelope_depth_m) QCOMPARE(b, LobeDiagram::kNone);
   }
 
@@ -519,7 +516,7 @@ class TestSemiDiscretization : public QObject {
     std::vector<double> fractions;
     JobControl progress;
     progress.progress = [&](double f) { fractions.push_back(f); };
-    computeSdmLobes(s, rpmGrid(3000.0, 6000.0, 4), SdmOptions{}, progress);
+    computeSdmLobes(s, rpmGridOfCount(3000.0, 6000.0, 4), SdmOptions{}, progress);
     QCOMPARE(fractions, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
 
     std::atomic<bool> cancel{false};
@@ -529,7 +526,7 @@ class TestSemiDiscretization : public QObject {
     control.progress = [&](double) {
       if (++calls == 2) cancel = true;
     };
-    QVERIFY_THROWS_EXCEPTION(Cancelled, computeSdmLobes(s, rpmGrid(3000.0, 6000.0, 10), SdmOptions{}, control));
+    QVERIFY_THROWS_EXCEPTION(Cancelled, computeSdmLobes(s, rpmGridOfCount(3000.0, 6000.0, 10), SdmOptions{}, control));
     QCOMPARE(calls, 2);
   }
 };

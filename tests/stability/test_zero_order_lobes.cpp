@@ -4,25 +4,20 @@
 
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-std::vector<double> rpmGrid(double from, double to, double step) {
-  return SpeedGrid{from / 60.0, to / 60.0, step / 60.0}.values();
-}
+using mx::test::rpmGrid;
 double minOverLobes(const LobeDiagram& d) {
   double m = LobeDiagram::kNone;
   for (const LobeCurve& c : d.lobes)
     for (double b : c.depth_m) m = std::min(m, b);
   return m;
 }
-double minFinite(const std::vector<double>& v) {
-  double m = LobeDiagram::kNone;
-  for (double b : v) m = std::min(m, b);
-  return m;
-}
+using mx::test::minFinite;
 }  // namespace
 
 class TestZeroOrderLobes : public QObject {

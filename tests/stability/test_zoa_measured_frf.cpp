@@ -6,14 +6,13 @@
 #include "stability/lobe_computation.h"
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-std::vector<double> rpmGrid(double from, double to, double step) {
-  return SpeedGrid{from / 60.0, to / 60.0, step / 60.0}.values();
-}
+using mx::test::rpmGrid;
 
 // The modal reference: 40 000 uniform chatter frequencies plus the dense bands around the modes.
 LobeDiagram fineModalLobes(const MillingSetup& s, const std::vector<double>& speeds) {

@@ -8,19 +8,14 @@
 #include "stability/zero_order_lobes.h"
 #include "stability/zoa_validity.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-std::vector<double> rpmGrid(double from, double to, double step) {
-  return SpeedGrid{from / 60.0, to / 60.0, step / 60.0}.values();
-}
-double minFinite(const std::vector<double>& v) {
-  double m = LobeDiagram::kNone;
-  for (double b : v) m = std::min(m, b);
-  return m;
-}
+using mx::test::minFinite;
+using mx::test::rpmGrid;
 MillingSetup r1(int teeth, double ratio, MillingDirection dir) {
   MillingSetup s = test::rubioR1();
   s.teeth = teeth;

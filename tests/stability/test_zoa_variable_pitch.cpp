@@ -11,23 +11,19 @@
 #include "stability/zero_order_lobes.h"
 #include "stability/zoa_variable_pitch.h"
 #include "support/fixtures.h"
+#include "support/speed_grids.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
 using cplx = std::complex<double>;
-constexpr double kPi = std::numbers::pi;
+using mx::test::kPi;
 constexpr double kDeg = kPi / 180.0;
 
-std::vector<double> rpmGrid(double from, double to, double step) {
-  return SpeedGrid{from / 60.0, to / 60.0, step / 60.0}.values();
-}
-double minFinite(const std::vector<double>& v) {
-  double m = LobeDiagram::kNone;
-  for (double b : v) m = std::min(m, b);
-  return m;
-}
+using mx::test::minFinite;
+using mx::test::rpmGrid;
 MillingSetup withPitchDeg(MillingSetup s, const std::vector<double>& pitch_deg) {
   s.teeth = static_cast<int>(pitch_deg.size());
   s.pitch_rad.clear();

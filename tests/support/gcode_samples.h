@@ -1,9 +1,12 @@
 #pragma once
 // Test helper: the sample part programs of tests/data/gcode, and the examples of projects/programs
-// ("programs/..."), read byte for byte.
+// ("programs/..."), read byte for byte; and the text of a lexed word.
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "gcode/gcode_block.h"
 
 namespace mx::test {
 
@@ -17,12 +20,16 @@ inline constexpr const char* kDialectSamples[] = {"pocket_mm.nc", "programs/pock
 
 inline std::string gcodeSample(const std::string& name) {
   const bool example = name.rfind("programs/", 0) == 0;
-  std::ifstream in(
-      example ? std::string(MX_PROJECTS_DIR) + "/" + name : std::string(MX_TEST_DATA_DIR) + "/gcode/" + name,
-      std::ios::binary);
+  const std::filesystem::path folder = example ? MX_PROJECTS_DIR : MX_TEST_DATA_DIR "/gcode";
+  std::ifstream in(folder / name, std::ios::binary);
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// The characters of word `w` in its block, "none" for no word.
+inline std::string wordText(const GcodeBlock& b, const GcodeWord* w) {
+  return w ? b.text.substr(w->column - 1, w->length) : std::string("none");
 }
 
 }  // namespace mx::test

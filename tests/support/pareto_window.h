@@ -7,11 +7,10 @@
 #include "main_window.h"
 #include "pareto_feature.h"
 #include "pareto_runner.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 
 namespace mx::test {
-
-inline const char* const kParetoCase = MX_PROJECTS_DIR "/rubio-pareto-case.mxproj";
 
 inline bool openParetoCase(gui::MainWindow& window) {
   window.setQuiet(true);

@@ -13,6 +13,11 @@ namespace mx::test {
 inline QString projectsPath(const QString& name) {
   return QString(MX_PROJECTS_DIR) + "/" + name;
 }
+// The bundled examples that several test files read.
+inline const QString kRubio = projectsPath("rubio2006-tool-selection.mxproj");  // Aluminium; R1, R2
+inline const QString kParetoCase = projectsPath("rubio-pareto-case.mxproj");
+inline const QString kSdnrp = projectsPath("cus-zuperl-sdnrp.mxproj");
+
 inline QString fixturePath(const QString& name) {
   return QString(MX_TEST_DATA_DIR) + "/projects/" + name;
 }

@@ -12,13 +12,14 @@
 
 #include "jc_curve_plot.h"
 #include "support/plot_layout_checks.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using mx::widgets::JcCurvePlot;
 using mx::widgets::JcCurveView;
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 
 // J_c = 2 + 5 (beta + 0.3)^2 on beta = -1, -0.9, ..., 1.
 JcCurveView parabola() {

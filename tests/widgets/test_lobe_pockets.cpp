@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lobe_pockets.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using mx::widgets::findStabilityPockets;
@@ -13,7 +14,7 @@ using mx::widgets::findStabilityPockets;
 namespace {
 
 constexpr double kSlope = 0.001;  // mm/rpm
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 
 // Lobes at 1000, 2000, 3000, 4000 rpm with minima 0.2, 0.5, 0.3, 0.45 mm, sampled every 5 rpm on
 // [0, 5000]. Neighbours k, k+1 meet at N = (m_{k+1} - m_k + s (c_k + c_{k+1})) / 2s:

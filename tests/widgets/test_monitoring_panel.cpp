@@ -12,6 +12,7 @@
 #include "display_units.h"
 #include "indicator_gauge.h"
 #include "monitoring_panel.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using mx::widgets::IndicatorGauge;
@@ -23,7 +24,7 @@ using OptD = std::optional<double>;
 Q_DECLARE_METATYPE(OptD)
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const QString kDash = QStringLiteral("\u2013");
 const QStringList kKeys = {

@@ -14,6 +14,7 @@
 #include "display_units.h"
 #include "indicator_gauge.h"
 #include "requirements_panel.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using mx::widgets::IndicatorGauge;
@@ -21,7 +22,7 @@ using mx::widgets::RequirementsPanel;
 using mx::widgets::RequirementView;
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 

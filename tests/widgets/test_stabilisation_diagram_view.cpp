@@ -42,11 +42,6 @@ int count(const StabilisationDiagram& diagram, PoleStability stability) {
   return n;
 }
 
-struct Listener {
-  int emitted = 0;
-  std::vector<C> last;
-};
-
 }  // namespace
 
 class TestStabilisationDiagramView : public QObject {
@@ -82,22 +77,23 @@ class TestStabilisationDiagramView : public QObject {
     const StabilisationDiagram diagram = sampleDiagram();
     StabilisationDiagramView view;
     view.setDiagram(diagram, {}, {});
-    Listener listener;
-    connect(&view, &StabilisationDiagramView::selectionChanged, this, [&listener](const std::vector<C>& poles) {
-      ++listener.emitted;
-      listener.last = poles;
+    int emitted = 0;
+    std::vector<C> last;
+    connect(&view, &StabilisationDiagramView::selectionChanged, this, [&emitted, &last](const std::vector<C>& poles) {
+      ++emitted;
+      last = poles;
     });
     QVERIFY(view.togglePoleNear(500.9, 8.0));
     QCOMPARE(view.selectedPoles(), std::vector<C>{diagram.orders[3].poles[0].lambda});
-    QCOMPARE(listener.last, view.selectedPoles());
+    QCOMPARE(last, view.selectedPoles());
     QCOMPARE(view.chosenMarkerCount(), 1);
     QVERIFY(view.togglePoleNear(1198.4, 8.0));
     QCOMPARE(view.selectedPoles().size(), std::size_t{2});
     QVERIFY(view.togglePoleNear(500.8, 8.0));  // the same pole again: taken back
     QCOMPARE(view.selectedPoles(), std::vector<C>{diagram.orders[3].poles[2].lambda});
-    QCOMPARE(listener.emitted, 3);
+    QCOMPARE(emitted, 3);
     QVERIFY(!view.togglePoleNear(700.0, 1.0));  // nothing within 10 px
-    QCOMPARE(listener.emitted, 3);
+    QCOMPARE(emitted, 3);
   }
 
   // The 500 Hz poles of orders 4 and 8 are 0.08 % apart: choosing one replaces the other. The

@@ -12,11 +12,11 @@
 using namespace mx::widgets;
 
 namespace {
-constexpr double kLimit = 745.7;
+constexpr double kPowerLimit = 745.7;
 
 SupervisionSeries run(double level_n, double chatter_from_s, double hold_s, double end_s) {
   SupervisionSeries s;
-  s.power_limit_w = kLimit;
+  s.power_limit_w = kPowerLimit;
   s.force_reference_n = 600;
   for (double t = 0; t < end_s; t += 0.02) {
     double f = t < 0.5 ? 0.0 : level_n * (1.0 + 0.3 * std::exp(-(t - 0.5) / 0.2) * std::cos(12 * (t - 0.5)));

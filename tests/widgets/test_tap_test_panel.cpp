@@ -60,10 +60,6 @@ T* child(const TapTestPanel& panel, const char* name) {
   return widget;
 }
 
-struct Requests {
-  std::vector<TapTestFitRequest> all;
-};
-
 }  // namespace
 
 class TestTapTestPanel : public QObject {
@@ -99,12 +95,12 @@ class TestTapTestPanel : public QObject {
     child<QSpinBox>(panel, "modes")->setValue(modes);
     child<QComboBox>(panel, "method")->setCurrentIndex(method);
     QCOMPARE(child<QSpinBox>(panel, "modes")->text(), modes == 0 ? QString("automatic") : QString::number(modes));
-    Requests requests;
+    std::vector<TapTestFitRequest> requests;
     connect(&panel, &TapTestPanel::fitRequested, this,
-            [&requests](const TapTestFitRequest& r) { requests.all.push_back(r); });
+            [&requests](const TapTestFitRequest& r) { requests.push_back(r); });
     QTest::mouseClick(child<QPushButton>(panel, "fit"), Qt::LeftButton);
-    QCOMPARE(requests.all.size(), std::size_t{1});
-    const TapTestFitRequest& r = requests.all.front();
+    QCOMPARE(requests.size(), std::size_t{1});
+    const TapTestFitRequest& r = requests.front();
     QCOMPARE(r.direction, direction);
     QCOMPARE(panel.currentDirection(), direction);
     QCOMPARE(r.from_hz, from);
@@ -216,20 +212,20 @@ class TestTapTestPanel : public QObject {
     panel.setMeasurement("x", frf.f, frf.h);
     const mx::ModalFitResult result = fitResult(frf);
     panel.setFitResult("x", result, false);
-    Requests requests;
+    std::vector<TapTestFitRequest> requests;
     connect(&panel, &TapTestPanel::fitRequested, this,
-            [&requests](const TapTestFitRequest& r) { requests.all.push_back(r); });
+            [&requests](const TapTestFitRequest& r) { requests.push_back(r); });
     QVERIFY(panel.diagramView()->togglePoleNear(1000.0, 6.0));
-    QCOMPARE(requests.all.size(), std::size_t{1});
-    QCOMPARE(requests.all[0].poles, std::vector<C>{result.diagram.orders[2].poles[0].lambda});
-    QCOMPARE(requests.all[0].direction, QString("x"));
+    QCOMPARE(requests.size(), std::size_t{1});
+    QCOMPARE(requests[0].poles, std::vector<C>{result.diagram.orders[2].poles[0].lambda});
+    QCOMPARE(requests[0].direction, QString("x"));
     mx::ModalFitResult at_poles = result;
     at_poles.diagram = {};
     panel.setFitResult("x", at_poles, true);
     QCOMPARE(panel.diagramView()->markerCount(mx::PoleStability::Stable), 2);
     QCOMPARE(panel.diagramView()->selectedPoles().size(), std::size_t{1});
     QVERIFY(panel.diagramView()->togglePoleNear(1000.0, 6.0));  // taken back: nothing to fit
-    QCOMPARE(requests.all.size(), std::size_t{1});
+    QCOMPARE(requests.size(), std::size_t{1});
   }
 };
 

@@ -5,13 +5,11 @@
 #include <QSignalSpy>
 #include <cmath>
 
+#include "support/weight_triples.h"
 #include "ternary_picker.h"
 #include "test_registry.h"
 
 using mx::widgets::TernaryPicker;
-using W3 = std::array<double, 3>;
-
-Q_DECLARE_METATYPE(W3)
 
 namespace {
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "support/test_constants.h"
 #include "test_registry.h"
 #include "trace_envelope.h"
 
@@ -13,7 +14,7 @@ using mx::widgets::TraceEnvelope;
 using mx::widgets::traceEnvelope;
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using mx::test::kNaN;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A chattering trace: 60 revolutions' worth of samples at 10 us.

@@ -8,6 +8,7 @@
 #include <QSlider>
 #include <cmath>
 
+#include "support/weight_triples.h"
 #include "ternary_picker.h"
 #include "test_registry.h"
 #include "weights_panel.h"
@@ -16,9 +17,6 @@ using mx::CostWeights;
 using mx::widgets::TernaryPicker;
 using mx::widgets::WeightsPanel;
 using Group = WeightsPanel::Group;
-using W3 = std::array<double, 3>;
-
-Q_DECLARE_METATYPE(W3)
 
 namespace {
 
