@@ -13,14 +13,13 @@
 #include "main_window.h"
 #include "services/batch_manifest.h"
 #include "services/batch_study.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-
-const char* const kProject = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";  // R1, R2; Aluminium
 
 widgets::BatchStudySettings lobesStudy(const QStringList& materials, double step_rpm) {
   widgets::BatchStudySettings s;
@@ -55,7 +54,8 @@ class TestBatchFeature : public QObject {
 
   static void prepare(gui::MainWindow& window) {
     window.setQuiet(true);
-    QVERIFY(window.openProject(kProject));
+    // R1, R2; Aluminium
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     test::batchOf(window)->setCliProgram(MX_CLI_PATH);
   }
 

@@ -30,6 +30,7 @@
 #include "services/control_request.h"
 #include "services/sdnrp_request.h"
 #include "support/cli_runner.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
@@ -43,7 +44,7 @@ bool open(gui::MainWindow& w, const char* project) {
   w.setQuiet(true);
   w.resize(1600, 950);
   w.show();
-  return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
+  return w.openProject(mx::test::exampleCopy(project));
 }
 
 gui::ControlFeature* control(const gui::MainWindow& w) {

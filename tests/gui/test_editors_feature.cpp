@@ -22,6 +22,7 @@
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
 #include "support/cli_runner.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
@@ -38,7 +39,7 @@ bool openForEditing(gui::MainWindow& w, const char* project) {
   w.resize(1600, 950);
   w.show();
   w.document()->setAutosaveInterval(0);  // the runs outlast 30 s: no autosave next to the example
-  return w.openProject(QString(MX_PROJECTS_DIR "/") + project);
+  return w.openProject(mx::test::exampleCopy(project));
 }
 
 // Sets the teeth of tool `id` in the tool table, as the user would.

@@ -14,6 +14,7 @@
 #include "main_window.h"
 #include "ranking_table.h"
 #include "support/cli_runner.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 #include "weights_panel.h"
@@ -35,7 +36,7 @@ class TestExpertFeature : public QObject {
     window.show();
     QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
     QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(refined.wait(60000));  // session built, ranked, then Rules 5-6 with simulations
     QCOMPARE(test::windowPart<widgets::RankingTable>(window)->selectedTool(), QString("R1"));
     QCOMPARE(test::windowPart<widgets::RankingTable>(window)->rows().size(), 2);
@@ -76,7 +77,7 @@ class TestExpertFeature : public QObject {
     window.setQuiet(true);
     window.show();
     QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(refined.wait(60000));
     const auto& first = test::expertOf(window)->runner()->session();
     QVERIFY(first);
@@ -114,7 +115,7 @@ class TestExpertFeature : public QObject {
     window.setQuiet(true);
     window.show();
     QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio-pareto-case.mxproj")));
     QVERIFY(ranked.wait(60000));
     const double unruled_speed = test::windowPart<widgets::RankingTable>(window)->rows().front().speed_rpm;
     QVERIFY2(unruled_speed > 1200.0, qPrintable(QString::number(unruled_speed)));
@@ -181,7 +182,7 @@ class TestExpertFeature : public QObject {
     window.setQuiet(true);
     window.show();
     QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(refined.wait(60000));
     const gui::ExpertFeature* expert = test::expertOf(window);
     auto qStar = [&]() {
@@ -228,7 +229,7 @@ class TestExpertFeature : public QObject {
           window.document()->setPoint(moved);
         },
         Qt::SingleShotConnection);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(refined.wait(60000));
     QCOMPARE(ranked_before_move, 0);  // the lobes come first: the session needs them too
     QVERIFY(ranked.count() > 0);
@@ -239,7 +240,7 @@ class TestExpertFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/library-20-tools.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("library-20-tools.mxproj")));
     QVERIFY(ranked.wait(60000));
     QCOMPARE(test::windowPart<widgets::RankingTable>(window)->rows().size(), 20);
     QSlider* c1 = test::windowPart<widgets::WeightsPanel>(window)->slider(widgets::WeightsPanel::Group::Tool, 0);

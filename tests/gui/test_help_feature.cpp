@@ -40,7 +40,6 @@ using namespace mx;
 using widgets::Term;
 
 namespace {
-using mx::test::kRubio;
 
 gui::HelpFeature* helpOf(const gui::MainWindow& window) {
   return test::windowPart<gui::HelpFeature>(window, "helpFeature");
@@ -193,7 +192,7 @@ class TestHelpFeature : public QObject {
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
     window.show();
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     gui::HelpFeature* help = helpOf(window);
     QVERIFY(!help->startScreenShown());
     QAction* create = actionWithShortcut(window, QKeySequence::New);
@@ -237,7 +236,8 @@ class TestHelpFeature : public QObject {
   }
 
   void aRecentProjectOpensFromTheStartScreen() {
-    QSettings().setValue("recentFiles", QStringList{kRubio});
+    const QString project = mx::test::exampleCopy("rubio2006-tool-selection.mxproj");
+    QSettings().setValue("recentFiles", QStringList{project});
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
@@ -245,7 +245,7 @@ class TestHelpFeature : public QObject {
     QListWidget* recent = helpOf(window)->startScreen()->recentList();
     QCOMPARE(recent->count(), 1);
     emit recent->itemClicked(recent->item(0));
-    QCOMPARE(window.document()->filePath(), kRubio);
+    QCOMPARE(window.document()->filePath(), project);
     QVERIFY(!helpOf(window)->startScreenShown());
   }
 

@@ -27,7 +27,6 @@
 using namespace mx;
 
 namespace {
-using mx::test::kRubio;
 
 // Shows the window (offscreen), opens `path` and waits for its lobes.
 bool openAndShow(gui::MainWindow& window, const QString& path) {
@@ -69,7 +68,7 @@ class TestLobesFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(shown.wait(20000));
     QCOMPARE(window.project()->tools.size(), size_t{2});
     QVERIFY(window.windowTitle().contains("rubio2006"));
@@ -86,7 +85,7 @@ class TestLobesFeature : public QObject {
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
     QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(shown.wait(20000));
     QVERIFY(test::waitForReadout(window));
     QCOMPARE(test::lobesOf(window)->readout()->text("tool"), QString("R1"));
@@ -107,7 +106,7 @@ class TestLobesFeature : public QObject {
   // engine evaluation (ZOA lobes of the project's tool, StabilityBoundary, evaluateCut).
   void dragMovesPointAndReadoutsMatchEngine() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     widgets::LobeChartView* chart = test::lobesOf(window)->chart();
     QWidget* plot = chart->plotWidget();
     const QPoint from = chart->pixelFor(2500.0, 0.30), to = chart->pixelFor(4200.0, 0.45);
@@ -149,7 +148,7 @@ class TestLobesFeature : public QObject {
   // restores it.
   void toolForceLimitInTheReadout() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     app::PickedPoint p = window.document()->point();
     p.speed_rpm = 3000.0;
     p.depth_mm = 0.2;
@@ -175,7 +174,7 @@ class TestLobesFeature : public QObject {
   // The chart names the model of the active tool's lobes; the method advice follows the tool and the method.
   void modelLabelAndMethodAdvice() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     gui::LobesFeature* lobes = test::lobesOf(window);
     QCOMPARE(lobes->chart()->modelLabel(), QString("Tool R1: ZOA, 3 teeth, uniform pitch"));
     QCOMPARE(lobes->methodAdviceText(), QString());  // R1: a/D = 1, straight teeth, uniform pitch
@@ -195,7 +194,7 @@ class TestLobesFeature : public QObject {
   // Inch display: the chart and readouts convert; the document stays in mm.
   void inchUnitsOnChartAndReadouts() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     window.units()->setLength(widgets::DisplayUnits::Length::Inch);
     QWidget* plot = test::lobesOf(window)->chart()->plotWidget();
     const QPoint at = test::lobesOf(window)->chart()->pixelFor(4000.0, 0.5);
@@ -213,7 +212,7 @@ class TestLobesFeature : public QObject {
   // point with the engine's values.
   void aHundredToothCutterKeepsTheEventLoopResponsive() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     app::Project edited = *window.project();
     app::ToolSpec& t = edited.tools[0];
     t.teeth = 100;
@@ -258,7 +257,7 @@ class TestLobesFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
-    QVERIFY(window.openProject(kRubio));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(shown.wait(20000));
     QElapsedTimer clock;
     qint64 last = 0, largest_gap = 0;

@@ -14,6 +14,7 @@
 #include "notice_stack.h"
 #include "part_program_panel.h"
 #include "sdnrp/sdnrp_simulator.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
@@ -32,7 +33,7 @@ class TestMachiningFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     auto* machining = test::windowPart<gui::MachiningFeature>(window, "machiningFeature");
     widgets::NoticeStack* notice = machining->surfaceNotice();
     QVERIFY(notice->noticeShown());
@@ -52,7 +53,7 @@ class TestMachiningFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("cus-zuperl-sdnrp.mxproj")));
     QVERIFY(!test::windowPart<gui::MachiningFeature>(window, "machiningFeature")->surfaceNotice()->noticeShown());
   }
 
@@ -60,7 +61,7 @@ class TestMachiningFeature : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/cus-zuperl-sdnrp.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("cus-zuperl-sdnrp.mxproj")));
     auto* machining = test::windowPart<gui::MachiningFeature>(window, "machiningFeature");
     widgets::PartProgramPanel* panel = machining->programPanel();
     QSignalSpy shown(machining, &gui::MachiningFeature::partProgramShown);

@@ -211,7 +211,7 @@ class TestMainWindow : public QObject {
   void defaultLayoutLeavesTheChartTheHeight() {
     forgetSavedLayout();
     gui::MainWindow window;
-    QVERIFY(openAt1080p(window, kRubio));
+    QVERIFY(openAt1080p(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QTRY_VERIFY2(window.centralWidget()->height() >= 1080 / 2,
                  qPrintable(QString::number(window.centralWidget()->height())));
     auto* toolbar = window.findChild<QToolBar*>("mainToolbar");
@@ -236,7 +236,7 @@ class TestMainWindow : public QObject {
   void defaultLayoutCutsNothingAt1080p() {
     forgetSavedLayout();
     gui::MainWindow window;
-    QVERIFY(openAt1080p(window, kRubio));
+    QVERIFY(openAt1080p(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     auto* editor = window.findChild<widgets::ToolLibraryEditor*>();
     QVERIFY(editor);
     QTRY_VERIFY(editor->modeModel(widgets::ModeTableModel::Axis::Y)->rowCount() > 0);
@@ -280,7 +280,7 @@ class TestMainWindow : public QObject {
   void paretoWeightsFitTheirDockAt1080p() {
     forgetSavedLayout();
     gui::MainWindow window;
-    QVERIFY(openAt1080p(window, MX_PROJECTS_DIR "/rubio-pareto-case.mxproj"));
+    QVERIFY(openAt1080p(window, mx::test::exampleCopy("rubio-pareto-case.mxproj")));
     auto* dock = window.findChild<QDockWidget*>("paretoWeightsDock");
     QVERIFY(dock);
     dock->raise();
@@ -295,7 +295,7 @@ class TestMainWindow : public QObject {
   void badProjectIsRefusedAndKeepsTheCurrentOne() {
     gui::MainWindow window;
     window.setQuiet(true);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("benchmark-insperger-1dof.mxproj")));
     QTemporaryDir dir;
     const QString bad = dir.filePath("bad.mxproj");
     QFile f(bad);

@@ -25,6 +25,7 @@
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
 #include "support/pareto_window.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
@@ -59,7 +60,7 @@ class TestParetoFeature : public QObject {
     window.document()->setAutosaveInterval(0);
     window.resize(1600, 950);
     window.show();
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     auto* notice = test::windowPart<widgets::NoticeStack>(window, "paretoFrontNotice");
     QTRY_VERIFY(notice->noticeShown());
     QVERIFY2(notice->noticeText().contains("no Pareto study"), qPrintable(notice->noticeText()));

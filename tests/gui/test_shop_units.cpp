@@ -26,7 +26,6 @@ using widgets::Quantity;
 using widgets::ShopUnits;
 
 namespace {
-using mx::test::kRubio;
 
 bool openAndShow(gui::MainWindow& window, const QString& path) {
   window.setQuiet(true);
@@ -74,7 +73,7 @@ class TestShopUnitsInWindow : public QObject {
 
   void inchPresetThroughPreferences() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QCOMPARE(window.units()->shop(), ShopUnits::metric());
     widgets::OperatingPointReadout* readout = test::lobesOf(window)->readout();
     QCOMPARE(shown(readout->text("power")).second, QString("W"));
@@ -149,7 +148,7 @@ class TestShopUnitsInWindow : public QObject {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, kRubio));
+    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     window.units()->setShop(ShopUnits::metric());
     QVERIFY(window.saveProject(dir.filePath("metric.mxproj")));
     window.units()->setShop(ShopUnits::inch());

@@ -18,7 +18,6 @@
 using namespace mx;
 
 namespace {
-using mx::test::kRubio;
 
 // Opens the project, waits for the lobes and the first simulation.
 bool openAndSimulate(gui::MainWindow& window) {
@@ -26,7 +25,7 @@ bool openAndSimulate(gui::MainWindow& window) {
   window.resize(1600, 950);
   window.show();
   QSignalSpy shown(test::simulationOf(window), &gui::SimulationFeature::simulationShown);
-  return window.openProject(kRubio) && shown.wait(30000);
+  return window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")) && shown.wait(30000);
 }
 
 // Sets the point as a Pareto pick or a typed feed does: not through a drag of the chart.

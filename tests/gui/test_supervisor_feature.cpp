@@ -26,6 +26,7 @@
 #include "supervisor_comparison.h"
 #include "supervisor_feature.h"
 #include "supervisor_view.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -35,7 +36,7 @@ bool openLanders(gui::MainWindow& w) {
   w.setQuiet(true);
   w.resize(1600, 950);
   w.show();
-  return w.openProject(MX_PROJECTS_DIR "/landers-face-milling.mxproj");
+  return w.openProject(mx::test::exampleCopy("landers-face-milling.mxproj"));
 }
 
 gui::SupervisorFeature* supervisor(const gui::MainWindow& w) {
@@ -87,7 +88,7 @@ class TestSupervisorFeature : public QObject {
     QVERIFY(view->isEnabled());
     QVERIFY2(view->statusText().startsWith("Supervisor ready (controller " + view->controller() + ")"),
              qPrintable(view->statusText()));
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QCOMPARE(view->statusText(), QString("This project has no \"supervisor\" section (docs/project-file.md)"));
   }
 

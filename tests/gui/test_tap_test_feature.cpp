@@ -118,7 +118,7 @@ class TestTapTestFeature : public QObject {
   void refusesAnFrfOfTheOtherDirection() {
     gui::MainWindow window;
     window.setQuiet(true);
-    QVERIFY(window.openProject(test::projectsPath("tap-test-example.mxproj")));
+    QVERIFY(window.openProject(test::exampleCopy("tap-test-example.mxproj")));
     QSignalSpy shown(tapTest(window), &gui::TapTestFeature::measurementShown);
     QTRY_COMPARE_WITH_TIMEOUT(shown.count(), 2, 20000);
     shown.clear();
@@ -137,7 +137,7 @@ class TestTapTestFeature : public QObject {
                                                                     test::evenFrequencies(0.0, 1.0, 2001))));
     gui::MainWindow window;
     window.setQuiet(true);
-    QVERIFY(window.openProject(test::projectsPath("rubio2006-tool-selection.mxproj")));
+    QVERIFY(window.openProject(test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QSignalSpy shown(tapTest(window), &gui::TapTestFeature::measurementShown);
     tapTest(window)->importFile(csv, "y", std::nullopt, FrfQuantity::Mobility);
     QVERIFY(shown.wait(20000));

@@ -27,7 +27,7 @@ const QByteArray kCsv =
 bool open(gui::MainWindow& w) {
   w.setQuiet(true);
   w.document()->setAutosaveInterval(0);
-  return w.openProject(MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj");
+  return w.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj"));
 }
 
 Transfer* transferOf(const gui::MainWindow& w) {

@@ -11,6 +11,7 @@
 #include "main_window.h"
 #include "supervisor_feature.h"
 #include "support/project_edits.h"
+#include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
 
@@ -49,7 +50,7 @@ class TestWindowFeatures : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-adaptive-control.mxproj")));
     auto* lobes = test::lobesOf(window);
     QUndoStack* undo = window.document()->undoStack();
     window.document()->initPoint({8000.0, 1.0, 0.1});
@@ -76,7 +77,7 @@ class TestWindowFeatures : public QObject {
     gui::MainWindow window;
     window.setQuiet(true);
     window.document()->setAutosaveInterval(0);
-    QVERIFY(window.openProject(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj"));
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-adaptive-control.mxproj")));
     auto* control = window.findChild<gui::ControlFeature*>("controlFeature");
     auto* supervisor = window.findChild<gui::SupervisorFeature*>("supervisorFeature");
     QUndoStack* undo = window.document()->undoStack();

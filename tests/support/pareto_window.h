@@ -17,7 +17,7 @@ inline bool openParetoCase(gui::MainWindow& window) {
   window.resize(1600, 950);
   window.show();
   QSignalSpy shown(paretoOf(window), &gui::ParetoFeature::paretoShown);
-  if (!window.openProject(kParetoCase)) return false;
+  if (!window.openProject(exampleCopy("rubio-pareto-case.mxproj"))) return false;
   for (int i = 0; i < 120 && !paretoOf(window)->runner()->study(); ++i) shown.wait(1000);
   return paretoOf(window)->runner()->study() != nullptr && paretoOf(window)->choice().has_value();
 }
