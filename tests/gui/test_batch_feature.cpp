@@ -4,6 +4,7 @@
 // row per tool and material, and a cancelled run that a second run resumes: every case present once.
 #include <QFile>
 #include <QLabel>
+#include <QListWidget>
 #include <QProgressBar>
 #include <QSignalSpy>
 #include <QTableWidget>
