@@ -218,7 +218,9 @@ void LearningDatabase::open(OpenMode mode) {
                          : "the Qt PostgreSQL driver (QPSQL, package libqt6sql6-psql) is not available");
   if (sql_.isSqlite()) {
     db.setDatabaseName(location_.file);
-    db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=10000");
+    // SQLite's busy handler polls with no queue: with many writers one can wait far longer than the
+    // average write (8 writers under ASan: past 10 s). A record waits rather than fails.
+    db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=60000");
   } else {
     db.setHostName(location_.host);
     db.setPort(location_.port);

@@ -10,7 +10,7 @@
 // - Every write is ONE transaction (the entry rows and their weight rows), so a killed writer leaves
 //   whole records or nothing; a record's uid is unique, so a retried or re-imported record is stored
 //   once. Reads run in one snapshot, so a reader never sees half a record.
-// - SQLite: WAL journal, synchronous=FULL, busy timeout 10 s.
+// - SQLite: WAL journal, synchronous=FULL, busy timeout 60 s.
 // - Every error throws LearningDatabaseError naming the file or the URL.
 #include <QString>
 #include <QStringList>
