@@ -3,7 +3,9 @@
 #include <QFileInfo>
 #include <algorithm>
 #include <exception>
+#include <mutex>
 
+#include "engine_channel.h"
 #include "services/learning_database.h"
 
 namespace mx::gui {
@@ -67,18 +69,23 @@ void LearningWorker::record(quint64 generation, const QString& location, const a
   try {
     app::LearningDatabase& db = database(location);
     const qint64 id = db.insert(record);
+    const std::lock_guard hand_over(handOverMutex());  // the queued copy is read on the GUI thread
     emit recorded(generation, id, db.location());
   } catch (const std::exception& e) {
     db_.reset();  // the next request connects again
+    const std::lock_guard hand_over(handOverMutex());
     emit recordFailed(generation, QString::fromStdString(e.what()));
   }
 }
 
 void LearningWorker::loadHistory(quint64 generation, const QString& location, const LearningHistoryRequest& request) {
   try {
-    emit historyLoaded(generation, queryHistory(database(location), request));
+    const LearningHistoryResult result = queryHistory(database(location), request);
+    const std::lock_guard hand_over(handOverMutex());
+    emit historyLoaded(generation, result);
   } catch (const std::exception& e) {
     db_.reset();
+    const std::lock_guard hand_over(handOverMutex());
     emit historyFailed(generation, QString::fromStdString(e.what()));
   }
 }
