@@ -42,7 +42,27 @@ class HandOverRunnable final : public QRunnable {
  private:
   Task task_;
 };
+// Queues call() to `target`'s thread; the caller holds handOverMutex(), and the call takes it before
+// it reads what it captured.
+template <class Call>
+void queueHandOver(QObject* target, Call call) {
+  QMetaObject::invokeMethod(
+      target,
+      [call = std::move(call)]() mutable {
+        enterHandOver();
+        call();
+      },
+      Qt::QueuedConnection);
+}
+
 }  // namespace detail
+
+// Queues call() to the thread of `target` (a QObject that outlives the call) across handOverMutex().
+template <class Call>
+void postHandOver(QObject* target, Call call) {
+  std::lock_guard lock(handOverMutex());
+  detail::queueHandOver(target, std::move(call));
+}
 
 // What a job holds to send calls back to the owner's thread; copyable, usable from any thread.
 class EngineReply {
@@ -53,14 +73,7 @@ class EngineReply {
   template <class Call>
   void operator()(Call call) const {
     std::lock_guard lock(handOverMutex());
-    if (!state_->owner) return;
-    QMetaObject::invokeMethod(
-        state_->owner,
-        [call = std::move(call)]() mutable {
-          detail::enterHandOver();
-          call();
-        },
-        Qt::QueuedConnection);
+    if (state_->owner) detail::queueHandOver(state_->owner, std::move(call));
   }
 
  private:

@@ -1,8 +1,5 @@
 #include "learning_client.h"
 
-#include <QMetaObject>
-#include <mutex>
-
 namespace mx::gui {
 
 LearningClient::LearningClient(QObject* parent) : QObject(parent), worker_(new LearningWorker), channel_(this) {
@@ -38,7 +35,7 @@ LearningClient::LearningClient(QObject* parent) : QObject(parent), worker_(new L
 LearningClient::~LearningClient() {
   // Queued before the quit, so the thread closes the connection it opened; the hand-overs around
   // close() order its writes before the delete below.
-  post([worker = worker_] {
+  postHandOver(worker_, [worker = worker_] {
     worker->close();
     detail::enterHandOver();
   });
@@ -52,7 +49,8 @@ LearningClient::~LearningClient() {
 quint64 LearningClient::record(const QString& location, const app::LearningRecord& record) {
   const quint64 generation = ++generation_;
   if (pending_++ == 0) emit idleChanged(false);
-  post([worker = worker_, generation, location, record] { worker->record(generation, location, record); });
+  postHandOver(worker_,
+               [worker = worker_, generation, location, record] { worker->record(generation, location, record); });
   return generation;
 }
 
@@ -60,7 +58,9 @@ quint64 LearningClient::loadHistory(const QString& location, const LearningHisto
   const quint64 generation = ++generation_;
   history_generation_ = generation;
   if (pending_++ == 0) emit idleChanged(false);
-  post([worker = worker_, generation, location, request] { worker->loadHistory(generation, location, request); });
+  postHandOver(worker_, [worker = worker_, generation, location, request] {
+    worker->loadHistory(generation, location, request);
+  });
   return generation;
 }
 

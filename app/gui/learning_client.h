@@ -4,13 +4,10 @@
 // test of an unreachable server waits its connect_timeout and must hold up neither the records nor a
 // newer test). Answers come back as queued signals tagged with a generation id: every record answers,
 // a newer history query or connection test makes the older one's answer stale, and it is dropped.
-#include <QMetaObject>
 #include <QObject>
 #include <QString>
 #include <QThread>
 #include <QThreadPool>
-#include <mutex>
-#include <utility>
 
 #include "engine_channel.h"
 #include "learning_worker.h"
@@ -40,18 +37,6 @@ class LearningClient : public QObject {
 
  private:
   void answered();
-  // Queues `call` to the learning thread across handOverMutex() (engine_channel.h).
-  template <class Call>
-  void post(Call call) {
-    const std::lock_guard hand_over(handOverMutex());
-    QMetaObject::invokeMethod(
-        worker_,
-        [call = std::move(call)]() mutable {
-          detail::enterHandOver();
-          call();
-        },
-        Qt::QueuedConnection);
-  }
 
   QThread thread_;
   LearningWorker* worker_;

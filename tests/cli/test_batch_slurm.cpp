@@ -33,7 +33,6 @@ QString tail(const QString& path, qsizetype chars = 1500) {
   return QString("%1:\n%2").arg(path, QString::fromUtf8(f.readAll().right(chars)));
 }
 
-// Two TCP ports that were free a moment ago (the kernel's choice for port 0).
 QString slurmConf(const QString& s, const QString& host, const QList<int>& ports) {
   return QString(
              "ClusterName=mx\nSlurmctldHost=%2\nSlurmctldPort=%3\nSlurmdPort=%4\nSlurmUser=root\nSlurmdUser=root\n"
