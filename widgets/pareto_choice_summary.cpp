@@ -5,6 +5,8 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QStandardItemModel>
+#include <QVBoxLayout>
+#include <utility>
 
 namespace mx::widgets {
 
@@ -42,12 +44,23 @@ ParetoChoiceSummaryPanel::ParetoChoiceSummaryPanel(QWidget* parent)
   binding_->setObjectName("pareto_binding");
   binding_->setWordWrap(true);
   binding_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  auto* form = new QFormLayout(this);
-  form->setContentsMargins(0, 0, 0, 0);
+  auto* form = new QFormLayout;
   form->addRow(tr("Objective"), objective_);
   form->addRow(tr("Normalisation"), normalisation_);
-  form->addRow(tr("Selected q"), point_);
-  form->addRow(tr("Binding at q"), binding_);
+  // The texts under their captions, at the dock's full width: as fields of the form, their wrapped
+  // height came out short of the text (QFormLayout's height for width) and the last line was cut.
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addLayout(form);
+  for (auto [caption, text] : {std::pair{tr("Selected q"), point_}, std::pair{tr("Binding at q"), binding_}}) {
+    auto* heading = new QLabel(caption);
+    QFont bold = heading->font();
+    bold.setBold(true);
+    heading->setFont(bold);
+    heading->setBuddy(text);
+    layout->addWidget(heading);
+    layout->addWidget(text);
+  }
   connect(objective_, &QComboBox::activated, this,
           [this](int i) { emit objectiveChosen(objective_->itemData(i).toString()); });
   connect(normalisation_, &QComboBox::activated, this,

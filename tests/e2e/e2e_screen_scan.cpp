@@ -80,4 +80,17 @@ QStringList nonFiniteTexts(const QWidget& window, const QStringList& user_string
   return found;
 }
 
+QStringList cutWrappedLabels(const QWidget& window) {
+  QStringList found;
+  for (const QLabel* label : window.findChildren<QLabel*>())
+    if (shows(label) && label->wordWrap() && !label->text().isEmpty() &&
+        label->height() < label->heightForWidth(label->width()))
+      found << QString("%1 (%2 px of %3): %4")
+                   .arg(describe(label))
+                   .arg(label->height())
+                   .arg(label->heightForWidth(label->width()))
+                   .arg(label->text().left(120));
+  return found;
+}
+
 }  // namespace mx::e2e

@@ -16,4 +16,8 @@ QStringList nonFiniteUserStrings(const QJsonObject& project);
 // "Class#name: text" of each offending text under `window`, `user_strings` taken out.
 QStringList nonFiniteTexts(const QWidget& window, const QStringList& user_strings);
 
+// "Class#name: text" of each visible word-wrapped label under `window` that is lower than its text
+// needs at its width: its last lines are cut off.
+QStringList cutWrappedLabels(const QWidget& window);
+
 }  // namespace mx::e2e

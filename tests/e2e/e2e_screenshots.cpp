@@ -28,6 +28,7 @@
 #include "e2e_driver.h"
 #include "e2e_learning.h"
 #include "e2e_report.h"
+#include "e2e_screen_scan.h"
 #include "e2e_window.h"
 #include "guide_window.h"
 #include "help_feature.h"
@@ -361,6 +362,8 @@ void takeShot(Report& report, const Shot& shot, const QDir& folder) {
   const QImage image = dialog || guide
                            ? QGuiApplication::primaryScreen()->grabWindow(0).toImage().copy(0, 0, 1920, 1080)
                            : window.grab().toImage();
+  const QStringList cut = cutWrappedLabels(window);
+  report.check(QString("%1.no-cut-text").arg(shot.file), cut.isEmpty(), cut.join("; "));
   if (guide) guide->close();
   if (dialog) dialog->reject();
   saveShot(report, shot, folder, image, window);
