@@ -28,6 +28,15 @@ QString allowedOptions() {
   return names.join(", ");
 }
 
+// libpq's connection string separates its key=value pairs by spaces: a value with a space (a
+// certificate under "/home/Jane Doe/"), a quote or a backslash goes in single quotes, those two escaped.
+QString conninfoValue(QString value) {
+  static const QRegularExpression needs_quotes(R"([\s'\\])");
+  if (!value.contains(needs_quotes)) return value;
+  value.replace('\\', QLatin1String("\\\\")).replace('\'', QLatin1String("\\'"));
+  return '\'' + value + '\'';
+}
+
 QString connectOptions(const QString& text, const QUrlQuery& query) {
   QStringList options;
   bool timeout_given = false;
@@ -45,7 +54,7 @@ QString connectOptions(const QString& text, const QUrlQuery& query) {
     }
     if (value.contains(';') || value.contains('=') || value.isEmpty())
       refuse(text, QString("option %1 has the invalid value '%2'").arg(key, value));
-    options << QString("%1=%2").arg(key, value);
+    options << QString("%1=%2").arg(key, conninfoValue(value));
   }
   if (!timeout_given) options << QString("connect_timeout=%1").arg(kDefaultConnectTimeoutS);
   return options.join(';');

@@ -4,7 +4,9 @@
 // initdb refuses root, so as root the server runs as the "postgres" user of the Debian package, and
 // every folder above its data folder is made enterable (search permission only). The binaries are
 // those CMake found (MX_PG_BINDIR). start() returns why the server could not start: the test fails
-// with it, never skips.
+// with it, never skips. After requireTls() the server speaks TLS with the given certificate and
+// refuses every connection over TCP that is not encrypted (pg_hba.conf: hostssl trust, hostnossl
+// reject).
 #include <pwd.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -23,6 +25,7 @@
 
 #include "support/enterable_folders.h"
 #include "support/loopback_port.h"
+#include "support/test_certificates.h"
 
 namespace mx::test {
 
@@ -32,6 +35,9 @@ class PostgresServer {
   PostgresServer(const PostgresServer&) = delete;
   PostgresServer& operator=(const PostgresServer&) = delete;
   ~PostgresServer() { stop(); }
+
+  // Before start(): TLS only, with this certificate and key (copied into the data folder).
+  void requireTls(const ServerCertificate& certificate) { tls_ = certificate; }
 
   // Empty on success, else why the server did not start (with the tail of its log).
   QString start() {
@@ -49,8 +55,12 @@ class PostgresServer {
                          120000, &output))
       return "initdb failed: " + output.right(2000);
     // fsync off: the tests kill clients, never the server, and 4000 commits must not wait for a disk.
-    const QString options =
+    QString options =
         QString("-p %1 -k %2 -c listen_addresses=127.0.0.1 -c fsync=off -c max_connections=60").arg(port_).arg(data());
+    if (!tls_.cert.isEmpty()) {
+      if (QString why = installTls(); !why.isEmpty()) return why;
+      options += " -c ssl=on";  // server.crt and server.key in the data folder: the server's defaults
+    }
     if (!runAsServerUser(bindir + "/pg_ctl", {"-D", data(), "-o", options, "-l", log(), "-w", "-t", "60", "start"},
                          90000, &output))
       return QString("pg_ctl start failed: %1\nserver log:\n%2").arg(output.right(1000), logTail());
@@ -149,12 +159,36 @@ class PostgresServer {
     return finished && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
   }
 
+  // The certificate and key in the data folder, the key readable by the server's user only (the server
+  // refuses a key others can read), and pg_hba.conf that accepts TCP connections with TLS only.
+  QString installTls() const {
+    const QString cert = data() + "/server.crt", key = data() + "/server.key";
+    if (!QFile::copy(tls_.cert, cert) || !QFile::copy(tls_.key, key))
+      return "cannot copy the server certificate and key into " + data();
+    if (!QFile::setPermissions(key, QFile::ReadOwner | QFile::WriteOwner)) return "cannot protect " + key;
+    if (isRoot()) {
+      const passwd* user = ::getpwnam("postgres");
+      for (const QString& file : {cert, key})
+        if (user == nullptr || ::chown(QFile::encodeName(file).constData(), user->pw_uid, user->pw_gid) != 0)
+          return "cannot hand " + file + " to the user postgres";
+    }
+    QFile hba(data() + "/pg_hba.conf");
+    const QByteArray rules =
+        "local all all trust\n"
+        "hostssl all all 127.0.0.1/32 trust\n"
+        "hostnossl all all 127.0.0.1/32 reject\n";
+    if (!hba.open(QIODevice::WriteOnly | QIODevice::Truncate) || hba.write(rules) != rules.size())
+      return "cannot write " + hba.fileName();
+    return {};
+  }
+
   qint64 postmasterPid() const {
     QFile f(data() + "/postmaster.pid");
     return f.open(QIODevice::ReadOnly) ? f.readLine().trimmed().toLongLong() : 0;
   }
 
   QTemporaryDir dir_;
+  ServerCertificate tls_;
   int port_ = 0;
   qint64 pid_ = 0;
   static inline int counter_ = 0;
