@@ -17,7 +17,7 @@ namespace {
 const QStringList kIsoGroups{"P", "M", "K", "N", "S", "H"};
 
 QString nonEmptyString(const ObjectReader& r, const QString& key) {
-  const QString text = r.string(key);
+  QString text = r.string(key);
   if (text.trimmed().isEmpty()) throwBadField(r.pathOf(key), formatValue(text), "a non-empty string");
   return text;
 }

@@ -27,7 +27,7 @@ app::ProjectChanges lastChanges(const QSignalSpy& spy) {
 QString savedWithPoint(const QTemporaryDir& dir) {
   app::Project p = app::loadProject(kProject);
   p.operating_point = app::OperatingPointSpec{"C1", 6000.0, 2.0, 0.12};
-  const QString path = dir.filePath("point.mxproj");
+  QString path = dir.filePath("point.mxproj");
   app::saveProject(p, path);
   return path;
 }
