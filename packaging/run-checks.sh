@@ -9,7 +9,8 @@
 #   monkey  the GUI monkey (docs/testing.md) on the asan build's real window under Xvfb for
 #           MX_MONKEY_SECONDS (600 s by default) from MX_MONKEY_SEED (the time by default; printed, so
 #           that a failure replays);
-#   tidy    clang-tidy (.clang-tidy) over our sources in the asan build's compile database;
+#   tidy    clang-tidy (.clang-tidy) over our sources in the asan build's compile database, each
+#           translation unit that passed before with the same preprocessed text skipped;
 #   fuzz    every libFuzzer target (preset fuzz, clang-14, ASan + UBSan; tests/fuzz/README.md), one
 #           after the other, each for MX_FUZZ_SECONDS (120 s by default) from its seed corpus in a
 #           scratch corpus folder, with -timeout=5 -rss_limit_mb=1024: a crash, leak, timeout or
@@ -62,7 +63,9 @@ check_tidy() {
   [ -f build/asan/compile_commands.json ] || cmake --preset asan -G Ninja
   # Our translation units: engine, app, widgets, tests (not the tests/data fixtures), bench when
   # built; the generated moc and resource files lie in the build folder and are left out.
-  run-clang-tidy-14 -p build/asan -j "$(nproc)" -quiet "^$PWD/(engine|app|widgets|bench|tests/(?!data/))"
+  # Units unchanged since they last passed (same preprocessed text, command and .clang-tidy) are
+  # skipped: packaging/clang_tidy_cached.py, stamps in build/asan/clang-tidy-passed/.
+  python3 packaging/clang_tidy_cached.py build/asan "^$PWD/(engine|app|widgets|bench|tests/(?!data/))" --jobs "$(nproc)"
 }
 
 check_fuzz() {
