@@ -655,8 +655,8 @@ QStringList LobeChartView::legendNames() const {
 
 // An exported image has no tool list beside it: its legend names every shown tool by its nominal line.
 void LobeChartView::setToolsInLegend(bool shown) {
-  for (int i = 0; i < tool_graphs_.size(); ++i) {
-    QCPGraph* nominal = tool_graphs_[i].front();
+  for (const auto& graphs : tool_graphs_) {
+    QCPGraph* nominal = graphs.front();
     if (shown && nominal->visible())
       nominal->addToLegend();
     else

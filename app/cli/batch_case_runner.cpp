@@ -73,7 +73,7 @@ QStringList flagsOf(const QString& computation, const QJsonObject& options) {
       continue;
     }
     const QJsonArray values = it.value().isArray() ? it.value().toArray() : QJsonArray{it.value()};
-    for (const QJsonValue& v : values) flags << "--" + flag << valueText(v);
+    for (const auto& v : values) flags << "--" + flag << valueText(v);
   }
   return flags;
 }

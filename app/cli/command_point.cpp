@@ -77,7 +77,7 @@ QList<QCommandLineOption> pointOptions() {
 }
 
 QString pointMethod(const QCommandLineParser& parser) {
-  const QString method = parser.value("method");
+  QString method = parser.value("method");
   if (method != "zoa" && method != "sdm")
     throw CliError(QString("--method = %1: must be zoa or sdm").arg(quoted(method)), kExitBadInput);
   return method;

@@ -41,7 +41,7 @@ QString printable(const QString& text) {
 QJsonArray listOf(const QJsonObject& root, const QString& key, const QString& items) {
   const QJsonValue value = root.value(key);
   if (!value.isArray()) fail(key, value, QString("must be an array of %1").arg(items));
-  const QJsonArray array = value.toArray();
+  QJsonArray array = value.toArray();
   if (array.isEmpty() || array.size() > kMaxListLength)
     fail(key, value, QString("must hold 1 to %1 %2, holds %3").arg(kMaxListLength).arg(items).arg(array.size()));
   return array;
@@ -78,7 +78,7 @@ void checkOptionValue(const QString& name, const QJsonValue& value) {
   if (scalar(value)) return;
   if (!value.isArray() || value.toArray().isEmpty())
     fail(field, value, "must be a string, a number, true/false, or a non-empty array of strings and numbers");
-  for (const QJsonValue& item : value.toArray())
+  for (const auto& item : value.toArray())
     if (!item.isString() && !item.isDouble()) fail(field + "[]", item, "must be a string or a number");
 }
 
@@ -86,7 +86,7 @@ QJsonObject optionsOf(const QJsonObject& root) {
   if (!root.contains("options")) return {};
   const QJsonValue value = root.value("options");
   if (!value.isObject()) fail("options", value, "must be an object of flag names and values");
-  const QJsonObject options = value.toObject();
+  QJsonObject options = value.toObject();
   for (auto it = options.begin(); it != options.end(); ++it) {
     if (it.key().isEmpty() || it.key().contains('-') || it.key().startsWith('_'))
       fail(QString("options.%1").arg(it.key()), it.value(),

@@ -177,9 +177,9 @@ std::vector<QStringList> batchTableLines(const QJsonObject& summary) {
     return v.isDouble() ? QString::number(v.toDouble(), 'g', 12) : QString();
   };
   std::vector<QStringList> lines;
-  for (const QJsonValue& r : summary.value("rows").toArray()) {
+  for (const auto& r : summary.value("rows").toArray()) {
     const QJsonObject row = r.toObject();
-    for (const QJsonValue& e : row.value("entries").toArray()) {
+    for (const auto& e : row.value("entries").toArray()) {
       const QJsonObject entry = e.toObject(), q = entry.value("q").toObject(),
                         pocket = entry.value("pocket").toObject();
       const QJsonValue speed = entry.contains("pocket") ? pocket.value("speed_rpm") : q.value("speed_rpm");

@@ -41,13 +41,15 @@ const LearningMigration kVersion1{
 // writer chooses, so that a retried or re-imported record is stored once. Version-1 rows take their
 // checksum as that id (equal rows from two files are one record; a repeat within one file gets its
 // row id appended).
+constexpr const char* kFirstOfEachChecksumKeepsIt =
+    "UPDATE learning_entry SET record_uid = checksum WHERE id IN (SELECT MIN(id) FROM learning_entry GROUP BY "
+    "checksum)";
 const LearningMigration kVersion2{
     2,
     {
         "ALTER TABLE learning_entry ADD COLUMN machine TEXT CHECK (machine <> '')",
         "ALTER TABLE learning_entry ADD COLUMN record_uid TEXT",
-        "UPDATE learning_entry SET record_uid = checksum WHERE id IN (SELECT MIN(id) FROM learning_entry GROUP BY "
-        "checksum)",
+        kFirstOfEachChecksumKeepsIt,
         "UPDATE learning_entry SET record_uid = checksum || '-' || id WHERE record_uid IS NULL",
         "CREATE UNIQUE INDEX learning_entry_uid ON learning_entry(record_uid)",
         "CREATE INDEX learning_entry_machine ON learning_entry(machine, time_utc)",
