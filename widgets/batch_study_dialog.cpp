@@ -103,7 +103,8 @@ BatchStudyDialog::BatchStudyDialog(QWidget* parent)
       computation_(new QComboBox(this)),
       tools_(new QListWidget(this)),
       materials_(new QListWidget(this)),
-      machine_(new QLabel(this)),
+      machines_(new QListWidget(this)),
+      add_machines_(new QPushButton(tr("Add from project files..."), this)),
       save_(new QPushButton(tr("Save manifest..."), this)),
       run_(new QPushButton(tr("Run here"), this)),
       cancel_(new QPushButton(tr("Cancel run"), this)),
@@ -153,17 +154,19 @@ BatchStudyDialog::BatchStudyDialog(QWidget* parent)
           [this] { speed_range_->setVisible(computation_->currentData().toString() == "lobes"); });
   connect(tools_, &QListWidget::itemChanged, this, &BatchStudyDialog::updateButtons);
   connect(materials_, &QListWidget::itemChanged, this, &BatchStudyDialog::updateButtons);
+  connect(machines_, &QListWidget::itemChanged, this, &BatchStudyDialog::updateButtons);
+  connect(add_machines_, &QPushButton::clicked, this, &BatchStudyDialog::addMachinesRequested);
   resize(1100, 760);
   updateButtons();
 }
 
 QWidget* BatchStudyDialog::buildForm() {
-  auto* group = new QGroupBox(tr("Cases: each checked material x the project's machine and operation"), this);
+  auto* group =
+      new QGroupBox(tr("Cases: each checked material x each checked machine x the project's operation"), this);
   for (const auto& [key, text] : kComputations) computation_->addItem(tr(text), QString::fromLatin1(key));
   computation_->setObjectName("batchComputation");
   tools_->setObjectName("batchTools");
   materials_->setObjectName("batchMaterials");
-  machine_->setObjectName("batchMachine");
   jobs_ = new CheckedSpinBox(group);
   jobs_->setObjectName("batchJobs");
   jobs_->setFieldName(tr("Jobs [cases at once]"));
@@ -172,12 +175,27 @@ QWidget* BatchStudyDialog::buildForm() {
   form->addRow(tr("Computation:"), computation_);
   form->addRow(tr("Tools (rank and Pareto: compared together):"), tools_);
   form->addRow(tr("Materials:"), materials_);
-  form->addRow(tr("Machine:"), machine_);
+  form->addRow(tr("Machines:"), buildMachines());
   form->addRow(tr("Lobes:"), buildSpeedRange());
   form->addRow(tr("Jobs [cases at once]:"), jobs_);
   tools_->setMaximumHeight(110);
   materials_->setMaximumHeight(110);
   return group;
+}
+
+QWidget* BatchStudyDialog::buildMachines() {
+  auto* box = new QWidget(this);
+  machines_->setObjectName("batchMachines");
+  machines_->setMaximumHeight(80);
+  add_machines_->setObjectName("batchAddMachines");
+  add_machines_->setToolTip(
+      tr("Read the machine section of other project files (one per machine of the shop): each checked "
+         "machine is a case, its spindle power, speed, torque and feed limits replacing the project's"));
+  auto* row = new QHBoxLayout(box);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addWidget(machines_, 1);
+  row->addWidget(add_machines_, 0, Qt::AlignTop);
+  return box;
 }
 
 QWidget* BatchStudyDialog::buildSpeedRange() {
@@ -218,7 +236,7 @@ void BatchStudyDialog::setChoices(const BatchStudyChoices& choices) {
   setWindowTitle(tr("Batch study - %1").arg(choices.project_name));
   fillList(tools_, choices.tools, static_cast<int>(choices.tools.size()));
   fillList(materials_, choices.materials, 1);
-  machine_->setText(choices.machine);
+  fillList(machines_, choices.machines, 1);
   jobs_->setRange(1, std::max(1, choices.max_jobs));
   jobs_->setValue(std::max(1, choices.max_jobs));
   updateButtons();
@@ -236,6 +254,7 @@ BatchStudySettings BatchStudyDialog::settings() const {
   s.computation = computation_->currentData().toString();
   s.tools = checkedItems(tools_);
   s.materials = checkedItems(materials_);
+  s.machines = checkedItems(machines_);
   s.from_rpm = from_->value();
   s.to_rpm = to_->value();
   s.step_rpm = step_->value();
@@ -246,8 +265,8 @@ BatchStudySettings BatchStudyDialog::settings() const {
 
 void BatchStudyDialog::setSettings(const BatchStudySettings& s) {
   computation_->setCurrentIndex(std::max(0, computation_->findData(s.computation)));
-  for (QListWidget* list : {tools_, materials_}) {
-    const QStringList& checked = list == tools_ ? s.tools : s.materials;
+  for (QListWidget* list : {tools_, materials_, machines_}) {
+    const QStringList& checked = list == tools_ ? s.tools : list == materials_ ? s.materials : s.machines;
     for (int i = 0; i < list->count(); ++i)
       list->item(i)->setCheckState(checked.contains(list->item(i)->text()) ? Qt::Checked : Qt::Unchecked);
   }
@@ -258,14 +277,25 @@ void BatchStudyDialog::setSettings(const BatchStudySettings& s) {
   jobs_->setValue(s.jobs);
 }
 
-// A study needs a tool and a material; nothing is started twice.
+void BatchStudyDialog::addMachines(const QStringList& labels) {
+  for (const QString& label : labels) {
+    if (!machines_->findItems(label, Qt::MatchExactly).isEmpty()) continue;
+    auto* item = new QListWidgetItem(label, machines_);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(Qt::Checked);
+  }
+  updateButtons();
+}
+
+// A study needs a tool, a material and a machine; nothing is started twice.
 void BatchStudyDialog::updateButtons() {
-  const bool complete = !checkedItems(tools_).isEmpty() && !checkedItems(materials_).isEmpty();
+  const bool complete =
+      !checkedItems(tools_).isEmpty() && !checkedItems(materials_).isEmpty() && !checkedItems(machines_).isEmpty();
   save_->setEnabled(complete && !running_);
   run_->setEnabled(complete && !running_);
   cancel_->setEnabled(running_);
   open_->setEnabled(!running_);
-  const QString incomplete = tr("Check at least one tool and one material.");
+  const QString incomplete = tr("Check at least one tool, one material and one machine.");
   if (!complete && !running_)
     setStatus(incomplete);
   else if (status_->text() == incomplete)

@@ -1,8 +1,9 @@
 #pragma once
 // File > Batch study (docs/shop-scale.md, "In the GUI"): which computation over which of the
-// project's tools and which materials of the library, the lobes' speed range, how many jobs. It
-// emits what the user asks for (save the manifest, run it here, cancel, open results) and shows the
-// host's progress and the merged table; the host writes, runs and merges.
+// project's tools, which materials of the library and which machines (the project's own and those of
+// other project files), the lobes' speed range, how many jobs. It emits what the user asks for (save
+// the manifest, run it here, cancel, open results, add machines) and shows the host's progress and the
+// merged table; the host writes, runs, reads and merges.
 #include <QDialog>
 #include <QStringList>
 #include <vector>
@@ -21,7 +22,7 @@ namespace mx::widgets {
 struct BatchStudyChoices {
   QStringList tools;      // the project's tool ids (all checked at first)
   QStringList materials;  // the project's material first (checked), then the library's
-  QString machine;        // the project's machine, as shown
+  QStringList machines;   // the project's machine (checked), then those added before
   int max_jobs = 1;       // the machine's cores
   QString project_name;   // for the title
 };
@@ -30,6 +31,7 @@ struct BatchStudySettings {
   QString computation = "lobes";                                // lobes, rank, pareto or point
   QStringList tools;                                            // checked, in the list's order
   QStringList materials;                                        // checked, in the list's order
+  QStringList machines;                                         // checked, in the list's order
   double from_rpm = 4000.0, to_rpm = 18000.0, step_rpm = 50.0;  // lobes only
   QString method = "zoa";                                       // lobes only: zoa or sdm
   int jobs = 1;
@@ -42,6 +44,8 @@ class BatchStudyDialog : public QDialog {
   explicit BatchStudyDialog(QWidget* parent = nullptr);
 
   void setChoices(const BatchStudyChoices& choices);
+  // Machines read from other project files, appended checked (labels already listed are skipped).
+  void addMachines(const QStringList& labels);
   BatchStudySettings settings() const;
   void setSettings(const BatchStudySettings& settings);
 
@@ -56,6 +60,8 @@ class BatchStudyDialog : public QDialog {
   QComboBox* computationBox() const { return computation_; }
   QListWidget* toolList() const { return tools_; }
   QListWidget* materialList() const { return materials_; }
+  QListWidget* machineList() const { return machines_; }
+  QPushButton* addMachinesButton() const { return add_machines_; }
   QPushButton* runButton() const { return run_; }
   QPushButton* cancelButton() const { return cancel_; }
   QPushButton* saveButton() const { return save_; }
@@ -71,10 +77,12 @@ class BatchStudyDialog : public QDialog {
   void runRequested(const mx::widgets::BatchStudySettings& settings);
   void cancelRequested();
   void openResultsRequested();
+  void addMachinesRequested();
 
  private:
   QWidget* buildForm();
   QWidget* buildSpeedRange();
+  QWidget* buildMachines();
   void updateButtons();
   static QStringList checkedItems(const QListWidget* list);
   static void fillList(QListWidget* list, const QStringList& items, int checked_first);
@@ -82,7 +90,8 @@ class BatchStudyDialog : public QDialog {
   QComboBox* computation_;
   QListWidget* tools_;
   QListWidget* materials_;
-  QLabel* machine_;
+  QListWidget* machines_;
+  QPushButton* add_machines_;
   QWidget* speed_range_ = nullptr;
   CheckedDoubleSpinBox* from_ = nullptr;
   CheckedDoubleSpinBox* to_ = nullptr;

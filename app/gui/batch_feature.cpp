@@ -9,10 +9,13 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QThread>
+#include <algorithm>
 
 #include "batch_study_dialog.h"
+#include "display_units.h"
 #include "services/batch_merge.h"
 #include "services/material_library.h"
+#include "services/service_errors.h"
 
 namespace mx::gui {
 
@@ -84,15 +87,15 @@ widgets::BatchStudyDialog* BatchFeature::openDialog() {
     connect(dialog_, &widgets::BatchStudyDialog::runRequested, this, &BatchFeature::askToRun);
     connect(dialog_, &widgets::BatchStudyDialog::cancelRequested, this, &BatchFeature::cancelRun);
     connect(dialog_, &widgets::BatchStudyDialog::openResultsRequested, this, &BatchFeature::askForResults);
+    connect(dialog_, &widgets::BatchStudyDialog::addMachinesRequested, this, &BatchFeature::askForMachines);
   }
   if (!running()) {
     const app::Project& p = context_.project();
     widgets::BatchStudyChoices choices;
     for (const app::ToolSpec& t : p.tools) choices.tools << t.id;
     choices.materials = materialNames(p, app::bundledMaterialLibrary());
-    choices.machine = p.machine && p.machine->name
-                          ? *p.machine->name
-                          : tr("the project's machine (no machine.name: its records name none)");
+    listProjectMachine();
+    for (const ListedMachine& m : machines_) choices.machines << m.label;
     choices.max_jobs = std::max(1, QThread::idealThreadCount());
     choices.project_name = context_.document().filePath().isEmpty()
                                ? tr("unsaved project")
@@ -111,6 +114,7 @@ app::BatchStudyRequest BatchFeature::requestOf(const widgets::BatchStudySettings
   const std::vector<app::MaterialEntry> library = app::bundledMaterialLibrary();  // parsed once
   for (const QString& name : s.materials)
     if (auto m = materialNamed(context_.project(), library, name)) r.materials.push_back(*m);
+  r.machines = checkedMachines(s.machines);
   if (s.computation == "lobes")
     r.options = QJsonObject{{"from", s.from_rpm}, {"to", s.to_rpm}, {"step", s.step_rpm}, {"method", s.method}};
   return r;
@@ -257,6 +261,79 @@ void BatchFeature::askToRun(const widgets::BatchStudySettings& settings) {
                                                     manifest_path_.isEmpty() ? "batch-study.json" : manifest_path_,
                                                     tr("Batch manifest (*.json)"));
   if (!path.isEmpty()) runStudy(settings, path);
+}
+
+// The machine sections of the checked labels; none when only the project's own is checked, so that
+// each case keeps the project's machine.
+std::vector<app::MachineSpec> BatchFeature::checkedMachines(const QStringList& labels) const {
+  std::vector<app::MachineSpec> machines;
+  if (labels.size() == 1 && !machines_.empty() && labels.front() == machines_.front().label) return machines;
+  for (const QString& label : labels) {
+    const auto listed =
+        std::find_if(machines_.begin(), machines_.end(), [&label](const ListedMachine& m) { return m.label == label; });
+    if (listed == machines_.end()) throw app::InputError(QString("batch study: machine '%1' is not listed").arg(label));
+    if (!listed->machine)
+      throw app::InputError(
+          "batch study: the project has no machine section, so its own machine cannot be a case beside other "
+          "machines; uncheck it or give the project a machine");
+    machines.push_back(*listed->machine);
+  }
+  return machines;
+}
+
+// The project's own machine as the first entry of the list; the machines added from files stay.
+void BatchFeature::listProjectMachine() {
+  const app::Project& p = context_.project();
+  ListedMachine own{p.machine ? machineLabel(*p.machine, tr("this project"))
+                              : tr("this project's (no machine section: no power limit)"),
+                    p.machine};
+  if (machines_.empty())
+    machines_.push_back(std::move(own));
+  else
+    machines_.front() = std::move(own);
+}
+
+// "DMU-50: 15.0 kW, max 18000 rpm, 120 N·m (cell-3.mxproj)": what a machinist tells machines apart by.
+QString BatchFeature::machineLabel(const app::MachineSpec& m, const QString& origin) const {
+  const widgets::ShopUnits& units = widgets::DisplayUnits::of(context_.units());
+  QStringList limits{units.format(widgets::Quantity::Power, m.spindle_power_W)};
+  if (m.max_spindle_rpm) limits << tr("max %1 rpm").arg(*m.max_spindle_rpm, 0, 'f', 0);
+  if (m.max_torque_Nm) limits << tr("%1 N\u00b7m").arg(*m.max_torque_Nm, 0, 'g', 4);
+  return tr("%1: %2 (%3)").arg(m.name.value_or(tr("unnamed machine")), limits.join(", "), origin);
+}
+
+void BatchFeature::addMachinesFrom(const QStringList& files) {
+  if (dialog_) dialog_->setStatus(tr("Reading the machines of %1 project file(s)...").arg(files.size()));
+  channel_.start(context_.enginePool(), [this, files](const EngineReply& reply) {
+    QStringList problems;
+    const std::vector<app::MachineOfProject> read = app::machinesOfProjects(files, &problems);
+    reply([this, read, problems] {
+      QStringList added;
+      for (const app::MachineOfProject& m : read) {
+        const QString label = machineLabel(m.machine, QFileInfo(m.file).fileName());
+        const bool listed = std::any_of(machines_.begin(), machines_.end(),
+                                        [&label](const ListedMachine& l) { return l.label == label; });
+        if (listed) continue;
+        machines_.push_back({label, m.machine});
+        added << label;
+      }
+      QString text = tr("%n machine(s) added.", nullptr, static_cast<int>(added.size()));
+      if (!problems.isEmpty()) text += ' ' + tr("Not added: %1").arg(problems.join("; "));
+      if (dialog_) {
+        dialog_->addMachines(added);
+        dialog_->setStatus(text);
+      }
+      if (!problems.isEmpty()) emit statusMessage(text, 10000);
+      emit machinesAdded(static_cast<int>(added.size()));
+    });
+  });
+}
+
+void BatchFeature::askForMachines() {
+  const QStringList files = QFileDialog::getOpenFileNames(dialog_, tr("Machines of other project files"),
+                                                          QFileInfo(context_.document().filePath()).absolutePath(),
+                                                          tr("MillExpert projects (*.mxproj)"));
+  if (!files.isEmpty()) addMachinesFrom(files);
 }
 
 void BatchFeature::askForResults() {

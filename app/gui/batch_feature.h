@@ -1,6 +1,7 @@
 #pragma once
 // File > Batch study (docs/shop-scale.md, "In the GUI"): writes a manifest from the open project, its
-// tools and the material library (and the project's snapshot beside it), runs it here as a
+// tools, the material library and the machines of other project files (read on the engine pool; the
+// project's snapshot beside the manifest), runs it here as a
 // `millexpert-cli batch` child process (never the GUI thread; progress from the results file, Cancel
 // kills it and a new run resumes by case hash), and shows a merged results file as a table (the merge
 // runs on the engine pool).
@@ -45,10 +46,13 @@ class BatchFeature : public WindowFeature {
   bool running() const { return process_ != nullptr; }
   // Merges the results files on the engine pool and shows the table.
   void showResults(const QStringList& files);
+  // Reads the machine sections of project files on the engine pool and lists them in the dialog.
+  void addMachinesFrom(const QStringList& files);
 
  signals:
   void runFinished(int exit_code, bool cancelled);
   void resultsShown(int rows);
+  void machinesAdded(int count);  // how many new machines the files gave
 
  private:
   app::BatchStudyRequest requestOf(const widgets::BatchStudySettings& settings) const;
@@ -57,6 +61,10 @@ class BatchFeature : public WindowFeature {
   void askToSave(const widgets::BatchStudySettings& settings);
   void askToRun(const widgets::BatchStudySettings& settings);
   void askForResults();
+  void askForMachines();
+  QString machineLabel(const app::MachineSpec& machine, const QString& origin) const;
+  std::vector<app::MachineSpec> checkedMachines(const QStringList& labels) const;
+  void listProjectMachine();
 
   FeatureContext& context_;
   QWidget* window_;
@@ -71,6 +79,13 @@ class BatchFeature : public WindowFeature {
   qint64 done_ = 0, total_ = 0;
   bool cancelled_ = false;
   quint64 merge_generation_ = 0;
+  // What the dialog's machine list shows: the project's own first (no section: nullopt), then the
+  // machines read from other project files.
+  struct ListedMachine {
+    QString label;
+    std::optional<app::MachineSpec> machine;
+  };
+  std::vector<ListedMachine> machines_;
 };
 
 }  // namespace mx::gui

@@ -7,6 +7,7 @@
 #include "document/output_file.h"
 #include "services/batch_cases.h"
 #include "services/batch_manifest_json.h"
+#include "services/batch_sections.h"
 #include "services/service_errors.h"
 
 namespace mx::app {
@@ -23,6 +24,12 @@ QJsonObject materialSection(const Project& project, const MaterialSpec& material
   Project with = project;
   with.material = material;
   return projectToJson(with).value("material").toObject();
+}
+
+QJsonObject machineSection(const Project& project, const MachineSpec& machine) {
+  Project with = project;
+  with.machine = machine;
+  return projectToJson(with).value("machine").toObject();
 }
 
 void checkRequest(const Project& project, const BatchStudyRequest& request) {
@@ -49,15 +56,33 @@ BatchStudyFiles writeBatchStudy(const Project& project, const BatchStudyRequest&
   manifest.projects = {QFileInfo(files.project).fileName()};
   manifest.tools = request.tools;
   for (const MaterialSpec& m : request.materials) manifest.materials.push_back(materialSection(project, m));
+  for (const MachineSpec& m : request.machines) manifest.machines.push_back(machineSection(project, m));
   manifest.options = request.options;
   // Checked as batch reads it, before anything is written.
   const BatchManifest checked = batchManifestFromJson(batchManifestJson(manifest), manifest.folder);
+  readBatchSections(checked);  // each machine, material and operation by the project file's rules
   files.cases = static_cast<qint64>(expandBatchCases(checked, {project}).size());
   saveProject(project, files.project);
   const QByteArray text = QJsonDocument(batchManifestJson(manifest)).toJson(QJsonDocument::Indented);
   if (const QString error = writeFileAtomically(manifest_path, text); !error.isEmpty())
     throw InputError(QString("%1: cannot write the manifest: %2").arg(manifest_path, error));
   return files;
+}
+
+std::vector<MachineOfProject> machinesOfProjects(const QStringList& files, QStringList* problems) {
+  std::vector<MachineOfProject> machines;
+  for (const QString& file : files) {
+    try {
+      const Project p = loadProject(file);
+      if (p.machine)
+        machines.push_back({file, *p.machine});
+      else
+        problems->append(QString("%1: no machine section").arg(file));
+    } catch (const std::exception& e) {
+      problems->append(QString::fromStdString(e.what()));
+    }
+  }
+  return machines;
 }
 
 }  // namespace mx::app

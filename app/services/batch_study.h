@@ -15,6 +15,7 @@ struct BatchStudyRequest {
   QString computation;                  // lobes, rank, pareto or point
   QStringList tools;                    // of the project; at least one
   std::vector<MaterialSpec> materials;  // each a case; at least one
+  std::vector<MachineSpec> machines;    // each a case; empty: the project's own machine only
   QJsonObject options;                  // the single command's flags by name
 };
 
@@ -25,10 +26,20 @@ struct BatchStudyFiles {
 };
 
 // Writes both files atomically. Throws InputError naming what is wrong (no tool, a tool the project
-// lacks, no material, an unwritable folder) before anything is written.
+// lacks, no material, an invalid machine, an unwritable folder) before anything is written.
 BatchStudyFiles writeBatchStudy(const Project& project, const BatchStudyRequest& request, const QString& manifest_path);
 
 // <manifest stem>.jsonl beside the manifest: where a study run from the GUI appends its results.
 QString batchStudyResultsPath(const QString& manifest_path);
+
+// A machine another project file describes, for the study's list of machines.
+struct MachineOfProject {
+  QString file;  // the project file it comes from
+  MachineSpec machine;
+};
+
+// The machine section of each project file, in order. A file that cannot be read, or has no machine
+// section, adds its message to `problems` ("cell-3.mxproj: no machine section") instead.
+std::vector<MachineOfProject> machinesOfProjects(const QStringList& files, QStringList* problems);
 
 }  // namespace mx::app

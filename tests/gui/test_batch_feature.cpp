@@ -2,6 +2,8 @@
 // study written from the open project (manifest + project snapshot, read back as batch reads it, with
 // the case count), run here with the progress bar reaching the case count and the merged table of one
 // row per tool and material, and a cancelled run that a second run resumes: every case present once.
+// Machines read from other project files (on the engine pool) join the study as cases, each a section
+// of the manifest's machines; a file without one is named in the status.
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
@@ -91,6 +93,72 @@ class TestBatchFeature : public QObject {
     QVERIFY(!batch->saveStudy(none, dir_.filePath("none.json")));
     QVERIFY(!QFile::exists(dir_.filePath("none.json")));
     QVERIFY(dialog->statusLabel()->text().contains("no tool"));
+  }
+
+  void machinesOfOtherProjects() {
+    gui::MainWindow window;
+    prepare(window);
+    gui::BatchFeature* batch = test::batchOf(window);
+    app::Project cell = app::loadProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj"));
+    cell.machine = app::MachineSpec{};
+    cell.machine->name = "Mazak VCN";
+    cell.machine->spindle_power_W = 22000.0;
+    cell.machine->max_spindle_rpm = 10000.0;
+    const QString cell_file = dir_.filePath("cell-2.mxproj");
+    app::saveProject(cell, cell_file);
+    cell.machine.reset();
+    const QString bare_file = dir_.filePath("bare.mxproj");
+    app::saveProject(cell, bare_file);
+
+    widgets::BatchStudyDialog* dialog = batch->openDialog();
+    QCOMPARE(dialog->machineList()->count(), 1);
+    const QString own = dialog->machineList()->item(0)->text();
+    QCOMPARE(own, QString("unnamed machine: 745.3 W, max 12000 rpm (this project)"));
+    QSignalSpy added(batch, &gui::BatchFeature::machinesAdded);
+    batch->addMachinesFrom({cell_file, bare_file});
+    QVERIFY(added.wait(30000));
+    QCOMPARE(added.at(0).at(0).toInt(), 1);
+    QCOMPARE(dialog->machineList()->count(), 2);
+    const QString mazak = dialog->machineList()->item(1)->text();
+    QCOMPARE(mazak, QString("Mazak VCN: 22000.0 W, max 10000 rpm (cell-2.mxproj)"));
+    QVERIFY2(dialog->statusLabel()->text().contains(bare_file + ": no machine section"),
+             qPrintable(dialog->statusLabel()->text()));
+    batch->addMachinesFrom({cell_file});  // listed once
+    QVERIFY(added.wait(30000));
+    QCOMPARE(added.at(1).at(0).toInt(), 0);
+    QCOMPARE(dialog->machineList()->count(), 2);
+
+    widgets::BatchStudySettings both = lobesStudy({"Aluminium"}, 100);
+    both.machines = {own, mazak};
+    const QString manifest = dir_.filePath("machines.json");
+    QVERIFY(batch->saveStudy(both, manifest));
+    const app::BatchManifest m = app::readBatchManifest(manifest);
+    QCOMPARE(m.machines.size(), std::size_t{2});
+    QCOMPARE(m.machines[0]["spindle_power_W"].toDouble(), 745.3);
+    QVERIFY(!m.machines[0].contains("name"));
+    QCOMPARE(m.machines[1]["name"].toString(), QString("Mazak VCN"));
+    QCOMPARE(m.machines[1]["spindle_power_W"].toDouble(), 22000.0);
+    QCOMPARE(m.machines[1]["max_spindle_rpm"].toDouble(), 10000.0);
+    QVERIFY2(dialog->statusLabel()->text().contains("(4 cases)"), qPrintable(dialog->statusLabel()->text()));
+
+    widgets::BatchStudySettings own_only = both;
+    own_only.machines = {own};
+    QVERIFY(batch->saveStudy(own_only, manifest));
+    QVERIFY(app::readBatchManifest(manifest).machines.empty());  // each case keeps the project's
+    QVERIFY2(dialog->statusLabel()->text().contains("(2 cases)"), qPrintable(dialog->statusLabel()->text()));
+
+    // A project without a machine section: its own "machine" cannot stand beside another one.
+    QVERIFY(window.openProject(bare_file));
+    dialog = batch->openDialog();
+    QCOMPARE(dialog->machineList()->item(0)->text(), QString("this project's (no machine section: no power limit)"));
+    QCOMPARE(dialog->machineList()->item(1)->text(), mazak);  // the machines added stay listed
+    both.machines = {dialog->machineList()->item(0)->text(), mazak};
+    QVERIFY(!batch->saveStudy(both, dir_.filePath("bare-study.json")));
+    QVERIFY(!QFile::exists(dir_.filePath("bare-study.json")));
+    QVERIFY2(dialog->statusLabel()->text().contains("the project has no machine section"),
+             qPrintable(dialog->statusLabel()->text()));
+    both.machines = {mazak};
+    QVERIFY(batch->saveStudy(both, dir_.filePath("bare-study.json")));
   }
 
   void runsHereAndShowsTheMergedTable() {

@@ -1,5 +1,6 @@
-// File > Batch study's dialog (widgets/batch_study_dialog.h): the choices fill the lists (every tool and
-// the project's material checked), the settings round-trip, the speed range shows for lobes only, the
+// File > Batch study's dialog (widgets/batch_study_dialog.h): the choices fill the lists (every tool,
+// the project's material and its machine checked), machines added from files listed once and checked,
+// the settings round-trip, the speed range shows for lobes only, the
 // buttons follow what is checked and whether a run is going, the domain signals carry the settings,
 // and the merged table shows its columns with units.
 #include <QComboBox>
@@ -21,7 +22,7 @@ mx::widgets::BatchStudyChoices choices() {
   mx::widgets::BatchStudyChoices c;
   c.tools = {"R1", "R2", "R3"};
   c.materials = {"Aluminium", "Steel C45", "Ti6Al4V"};
-  c.machine = "DMU-50";
+  c.machines = {"DMU-50: 15 kW (this project)", "Mazak: 22 kW (cell-2.mxproj)"};
   c.max_jobs = 2;
   c.project_name = "shop.mxproj";
   return c;
@@ -41,7 +42,19 @@ class TestBatchStudyDialog : public QObject {
     QCOMPARE(s.jobs, 2);
     QCOMPARE(s.computation, QString("lobes"));
     QCOMPARE(d.windowTitle(), QString("Batch study - shop.mxproj"));
-    QCOMPARE(d.findChild<QLabel*>("batchMachine")->text(), QString("DMU-50"));
+    QCOMPARE(s.machines, QStringList{"DMU-50: 15 kW (this project)"});  // the project's own only
+    QCOMPARE(d.machineList()->count(), 2);
+  }
+
+  void addedMachinesAreListedOnceAndChecked() {
+    BatchStudyDialog d;
+    d.setChoices(choices());
+    QSignalSpy asked(&d, &BatchStudyDialog::addMachinesRequested);
+    d.addMachinesButton()->click();
+    QCOMPARE(asked.size(), 1);
+    d.addMachines({"Hermle: 30 kW (cell-4.mxproj)", "Mazak: 22 kW (cell-2.mxproj)"});
+    QCOMPARE(d.machineList()->count(), 3);  // Mazak was listed already
+    QCOMPARE(d.settings().machines, (QStringList{"DMU-50: 15 kW (this project)", "Hermle: 30 kW (cell-4.mxproj)"}));
   }
 
   void settingsRoundTrip() {
@@ -51,6 +64,7 @@ class TestBatchStudyDialog : public QObject {
     s.computation = "rank";
     s.tools = {"R1", "R3"};
     s.materials = {"Steel C45", "Ti6Al4V"};
+    s.machines = {"Mazak: 22 kW (cell-2.mxproj)"};
     s.from_rpm = 2000;
     s.to_rpm = 9000;
     s.step_rpm = 25;
@@ -85,6 +99,11 @@ class TestBatchStudyDialog : public QObject {
     d.materialList()->item(0)->setCheckState(Qt::Unchecked);
     QVERIFY(!d.runButton()->isEnabled());
     d.materialList()->item(2)->setCheckState(Qt::Checked);
+    QVERIFY(d.runButton()->isEnabled());
+    d.machineList()->item(0)->setCheckState(Qt::Unchecked);
+    QVERIFY(!d.runButton()->isEnabled());
+    QVERIFY(d.statusLabel()->text().contains("one machine"));
+    d.machineList()->item(1)->setCheckState(Qt::Checked);
     d.setRunning(true);
     QVERIFY(!d.runButton()->isEnabled() && !d.saveButton()->isEnabled() && d.cancelButton()->isEnabled());
     d.setRunning(false);
