@@ -44,9 +44,9 @@ class TestLearningLocation : public QObject {
                              << "h" << 5432 << "l"
                              << "sslmode=require;connect_timeout=3"
                              << "postgresql://u@h:5432/l";
-    QTest::newRow("path with a space") << "postgresql://u@h/l?sslrootcert=/home/Jane%20Doe/ca.crt" << true << "u"
+    QTest::newRow("path with a space") << "postgresql://u@h/l?sslrootcert=/shop/Jane%20Doe/ca.crt" << true << "u"
                                        << "h" << 5432 << "l"
-                                       << "sslrootcert='/home/Jane Doe/ca.crt';connect_timeout=10"
+                                       << "sslrootcert='/shop/Jane Doe/ca.crt';connect_timeout=10"
                                        << "postgresql://u@h:5432/l";
     QTest::newRow("quote and backslash") << R"(postgresql://u@h/l?sslkey=/k/it's%5Cx)" << true << "u"
                                          << "h" << 5432 << "l"
