@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Deeper checks that do not fit in the test command's 30 minutes; run before an issue is closed.
+#   unity   each test program's files compiled as ONE unit (syntax only, the ci build's flags;
+#           packaging/check_unity_folders.py): two test files of a folder that define the same
+#           file-scope name would break the test command's unity batches once they share one;
 #   asan    the whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer + LeakSanitizer
 #           (preset asan, suppressions in packaging/sanitizers/lsan.supp), with the same fresh TMPDIR
 #           and HOME as the test command;
@@ -15,7 +18,7 @@
 #           after the other, each for MX_FUZZ_SECONDS (120 s by default) from its seed corpus in a
 #           scratch corpus folder, with -timeout=5 -rss_limit_mb=1024: a crash, leak, timeout or
 #           out-of-memory fails it, and the input is kept in build/fuzz/findings/.
-# MX_CHECKS picks and orders the checks ("asan tsan monkey tidy fuzz" by default, all of them), so
+# MX_CHECKS picks and orders the checks ("unity asan tsan monkey tidy fuzz" by default, all of them), so
 # that a failed check can be rerun alone. Exits non-zero at the first check that fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,6 +32,12 @@ trap 'rm -rf "$run_tmp" "$run_home"' EXIT
 in_fresh_home() {
   env -u XDG_CONFIG_HOME -u XDG_DATA_HOME -u XDG_STATE_HOME -u XDG_CACHE_HOME -u XDG_RUNTIME_DIR \
     TMPDIR="$run_tmp" HOME="$run_home" "$@"
+}
+
+check_unity() {
+  cmake --preset ci -G Ninja
+  cmake --build --preset ci --parallel "$(nproc)"
+  python3 packaging/check_unity_folders.py build/ci
 }
 
 check_asan() {
@@ -92,10 +101,10 @@ check_fuzz() {
   done <"$fuzz_dir/fuzz_targets.txt"
 }
 
-for check in ${MX_CHECKS:-asan tsan monkey tidy fuzz}; do
+for check in ${MX_CHECKS:-unity asan tsan monkey tidy fuzz}; do
   case "$check" in
-    asan | tsan | monkey | tidy | fuzz) ;;
-    *) echo "run-checks: unknown check '$check' in MX_CHECKS; allowed: asan tsan monkey tidy fuzz"; exit 2 ;;
+    unity | asan | tsan | monkey | tidy | fuzz) ;;
+    *) echo "run-checks: unknown check '$check' in MX_CHECKS; allowed: unity asan tsan monkey tidy fuzz"; exit 2 ;;
   esac
   echo "run-checks: $check"
   started=$SECONDS
@@ -110,4 +119,4 @@ for check in ${MX_CHECKS:-asan tsan monkey tidy fuzz}; do
   [ "$status" -eq 0 ] || { echo "run-checks: $check FAILED after $((SECONDS - started)) s"; exit 1; }
   echo "run-checks: $check passed in $((SECONDS - started)) s"
 done
-echo "run-checks: all checks passed (${MX_CHECKS:-asan tsan monkey tidy fuzz})"
+echo "run-checks: all checks passed (${MX_CHECKS:-unity asan tsan monkey tidy fuzz})"

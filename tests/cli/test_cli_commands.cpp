@@ -17,9 +17,7 @@ using mx::test::kRubio;
 const QString kInsperger = QStringLiteral(MX_PROJECTS_DIR "/benchmark-insperger-1dof.mxproj");
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) {
-  return mx::test::runCli(args);
-}
+using mx::test::cli;
 }  // namespace
 
 class TestCliCommands : public QObject {

@@ -12,11 +12,12 @@
 
 #include "support/cli_runner.h"
 #include "support/json_mutation.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 namespace {
 const QString kAdaptiveControl = QStringLiteral(MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj");
-const QString kParetoCase = QStringLiteral(MX_PROJECTS_DIR "/rubio-pareto-case.mxproj");
+using mx::test::kParetoCase;
 }  // namespace
 
 class TestCliControl : public QObject {

@@ -18,9 +18,7 @@ namespace {
 using mx::test::kRubio;
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) {
-  return mx::test::runCli(args);
-}
+using mx::test::cli;
 
 QString point(const QString& tool, const QString& time, const QString& source = "operator", double mrr = 1.5) {
   return QString(R"({"tool":"%1","time":"%2","source":"%3","weights":[0.25,0.25,0.25,0.25],)"

@@ -30,12 +30,7 @@ QString unchangedPart(QString line) {
   return line.simplified();
 }
 
-QString writeText(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  QFile f(dir.filePath(name));
-  f.open(QIODevice::WriteOnly);
-  f.write(text);
-  return f.fileName();
-}
+using mx::test::writeText;
 }  // namespace
 
 class TestCommandOverride : public QObject {

@@ -16,9 +16,7 @@ namespace {
 using mx::test::kRubio;
 
 using Run = mx::test::CliRun;
-Run cli(const QStringList& args) {
-  return mx::test::runCli(args);
-}
+using mx::test::cli;
 
 // The Rubio project after `edit` of its root object, written to dir as `name`.
 template <class Edit>

@@ -12,10 +12,10 @@ using namespace mx;
 
 namespace {
 
-const double kT = 60.0 / 715.0;
+const double kPeriod715 = 60.0 / 715.0;
 
 DiscreteTransferFunction model(double beta) {
-  return frohDiscretize(referenceModel(0.75, 2.5 / (4.0 * kT)), kT, beta);
+  return frohDiscretize(referenceModel(0.75, 2.5 / (4.0 * kPeriod715)), kPeriod715, beta);
 }
 
 // closed loop B T / (A R + B S) evaluated at z
@@ -46,7 +46,8 @@ class TestPolePlacement : public QObject {
     QFETCH(double, beta);
     QFETCH(double, depth_mm);
     CuttingProcess process;
-    const DiscreteTransferFunction h = frohDiscretize(makeForcePlant(process, depth_mm * 1e-3).stateSpace(), kT, beta);
+    const DiscreteTransferFunction h =
+        frohDiscretize(makeForcePlant(process, depth_mm * 1e-3).stateSpace(), kPeriod715, beta);
     const DiscreteTransferFunction m = model(beta);
     const RstDesign d = designModelFollowing(h.den, h.num, m.den, m.num);
     QVERIFY2(d.ok, d.message.c_str());

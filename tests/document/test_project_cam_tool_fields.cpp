@@ -40,7 +40,7 @@ QJsonObject projectWith(const QJsonObject& tool) {
   return QJsonObject{{"format", "millexpert-project"}, {"version", 1}, {"name", "cam"}, {"tools", QJsonArray{tool}}};
 }
 
-QString errorOf(const QJsonObject& tool) {
+QString camToolErrorOf(const QJsonObject& tool) {
   try {
     projectFromJson(projectWith(tool));
   } catch (const ProjectError& e) {
@@ -138,7 +138,7 @@ class TestProjectCamToolFields : public QObject {
     QFETCH(QString, message);
     QJsonObject tool = camTool();
     tool.insert(key, value);
-    const QString error = errorOf(tool);
+    const QString error = camToolErrorOf(tool);
     QVERIFY2(error.contains(message), qPrintable(error));
   }
 
@@ -173,7 +173,7 @@ class TestProjectCamToolFields : public QObject {
     preset.insert(key, value);
     presets[0] = preset;
     tool.insert("cutting_data", presets);
-    const QString error = errorOf(tool);
+    const QString error = camToolErrorOf(tool);
     QVERIFY2(error.startsWith(message), qPrintable(error));
   }
 
@@ -182,10 +182,10 @@ class TestProjectCamToolFields : public QObject {
     QJsonArray presets;
     for (int i = 0; i < 101; ++i) presets.append(QJsonObject{{"name", QString("p%1").arg(i)}});
     tool.insert("cutting_data", presets);
-    QVERIFY2(errorOf(tool).startsWith("tools[0].cutting_data"), qPrintable(errorOf(tool)));
+    QVERIFY2(camToolErrorOf(tool).startsWith("tools[0].cutting_data"), qPrintable(camToolErrorOf(tool)));
     presets.removeLast();
     tool.insert("cutting_data", presets);
-    QCOMPARE(errorOf(tool), QString());
+    QCOMPARE(camToolErrorOf(tool), QString());
   }
 };
 

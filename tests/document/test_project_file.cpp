@@ -25,7 +25,7 @@ namespace {
 
 // The ProjectError message of fn(), or a null string when nothing is thrown.
 template <typename F>
-QString errorOf(F fn) {
+QString projectFileErrorOf(F fn) {
   return mx::test::messageOf<ProjectError>(fn);
 }
 
@@ -200,19 +200,19 @@ class TestProjectFile : public QObject {
 
   void setupForErrors() {
     const Project p = loadProject(fixturePath("valid-full.mxproj"));
-    QCOMPARE(errorOf([&] { p.setupFor("X9"); }), QString("tool 'X9' not found; available: T1, T2"));
+    QCOMPARE(projectFileErrorOf([&] { p.setupFor("X9"); }), QString("tool 'X9' not found; available: T1, T2"));
 
     Project noMaterial = p;
     noMaterial.material.reset();
     QCOMPARE(noMaterial.setupFor("T2").tangential_coefficient_pa, 8e8);  // T2 overrides Kt and Kr
-    expectContains(errorOf([&] { noMaterial.setupFor("T1"); }),
+    expectContains(projectFileErrorOf([&] { noMaterial.setupFor("T1"); }),
                    {"section 'material' is missing (needed by tool 'T1'", "Kt_N_mm2 and Kr"});
     noMaterial.tools[1].Kr.reset();
-    expectContains(errorOf([&] { noMaterial.setupFor("T2"); }), {"section 'material' is missing", "for Kr"});
+    expectContains(projectFileErrorOf([&] { noMaterial.setupFor("T2"); }), {"section 'material' is missing", "for Kr"});
 
     Project noOperation = p;
     noOperation.operation.reset();
-    expectContains(errorOf([&] { noOperation.setupFor("T2"); }),
+    expectContains(projectFileErrorOf([&] { noOperation.setupFor("T2"); }),
                    {"section 'operation' is missing (needed by tool 'T2'"});
 
     Project bare = p;
@@ -220,8 +220,8 @@ class TestProjectFile : public QObject {
     bare.expert.reset();
     QCOMPARE(p.requireMachine().spindle_power_W, 5000.0);
     QCOMPARE(p.requireExpert().alpha, 0.9);
-    expectContains(errorOf([&] { bare.requireMachine(); }), {"section 'machine' is missing (needed"});
-    expectContains(errorOf([&] { bare.requireExpert(); }), {"section 'expert' is missing (needed"});
+    expectContains(projectFileErrorOf([&] { bare.requireMachine(); }), {"section 'machine' is missing (needed"});
+    expectContains(projectFileErrorOf([&] { bare.requireExpert(); }), {"section 'expert' is missing (needed"});
   }
 
   void optionalSectionsMayBeAbsent() {
@@ -229,7 +229,7 @@ class TestProjectFile : public QObject {
     const Project p = projectFromJson(root);
     QVERIFY(!p.machine && !p.material && !p.operation && !p.expert);
     QVERIFY(p.tools.empty());
-    QCOMPARE(errorOf([&] { p.setupFor("A"); }), QString("tool 'A' not found; available: (none)"));
+    QCOMPARE(projectFileErrorOf([&] { p.setupFor("A"); }), QString("tool 'A' not found; available: (none)"));
     QCOMPARE(projectToJson(p), root);  // no sections appear on save
   }
 
@@ -548,7 +548,8 @@ class TestProjectFile : public QObject {
     QCOMPARE(projectFromJson(project).tools.size(), std::size_t(100));
     tools.append(tools.at(0));
     project["tools"] = tools;
-    QCOMPARE(errorOf([&] { projectFromJson(project); }), QString("tools has 101 tools: at most 100 are allowed"));
+    QCOMPARE(projectFileErrorOf([&] { projectFromJson(project); }),
+             QString("tools has 101 tools: at most 100 are allowed"));
   }
 
   void validationRules() {
@@ -556,7 +557,7 @@ class TestProjectFile : public QObject {
     QFETCH(QStringList, expected);
     const QJsonObject base = readJson(fixturePath("valid-full.mxproj"));
     projectFromJson(base);  // the base itself is valid
-    expectContains(errorOf([&] { projectFromJson(mutated(base, mutations)); }), expected);
+    expectContains(projectFileErrorOf([&] { projectFromJson(mutated(base, mutations)); }), expected);
   }
 
   void validRelaxations() {
@@ -648,12 +649,12 @@ class TestProjectFile : public QObject {
 
   void loadErrorsNameTheFile() {
     const QString missing = fixturePath("does-not-exist.mxproj");
-    expectContains(errorOf([&] { loadProject(missing); }), {missing, "not found"});
-    expectContains(errorOf([&] { loadProject(fixturePath("invalid-nan.mxproj")); }),
+    expectContains(projectFileErrorOf([&] { loadProject(missing); }), {missing, "not found"});
+    expectContains(projectFileErrorOf([&] { loadProject(fixturePath("invalid-nan.mxproj")); }),
                    {"invalid-nan.mxproj: invalid JSON at line 5, column 50", "illegal number"});
-    expectContains(errorOf([&] { loadProject(fixturePath("invalid-overflow.mxproj")); }),
+    expectContains(projectFileErrorOf([&] { loadProject(fixturePath("invalid-overflow.mxproj")); }),
                    {"invalid-overflow.mxproj: invalid JSON at line 5", "illegal number"});
-    expectContains(errorOf([&] { loadProject(fixturePath("invalid-syntax.mxproj")); }),
+    expectContains(projectFileErrorOf([&] { loadProject(fixturePath("invalid-syntax.mxproj")); }),
                    {"invalid-syntax.mxproj: invalid JSON at line 5, column 2"});
 
     QTemporaryDir dir;
@@ -662,11 +663,12 @@ class TestProjectFile : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(QJsonDocument(mutated(readJson(fixturePath("valid-full.mxproj")), {"tools/0/teeth=0"})).toJson());
     f.close();
-    QCOMPARE(errorOf([&] { loadProject(bad); }), bad + ": tools[0].teeth = 0: must be an integer in [1, 100]");
+    QCOMPARE(projectFileErrorOf([&] { loadProject(bad); }),
+             bad + ": tools[0].teeth = 0: must be an integer in [1, 100]");
     QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
     f.write("[1, 2]");
     f.close();
-    expectContains(errorOf([&] { loadProject(bad); }), {bad, "top level must be a JSON object"});
+    expectContains(projectFileErrorOf([&] { loadProject(bad); }), {bad, "top level must be a JSON object"});
   }
 
   // A tool library: a bare array or an object with "tools"; errors as for a project.
@@ -690,7 +692,7 @@ class TestProjectFile : public QObject {
     QFETCH(QByteArray, json);
     QFETCH(QString, error);
     std::vector<ToolSpec> tools;
-    QCOMPARE(errorOf([&] { tools = toolsFromJson(json); }), error);
+    QCOMPARE(projectFileErrorOf([&] { tools = toolsFromJson(json); }), error);
     if (!error.isEmpty()) return;
     QCOMPARE(tools.size(), std::size_t{1});
     QCOMPARE(tools[0].diameter_mm, 16.0);
@@ -919,7 +921,7 @@ class TestProjectFile : public QObject {
     saveProject(p, out);  // overwrite in place
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"p.mxproj"});
     const QString impossible = dir.filePath("no-such-dir/p.mxproj");
-    expectContains(errorOf([&] { saveProject(p, impossible); }), {impossible, "cannot write project file"});
+    expectContains(projectFileErrorOf([&] { saveProject(p, impossible); }), {impossible, "cannot write project file"});
   }
 };
 

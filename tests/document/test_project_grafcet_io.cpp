@@ -41,7 +41,7 @@ GrafcetChart loadChart(const QJsonValue& v, const QString& path, const std::opti
   return chart;
 }
 
-QString errorOf(const QJsonValue& v, const std::optional<std::set<std::string>>& known = std::nullopt) {
+QString grafcetErrorOf(const QJsonValue& v, const std::optional<std::set<std::string>>& known = std::nullopt) {
   try {
     loadChart(v, "supervisor.charts.smc1", known);
   } catch (const ProjectError& e) {
@@ -320,11 +320,11 @@ class TestGrafcetJson : public QObject {
       }
       root[parts[0]] = list;
     }
-    QCOMPARE(errorOf(root, std::set<std::string>{"a", "b"}), error);
+    QCOMPARE(grafcetErrorOf(root, std::set<std::string>{"a", "b"}), error);
   }
 
   void chartMustBeAnObject() {
-    QCOMPARE(errorOf(QJsonValue(3)), QString("supervisor.charts.smc1 = 3: must be an object"));
+    QCOMPARE(grafcetErrorOf(QJsonValue(3)), QString("supervisor.charts.smc1 = 3: must be an object"));
   }
 
   void listsAllErrors() {

@@ -21,7 +21,7 @@ using namespace mx::test;
 
 namespace {
 
-QString errorOf(const QJsonObject& root) {
+QString sectionsErrorOf(const QJsonObject& root) {
   try {
     projectFromJson(root);
   } catch (const ProjectError& e) {
@@ -347,7 +347,7 @@ class TestProjectSections : public QObject {
     QFETCH(QString, json);
     QFETCH(QString, message);
     const QJsonObject value = QJsonDocument::fromJson(json.toUtf8()).object();
-    QCOMPARE(errorOf(minimalWith(section, value)), message);
+    QCOMPARE(sectionsErrorOf(minimalWith(section, value)), message);
   }
 
   void controlEngagementIsTheEngineImmersion() {
@@ -417,7 +417,7 @@ class TestProjectSections : public QObject {
     QJsonObject expert = root["expert"].toObject();
     expert[key] = QJsonDocument::fromJson(("{\"v\": " + json + "}").toUtf8()).object()["v"];
     root["expert"] = expert;
-    QCOMPARE(errorOf(root), message);
+    QCOMPARE(sectionsErrorOf(root), message);
   }
 
   // The reports are typed, written back in order, and a row keeps the keys this build does not know.
@@ -444,10 +444,10 @@ class TestProjectSections : public QObject {
 
   void expertExtrasAreChecked() {
     QJsonObject expert{{"delta_per_s", 0.0}, {"alpha", 1.0}, {"method", "fem"}};
-    QCOMPARE(errorOf(minimalWith("expert", expert)), QString("expert.method = 'fem': must be zoa or sdm"));
+    QCOMPARE(sectionsErrorOf(minimalWith("expert", expert)), QString("expert.method = 'fem': must be zoa or sdm"));
     expert.insert("method", "sdm");
     expert.insert("simulated_points", 0);
-    QCOMPARE(errorOf(minimalWith("expert", expert)),
+    QCOMPARE(sectionsErrorOf(minimalWith("expert", expert)),
              QString("expert.simulated_points = 0: must be an integer in [1, 1000]"));
     expert.insert("simulated_points", 20);
     const Project p = projectFromJson(minimalWith("expert", expert));
@@ -460,10 +460,10 @@ class TestProjectSections : public QObject {
   void expertRule5Search() {
     QJsonObject expert{{"delta_per_s", 0.0}, {"alpha", 1.0}};
     expert.insert("rule5_search", QJsonObject{{"speed_step_rpm", 0.0}});
-    QCOMPARE(errorOf(minimalWith("expert", expert)),
+    QCOMPARE(sectionsErrorOf(minimalWith("expert", expert)),
              QString("expert.rule5_search.speed_step_rpm = 0: must be in (0, 1e5]"));
     expert.insert("rule5_search", QJsonObject{{"max_iterations", 2.5}});
-    QCOMPARE(errorOf(minimalWith("expert", expert)),
+    QCOMPARE(sectionsErrorOf(minimalWith("expert", expert)),
              QString("expert.rule5_search.max_iterations = 2.5: must be an integer in [0, 1000]"));
     expert.insert("rule5_search", QJsonObject{{"speed_step_rpm", 100.0},
                                               {"depth_step_mm", 0.02},

@@ -1,6 +1,7 @@
 #pragma once
 // The 2006 example (section 3.D) as expert-system inputs: R1, R2, and the settings of
 // projects/rubio2006-tool-selection.mxproj (grid 800-6000 rpm by 1000 rpm, depth b_min/10, feed 0.01 mm).
+#include "expert/expert_session.h"
 #include "expert/expert_settings.h"
 #include "support/fixtures.h"
 
@@ -20,5 +21,13 @@ inline ExpertSettings rubioExpertSettings() {
   s.stability.alpha = 0.95;
   return s;
 }
+
+// The session of R1 and R2 with those settings, built once per test process.
+inline const ExpertSession& rubioSession() {
+  static const ExpertSession session({rubioR1(), rubioR2()}, rubioExpertSettings());
+  return session;
+}
+// Their indexes in the session.
+inline constexpr std::size_t kR1 = 0, kR2 = 1;
 
 }  // namespace mx::test

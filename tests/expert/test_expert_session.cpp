@@ -14,11 +14,8 @@
 using namespace mx;
 
 namespace {
-const ExpertSession& rubio() {
-  static const ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
-  return session;
-}
-constexpr std::size_t kR1 = 0, kR2 = 1;
+using test::kR1;
+using test::kR2;
 }  // namespace
 
 class TestExpertSession : public QObject {
@@ -41,7 +38,7 @@ class TestExpertSession : public QObject {
   }
 
   void paperWeightsQStar() {
-    const Ranking r = rubio().rank({0.2, 0.725, 0.075});
+    const Ranking r = test::rubioSession().rank({0.2, 0.725, 0.075});
     QCOMPARE(r.tools.size(), std::size_t(2));
     QCOMPARE(r.selected().tool, kR1);
     const ExpertPoint q = r.selected().q;
@@ -61,7 +58,7 @@ class TestExpertSession : public QObject {
   void figure4() {
     for (int i = 0; i <= 37; ++i) {
       const double c1 = 0.025 * i;
-      const std::vector<double> costs = rubio().minimumCosts({c1, 0.925 - c1, 0.075});
+      const std::vector<double> costs = test::rubioSession().minimumCosts({c1, 0.925 - c1, 0.075});
       QVERIFY2(costs[kR1] < costs[kR2], qPrintable(QString("c1 = %1").arg(c1)));
     }
   }
@@ -73,7 +70,7 @@ class TestExpertSession : public QObject {
     for (int i = 0; i <= 20; ++i) {
       for (int j = 0; i + j <= 20; ++j) {
         const std::array<double, 3> c{0.05 * i, 0.05 * j, std::max(0.0, 1.0 - 0.05 * i - 0.05 * j)};
-        const std::size_t selected = rubio().rank(c).selected().tool;
+        const std::size_t selected = test::rubioSession().rank(c).selected().tool;
         if (i == 20) {
           QCOMPARE(selected, kR2);
           ++r2;
@@ -101,16 +98,17 @@ class TestExpertSession : public QObject {
     QFETCH(double, c1);
     QFETCH(double, c2);
     const std::array<double, 3> c{c1, c2, 1.0 - c1 - c2};
-    const Ranking r = rubio().rank(c);
+    const Ranking r = test::rubioSession().rank(c);
     for (const ToolChoice& t : r.tools) {
-      QVERIFY(rubio().grid(t.tool).isAdmissible(t.q.speed_rev_per_s, t.q.depth_m, t.q.feed_per_tooth_m));
+      QVERIFY(test::rubioSession().grid(t.tool).isAdmissible(t.q.speed_rev_per_s, t.q.depth_m, t.q.feed_per_tooth_m));
       QVERIFY(t.q.speed_security > 0.0);
     }
-    const std::vector<ToolChoice> best = rubio().bestPoints(kR1, c, 12);
+    const std::vector<ToolChoice> best = test::rubioSession().bestPoints(kR1, c, 12);
     QCOMPARE(best.size(), std::size_t(12));
     QCOMPARE(best.front().min_cost, r.tools.front().min_cost);
     for (std::size_t i = 0; i < best.size(); ++i) {
-      QVERIFY(rubio().grid(kR1).isAdmissible(best[i].q.speed_rev_per_s, best[i].q.depth_m, best[i].q.feed_per_tooth_m));
+      QVERIFY(test::rubioSession().grid(kR1).isAdmissible(best[i].q.speed_rev_per_s, best[i].q.depth_m,
+                                                          best[i].q.feed_per_tooth_m));
       if (i > 0) QVERIFY(best[i - 1].min_cost <= best[i].min_cost * (1 + 1e-9));
     }
   }
@@ -128,7 +126,7 @@ class TestExpertSession : public QObject {
     double previous = 0.0;
     for (int i = 0; i <= 50; ++i) {
       const double c2 = 0.02 * i, rest = 1.0 - c2;
-      const ToolChoice q = rubio().rank({share1 * rest, c2, (1.0 - share1) * rest}).selected();
+      const ToolChoice q = test::rubioSession().rank({share1 * rest, c2, (1.0 - share1) * rest}).selected();
       QVERIFY2(q.q.mrr_m3_per_s >= previous * (1.0 - 1e-9), qPrintable(QString("c2 = %1").arg(c2)));
       previous = q.q.mrr_m3_per_s;
     }
@@ -250,7 +248,7 @@ class TestExpertSession : public QObject {
     const double inf = std::numeric_limits<double>::infinity();
     const std::array<double, 3> c{0.2, 0.725, 0.075};
     const ExpertSession limited({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {60.0, inf});
-    const std::vector<ToolChoice> free_best = rubio().bestPoints(kR1, c, 1);
+    const std::vector<ToolChoice> free_best = test::rubioSession().bestPoints(kR1, c, 1);
     const ExpertPoint free_q = free_best.front().q;
     QCOMPARE_GE(
         evaluateCut(test::rubioR1(), {free_q.speed_rev_per_s, free_q.depth_m, free_q.feed_per_tooth_m}).peak_force_n,
@@ -261,8 +259,8 @@ class TestExpertSession : public QObject {
     QCOMPARE(limited.grid(kR1).settings().limits.max_tool_force_n, 60.0);
     // R2's Q is untouched (its q* may move: NF1..NF3 are taken over every tool's Q).
     QVERIFY(std::isinf(limited.grid(kR2).settings().limits.max_tool_force_n));
-    QCOMPARE(limited.grid(kR2).pointCount(), rubio().grid(kR2).pointCount());
-    QCOMPARE_LT(limited.grid(kR1).pointCount(), rubio().grid(kR1).pointCount());
+    QCOMPARE(limited.grid(kR2).pointCount(), test::rubioSession().grid(kR2).pointCount());
+    QCOMPARE_LT(limited.grid(kR1).pointCount(), test::rubioSession().grid(kR1).pointCount());
 
     const ExpertSession r1_out({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings(), {1e-3, inf});
     QVERIFY(!r1_out.empty());

@@ -12,21 +12,16 @@
 using namespace mx;
 
 namespace {
-constexpr std::size_t kR1 = 0;
-
-const ExpertSession& rubio() {
-  static const ExpertSession session({test::rubioR1(), test::rubioR2()}, test::rubioExpertSettings());
-  return session;
-}
+using test::kR1;
 
 // A response whose overshoot grows with the scaled distance to `target`; the other figures constant.
 // With c_r = (0, 1, 0), c_t = (0, 1) the search then minimises the distance to the target.
 Rule5Problem distanceProblem(const ExpertPoint& target) {
   Rule5Problem p;
-  p.grid = &rubio().grid(kR1);
+  p.grid = &test::rubioSession().grid(kR1);
   p.speed_from_rev_per_s = test::rubioExpertSettings().grid.speed_from_rev_per_s;
   p.speed_to_rev_per_s = test::rubioExpertSettings().grid.speed_to_rev_per_s;
-  p.nf = rubio().normalisation();
+  p.nf = test::rubioSession().normalisation();
   p.weights.cr = {0.0, 1.0, 0.0};
   p.weights.ct = {0.0, 1.0};
   p.simulate = [target](const std::vector<ExpertPoint>& points) {
@@ -46,17 +41,17 @@ Rule5Problem distanceProblem(const ExpertPoint& target) {
 }
 
 ExpertPoint qStar() {
-  return rubio().rank({0.2, 0.725, 0.075}).selected().q;
+  return test::rubioSession().rank({0.2, 0.725, 0.075}).selected().q;
 }
 
 std::vector<ExpertPoint> bestByCost(std::size_t k) {
   std::vector<ExpertPoint> out;
-  for (const ToolChoice& t : rubio().bestPoints(kR1, {0.2, 0.725, 0.075}, k)) out.push_back(t.q);
+  for (const ToolChoice& t : test::rubioSession().bestPoints(kR1, {0.2, 0.725, 0.075}, k)) out.push_back(t.q);
   return out;
 }
 
 Rule5Steps defaultSteps(const Rule5SearchSettings& s) {
-  return rule5StartSteps(rubio().grid(kR1), test::rubioExpertSettings().grid, s);
+  return rule5StartSteps(test::rubioSession().grid(kR1), test::rubioExpertSettings().grid, s);
 }
 
 double rpm(const ExpertPoint& q) {
@@ -69,7 +64,7 @@ class TestRule5Search : public QObject {
  private slots:
   // At a grid point the arbitrary-point evaluation reproduces the grid's power, MRR and Delta N_s.
   void pointAtMatchesGrid() {
-    const AdmissibleGrid& g = rubio().grid(kR1);
+    const AdmissibleGrid& g = test::rubioSession().grid(kR1);
     for (std::size_t cell : {std::size_t(0), g.cells().size() / 2, g.cells().size() - 1}) {
       const ExpertPoint a = g.point(cell, 1);
       const ExpertPoint b = expertPointAt(g, a.speed_rev_per_s, a.depth_m, a.feed_per_tooth_m);
@@ -83,7 +78,7 @@ class TestRule5Search : public QObject {
   void startStepsFromGrid() {
     const Rule5Steps s = defaultSteps({});
     QCOMPARE_LE(std::abs(s.speed_rev_per_s * 60.0 - 250.0), 1e-9);
-    QCOMPARE_LE(std::abs(s.depth_m - rubio().grid(kR1).depthStep() / 2.0), 1e-15);
+    QCOMPARE_LE(std::abs(s.depth_m - test::rubioSession().grid(kR1).depthStep() / 2.0), 1e-15);
     QCOMPARE_LE(std::abs(s.feed_per_tooth_m - 0.005e-3), 1e-15);
     Rule5SearchSettings set;
     set.speed_step_rev_per_s = 2.0;
@@ -109,8 +104,9 @@ class TestRule5Search : public QObject {
   // The search walks to an optimum well inside Q, more than ten start steps away in depth and feed,
   // and finds it to the resolutions (10 rpm, 1 um, 1 um/tooth).
   void walksToAnInteriorOptimum() {
-    const ExpertPoint target = expertPointAt(rubio().grid(kR1), 5680.0 / 60.0, 0.40e-3, 0.22e-3);
-    QVERIFY(rubio().grid(kR1).isAdmissible(target.speed_rev_per_s, target.depth_m, target.feed_per_tooth_m));
+    const ExpertPoint target = expertPointAt(test::rubioSession().grid(kR1), 5680.0 / 60.0, 0.40e-3, 0.22e-3);
+    QVERIFY(
+        test::rubioSession().grid(kR1).isAdmissible(target.speed_rev_per_s, target.depth_m, target.feed_per_tooth_m));
     Rule5SearchSettings set;
     set.max_iterations = 80;
     const ExpertPoint q = qStar();
@@ -126,7 +122,7 @@ class TestRule5Search : public QObject {
 
   // Every scored point is admissible and inside the grid's speed range, even with the optimum outside Q.
   void scoresAdmissiblePointsOnly() {
-    const AdmissibleGrid& g = rubio().grid(kR1);
+    const AdmissibleGrid& g = test::rubioSession().grid(kR1);
     const ExpertPoint beyond = expertPointAt(g, 6500.0 / 60.0, 0.8e-3, 0.5e-3);  // over the power limit
     QVERIFY(!g.isAdmissible(beyond.speed_rev_per_s, beyond.depth_m, beyond.feed_per_tooth_m));
     Rule5SearchSettings set;
@@ -143,7 +139,7 @@ class TestRule5Search : public QObject {
   // The iteration limit ends the search (not converged); max_iterations = 0 scores the seeds only.
   void iterationLimit() {
     const ExpertPoint q = qStar();
-    const ExpertPoint target = expertPointAt(rubio().grid(kR1), 5680.0 / 60.0, 0.40e-3, 0.22e-3);
+    const ExpertPoint target = expertPointAt(test::rubioSession().grid(kR1), 5680.0 / 60.0, 0.40e-3, 0.22e-3);
     Rule5SearchSettings set;
     set.max_iterations = 3;
     const Rule5Result r = searchRule5(distanceProblem(target), q, {q}, defaultSteps(set), set);

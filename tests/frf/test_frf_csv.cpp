@@ -10,7 +10,7 @@ using namespace mx;
 
 namespace {
 
-FrfFileError errorOf(const std::string& bytes) {
+FrfFileError csvErrorOf(const std::string& bytes) {
   try {
     readFrfCsv(bytes, "tap.csv", FrfQuantity::Receptance);
   } catch (const FrfFileError& e) {
@@ -96,7 +96,7 @@ class TestFrfCsv : public QObject {
     QFETCH(QString, text);
     QFETCH(int, line);
     QFETCH(QString, message);
-    const auto e = errorOf(text.toStdString());
+    const auto e = csvErrorOf(text.toStdString());
     QCOMPARE(e.line(), line);
     QVERIFY2(QString(e.what()).startsWith(message), e.what());
   }

@@ -21,7 +21,7 @@ Uff58Text twoPointComplex() {
 }
 
 // The error's message and location for bytes that must not parse.
-FrfFileError errorOf(const std::string& bytes) {
+FrfFileError uffErrorOf(const std::string& bytes) {
   try {
     readUff(bytes, "tap.unv");
   } catch (const FrfFileError& e) {
@@ -247,7 +247,7 @@ class TestUffReader : public QObject {
     t.points = 1;
     const std::string block = rawBytes(std::vector<double>{std::bit_cast<double>(0x3ff0'0a0a'0a0a'0a0aull)});
     const std::string text = t.binaryText(block) + "junk\n";
-    const auto e = errorOf(text);
+    const auto e = uffErrorOf(text);
     QCOMPARE(e.line(), 21);  // 2 + 11 header lines, 6 line-end bytes in the block, the "-1", then the junk
     QVERIFY(std::string(e.what()).find("expected '    -1' opening a dataset") != std::string::npos);
   }
@@ -352,7 +352,7 @@ class TestUffReader : public QObject {
     QFETCH(QString, text);
     QFETCH(int, line);
     QFETCH(QString, message);
-    const auto e = errorOf(text.toStdString());
+    const auto e = uffErrorOf(text.toStdString());
     QCOMPARE(e.source(), std::string("tap.unv"));
     QCOMPARE(e.line(), line);
     QVERIFY(!e.blockOffset());
@@ -392,7 +392,7 @@ class TestUffReader : public QObject {
     QFETCH(QByteArray, text);
     QFETCH(int, offset);
     QFETCH(QString, message);
-    const auto e = errorOf(text.toStdString());
+    const auto e = uffErrorOf(text.toStdString());
     QCOMPARE(e.line(), 2);
     QCOMPARE(e.blockOffset().value_or(9999), std::size_t(offset));
     QVERIFY2(QString(e.what()).startsWith(message), e.what());
@@ -421,7 +421,7 @@ class TestUffReader : public QObject {
                              test::formatted("%6d%c%6d%6d%12d%12s%6d%6d%12d%12d", 58, 'b', order, float_format, 11,
                                              bytes.toStdString().c_str(), 0, 0, 0, 0) +
                              "\n";
-    const auto e = errorOf(text);
+    const auto e = uffErrorOf(text);
     QVERIFY2(QString(e.what()).startsWith(message), e.what());
   }
 

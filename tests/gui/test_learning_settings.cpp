@@ -37,7 +37,7 @@ using namespace mx;
 
 namespace {
 
-QAction* menuAction(const gui::MainWindow& window, const QString& menu_name, const QString& text) {
+QAction* menuActionByName(const gui::MainWindow& window, const QString& menu_name, const QString& text) {
   for (QAction* m : window.menuBar()->actions())
     if (m->menu() && m->menu()->objectName() == menu_name)
       for (QAction* a : m->menu()->actions())
@@ -57,8 +57,8 @@ class TestLearningSettings : public QObject {
   void settingsMenu() {
     gui::MainWindow window;
     window.setQuiet(true);
-    QAction* units = menuAction(window, "settingsMenu", "Shop &units...");
-    QAction* learning = menuAction(window, "settingsMenu", "&Learning database...");
+    QAction* units = menuActionByName(window, "settingsMenu", "Shop &units...");
+    QAction* learning = menuActionByName(window, "settingsMenu", "&Learning database...");
     QVERIFY(units);
     QVERIFY(learning);
     QVERIFY(!learning->toolTip().isEmpty());

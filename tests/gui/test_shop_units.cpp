@@ -27,7 +27,7 @@ using widgets::ShopUnits;
 
 namespace {
 
-bool openAndShow(gui::MainWindow& window, const QString& path) {
+bool openShowAndRead(gui::MainWindow& window, const QString& path) {
   window.setQuiet(true);
   window.resize(1400, 900);
   window.show();
@@ -35,7 +35,7 @@ bool openAndShow(gui::MainWindow& window, const QString& path) {
   return window.openProject(path) && shown.wait(20000) && test::waitForReadout(window);
 }
 
-QAction* menuAction(const gui::MainWindow& window, const QString& menu, const QString& text) {
+QAction* menuActionByTitle(const gui::MainWindow& window, const QString& menu, const QString& text) {
   for (QAction* top : window.menuBar()->actions())
     if (top->text() == menu && top->menu())
       for (QAction* a : top->menu()->actions())
@@ -73,12 +73,12 @@ class TestShopUnitsInWindow : public QObject {
 
   void inchPresetThroughPreferences() {
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
+    QVERIFY(openShowAndRead(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QCOMPARE(window.units()->shop(), ShopUnits::metric());
     widgets::OperatingPointReadout* readout = test::lobesOf(window)->readout();
     QCOMPARE(shown(readout->text("power")).second, QString("W"));
 
-    QAction* preferences = menuAction(window, "&Edit", "&Preferences...");
+    QAction* preferences = menuActionByTitle(window, "&Edit", "&Preferences...");
     QVERIFY(preferences);
     preferences->trigger();
     auto* dialog = window.findChild<widgets::ShopUnitsDialog*>("preferencesDialog");
@@ -148,7 +148,7 @@ class TestShopUnitsInWindow : public QObject {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     gui::MainWindow window;
-    QVERIFY(openAndShow(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
+    QVERIFY(openShowAndRead(window, mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     window.units()->setShop(ShopUnits::metric());
     QVERIFY(window.saveProject(dir.filePath("metric.mxproj")));
     window.units()->setShop(ShopUnits::inch());

@@ -17,7 +17,7 @@ using mx::gui::SimulationSummary;
 
 namespace {
 // q* of seed-reading.md: R1 at 5800 rpm, 0.4924 mm, 0.2722 mm/tooth (peak power 732.66 W, stable).
-const mx::OperatingPoint kQStar{5800.0 / 60.0, 0.4924e-3, 0.2722e-3};
+using mx::test::kRubioQStar;
 constexpr double kMaxRevPerS = 12000.0 / 60.0;
 
 mx::SimulationOptions liveOptions(int revolutions = 60) {
@@ -66,7 +66,7 @@ class TestSimulationRunner : public QObject {
     Recorder rec(runner);
     QSignalSpy busy(&runner, &SimulationRunner::busyChanged);
     QSignalSpy progress(&runner, &SimulationRunner::progress);
-    const quint64 g = runner.submit(mx::test::rubioR1(), kQStar, liveOptions(), 15000.0, kMaxRevPerS);
+    const quint64 g = runner.submit(mx::test::rubioR1(), kRubioQStar, liveOptions(), 15000.0, kMaxRevPerS);
     QVERIFY(runner.busy());
     QTRY_COMPARE_WITH_TIMEOUT(rec.finished_generations.size(), std::size_t{1}, 60000);
     QCOMPARE(rec.finished_generations.front(), g);
@@ -110,7 +110,7 @@ class TestSimulationRunner : public QObject {
   void powerLimitIsReported() {
     SimulationRunner runner(&pool_);
     Recorder rec(runner);
-    runner.submit(mx::test::rubioR1(), kQStar, liveOptions(30), 500.0, kMaxRevPerS);
+    runner.submit(mx::test::rubioR1(), kRubioQStar, liveOptions(30), 500.0, kMaxRevPerS);
     QTRY_COMPARE_WITH_TIMEOUT(rec.summaries.size(), std::size_t{1}, 60000);
     QVERIFY(rec.summaries.front().power_limit_exceeded);
     QCOMPARE(rec.summaries.front().spindle_power_limit_w, 500.0);
@@ -119,10 +119,10 @@ class TestSimulationRunner : public QObject {
   void newSubmissionCancelsTheRunningOne() {
     SimulationRunner runner(&pool_);
     Recorder rec(runner);
-    const quint64 first = runner.submit(mx::test::rubioR1(), kQStar, liveOptions(2000), 15000.0, kMaxRevPerS);
+    const quint64 first = runner.submit(mx::test::rubioR1(), kRubioQStar, liveOptions(2000), 15000.0, kMaxRevPerS);
     QTRY_VERIFY_WITH_TIMEOUT(!rec.chunk_generations.empty(), 60000);  // the first job is running
     const std::size_t chunks_of_first = rec.chunk_generations.size();
-    const quint64 second = runner.submit(mx::test::rubioR1(), kQStar, liveOptions(), 15000.0, kMaxRevPerS);
+    const quint64 second = runner.submit(mx::test::rubioR1(), kRubioQStar, liveOptions(), 15000.0, kMaxRevPerS);
     QVERIFY(second != first);
     QTRY_COMPARE_WITH_TIMEOUT(rec.finished_generations.size(), std::size_t{1}, 60000);
     QTRY_VERIFY_WITH_TIMEOUT(!runner.busy(), 60000);  // the cancelled job has ended as well
@@ -138,7 +138,7 @@ class TestSimulationRunner : public QObject {
     SimulationRunner runner(&pool_);
     Recorder rec(runner);
     QSignalSpy busy(&runner, &SimulationRunner::busyChanged);
-    runner.submit(mx::test::rubioR1(), kQStar, liveOptions(2000), 15000.0, kMaxRevPerS);
+    runner.submit(mx::test::rubioR1(), kRubioQStar, liveOptions(2000), 15000.0, kMaxRevPerS);
     QTRY_VERIFY_WITH_TIMEOUT(!rec.chunk_generations.empty(), 60000);
     runner.cancel();
     const std::size_t chunks = rec.chunk_generations.size();
@@ -222,7 +222,7 @@ class TestSimulationRunner : public QObject {
     timer.start();
     mx::SimulationOptions options = liveOptions(6000);
     options.record_every = 4;  // ~23 MB of trace
-    runner.submit(mx::test::rubioR1(), kQStar, options, 15000.0, kMaxRevPerS);
+    runner.submit(mx::test::rubioR1(), kRubioQStar, options, 15000.0, kMaxRevPerS);
     QTRY_COMPARE_WITH_TIMEOUT(rec.finished_generations.size(), std::size_t{1}, 120000);
     const qint64 elapsed_ms = clock.elapsed();
     timer.stop();

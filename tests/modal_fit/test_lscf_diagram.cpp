@@ -6,13 +6,12 @@
 #include "core/cancellation.h"
 #include "modal_fit/frf_band.h"
 #include "modal_fit/lscf_diagram.h"
+#include "support/modal_axis_metatype.h"
 #include "synthetic_frf.h"
 #include "test_registry.h"
 
 using namespace mx;
 using mx::test::relativeError;
-
-Q_DECLARE_METATYPE(mx::ModalAxis)
 
 namespace {
 

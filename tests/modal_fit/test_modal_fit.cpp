@@ -6,13 +6,13 @@
 #include "core/invalid_input.h"
 #include "modal_fit/modal_fit.h"
 #include "modal_fit/modal_pole.h"
+#include "support/modal_axis_metatype.h"
 #include "synthetic_frf.h"
 #include "test_registry.h"
 
 using namespace mx;
 using mx::test::relativeError;
 
-Q_DECLARE_METATYPE(mx::ModalAxis)
 Q_DECLARE_METATYPE(std::vector<std::complex<double>>)
 
 namespace {

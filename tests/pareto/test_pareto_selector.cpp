@@ -9,17 +9,11 @@
 
 using namespace mx;
 
-namespace {
-const ObjectiveTable& table() {
-  return test::paretoCaseTable();
-}
-}  // namespace
-
 class TestParetoSelector : public QObject {
   Q_OBJECT
  private slots:
   void scoresNormalised() {
-    const ObjectiveTable& t = table();
+    const ObjectiveTable& t = test::paretoCaseTable();
     QVERIFY(t.size() > 1000);
     for (std::size_t i = 0; i < t.size(); ++i)
       for (std::size_t k = 0; k < kObjectiveCount; ++k) {
@@ -33,7 +27,7 @@ class TestParetoSelector : public QObject {
   }
 
   void paretoSetAdmissibleAndNonDominated() {
-    const ObjectiveTable& t = table();
+    const ObjectiveTable& t = test::paretoCaseTable();
     const auto front = nonDominated(t.scores());
     QVERIFY(!front.empty());
     QCOMPARE(front, nonDominatedBruteForce(t.scores()));
@@ -53,7 +47,7 @@ class TestParetoSelector : public QObject {
   }
   void coarseAndFine() {
     QFETCH(ParetoWeights, w);
-    const ObjectiveTable& t = table();
+    const ObjectiveTable& t = test::paretoCaseTable();
     const ParetoSelector sel(t);
     const ParetoSelection c = sel.coarse(w);
     for (const ObjectiveVector& s : t.scores()) QVERIFY(objectiveJ(w, s) <= c.j + 1e-12);
@@ -67,7 +61,7 @@ class TestParetoSelector : public QObject {
   }
 
   void filterRestrictsSelection() {
-    const ParetoSelector sel(table());
+    const ParetoSelector sel(test::paretoCaseTable());
     const ObjectiveRequirement req{Objective::Mrr, 0.2e-6, 0.4e-6};
     const ParetoSelection s = sel.coarse({0.4, 0.1, 0.3, 0.2}, req);
     QVERIFY(s.filtered);

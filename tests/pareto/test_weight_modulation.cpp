@@ -8,12 +8,6 @@
 
 using namespace mx;
 
-namespace {
-const ObjectiveTable& table() {
-  return test::paretoCaseTable();
-}
-}  // namespace
-
 class TestWeightModulation : public QObject {
   Q_OBJECT
  private slots:
@@ -31,7 +25,7 @@ class TestWeightModulation : public QObject {
     QFETCH(int, objective);
     QFETCH(double, lo_fraction);
     QFETCH(double, hi_fraction);
-    const ObjectiveTable& t = table();
+    const ObjectiveTable& t = test::paretoCaseTable();
     const std::size_t k = static_cast<std::size_t>(objective);
     const double lo = t.range().min[k] + lo_fraction * (t.range().max[k] - t.range().min[k]);
     const double hi = t.range().min[k] + hi_fraction * (t.range().max[k] - t.range().min[k]);
@@ -66,7 +60,7 @@ class TestWeightModulation : public QObject {
   void ascent() {
     QFETCH(ParetoWeights, w);
     QFETCH(double, step);
-    const ParetoSelector sel(table());
+    const ParetoSelector sel(test::paretoCaseTable());
     const GradientAscentResult a = ascendWeights(sel, w, {step, 1e-4, 300});
     for (const ParetoWeights& h : a.history) QVERIFY(onSimplex(h));
     QVERIFY(onSimplex(a.weights));
@@ -81,7 +75,7 @@ class TestWeightModulation : public QObject {
   }
 
   void ascentSettingsValidated() {
-    const ParetoSelector sel(table());
+    const ParetoSelector sel(test::paretoCaseTable());
     const ParetoWeights w{0.25, 0.25, 0.25, 0.25};
     const GradientAscentSettings zero_step{0.0, 1e-4, 10}, no_iterations{0.1, 1e-4, 0};
     QVERIFY_THROWS_EXCEPTION(InvalidInput, ascendWeights(sel, w, zero_step));

@@ -48,7 +48,7 @@ const std::vector<double> kW{0.25, 0.25, 0.25, 0.25};
 
 // The LearningDatabaseError message of fn(), or a null string when nothing is thrown.
 template <typename F>
-QString errorOf(F fn) {
+QString learningErrorOf(F fn) {
   return mx::test::messageOf<LearningDatabaseError>(fn);
 }
 
@@ -216,7 +216,7 @@ class TestLearningDatabase : public QObject {
     std::vector<LearningRecord> records;
     for (int i = 0; i < 5; ++i) records.push_back(sample(QString("R%1").arg(i), "Al", 10, 2, kW, 1.0, i));
     records[3].weights = {0.5, 0.6};
-    const QString e = errorOf([&] { db.insertAll(records); });
+    const QString e = learningErrorOf([&] { db.insertAll(records); });
     QVERIFY2(e.contains("invalid record 3") && e.contains("must sum to 1"), qPrintable(e));
     QCOMPARE(db.count(), 0);
     records[3].weights = kW;
@@ -273,7 +273,7 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(hits[1].weights, (std::vector<double>{0.1, 0.7, 0.1, 0.1}));
     QCOMPARE(db.withMrrIn(0.0, 10.0).size(), std::size_t{3});  // the row without MRR never matches
     QCOMPARE(db.withMrrIn(3.5, 9.0).size(), std::size_t{0});
-    QVERIFY(errorOf([&] { db.withMrrIn(2.0, 1.0); }).contains("is empty"));
+    QVERIFY(learningErrorOf([&] { db.withMrrIn(2.0, 1.0); }).contains("is empty"));
   }
 
   void suggestionFromSimilarJobs() {
@@ -309,12 +309,12 @@ class TestLearningDatabase : public QObject {
     QCOMPARE(mx::app::parseLearningSource("rule"), LearningSource::Rule);
     MX_NEW_DATABASE(path, "bad");
     LearningDatabase db(path);
-    const QString sumError = errorOf([&] { db.insert(sample("R1", "Al", 10, 2, {0.5, 0.6}, 1)); });
+    const QString sumError = learningErrorOf([&] { db.insert(sample("R1", "Al", 10, 2, {0.5, 0.6}, 1)); });
     QVERIFY2(sumError.contains(path) && sumError.contains("must sum to 1"), qPrintable(sumError));
-    QVERIFY(errorOf([&] { db.insert(sample("", "Al", 10, 2, kW, 1)); }).contains("tool.id"));
+    QVERIFY(learningErrorOf([&] { db.insert(sample("", "Al", 10, 2, kW, 1)); }).contains("tool.id"));
     LearningRecord text = sample("R1", "Al", 10, 2, kW, 1);
     text.objectives["tol"] = "long";
-    QVERIFY(errorOf([&] { db.insert(text); }).contains("objectives.tol"));
+    QVERIFY(learningErrorOf([&] { db.insert(text); }).contains("objectives.tol"));
     QCOMPARE(db.count(), 0);
     // The schema itself refuses a source outside the four (a foreign writer cannot sneak one in).
     QVERIFY(!rawExec(db,
@@ -330,12 +330,12 @@ class TestLearningDatabase : public QObject {
       return;
     }
     const QString missing = file("missing.sqlite");
-    const QString e1 = errorOf([&] { LearningDatabase db(missing, LearningDatabase::OpenMode::ExistingOnly); });
+    const QString e1 = learningErrorOf([&] { LearningDatabase db(missing, LearningDatabase::OpenMode::ExistingOnly); });
     QVERIFY2(e1.contains(missing) && e1.contains("no such file"), qPrintable(e1));
     QVERIFY(!QFile::exists(missing));
 
     const QString unopenable = file("no/such/folder/x.sqlite");
-    const QString e2 = errorOf([&] { LearningDatabase db(unopenable); });
+    const QString e2 = learningErrorOf([&] { LearningDatabase db(unopenable); });
     QVERIFY2(e2.contains(unopenable) && e2.contains("cannot open"), qPrintable(e2));
 
     const QString corrupt = file("corrupt.sqlite");
@@ -343,23 +343,23 @@ class TestLearningDatabase : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(QByteArray(8192, 'x'));
     f.close();
-    const QString e3 = errorOf([&] { LearningDatabase db(corrupt); });
+    const QString e3 = learningErrorOf([&] { LearningDatabase db(corrupt); });
     QVERIFY2(e3.contains(corrupt) && e3.contains("not a database"), qPrintable(e3));
 
     const QString foreign = file("foreign.sqlite");
     { RawDb(foreign).exec("CREATE TABLE t (x)"); }
-    const QString e4 = errorOf([&] { LearningDatabase db(foreign); });
+    const QString e4 = learningErrorOf([&] { LearningDatabase db(foreign); });
     QVERIFY2(e4.contains(foreign) && e4.contains("not a MillExpert learning database"), qPrintable(e4));
 
     const QString newer = file("newer.sqlite");
     { LearningDatabase db(newer); }
     { RawDb(newer).exec("UPDATE learning_schema SET version = 99"); }
-    const QString e5 = errorOf([&] { LearningDatabase db(newer); });
+    const QString e5 = learningErrorOf([&] { LearningDatabase db(newer); });
     QVERIFY2(e5.contains(newer) && e5.contains("schema version 99") && e5.contains("newer"), qPrintable(e5));
     const QString header_newer = file("header-newer.sqlite");  // what a newer build of the old layout writes
     { LearningDatabase db(header_newer); }
     { RawDb(header_newer).exec("PRAGMA user_version = 7"); }
-    QVERIFY(errorOf([&] { LearningDatabase db(header_newer); }).contains("schema version 7"));
+    QVERIFY(learningErrorOf([&] { LearningDatabase db(header_newer); }).contains("schema version 7"));
     QVERIFY(QSqlDatabase::connectionNames().isEmpty());  // failed openings leave no connection behind
   }
 
@@ -400,15 +400,15 @@ class TestLearningDatabase : public QObject {
     mx::test::PostgresServer* server = backends_.server();
     QVERIFY(server != nullptr);
     const QString missing = server->url("no_such_database");
-    const QString e1 = errorOf([&] { LearningDatabase db(missing); });
+    const QString e1 = learningErrorOf([&] { LearningDatabase db(missing); });
     QVERIFY2(e1.contains("'" + missing + "'") && e1.contains("cannot open") && e1.contains("does not exist"),
              qPrintable(e1));
 
     const QString closed = QString("postgresql://postgres@127.0.0.1:%1/postgres").arg(mx::test::freeLoopbackPort());
-    const QString e2 = errorOf([&] { LearningDatabase db(closed); });
+    const QString e2 = learningErrorOf([&] { LearningDatabase db(closed); });
     QVERIFY2(e2.contains(closed) && e2.contains("cannot open"), qPrintable(e2));
 
-    const QString e3 = errorOf([&] { LearningDatabase db("postgresql://shop:secret@127.0.0.1/learning"); });
+    const QString e3 = learningErrorOf([&] { LearningDatabase db("postgresql://shop:secret@127.0.0.1/learning"); });
     QVERIFY2(e3.contains("password is not accepted") && !e3.contains("secret"), qPrintable(e3));
 
     MX_NEW_DATABASE(foreign, "foreign");
@@ -416,7 +416,7 @@ class TestLearningDatabase : public QObject {
       LearningDatabase db(foreign);
       QVERIFY(rawExec(db, "DROP TABLE learning_schema"));
     }
-    const QString e4 = errorOf([&] { LearningDatabase db(foreign); });
+    const QString e4 = learningErrorOf([&] { LearningDatabase db(foreign); });
     QVERIFY2(e4.contains(foreign) && e4.contains("not a MillExpert learning database"), qPrintable(e4));
 
     MX_NEW_DATABASE(newer, "newer");
@@ -424,7 +424,7 @@ class TestLearningDatabase : public QObject {
       LearningDatabase db(newer);
       QVERIFY(rawExec(db, "UPDATE learning_schema SET version = 99"));
     }
-    const QString e5 = errorOf([&] { LearningDatabase db(newer); });
+    const QString e5 = learningErrorOf([&] { LearningDatabase db(newer); });
     QVERIFY2(e5.contains(newer) && e5.contains("schema version 99") && e5.contains("newer"), qPrintable(e5));
     QVERIFY(QSqlDatabase::connectionNames().isEmpty());
   }

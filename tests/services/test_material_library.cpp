@@ -30,7 +30,7 @@ QByteArray libraryWith(const QJsonObject& fields, const QString& without = {}) {
 
 // The InputError message of fn(), or a null string when nothing is thrown.
 template <typename F>
-QString errorOf(F fn) {
+QString materialErrorOf(F fn) {
   return mx::test::messageOf<InputError>(fn);
 }
 
@@ -161,7 +161,7 @@ class TestMaterialLibrary : public QObject {
   void badLibrariesGiveNamedErrors() {
     QFETCH(QByteArray, bytes);
     QFETCH(QString, message);
-    const QString error = errorOf([&] { parseMaterialLibrary(bytes); });
+    const QString error = materialErrorOf([&] { parseMaterialLibrary(bytes); });
     QVERIFY2(error.startsWith(message), qPrintable(error));
   }
 
@@ -170,7 +170,8 @@ class TestMaterialLibrary : public QObject {
     const QString path = mx::test::writeText(dir, "shop.json", libraryWith({{"id", "shop-steel"}}));
     QCOMPARE(readMaterialLibrary(path).front().id, QString("shop-steel"));
     const QString bad = mx::test::writeText(dir, "bad.json", libraryWith({{"Kte_N_mm", -1.0}}));
-    QCOMPARE(errorOf([&] { readMaterialLibrary(bad); }), bad + ": materials[0].Kte_N_mm = -1: must be in [0, 10000]");
+    QCOMPARE(materialErrorOf([&] { readMaterialLibrary(bad); }),
+             bad + ": materials[0].Kte_N_mm = -1: must be in [0, 10000]");
   }
 
   void ownLibraryFileIsBounded_data() {
@@ -189,12 +190,12 @@ class TestMaterialLibrary : public QObject {
     QTemporaryDir dir;
     const QString path = mx::test::hostileInput(dir, kind);
     QVERIFY(!path.isEmpty());
-    const QString error = errorOf([&] { readMaterialLibrary(path); });
+    const QString error = materialErrorOf([&] { readMaterialLibrary(path); });
     QVERIFY2(error.startsWith(path + ": ") && error.contains(message), qPrintable(error));
   }
 
   void unknownIdListsTheLibrary() {
-    const QString error = errorOf([] { materialById(bundledMaterialLibrary(), "Al2024"); });
+    const QString error = materialErrorOf([] { materialById(bundledMaterialLibrary(), "Al2024"); });
     QVERIFY2(error.startsWith("material \"Al2024\" is not in the library (its ids: Al6061-T6, Al7075-T6,"),
              qPrintable(error));
   }

@@ -54,7 +54,7 @@ ToolSpec mappedTool() {
 
 // The ToolLibraryError message of fn(), or a null string when nothing is thrown.
 template <typename F>
-QString errorOf(F fn) {
+QString toolLibraryErrorOf(F fn) {
   return mx::test::messageOf<ToolLibraryError>(fn);
 }
 
@@ -110,7 +110,7 @@ class TestToolLibraryIo : public QObject {
     QFETCH(double, value);
     QFETCH(QString, message);
     ToolSpec back;
-    const QString error = errorOf([&] {
+    const QString error = toolLibraryErrorOf([&] {
       back = withPayload(mappedTool(), QJsonObject{{key, value}}, "/shop/tool.tbl");
     });
     QCOMPARE(error, message);
@@ -157,7 +157,7 @@ class TestToolLibraryIo : public QObject {
   void badPayloadNamesFileToolAndField() {
     QFETCH(QJsonObject, payload);
     QFETCH(QString, message);
-    const QString error = errorOf([&] { withPayload(mappedTool(), payload, "/shop/tool.tbl"); });
+    const QString error = toolLibraryErrorOf([&] { withPayload(mappedTool(), payload, "/shop/tool.tbl"); });
     QVERIFY2(error.startsWith(message), qPrintable(error));
   }
 
@@ -207,7 +207,7 @@ class TestToolLibraryIo : public QObject {
   void badSideFileIsRefused() {
     QFETCH(QByteArray, bytes);
     QFETCH(QString, message);
-    const QString error = errorOf([&] { readSideFile(bytes, "t.millexpert.json"); });
+    const QString error = toolLibraryErrorOf([&] { readSideFile(bytes, "t.millexpert.json"); });
     QVERIFY2(error.startsWith(message), qPrintable(error));
   }
 
@@ -221,7 +221,7 @@ class TestToolLibraryIo : public QObject {
   void importedToolIsValidated() {
     ToolSpec t = mappedTool();
     t.teeth = 101;
-    const QString error = errorOf([&] { validateImportedTool(t, "lib.json"); });
+    const QString error = toolLibraryErrorOf([&] { validateImportedTool(t, "lib.json"); });
     QCOMPARE(error, QString("lib.json: tool 'T7': teeth = 101: must be an integer in [1, 100]"));
   }
 };

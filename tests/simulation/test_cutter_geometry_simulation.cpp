@@ -14,22 +14,16 @@
 #include "simulation/time_domain_simulator.h"
 #include "support/fixtures.h"
 #include "support/test_constants.h"
+#include "support/vector_compare.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
+using mx::test::kDeg;
 using mx::test::kPi;
-constexpr double kDeg = kPi / 180.0;
 
-double maxRelativeDifference(const std::vector<double>& a, const std::vector<double>& b) {
-  double diff = 0.0, peak = 0.0;
-  for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
-    diff = std::max(diff, std::abs(a[k] - b[k]));
-    peak = std::max(peak, std::abs(b[k]));
-  }
-  return peak > 0.0 ? diff / peak : diff;
-}
+using mx::test::maxRelativeDifference;
 
 double traceDifference(const SimulationTrace& a, const SimulationTrace& b) {
   return std::max({maxRelativeDifference(a.x_m, b.x_m), maxRelativeDifference(a.y_m, b.y_m),

@@ -15,7 +15,7 @@ using namespace mx;
 
 namespace {
 
-const OperatingPoint kQStar{5800.0 / 60.0, 0.4924e-3, 0.2722e-3};  // 2006 example, tool R1
+using mx::test::kRubioQStar;
 
 MillingSetup stiffened(MillingSetup s, double factor) {
   for (Mode& m : s.modes_x) m.stiffness_n_per_m *= factor;
@@ -75,7 +75,7 @@ class TestMillingSimulation : public QObject {
     MillingSetup s = tool == 4 ? stiffened(test::insperger(0.5), 1e6) : test::rubioR1();
     if (tool == 2) s = stiffened(s, 1e6);
     if (tool == 3) s.modes_x.clear(), s.modes_y.clear();
-    const OperatingPoint point{kQStar.spindle_rev_per_s, depth_mm * 1e-3, kQStar.feed_per_tooth_m};
+    const OperatingPoint point{kRubioQStar.spindle_rev_per_s, depth_mm * 1e-3, kRubioQStar.feed_per_tooth_m};
     SimulationOptions options;
     options.revolutions = 2;
     options.evaluated_revolutions = 1;
@@ -93,7 +93,7 @@ class TestMillingSimulation : public QObject {
     SimulationOptions options;
     options.revolutions = 2;
     options.evaluated_revolutions = 1;
-    const ChatterIndicators ind = simulateMilling(test::rubioR1(), kQStar, options).indicators;
+    const ChatterIndicators ind = simulateMilling(test::rubioR1(), kRubioQStar, options).indicators;
     QVERIFY(ind.eta > 1.001 && ind.eta < 1.3);
   }
 
@@ -138,9 +138,9 @@ class TestMillingSimulation : public QObject {
   void peakPowerAtQStar() {
     QFETCH(double, stiffness_factor);
     const MillingSetup s = stiffened(test::rubioR1(), stiffness_factor);
-    const CutPerformance rigid = evaluateCut(s, kQStar);
+    const CutPerformance rigid = evaluateCut(s, kRubioQStar);
     QVERIFY(std::abs(rigid.peak_power_w - 732.6) < 0.001 * 732.6);
-    const ChatterIndicators ind = simulateMilling(s, kQStar, {}).indicators;
+    const ChatterIndicators ind = simulateMilling(s, kRubioQStar, {}).indicators;
     qInfo("simulated peak power %.3f W, evaluateCut %.3f W", ind.peak_power_w, rigid.peak_power_w);
     QVERIFY(std::abs(ind.peak_power_w / rigid.peak_power_w - 1.0) < 0.01);
   }
@@ -164,7 +164,7 @@ class TestMillingSimulation : public QObject {
     std::vector<double> progress;
     JobControl control;
     control.progress = [&](double f) { progress.push_back(f); };
-    const SimulationResult r = simulateMilling(test::rubioR1(), kQStar, options, control);
+    const SimulationResult r = simulateMilling(test::rubioR1(), kRubioQStar, options, control);
     QCOMPARE(revolutions, (std::vector<int>{1, 2, 3, 4, 5, 6}));
     QVERIFY(contiguous);
     QCOMPARE(streamed_force, r.trace.force_n);
@@ -184,11 +184,11 @@ class TestMillingSimulation : public QObject {
     };
     SimulationOptions options;
     options.on_chunk = [&](const SimulationChunk&) { ++chunks; };
-    QVERIFY_THROWS_EXCEPTION(Cancelled, simulateMilling(test::rubioR1(), kQStar, options, control));
+    QVERIFY_THROWS_EXCEPTION(Cancelled, simulateMilling(test::rubioR1(), kRubioQStar, options, control));
     QCOMPARE(progress_calls, 15);  // polled once per revolution: stops at the start of revolution 16 of 60
     QCOMPARE(chunks, 15);
     progress_calls = 0;
-    QVERIFY_THROWS_EXCEPTION(Cancelled, simulateMilling(test::rubioR1(), kQStar, options, control));
+    QVERIFY_THROWS_EXCEPTION(Cancelled, simulateMilling(test::rubioR1(), kRubioQStar, options, control));
     QCOMPARE(progress_calls, 0);
   }
 

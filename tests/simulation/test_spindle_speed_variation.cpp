@@ -9,6 +9,7 @@
 #include "simulation/spindle_kinematics.h"
 #include "simulation/time_domain_simulator.h"
 #include "support/fixtures.h"
+#include "support/vector_compare.h"
 #include "test_registry.h"
 
 using namespace mx;
@@ -16,14 +17,7 @@ using namespace mx;
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-double maxRelativeDifference(const std::vector<double>& a, const std::vector<double>& b) {
-  double diff = 0.0, peak = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    diff = std::max(diff, std::abs(a[k] - b[k]));
-    peak = std::max(peak, std::abs(b[k]));
-  }
-  return peak > 0.0 ? diff / peak : diff;
-}
+using mx::test::maxRelativeDifference;
 }  // namespace
 
 class TestSpindleSpeedVariation : public QObject {

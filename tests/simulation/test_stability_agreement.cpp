@@ -10,11 +10,13 @@
 #include "simulation/simulation.h"
 #include "stability/semi_discretization.h"
 #include "support/fixtures.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
+using mx::test::kDeg;
 double etaAt(const MillingSetup& s, double rev_per_s, double depth) {
   SimulationOptions o;
   o.revolutions = 300;  // slow growth near the boundary at zeta = 1.1 % needs a long run
@@ -107,7 +109,6 @@ class TestStabilityAgreement : public QObject {
   }
   void realCuttersMatchSdm() {
     QFETCH(int, tool);
-    constexpr double kDeg = std::numbers::pi / 180.0;
     MillingSetup s;
     std::vector<double> rpm;
     if (tool == 1) {

@@ -11,7 +11,7 @@
 using namespace mx;
 
 namespace {
-const OperatingPoint kQStar{5800.0 / 60.0, 0.4924e-3, 0.2722e-3};
+using mx::test::kRubioQStar;
 
 double maxAbs(const std::vector<double>& v) {
   double m = 0.0;
@@ -53,10 +53,10 @@ class TestTimeDomainSimulator : public QObject {
     SimulationOptions options;
     options.revolutions = 4;
     options.evaluated_revolutions = 1;
-    TimeDomainSimulator full(test::rubioR1(), kQStar, options);
+    TimeDomainSimulator full(test::rubioR1(), kRubioQStar, options);
     full.run();
     options.record_every = 7;
-    TimeDomainSimulator decimated(test::rubioR1(), kQStar, options);
+    TimeDomainSimulator decimated(test::rubioR1(), kRubioQStar, options);
     decimated.run();
     const SimulationTrace& a = full.trace();
     const SimulationTrace& b = decimated.trace();
@@ -83,7 +83,7 @@ class TestTimeDomainSimulator : public QObject {
   void steadyStateForceIsStatic() {
     QFETCH(int, tool);
     const MillingSetup s = tool == 1 ? test::rubioR1() : test::insperger(0.3);
-    const OperatingPoint p = tool == 1 ? kQStar : OperatingPoint{10000.0 / 60.0, 0.2e-3, 0.1e-3};
+    const OperatingPoint p = tool == 1 ? kRubioQStar : OperatingPoint{10000.0 / 60.0, 0.2e-3, 0.1e-3};
     TimeDomainSimulator sim(s, p, {});
     sim.run();
     const SimulationTrace& tr = sim.trace();
@@ -107,10 +107,10 @@ class TestTimeDomainSimulator : public QObject {
   // point the steady state is the same.
   void surfaceMemoryAgreesWhileCutting() {
     SimulationOptions options;
-    TimeDomainSimulator one(test::rubioR1(), kQStar, options);
+    TimeDomainSimulator one(test::rubioR1(), kRubioQStar, options);
     one.run();
     options.regenerative_passes = 5;
-    TimeDomainSimulator five(test::rubioR1(), kQStar, options);
+    TimeDomainSimulator five(test::rubioR1(), kRubioQStar, options);
     five.run();
     QVERIFY(std::abs(five.window().max_force_n / one.window().max_force_n - 1.0) < 1e-9);
     QVERIFY(std::abs(five.trace().x_m.back() / one.trace().x_m.back() - 1.0) < 1e-6);
@@ -143,7 +143,7 @@ class TestTimeDomainSimulator : public QObject {
     MillingSetup s = test::rubioR1();
     s.modes_x.clear();
     s.modes_y.clear();
-    TimeDomainSimulator sim(s, kQStar, {});
+    TimeDomainSimulator sim(s, kRubioQStar, {});
     sim.run();
     QVERIFY(sim.finalState().empty());
     QCOMPARE(maxAbs(sim.trace().x_m), 0.0);

@@ -9,13 +9,13 @@
 #include "stability/zero_order_lobes.h"
 #include "support/fixtures.h"
 #include "support/speed_grids.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
+using mx::test::kDeg;
 
 MillingSetup inspergerTool(double a_over_d, int teeth) {
   const MillingSetup base = test::insperger(a_over_d);

@@ -4,28 +4,11 @@
 #include "core/invalid_input.h"
 #include "stability/stability_boundary.h"
 #include "test_registry.h"
+#include "two_lobes_fixture.h"
 
 using namespace mx;
 
-namespace {
-// Two parabolic lobes, A: b = 1 + (n-100)^2/625 mm and B: b = 2 + (n-200)^2/833.33 mm, meeting
-// at 5 mm at 150 rev/s; envelope min(A, B) sampled every 1 rev/s from 80 to 250 rev/s.
-double lobeA(double n) {
-  return 1.0 + (n - 100.0) * (n - 100.0) / 625.0;
-}
-double lobeB(double n) {
-  return 2.0 + (n - 200.0) * (n - 200.0) / (2500.0 / 3.0);
-}
-LobeDiagram twoLobes() {
-  LobeDiagram d;
-  for (int n = 80; n <= 250; ++n) {
-    d.speed_rev_per_s.push_back(n);
-    d.envelope_depth_m.push_back(std::min(lobeA(n), lobeB(n)) * 1e-3);
-    d.envelope_chatter_hz.push_back(0.0);
-  }
-  return d;
-}
-}  // namespace
+using mx::test::twoLobes;
 
 class TestStabilityBoundary : public QObject {
   Q_OBJECT

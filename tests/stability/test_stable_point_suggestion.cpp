@@ -1,27 +1,17 @@
 // A chatter-free point near a chattering one, judged by the boundary: on the two-parabola envelope of
-// test_stability_boundary (lobe A: b = 1 + (n - 100)^2 / 625 mm, lobe B: b = 2 + (n - 200)^2 / 833.33 mm,
-// cusp 5 mm at 150 rev/s), every answer is known by hand.
+// two_lobes_fixture.h (cusp 5 mm at 150 rev/s), every answer is known by hand.
 #include <cmath>
 #include <optional>
 
 #include "stability/stable_point_suggestion.h"
 #include "test_registry.h"
+#include "two_lobes_fixture.h"
 
 using namespace mx;
 
 namespace {
-double envelopeMm(double n) {
-  return std::min(1.0 + (n - 100.0) * (n - 100.0) / 625.0, 2.0 + (n - 200.0) * (n - 200.0) / (2500.0 / 3.0));
-}
-LobeDiagram twoLobes() {
-  LobeDiagram d;
-  for (int n = 80; n <= 250; ++n) {
-    d.speed_rev_per_s.push_back(n);
-    d.envelope_depth_m.push_back(envelopeMm(n) * 1e-3);
-    d.envelope_chatter_hz.push_back(0.0);
-  }
-  return d;
-}
+using mx::test::twoLobes;
+using mx::test::twoLobesEnvelopeMm;
 using Kind = StablePointSuggestion::Kind;
 }  // namespace
 
@@ -52,7 +42,7 @@ class TestStablePointSuggestion : public QObject {
         << 140.0 << 6.0 << 0.0 << 240.0 << int(Kind::ShallowerDepth) << 150.0 << 4.95 << 0;
     // The end of the range counts as a pocket when the boundary rises to it.
     QTest::newRow("no stable speed: range end")
-        << 235.0 << 6.0 << 0.0 << 240.0 << int(Kind::ShallowerDepth) << 240.0 << 0.99 * envelopeMm(240.0) << 0;
+        << 235.0 << 6.0 << 0.0 << 240.0 << int(Kind::ShallowerDepth) << 240.0 << 0.99 * twoLobesEnvelopeMm(240.0) << 0;
   }
   void cases() {
     QFETCH(double, speed);

@@ -9,11 +9,13 @@
 #include "stability/zoa_validity.h"
 #include "support/fixtures.h"
 #include "support/speed_grids.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using namespace mx;
 
 namespace {
+using mx::test::kDeg;
 using mx::test::minFinite;
 using mx::test::rpmGrid;
 MillingSetup r1(int teeth, double ratio, MillingDirection dir) {
@@ -82,7 +84,6 @@ class TestZoaValidity : public QObject {
   }
 
   void thresholds() {
-    constexpr double kDeg = std::numbers::pi / 180.0;
     for (auto [teeth, expected] : {std::pair{2, 1.0}, {3, 0.75}, {4, 0.5}, {6, 0.25}}) {
       MillingSetup s = r1(teeth, expected, MillingDirection::Up);
       QCOMPARE_LE(std::abs(zoaValidity(s).min_radial_immersion - expected), 1e-12);

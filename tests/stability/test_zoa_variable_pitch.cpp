@@ -18,9 +18,9 @@
 using namespace mx;
 
 namespace {
+using mx::test::kDeg;
 using cplx = std::complex<double>;
 using mx::test::kPi;
-constexpr double kDeg = kPi / 180.0;
 
 using mx::test::minFinite;
 using mx::test::rpmGrid;

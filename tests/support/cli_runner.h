@@ -26,4 +26,9 @@ inline CliRun runCli(const QStringList& args, int timeout_ms = 120000) {
   return r;
 }
 
+// runCli with its default timeout, as the command tests call it.
+inline CliRun cli(const QStringList& args) {
+  return runCli(args);
+}
+
 }  // namespace mx::test

@@ -26,6 +26,8 @@ inline MillingSetup makeSetup(int teeth, double diameter_m, double kt, double kr
 inline MillingSetup rubioR1() {
   return makeSetup(3, 0.030, 6e8, 0.3, {{603.0, 0.039, 5.59e6}}, {{666.0, 0.035, 5.715e6}}, MillingDirection::Up, 1.0);
 }
+// q* of the 2006 example for R1: 5800 rpm, b = 0.4924 mm, s_t = 0.2722 mm.
+inline const OperatingPoint kRubioQStar{5800.0 / 60.0, 0.4924e-3, 0.2722e-3};
 inline MillingSetup rubioR2() {
   return makeSetup(2, 0.0127, 6e8, 0.07, {{900.03, 0.0139, 0.879e6}}, {{911.65, 0.0138, 0.971e6}}, MillingDirection::Up,
                    1.0);

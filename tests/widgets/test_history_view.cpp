@@ -17,6 +17,7 @@
 
 #include "display_units.h"
 #include "history_view.h"
+#include "support/shown_texts.h"
 #include "test_registry.h"
 
 using mx::widgets::HistoryFilter;
@@ -25,7 +26,7 @@ using mx::widgets::HistoryView;
 
 namespace {
 
-const QString kDash = QStringLiteral("\u2013");
+using mx::test::kDash;
 
 HistoryRow row(qint64 id, const QString& tool, QVector<double> weights, std::optional<double> tol = 38.71,
                const QString& machine = {}) {
@@ -47,7 +48,7 @@ HistoryRow row(qint64 id, const QString& tool, QVector<double> weights, std::opt
   return r;
 }
 
-QVector<HistoryRow> sampleRows() {
+QVector<HistoryRow> historyRows() {
   return {row(12, "R1", {0.1, 0.6, 0.1, 0.2}, 38.71, "VMC-7 Hermle C42"),
           row(11, "R2", {0.2, 0.725, 0.075}, std::nullopt), row(10, "R1", {0.25, 0.25, 0.25, 0.25})};
 }
@@ -131,7 +132,7 @@ class TestHistoryView : public QObject {
     QFETCH(int, row);
     QFETCH(QStringList, cells);
     HistoryView view;
-    view.setRows(sampleRows());
+    view.setRows(historyRows());
     QCOMPARE(view.rows().size(), 3);
     QCOMPARE(view.table()->rowCount(), 3);
     for (int c = 0; c < cells.size(); ++c)
@@ -143,7 +144,7 @@ class TestHistoryView : public QObject {
 
   void orderAsGivenAndNonFinite() {
     HistoryView view;
-    auto rows = sampleRows();
+    auto rows = historyRows();
     rows[2].ros = std::numeric_limits<double>::quiet_NaN();
     rows[2].weights = {0.5, 0.5, 0.0, 0.0, 0.9};  // extra entries are not shown
     view.setRows(rows);
@@ -321,7 +322,7 @@ class TestHistoryView : public QObject {
     QCOMPARE(view.machineCombo()->count(), 3);
     QCOMPARE(view.machineCombo()->itemText(1), QString("DMU 50"));
     QCOMPARE(view.machineCombo()->itemText(2), QString("VMC-7 Hermle C42"));
-    view.setRows(sampleRows());
+    view.setRows(historyRows());
     QCOMPARE(view.table()->item(0, HistoryView::MachineColumn)->text(), QString("VMC-7 Hermle C42"));
     QCOMPARE(view.table()->item(1, HistoryView::MachineColumn)->text(), kNoMachine);
     QCOMPARE(view.table()->item(2, HistoryView::MachineColumn)->text(), kNoMachine);
@@ -333,7 +334,7 @@ class TestHistoryView : public QObject {
     HistoryView view;
     QSignalSpy apply(&view, &HistoryView::applyWeightsRequested);
     QVERIFY(!view.applyButton()->isEnabled());  // no rows
-    view.setRows(sampleRows());
+    view.setRows(historyRows());
     QCOMPARE(view.selectedRow(), -1);
     QVERIFY(!view.applyButton()->isEnabled());  // no selection
     view.selectRow(1);                          // 2006 point: three weights
@@ -354,7 +355,7 @@ class TestHistoryView : public QObject {
     view.resize(1200, 400);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
-    view.setRows(sampleRows());
+    view.setRows(historyRows());
     QSignalSpy apply(&view, &HistoryView::applyWeightsRequested);
     QTableWidget* t = view.table();
     const QPoint at2 = t->visualRect(t->model()->index(2, 1)).center();
@@ -386,7 +387,7 @@ class TestHistoryView : public QObject {
     QFETCH(bool, dropSelected);
     QFETCH(int, want);
     HistoryView view;
-    auto rows = sampleRows();
+    auto rows = historyRows();
     view.setRows(rows);
     view.selectRow(selected);
     const qint64 id = selected >= 0 ? rows[selected].id : -1;
@@ -415,7 +416,7 @@ class TestHistoryView : public QObject {
     mx::widgets::DisplayUnits units;
     HistoryView view;
     view.setUnits(&units);
-    view.setRows(sampleRows());
+    view.setRows(historyRows());
     HistoryFilter f;
     f.mrr_lo = 0.12345;
     f.mrr_hi = 2.5;

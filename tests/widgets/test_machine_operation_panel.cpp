@@ -16,6 +16,7 @@
 #include "document/project_document.h"
 #include "input_feedback.h"
 #include "machine_operation_panel.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using mx::app::Project;
@@ -23,7 +24,7 @@ using mx::widgets::MachineOperationPanel;
 
 namespace {
 
-const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+using mx::test::kRubio;
 
 // Two library entries as the GUI host hands them over; the second has every optional value.
 QList<mx::widgets::MaterialChoice> twoChoices() {

@@ -12,6 +12,8 @@
 #include "display_units.h"
 #include "indicator_gauge.h"
 #include "monitoring_panel.h"
+#include "support/optional_double_metatype.h"
+#include "support/shown_texts.h"
 #include "support/test_constants.h"
 #include "test_registry.h"
 
@@ -19,14 +21,11 @@ using mx::widgets::IndicatorGauge;
 using mx::widgets::MonitoringPanel;
 using mx::widgets::MonitoringPeak;
 using mx::widgets::MonitoringValues;
-using OptD = std::optional<double>;
-
-Q_DECLARE_METATYPE(OptD)
 
 namespace {
+using mx::test::kDash;
+using mx::test::kInf;
 using mx::test::kNaN;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-const QString kDash = QStringLiteral("\u2013");
 const QStringList kKeys = {
     "peak_force_n", "peak_power_w", "feed_velocity_mm_s", "mrr_cm3_s",           "tol_min", "surf_um", "ros",
     "eta",          "chip_ratio",   "tooth_passing_hz",   "chatter_frequency_hz"};

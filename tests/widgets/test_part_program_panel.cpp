@@ -14,14 +14,12 @@
 
 #include "display_units.h"
 #include "part_program_panel.h"
+#include "support/optional_double_metatype.h"
 #include "test_registry.h"
 
 using mx::widgets::PartProgramPanel;
 using mx::widgets::PartProgramRow;
 using mx::widgets::PartProgramWarningView;
-using OptD = std::optional<double>;
-
-Q_DECLARE_METATYPE(OptD)
 
 namespace {
 
@@ -41,7 +39,7 @@ PartProgramRow row(int line, const QString& text, OptD f, OptD f_new, OptD s, Op
   return r;
 }
 
-QVector<PartProgramRow> sampleRows() {
+QVector<PartProgramRow> partProgramRows() {
   return {
       row(1, "%", {}, {}, {}, {}, {}, {}, {}, false),
       row(2, "G21 G90", {}, {}, {}, {}, {}, {}, {}, false),
@@ -71,7 +69,7 @@ QString programPath(const QString& name) {
 }
 
 void loadSample(PartProgramPanel& panel, const QString& unit = "mm/min") {
-  panel.setProgram(programPath("part.nc"), sampleRows(), sampleWarnings(), unit, "Fanuc");
+  panel.setProgram(programPath("part.nc"), partProgramRows(), sampleWarnings(), unit, "Fanuc");
 }
 
 }  // namespace
@@ -208,7 +206,7 @@ class TestPartProgramPanel : public QObject {
   // A modal proposal: the block has no F of its own and inherits the F proposed on an earlier line. The
   // cell shows the value in effect (not "="), in italics, and its tooltip names that line.
   void modalProposalShowsTheValueInEffect() {
-    QVector<PartProgramRow> rows = sampleRows();
+    QVector<PartProgramRow> rows = partProgramRows();
     PartProgramRow inherited = row(8, "G1 Y40", 1200.0, 900.0, 2000.0, {}, 2.0, 700.0, {}, false);
     inherited.new_feed_from_line = 4;
     rows.append(inherited);

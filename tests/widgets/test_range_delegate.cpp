@@ -7,6 +7,7 @@
 #include "checked_spin_box.h"
 #include "input_feedback.h"
 #include "range_delegate.h"
+#include "support/settle_events.h"
 #include "test_registry.h"
 
 using mx::widgets::RangeDelegate;
@@ -30,10 +31,7 @@ void fill(QStandardItemModel& model) {
   model.appendRow({teeth, stiffness});
 }
 
-void settle() {
-  QCoreApplication::processEvents();
-  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
-}
+using mx::test::settle;
 
 }  // namespace
 

@@ -16,6 +16,7 @@
 #include "ranking_table.h"
 #include "ranking_table_model.h"
 #include "services/expert_request.h"
+#include "support/project_files.h"
 #include "test_registry.h"
 
 using mx::widgets::RankingRow;
@@ -24,7 +25,7 @@ using Model = mx::widgets::RankingTableModel;
 
 namespace {
 
-const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+using mx::test::kRubio;
 
 QVector<RankingRow> sampleRows(int n) {
   QVector<RankingRow> rows;

@@ -22,8 +22,8 @@ using mx::widgets::RequirementsPanel;
 using mx::widgets::RequirementView;
 
 namespace {
+using mx::test::kInf;
 using mx::test::kNaN;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 class TestRequirementsPanel : public QObject {

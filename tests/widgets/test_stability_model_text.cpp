@@ -2,6 +2,7 @@
 #include <numbers>
 
 #include "stability_model_text.h"
+#include "support/test_constants.h"
 #include "test_registry.h"
 
 using mx::MillingSetup;
@@ -9,14 +10,14 @@ using mx::StabilityMethod;
 
 namespace {
 
-constexpr double kRad = std::numbers::pi / 180.0;
+using mx::test::kDeg;
 
 MillingSetup setup(int teeth, double helix_deg, const std::vector<double>& pitch_deg, double immersion) {
   MillingSetup s;
   s.teeth = teeth;
   s.diameter_m = 0.016;
-  s.helix_rad = helix_deg * kRad;
-  for (double p : pitch_deg) s.pitch_rad.push_back(p * kRad);
+  s.helix_rad = helix_deg * kDeg;
+  for (double p : pitch_deg) s.pitch_rad.push_back(p * kDeg);
   s.radial_depth_m = immersion * s.diameter_m;
   s.immersion = mx::Immersion::fromRadialDepth(s.radial_depth_m, s.diameter_m, mx::MillingDirection::Up);
   return s;

@@ -13,20 +13,21 @@
 using namespace mx::widgets;
 
 namespace {
-constexpr double kLimit = 745.7, kRef = 600.0;
+constexpr double kLimit = 745.7, kReferenceForceN = 600.0;
 
 // A synthetic SMC II-like run: contact at 1 s, chatter growing until detected at 3.2 s, a 200 ms hold,
 // a re-planned pass under adaptive force control, a 1 s operator feed hold at 6 s.
 SupervisionSeries series(double from, double to, double dt = 0.02) {
   SupervisionSeries s;
   s.power_limit_w = kLimit;
-  s.force_reference_n = kRef;
+  s.force_reference_n = kReferenceForceN;
   for (double t = from; t < to - 1e-9; t += dt) {
     double f = 0;
     if (t >= 1.0 && t < 3.2)
       f = 900.0 + 60.0 * std::exp(1.2 * (t - 1.0)) * std::sin(40.0 * t);
     else if ((t >= 3.4 && t < 6.0) || (t >= 7.0 && t < 11.0))
-      f = kRef * (1.0 + 0.9 * std::exp(-(t - 3.4) / 0.3) * std::cos(9.0 * (t - 3.4))) + 15.0 * std::sin(31.0 * t);
+      f = kReferenceForceN * (1.0 + 0.9 * std::exp(-(t - 3.4) / 0.3) * std::cos(9.0 * (t - 3.4))) +
+          15.0 * std::sin(31.0 * t);
     s.t_s << t;
     s.force_y_n << std::max(0.0, f);
     s.power_w << std::max(0.0, f) * 1.15;

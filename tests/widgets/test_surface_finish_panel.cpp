@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "support/shown_texts.h"
 #include "support/test_constants.h"
 #include "surface_finish_panel.h"
 #include "test_registry.h"
@@ -20,8 +21,8 @@ using mx::widgets::SurfaceFinishSample;
 using mx::widgets::SurfaceFinishSummary;
 
 namespace {
+using mx::test::kDash;
 using mx::test::kNaN;
-const QString kDash = QStringLiteral("\u2013");
 const QStringList kSummaryKeys = {"ra_desired_um",   "fd_n",           "f_final_n",      "feed_final_mm_min",
                                   "speed_final_rpm", "ra_produced_um", "ra_baseline_um", "f_baseline_n"};
 const QStringList kDataGraphs = {"ra", "ra_dynamic", "force", "force_dynamic", "feed", "speed"};

@@ -12,6 +12,8 @@
 #include "document/project_document.h"
 #include "input_feedback.h"
 #include "range_delegate.h"
+#include "support/project_files.h"
+#include "support/settle_events.h"
 #include "test_registry.h"
 #include "tool_library_editor.h"
 
@@ -19,11 +21,11 @@ using mx::app::Project;
 using mx::widgets::ModeTableModel;
 using mx::widgets::ToolLibraryEditor;
 using mx::widgets::ToolTableModel;
-using Axis = ModeTableModel::Axis;
+using ModeAxis = ModeTableModel::Axis;
 
 namespace {
 
-const char* kRubio = MX_PROJECTS_DIR "/rubio2006-tool-selection.mxproj";
+using mx::test::kRubio;
 
 // The editor wired to a document exactly as the main window does it.
 void wire(ToolLibraryEditor& editor, mx::app::ProjectDocument& doc) {
@@ -33,11 +35,7 @@ void wire(ToolLibraryEditor& editor, mx::app::ProjectDocument& doc) {
   editor.setProject(doc.project());
 }
 
-// The delegate commits and closes its editor through queued calls.
-void settle() {
-  QCoreApplication::processEvents();
-  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
-}
+using mx::test::settle;
 
 // Types `text` into the spin box editor of `index`, as a user who selected the cell.
 QAbstractSpinBox* typeKeys(QTableView* view, const QModelIndex& index, const QString& text) {
@@ -103,8 +101,8 @@ class TestToolLibraryEditor : public QObject {
     QCOMPARE(selected.count(), 1);
     QVERIFY(editor.selectTool("R2"));
     QCOMPARE(selected.last().at(0).toString(), QString("R2"));
-    QCOMPARE(editor.modeModel(Axis::X)->index(0, ModeTableModel::Frequency).data(Qt::EditRole).toDouble(), 900.03);
-    QCOMPARE(editor.modeModel(Axis::Y)->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 0.971);
+    QCOMPARE(editor.modeModel(ModeAxis::X)->index(0, ModeTableModel::Frequency).data(Qt::EditRole).toDouble(), 900.03);
+    QCOMPARE(editor.modeModel(ModeAxis::Y)->index(0, ModeTableModel::Stiffness).data(Qt::EditRole).toDouble(), 0.971);
   }
 
   // An axis with a tap test names its file; one without says only its direction.
@@ -132,7 +130,7 @@ class TestToolLibraryEditor : public QObject {
     ToolLibraryEditor editor;
     editor.setProject(mx::app::loadProject(kRubio));
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    ModeTableModel* modes = editor.modeModel(Axis::X);
+    ModeTableModel* modes = editor.modeModel(ModeAxis::X);
     const QModelIndex k = modes->index(0, ModeTableModel::Stiffness);
     QVERIFY(!modes->setData(k, value, Qt::EditRole));
     QCOMPARE(spy.count(), 0);
@@ -147,8 +145,8 @@ class TestToolLibraryEditor : public QObject {
     editor.show();
     QVERIFY(QTest::qWaitForWindowExposed(&editor));
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QTableView* view = editor.modeView(Axis::X);
-    const QModelIndex k = editor.modeModel(Axis::X)->index(0, ModeTableModel::Stiffness);
+    QTableView* view = editor.modeView(ModeAxis::X);
+    const QModelIndex k = editor.modeModel(ModeAxis::X)->index(0, ModeTableModel::Stiffness);
     typeInto(view, k, "0");  // below the box's minimum, the rule's 0.001
     QCOMPARE(spy.count(), 0);
     QCOMPARE(k.data(Qt::EditRole).toDouble(), 5.59);
@@ -200,7 +198,7 @@ class TestToolLibraryEditor : public QObject {
     editor.show();
     QVERIFY(QTest::qWaitForWindowExposed(&editor));
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QTableView* view = toolTable ? editor.toolView() : editor.modeView(Axis::X);
+    QTableView* view = toolTable ? editor.toolView() : editor.modeView(ModeAxis::X);
     QAbstractItemModel* model = view->model();
     const QModelIndex cell = model->index(0, column);
     const QVariant before = cell.data(Qt::EditRole);
@@ -238,7 +236,7 @@ class TestToolLibraryEditor : public QObject {
     editor.show();
     QVERIFY(QTest::qWaitForWindowExposed(&editor));
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QTableView* view = toolTable ? editor.toolView() : editor.modeView(Axis::X);
+    QTableView* view = toolTable ? editor.toolView() : editor.modeView(ModeAxis::X);
     const QModelIndex cell = view->model()->index(0, column);
     const QVariant before = cell.data(Qt::EditRole);
     typeInto(view, cell, "0");
@@ -254,7 +252,7 @@ class TestToolLibraryEditor : public QObject {
     editor.setProject(mx::app::loadProject(kRubio));
     editor.selectTool("R2");
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    ModeTableModel* modes = editor.modeModel(Axis::Y);
+    ModeTableModel* modes = editor.modeModel(ModeAxis::Y);
     QVERIFY(modes->setData(modes->index(0, ModeTableModel::Stiffness), 1.25, Qt::EditRole));
     QCOMPARE(spy.count(), 1);
     const Project edited = spy.at(0).at(0).value<Project>();
@@ -268,7 +266,7 @@ class TestToolLibraryEditor : public QObject {
     ToolLibraryEditor editor;
     wire(editor, doc);
     editor.selectTool("R2");
-    ModeTableModel* modes = editor.modeModel(Axis::X);
+    ModeTableModel* modes = editor.modeModel(ModeAxis::X);
     const QModelIndex k = modes->index(0, ModeTableModel::Stiffness);
     QVERIFY(modes->setData(k, 2.5, Qt::EditRole));
     QCOMPARE(doc.project().tools[1].modes_x[0].stiffness_N_per_um, 2.5);
@@ -313,13 +311,13 @@ class TestToolLibraryEditor : public QObject {
     doc.load(kRubio);
     ToolLibraryEditor editor;
     wire(editor, doc);
-    ModeTableModel* x = editor.modeModel(Axis::X);
+    ModeTableModel* x = editor.modeModel(ModeAxis::X);
     QVERIFY(x->addMode());
     QCOMPARE(doc.project().tools[0].modes_x.size(), std::size_t{2});
     QCOMPARE(x->rowCount(), 2);
     QVERIFY(x->removeMode(0));
     QCOMPARE(doc.project().tools[0].modes_x.size(), std::size_t{1});
-    QVERIFY(editor.modeModel(Axis::Y)->removeMode(0));
+    QVERIFY(editor.modeModel(ModeAxis::Y)->removeMode(0));
     QVERIFY(doc.project().tools[0].modes_y.empty());  // a rigid axis is allowed
   }
 
@@ -535,8 +533,8 @@ class TestToolLibraryEditor : public QObject {
     editor.show();
     QVERIFY(QTest::qWaitForWindowExposed(&editor));
     QSignalSpy spy(&editor, &ToolLibraryEditor::editRequested);
-    QTableView* view = editor.modeView(Axis::X);
-    const QModelIndex k = editor.modeModel(Axis::X)->index(0, ModeTableModel::Stiffness);
+    QTableView* view = editor.modeView(ModeAxis::X);
+    const QModelIndex k = editor.modeModel(ModeAxis::X)->index(0, ModeTableModel::Stiffness);
     view->edit(k);
     auto* box = view->viewport()->findChild<QDoubleSpinBox*>();
     QVERIFY(box);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/test_constants.h"
 #include "test_registry.h"
 #include "tool_picture_widget.h"
 
@@ -15,7 +16,7 @@ using mx::widgets::toothMarks;
 
 namespace {
 
-constexpr double kRad = std::numbers::pi / 180.0;
+using mx::test::kDeg;
 
 ToolSpec tool(int teeth, std::optional<std::vector<double>> pitch_deg, std::optional<std::vector<double>> runout_um) {
   ToolSpec t;
@@ -30,7 +31,7 @@ ToolSpec tool(int teeth, std::optional<std::vector<double>> pitch_deg, std::opti
 
 // The point at `radius` and `angle_deg` clockwise from the top of (100, 100), y down.
 QPointF at(double radius, double angle_deg) {
-  return {100.0 + radius * std::sin(angle_deg * kRad), 100.0 - radius * std::cos(angle_deg * kRad)};
+  return {100.0 + radius * std::sin(angle_deg * kDeg), 100.0 - radius * std::cos(angle_deg * kDeg)};
 }
 
 bool near(QPointF a, QPointF b) {
@@ -75,7 +76,7 @@ class TestToolPictureWidget : public QObject {
     QCOMPARE(int(marks.size()), teeth);
     for (int j = 0; j < teeth; ++j) {
       const double next = j + 1 < teeth ? expected[j + 1] : 360.0;
-      QVERIFY(std::abs(marks[std::size_t(j)].angle_rad - expected[j] * kRad) < 1e-12);
+      QVERIFY(std::abs(marks[std::size_t(j)].angle_rad - expected[j] * kDeg) < 1e-12);
       QVERIFY(std::abs(marks[std::size_t(j)].pitch_deg - (next - expected[j])) < 1e-9);
       QVERIFY2(near(marks[std::size_t(j)].edge, at(50.0, expected[j])), qPrintable(QString::number(j)));
       QVERIFY(near(marks[std::size_t(j)].pitch_label, at(0.62 * 50.0, 0.5 * (expected[j] + next))));

@@ -14,8 +14,8 @@ using mx::widgets::TraceEnvelope;
 using mx::widgets::traceEnvelope;
 
 namespace {
+using mx::test::kInf;
 using mx::test::kNaN;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A chattering trace: 60 revolutions' worth of samples at 10 us.
 void chatter(std::vector<double>& t, std::vector<double>& v, int n) {
