@@ -158,7 +158,8 @@ class TestSupervisorFeature : public QObject {
     QVERIFY(done.wait(120000));
     tick.stop();
     qInfo("largest event-loop gap during a max-speed SMC II run: %lld ms", worst);
-    QCOMPARE_LE(worst, 250);  // the 50 ms target is measured in docs/performance.md; CI machines vary
+    // The 50 ms target is measured in docs/performance.md; CI machines vary, sanitizers slow it further.
+    QCOMPARE_LE(worst, qint64(250 * MX_TIMING_SCALE));
   }
 
   void compareFillsThreeColumns() {
