@@ -7,7 +7,7 @@ PACKAGES=(
   libqcustomplot-dev libeigen3-dev libsundials-dev libfftw3-dev
   libbenchmark-dev xvfb xauth x11-apps xdotool fonts-dejavu-core poppler-utils
   clang-format-14 clang-tidy-14 clang-14 libclang-rt-14-dev libzip-dev git help2man shared-mime-info desktop-file-utils
-  slurm-wlm munge
+  slurm-wlm munge openssl python3
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
