@@ -416,6 +416,7 @@ void LobesFeature::showPoint(const app::PickedPoint& point) {
 // The power-limit curve depends on the evaluator, the tool and s_t: it is recomputed with the readout
 // only when one of them changed.
 void LobesFeature::requestReadout(const app::PickedPoint& point) {
+  if (context_.project().tools.empty()) return;  // the readout says "No tool" (showNoTools)
   PointJob job{evaluator_, evaluator_->toolIndex(context_.activeTool()), point, false};
   job.with_power_limit = evaluator_ != power_limit_evaluator_ || job.tool != power_limit_tool_ ||
                          point.feed_mm_per_tooth != power_limit_feed_;
@@ -427,10 +428,13 @@ void LobesFeature::requestReadout(const app::PickedPoint& point) {
   point_runner_->submit(std::move(job));
 }
 
-// Every answer updates the panel (a drag shows its progress); only the latest request's answer
-// colours the marker and becomes the readout the other features read.
+// Every answer for the lobes shown updates the panel (a drag shows its progress); only the latest
+// request's answer colours the marker and becomes the readout the other features read. An answer from
+// lobes no longer shown (another project, a recomputation, no tool left) is dropped: it would put the
+// old project's point, or "no lobes computed yet", over what the panel now says.
 void LobesFeature::onPointEvaluated(const PointJobResult& result) {
-  if (result.power_limit_mm && result.evaluator == evaluator_) {
+  if (result.evaluator != evaluator_) return;
+  if (result.power_limit_mm) {
     const app::Project& p = context_.project();
     const double feed = result.point.feed_mm_per_tooth;
     chart_->setPowerLimit(*result.power_limit_mm,
