@@ -62,7 +62,7 @@ check_monkey() {
   cmake --preset asan -G Ninja
   cmake --build --preset asan --parallel "$(nproc)" --target millexpert-e2e
   echo "run-checks: GUI monkey, seed $seed, $seconds s (MX_MONKEY_SEED=$seed replays it)"
-  in_fresh_home env ASAN_OPTIONS=detect_leaks=1 \
+  in_fresh_home env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     LSAN_OPTIONS="suppressions=$PWD/packaging/sanitizers/lsan.supp:print_suppressions=0" \
     xvfb-run -a -s "-screen 0 1920x1080x24" build/asan/tests/millexpert-e2e monkey \
     --seed "$seed" --seconds "$seconds"
