@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QFile>
 #include <QMessageBox>
 #include <QSettings>
@@ -69,6 +70,12 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() {
   stopFeatures();
+  // The features, then their docks, go while doc_ is alive: QWidget's destructor deletes the children
+  // only after the members, and a widget destroyed there could still call a feature that reads the
+  // project (UBSan: a member call on the destroyed document, in the GUI monkey's teardown).
+  for (WindowFeature* feature : features_) delete feature;
+  features_.clear();
+  qDeleteAll(findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly));
 }
 
 // The start page's and the Examples menu's requests: the window's own open (with its save prompt),
