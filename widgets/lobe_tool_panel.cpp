@@ -5,32 +5,25 @@
 #include <QListWidget>
 #include <QVBoxLayout>
 
+#include "section_heading.h"
+
 namespace mx::widgets {
 
 namespace {
 const QString kCursorHint = QObject::tr("Move the mouse over the chart to read the limit b_lim there.");
-
-QLabel* heading(const QString& text, QWidget* parent) {
-  auto* label = new QLabel(text, parent);
-  QFont f = label->font();
-  f.setBold(true);
-  label->setFont(f);
-  label->setWordWrap(true);
-  return label;
-}
 }  // namespace
 
 LobeToolPanel::LobeToolPanel(QWidget* parent)
     : QWidget(parent),
       active_only_(new QCheckBox(tr("Active tool only"), this)),
       tools_(new QListWidget(this)),
-      pockets_title_(heading(tr("Stability pockets"), this)),
+      pockets_title_(sectionHeading(tr("Stability pockets"), this)),
       pockets_(new QListWidget(this)),
       cursor_(new QLabel(kCursorHint, this)) {
   setObjectName("lobeToolPanel");
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
-  layout->addWidget(heading(tr("Tools on the chart"), this));
+  layout->addWidget(sectionHeading(tr("Tools on the chart"), this));
   active_only_->setObjectName("activeToolOnly");
   active_only_->setToolTip(tr("Show the lobes of the active tool alone"));
   layout->addWidget(active_only_);

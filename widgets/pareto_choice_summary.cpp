@@ -8,6 +8,8 @@
 #include <QVBoxLayout>
 #include <utility>
 
+#include "section_heading.h"
+
 namespace mx::widgets {
 
 namespace {
@@ -53,10 +55,7 @@ ParetoChoiceSummaryPanel::ParetoChoiceSummaryPanel(QWidget* parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addLayout(form);
   for (auto [caption, text] : {std::pair{tr("Selected q"), point_}, std::pair{tr("Binding at q"), binding_}}) {
-    auto* heading = new QLabel(caption);
-    QFont bold = heading->font();
-    bold.setBold(true);
-    heading->setFont(bold);
+    QLabel* heading = sectionHeading(caption);
     heading->setBuddy(text);
     layout->addWidget(heading);
     layout->addWidget(text);
