@@ -19,17 +19,14 @@ QString besideManifest(const QString& manifest_path, const char* suffix) {
   return info.dir().filePath(info.completeBaseName() + QLatin1String(suffix));
 }
 
-// The material section as the project file writes it.
-QJsonObject materialSection(const Project& project, const MaterialSpec& material) {
+// A section (the material, the machine) as the project file writes it: the project's own writer, so
+// that a manifest section carries exactly the keys and units of a project's.
+template <class Spec>
+QJsonObject sectionOf(const Project& project, std::optional<Spec> Project::*section, const Spec& value,
+                      const char* key) {
   Project with = project;
-  with.material = material;
-  return projectToJson(with).value("material").toObject();
-}
-
-QJsonObject machineSection(const Project& project, const MachineSpec& machine) {
-  Project with = project;
-  with.machine = machine;
-  return projectToJson(with).value("machine").toObject();
+  with.*section = value;
+  return projectToJson(with).value(QLatin1String(key)).toObject();
 }
 
 void checkRequest(const Project& project, const BatchStudyRequest& request) {
@@ -55,8 +52,10 @@ BatchStudyFiles writeBatchStudy(const Project& project, const BatchStudyRequest&
   manifest.folder = QFileInfo(manifest_path).absolutePath();
   manifest.projects = {QFileInfo(files.project).fileName()};
   manifest.tools = request.tools;
-  for (const MaterialSpec& m : request.materials) manifest.materials.push_back(materialSection(project, m));
-  for (const MachineSpec& m : request.machines) manifest.machines.push_back(machineSection(project, m));
+  for (const MaterialSpec& m : request.materials)
+    manifest.materials.push_back(sectionOf(project, &Project::material, m, "material"));
+  for (const MachineSpec& m : request.machines)
+    manifest.machines.push_back(sectionOf(project, &Project::machine, m, "machine"));
   manifest.options = request.options;
   // Checked as batch reads it, before anything is written.
   const BatchManifest checked = batchManifestFromJson(batchManifestJson(manifest), manifest.folder);
