@@ -269,9 +269,8 @@ std::vector<app::MachineSpec> BatchFeature::checkedMachines(const QStringList& l
   std::vector<app::MachineSpec> machines;
   if (labels.size() == 1 && !machines_.empty() && labels.front() == machines_.front().label) return machines;
   for (const QString& label : labels) {
-    const auto listed =
-        std::find_if(machines_.begin(), machines_.end(), [&label](const ListedMachine& m) { return m.label == label; });
-    if (listed == machines_.end()) throw app::InputError(QString("batch study: machine '%1' is not listed").arg(label));
+    const ListedMachine* listed = listedMachine(label);
+    if (!listed) throw app::InputError(QString("batch study: machine '%1' is not listed").arg(label));
     if (!listed->machine)
       throw app::InputError(
           "batch study: the project has no machine section, so its own machine cannot be a case beside other "
@@ -279,6 +278,12 @@ std::vector<app::MachineSpec> BatchFeature::checkedMachines(const QStringList& l
     machines.push_back(*listed->machine);
   }
   return machines;
+}
+
+const BatchFeature::ListedMachine* BatchFeature::listedMachine(const QString& label) const {
+  const auto it =
+      std::find_if(machines_.begin(), machines_.end(), [&label](const ListedMachine& m) { return m.label == label; });
+  return it == machines_.end() ? nullptr : &*it;
 }
 
 // The project's own machine as the first entry of the list; the machines added from files stay.
@@ -311,9 +316,7 @@ void BatchFeature::addMachinesFrom(const QStringList& files) {
       QStringList added;
       for (const app::MachineOfProject& m : read) {
         const QString label = machineLabel(m.machine, QFileInfo(m.file).fileName());
-        const bool listed = std::any_of(machines_.begin(), machines_.end(),
-                                        [&label](const ListedMachine& l) { return l.label == label; });
-        if (listed) continue;
+        if (listedMachine(label)) continue;
         machines_.push_back({label, m.machine});
         added << label;
       }

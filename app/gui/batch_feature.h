@@ -64,6 +64,8 @@ class BatchFeature : public WindowFeature {
   void askForMachines();
   QString machineLabel(const app::MachineSpec& machine, const QString& origin) const;
   std::vector<app::MachineSpec> checkedMachines(const QStringList& labels) const;
+  struct ListedMachine;
+  const ListedMachine* listedMachine(const QString& label) const;  // nullptr when not listed
   void listProjectMachine();
 
   FeatureContext& context_;
