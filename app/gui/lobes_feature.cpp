@@ -379,7 +379,7 @@ void LobesFeature::pickInitialPoint(int tool) {
 // The power-limit curve of the first point's feed is known: the cut is chosen again with it, so that
 // the point starts below the power limit, at the speed where the power allows the best cut.
 void LobesFeature::lowerInitialPoint(const PointJobResult& result) {
-  if (!initial_point_ || !result.power_limit_mm || result.evaluator != evaluator_) return;
+  if (!initial_point_) return;  // onPointEvaluated passes only the current lobes' answers with a curve
   if (result.point.feed_mm_per_tooth != initial_point_->feed_mm_per_tooth) return;  // a curve of another feed
   const std::optional<app::PickedPoint> initial = std::exchange(initial_point_, std::nullopt);
   if (!(*initial == context_.point()) || result.power_limit_mm->isEmpty()) return;  // moved, or no power limit

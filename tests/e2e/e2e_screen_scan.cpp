@@ -82,14 +82,16 @@ QStringList nonFiniteTexts(const QWidget& window, const QStringList& user_string
 
 QStringList cutWrappedLabels(const QWidget& window) {
   QStringList found;
-  for (const QLabel* label : window.findChildren<QLabel*>())
-    if (shows(label) && label->wordWrap() && !label->text().isEmpty() &&
-        label->height() < label->heightForWidth(label->width()))
+  for (const QLabel* label : window.findChildren<QLabel*>()) {
+    if (!shows(label) || !label->wordWrap() || label->text().isEmpty()) continue;
+    const int needed = label->heightForWidth(label->width());
+    if (label->height() < needed)
       found << QString("%1 (%2 px of %3): %4")
                    .arg(describe(label))
                    .arg(label->height())
-                   .arg(label->heightForWidth(label->width()))
+                   .arg(needed)
                    .arg(label->text().left(120));
+  }
   return found;
 }
 
