@@ -12,12 +12,15 @@
 #   monkey  the GUI monkey (docs/testing.md) on the asan build's real window under Xvfb for
 #           MX_MONKEY_SECONDS (600 s by default) from MX_MONKEY_SEED (the time by default; printed, so
 #           that a failure replays);
-#   tidy    clang-tidy (.clang-tidy) over our sources in the asan build's compile database, each
-#           translation unit that passed before with the same preprocessed text skipped;
+#   tidy    clang-tidy (.clang-tidy) over our sources in the asan build's compile database, the
+#           units of a folder checked eight to a batch (a batch that passed before with the same
+#           preprocessed text skipped; packaging/clang_tidy_cached.py);
 #   fuzz    every libFuzzer target (preset fuzz, clang-14, ASan + UBSan; tests/fuzz/README.md), one
 #           after the other, each for MX_FUZZ_SECONDS (120 s by default) from its seed corpus in a
 #           scratch corpus folder, with -timeout=5 -rss_limit_mb=1024: a crash, leak, timeout or
-#           out-of-memory fails it, and the input is kept in build/fuzz/findings/.
+#           out-of-memory fails it, and the input is kept in build/fuzz/findings/. MX_FUZZ_TARGETS
+#           ("learning_location batch_manifest", ...) runs only those, to recheck the parsers an edit
+#           touched.
 # MX_CHECKS picks and orders the checks ("unity asan tsan monkey tidy fuzz" by default, all of them), so
 # that a failed check can be rerun alone. Exits non-zero at the first check that fails.
 set -euo pipefail
@@ -75,8 +78,9 @@ check_tidy() {
   cmake --build --preset asan --parallel "$(nproc)"
   # Our translation units: engine, app, widgets, tests (not the tests/data fixtures), bench when
   # built; the generated moc and resource files lie in the build folder and are left out.
-  # Units unchanged since they last passed (same preprocessed text, command and .clang-tidy) are
-  # skipped: packaging/clang_tidy_cached.py, stamps in build/asan/clang-tidy-passed/.
+  # Units of one folder and command are checked eight to a batch, which shares the cost of the Qt and
+  # standard headers; a batch unchanged since it last passed (same preprocessed text, command and
+  # .clang-tidy) is skipped: packaging/clang_tidy_cached.py, stamps in build/asan/clang-tidy-passed/.
   python3 packaging/clang_tidy_cached.py build/asan "^$PWD/(engine|app|widgets|bench|tests/(?!data/))" --jobs "$(nproc)"
 }
 
@@ -87,8 +91,14 @@ check_fuzz() {
   local fuzz_dir=build/fuzz/tests/fuzz
   mkdir -p build/fuzz/findings
   # fuzz_targets.txt: one target name a line, written by tests/fuzz/CMakeLists.txt.
-  local name
+  local name ran=0
+  for name in ${MX_FUZZ_TARGETS:-}; do
+    grep -qx "$name" "$fuzz_dir/fuzz_targets.txt" ||
+      { echo "run-checks: unknown fuzz target '$name' in MX_FUZZ_TARGETS; allowed: $(tr '\n' ' ' <"$fuzz_dir/fuzz_targets.txt")"; return 2; }
+  done
   while read -r name; do
+    [ -z "${MX_FUZZ_TARGETS:-}" ] || [[ " $MX_FUZZ_TARGETS " == *" $name "* ]] || continue
+    ran=$((ran + 1))
     local scratch="$run_tmp/corpus-$name"
     mkdir -p "$scratch"
     local dict=()
@@ -99,6 +109,7 @@ check_fuzz() {
       return 1
     fi
   done <"$fuzz_dir/fuzz_targets.txt"
+  echo "run-checks: $ran fuzz targets ran, ${seconds} s each"
 }
 
 for check in ${MX_CHECKS:-unity asan tsan monkey tidy fuzz}; do
