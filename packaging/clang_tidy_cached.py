@@ -51,6 +51,50 @@ def shared_command(entry):
     return tuple(out)
 
 
+def preprocessed(entry):
+    """The unit's text after the preprocessor (clang++ -E), or None when that fails."""
+    args = [CLANG] + command_arguments(entry)[1:]
+    args = [a for a in args if a != "-c"]
+    if "-o" in args:
+        i = args.index("-o")
+        del args[i:i + 2]
+    result = subprocess.run(args + ["-E", "-w", "-o", "-"], cwd=entry["directory"], capture_output=True, check=False)
+    return result.stdout if result.returncode == 0 else None
+
+
+def unit_identity(entry):
+    """What clang-tidy's result on a unit depends on: its preprocessed text and the flags other than
+    the include paths and defines (already applied to the text)."""
+    flags, skip = [], False
+    for a in shared_command(entry)[1:]:
+        if skip:
+            skip = False
+        elif a in ("-I", "-isystem", "-D"):
+            skip = True
+        elif not a.startswith(("-I", "-isystem", "-D")):
+            flags.append(a)
+    text = preprocessed(entry)
+    return None if text is None else hashlib.sha256(json.dumps(flags).encode() + text).hexdigest()
+
+
+def distinct_units(entries, pool):
+    """The entries without the repeats of a file compiled alike into several programs (the one test
+    main of every test program): one entry for each different preprocessed text of a file."""
+    by_file = {}
+    for e in entries:
+        by_file.setdefault(e["file"], []).append(e)
+    repeated = [e for same in by_file.values() if len(same) > 1 for e in same]
+    identities = dict(zip(map(id, repeated), pool.map(unit_identity, repeated)))
+    out, seen = [], set()
+    for e in entries:
+        identity = identities.get(id(e))
+        if identity is not None and (e["file"], identity) in seen:
+            continue
+        seen.add((e["file"], identity))
+        out.append(e)
+    return out
+
+
 def ere_escape(text):
     """`text` as a literal in the POSIX extended regular expressions of clang-tidy's header filter."""
     return re.sub(r"([.\[\]()*+?{}|^$\\])", r"\\\1", text)
@@ -77,17 +121,12 @@ class Checker:
                 "arguments": list(shared_command(entries[0])) + ["-c", path]}
 
     def key(self, entry):
-        args = [CLANG] + command_arguments(entry)[1:]
-        args = [a for a in args if a != "-c"]
-        if "-o" in args:
-            i = args.index("-o")
-            del args[i:i + 2]
-        result = subprocess.run(args + ["-E", "-w", "-o", "-"], cwd=entry["directory"], capture_output=True, check=False)
-        if result.returncode != 0:
+        text = preprocessed(entry)
+        if text is None:
             return None  # clang-tidy reports why
         h = hashlib.sha256(self.salt)
         h.update(json.dumps(shared_command(entry)).encode())
-        h.update(result.stdout)
+        h.update(text)
         return h.hexdigest()
 
     def tidy(self, entry, members):
@@ -170,8 +209,12 @@ def main():
 
     counts = {"passed": 0, "unchanged": 0, "failed": 0}
     done = 0
-    groups = batches(entries, options.batch)
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, options.jobs)) as pool:
+        compiled = len(entries)
+        entries = distinct_units(entries, pool)
+        groups = batches(entries, options.batch)
+        print(f"clang_tidy_cached: {compiled} compiled units, {len(entries)} different, in {len(groups)} batches",
+              flush=True)
         for future in concurrent.futures.as_completed([pool.submit(checker.check, g) for g in groups]):
             for path, status, output in future.result():
                 done += 1 if status != "failed" else path.count(", ") + 1

@@ -14,6 +14,7 @@
 #include <QSysInfo>
 #include <QThread>
 #include <memory>
+#include <ranges>
 
 #include "support/batch_manifests.h"
 #include "support/cli_runner.h"
@@ -96,8 +97,8 @@ class Cluster {
   // The last started first: slurmd, slurmctld, munged. True when every one has ended.
   bool stop() {
     bool ended = true;
-    for (auto it = daemons_.rbegin(); it != daemons_.rend(); ++it) {
-      QProcess& p = **it;
+    for (auto& daemon : std::ranges::reverse_view(daemons_)) {
+      QProcess& p = *daemon;
       if (p.state() == QProcess::NotRunning) continue;
       ::kill(static_cast<pid_t>(p.processId()), SIGTERM);
       if (!p.waitForFinished(5000)) {

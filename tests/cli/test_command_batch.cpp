@@ -353,11 +353,11 @@ class TestCliBatch : public QObject {
     QCOMPARE(lobe_rows.size(), 4);
     const QJsonArray pockets = lobe_rows[0].toObject()["entries"].toArray();
     QCOMPARE(pockets.size(), 2);  // R1 and R2
-    for (const QJsonValue& p : pockets) {
+    for (const auto& p : pockets) {
       const qint64 index = p.toObject()["case"].toInteger();
       const QJsonObject result = mx::test::jsonLines(lobes_out)[static_cast<std::size_t>(index)]["result"].toObject();
       double best = 0.0;
-      for (const QJsonValue& b : result["blim_mm"].toArray()) best = std::max(best, b.toDouble());
+      for (const auto& b : result["blim_mm"].toArray()) best = std::max(best, b.toDouble());
       QCOMPARE(p.toObject()["pocket"].toObject()["blim_mm"].toDouble(), best);
     }
   }

@@ -36,7 +36,7 @@ QString projectOnMachine(const QTemporaryDir& dir, const QString& machine) {
   QJsonObject m = root["machine"].toObject();
   m["name"] = machine;
   root["machine"] = m;
-  const QString path = dir.filePath(machine + ".mxproj");
+  QString path = dir.filePath(machine + ".mxproj");
   QFile out(path);
   if (!out.open(QIODevice::WriteOnly)) return {};
   out.write(QJsonDocument(root).toJson());

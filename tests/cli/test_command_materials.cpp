@@ -16,7 +16,7 @@ namespace {
 using mx::test::kRubio;
 
 QString copyOfRubio(const QTemporaryDir& dir) {
-  const QString path = dir.filePath("p.mxproj");
+  QString path = dir.filePath("p.mxproj");
   QFile::copy(kRubio, path);
   QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
   return path;
@@ -38,7 +38,7 @@ class TestCommandMaterials : public QObject {
     QCOMPARE(r.json.value("library").toString(), QString("bundled"));
     const QJsonArray materials = r.json.value("materials").toArray();
     QCOMPARE(materials.size(), 9);
-    for (const QJsonValue& m : materials)
+    for (const auto& m : materials)
       for (const char* key : {"id", "name", "iso_group", "Kt_N_mm2", "Kr", "Kte_N_mm", "Kre_N_mm", "sources"})
         QVERIFY2(m.toObject().contains(key), key);
     const QJsonObject al = materials.at(1).toObject();

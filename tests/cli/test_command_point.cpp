@@ -183,7 +183,7 @@ class TestCommandPoint : public QObject {
   // The grid's top speed is inside its lobes (rubio2006-adaptive-control: 400-3000 rpm; q* of its tool
   // is at 3000 rpm).
   void theGridsTopSpeed() {
-    const mx::test::CliRun r = mx::test::runCli({"point", MX_PROJECTS_DIR "/rubio2006-adaptive-control.mxproj",
+    const mx::test::CliRun r = mx::test::runCli({"point", mx::test::projectsPath("rubio2006-adaptive-control.mxproj"),
                                                  "--tool", "C1", "--speed", "3000", "--depth", "0.5", "--feed", "0.3"});
     QVERIFY2(r.code == 0, qPrintable(r.err));
     QVERIFY(r.json["blim_mm"].toDouble() > 0.0);

@@ -278,7 +278,7 @@ class TestCliRank : public QObject {
                             "(about 15 s): raise --simplex"),
              qPrintable(r.err));
     const Run line =
-        cli({"weights-sweep", MX_PROJECTS_DIR "/library-20-tools.mxproj", "--c3", "0.1", "--step", "0.0001"});
+        cli({"weights-sweep", mx::test::projectsPath("library-20-tools.mxproj"), "--c3", "0.1", "--step", "0.0001"});
     QCOMPARE(line.code, 2);
     QVERIFY2(line.err.contains("--step = 0.0001: 10002 weight vectors x 20 tools = 2e+05 rankings"),
              qPrintable(line.err));

@@ -144,10 +144,9 @@ class TestOutputPaths : public QObject {
         "--output", "a character device");
     row("pareto --db project", QStringList{"pareto", "@pareto.mxproj", "--db", "@pareto.mxproj"}, "--db",
         "the same file as PROJECT");
-    row("history --add-json --db FIFO",
-        QStringList{"history", "@p.mxproj", "--db", "@fifo", "--add-json",
-                    R"({"tool":"R1","weights":[0.2,0.725,0.075],"q":{"speed_rpm":5800,"depth_mm":0.49,)"
-                    R"("feed_mm_per_tooth":0.27},"objectives":{},"source":"operator"})"},
+    const QString record = R"({"tool":"R1","weights":[0.2,0.725,0.075],"q":{"speed_rpm":5800,"depth_mm":0.49,)"
+                           R"("feed_mm_per_tooth":0.27},"objectives":{},"source":"operator"})";
+    row("history --add-json --db FIFO", QStringList{"history", "@p.mxproj", "--db", "@fifo", "--add-json", record},
         "--db", "a FIFO");
   }
 

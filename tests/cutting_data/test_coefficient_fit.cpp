@@ -93,6 +93,7 @@ class TestCoefficientFit : public QObject {
     const std::vector<double> feeds{0.05e-3, 0.1e-3, 0.15e-3, 0.2e-3, 0.25e-3};
     const CuttingCoefficients k = aluminium();
     std::vector<TestCut> cuts;
+    cuts.reserve(feeds.size());
     for (double c : feeds) cuts.push_back(averagedStaticCut(t, k, c));
     const CuttingCoefficients got = fitCuttingCoefficients(t, cuts).coefficients;
     const std::pair<double, double> pairs[] = {{got.Ktc_pa, k.Ktc_pa},           {got.Krc_pa, k.Krc_pa},

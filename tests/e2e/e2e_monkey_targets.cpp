@@ -70,6 +70,7 @@ std::optional<QPoint> randomPointOn(QWidget* widget, const Region& region, Dice&
   const QRegion visible = widget->visibleRegion();
   std::vector<QRect> rects(visible.begin(), visible.end());
   std::vector<double> areas;
+  areas.reserve(rects.size());
   for (const QRect& r : rects) areas.push_back(double(r.width()) * r.height());
   if (rects.empty()) return std::nullopt;
   for (int i = 0; i < kTries; ++i) {

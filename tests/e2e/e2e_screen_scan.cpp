@@ -36,9 +36,9 @@ bool nonFinite(QString text, const QStringList& user_strings) {
 void collect(const QJsonValue& value, QStringList& out) {
   if (value.isString() && nonFinite(value.toString()) && !out.contains(value.toString())) out << value.toString();
   if (value.isArray())
-    for (const QJsonValue& v : value.toArray()) collect(v, out);
+    for (const auto& v : value.toArray()) collect(v, out);
   if (value.isObject())
-    for (const QJsonValue& v : value.toObject()) collect(v, out);
+    for (const auto& v : value.toObject()) collect(v, out);
 }
 
 bool shows(const QWidget* w) {

@@ -56,7 +56,7 @@ QString landersWith(const QTemporaryDir& dir, const QJsonObject& model_controlle
   section.remove("model_controller");
   if (!model_controller.isEmpty()) section.insert("model_controller", model_controller);
   root.insert("supervisor", section);
-  const QString path = dir.filePath("landers.mxproj");
+  QString path = dir.filePath("landers.mxproj");
   QFile out(path);
   if (!out.open(QIODevice::WriteOnly) || out.write(QJsonDocument(root).toJson()) < 0) return {};
   return path;

@@ -214,6 +214,7 @@ class TestLearningDatabase : public QObject {
     MX_NEW_DATABASE(location, "batch");
     LearningDatabase db(location);
     std::vector<LearningRecord> records;
+    records.reserve(5);
     for (int i = 0; i < 5; ++i) records.push_back(sample(QString("R%1").arg(i), "Al", 10, 2, kW, 1.0, i));
     records[3].weights = {0.5, 0.6};
     const QString e = learningErrorOf([&] { db.insertAll(records); });

@@ -69,7 +69,7 @@ class TestLearningMigrations : public QObject {
 
   // A database of schema version 1 holding the fixture's records, or empty (failure recorded).
   QString version1Database(const QString& name) {
-    const QString location = backends_.location(name);
+    QString location = backends_.location(name);
     if (location.isEmpty()) return {};
     if (!backends_.postgres()) {
       QFile::remove(location);
@@ -149,6 +149,7 @@ class TestLearningMigrations : public QObject {
     QVERIFY(!location.isEmpty());
     std::atomic<int> failures{0};
     std::vector<std::thread> clients;
+    clients.reserve(4);
     for (int i = 0; i < 4; ++i)
       clients.emplace_back([&] {
         try {

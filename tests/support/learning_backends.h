@@ -82,4 +82,4 @@ QVariant rawScalar(const Database& db, const QString& sql) {
 // back end in `var`, or return from the test (the failure is recorded).
 #define MX_NEW_DATABASE(var, name)              \
   const QString var = backends_.location(name); \
-  if (var.isEmpty()) return
+  if ((var).isEmpty()) return

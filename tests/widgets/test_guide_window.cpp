@@ -96,7 +96,7 @@ class TestGuideWindow : public QObject {
     const int column = window.browser()->viewport()->width();
     QTRY_VERIFY(firstPicture(window.browser()).width() > 0);
     const QTextImageFormat picture = firstPicture(window.browser());
-    QVERIFY2(picture.width() <= column && picture.width() > column / 2,
+    QVERIFY2(picture.width() <= column && picture.width() > column / 2.0,
              qPrintable(QString("picture %1 px in a %2 px column").arg(picture.width()).arg(column)));
     QVERIFY(!picture.hasProperty(QTextFormat::ImageHeight));  // the height follows at 4:1
   }
