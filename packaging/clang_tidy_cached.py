@@ -6,7 +6,7 @@ includes, not over the unit's own code. Units of one folder that share a compile
 therefore checked together, up to --batch of them in one generated unit that includes each (the
 header filter widened to those files, so that their findings are reported as in a unit of their own).
 A batch that does not compile as one unit (two files define the same file-scope name) is split in
-halves until it does, down to single units.
+halves until it does, down to single units (and remembered as such, so that a rerun splits it at once).
 
 A check's key is the SHA-256 of the clang-tidy version, the .clang-tidy file, its compile command and
 its preprocessed text (clang++ -E: the files and every header they include). A check that passes
@@ -151,11 +151,16 @@ class Checker:
         files = [e["file"] for e in entries]
         if stamp and os.path.exists(stamp):
             return [(f, "unchanged", "") for f in files]
+        half = len(entries) // 2
+        if stamp and os.path.exists(stamp + ".split"):
+            return self.check(entries[:half]) + self.check(entries[half:])
         code, lines = self.tidy(entry, entries)
         if code != 0 and len(entries) > 1 and any("[clang-diagnostic-error]" in line for line in lines):
-            half = len(entries) // 2
             print(f"split a batch of {len(entries)} that does not compile as one unit: "
                   + "; ".join(line for line in lines if "[clang-diagnostic-error]" in line), flush=True)
+            if stamp:
+                with open(stamp + ".split", "w", encoding="utf-8") as f:
+                    f.writelines(p + "\n" for p in files)
             return self.check(entries[:half]) + self.check(entries[half:])
         if code != 0:
             return [(files[0] if len(files) == 1 else ", ".join(files), "failed", "\n".join(lines))]

@@ -14,7 +14,6 @@
 #include <QSysInfo>
 #include <QThread>
 #include <memory>
-#include <ranges>
 
 #include "support/batch_manifests.h"
 #include "support/cli_runner.h"
@@ -97,8 +96,8 @@ class Cluster {
   // The last started first: slurmd, slurmctld, munged. True when every one has ended.
   bool stop() {
     bool ended = true;
-    for (auto& daemon : std::ranges::reverse_view(daemons_)) {
-      QProcess& p = *daemon;
+    for (std::size_t i = daemons_.size(); i-- > 0;) {
+      QProcess& p = *daemons_[i];
       if (p.state() == QProcess::NotRunning) continue;
       ::kill(static_cast<pid_t>(p.processId()), SIGTERM);
       if (!p.waitForFinished(5000)) {
