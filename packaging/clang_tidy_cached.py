@@ -53,12 +53,8 @@ def shared_command(entry):
 
 def preprocessed(entry):
     """The unit's text after the preprocessor (clang++ -E), or None when that fails."""
-    args = [CLANG] + command_arguments(entry)[1:]
-    args = [a for a in args if a != "-c"]
-    if "-o" in args:
-        i = args.index("-o")
-        del args[i:i + 2]
-    result = subprocess.run(args + ["-E", "-w", "-o", "-"], cwd=entry["directory"], capture_output=True, check=False)
+    args = [CLANG, *shared_command(entry)[1:], entry["file"], "-E", "-w", "-o", "-"]
+    result = subprocess.run(args, cwd=entry["directory"], capture_output=True, check=False)
     return result.stdout if result.returncode == 0 else None
 
 
@@ -142,15 +138,20 @@ class Checker:
         result = subprocess.run([TIDY, "-p", database, "-quiet"] + extra + [entry["file"]], capture_output=True, text=True, check=False)
         return result.returncode, [line for line in (result.stdout + result.stderr).splitlines() if not NOISE.match(line)]
 
+    @staticmethod
+    def write_stamp(path, files):
+        with open(path, "w", encoding="utf-8") as f:
+            f.writelines(p + "\n" for p in files)
+
     def check(self, entries):
         """Checks `entries` as one batch, or in halves when they do not compile as one: a list of
-        (file, status, output)."""
+        (files, status, output), one for each batch checked."""
         entry = self.batch_entry(entries)
         key = self.key(entry)
         stamp = os.path.join(self.stamps, key) if key else None
         files = [e["file"] for e in entries]
         if stamp and os.path.exists(stamp):
-            return [(f, "unchanged", "") for f in files]
+            return [(files, "unchanged", "")]
         half = len(entries) // 2
         if stamp and os.path.exists(stamp + ".split"):
             return self.check(entries[:half]) + self.check(entries[half:])
@@ -159,15 +160,13 @@ class Checker:
             print(f"split a batch of {len(entries)} that does not compile as one unit: "
                   + "; ".join(line for line in lines if "[clang-diagnostic-error]" in line), flush=True)
             if stamp:
-                with open(stamp + ".split", "w", encoding="utf-8") as f:
-                    f.writelines(p + "\n" for p in files)
+                self.write_stamp(stamp + ".split", files)
             return self.check(entries[:half]) + self.check(entries[half:])
         if code != 0:
-            return [(files[0] if len(files) == 1 else ", ".join(files), "failed", "\n".join(lines))]
+            return [(files, "failed", "\n".join(lines))]
         if stamp:
-            with open(stamp, "w", encoding="utf-8") as f:
-                f.writelines(p + "\n" for p in files)
-        return [(f, "passed", "") for f in files]
+            self.write_stamp(stamp, files)
+        return [(files, "passed", "")]
 
 
 def batches(entries, size):
@@ -221,12 +220,12 @@ def main():
         print(f"clang_tidy_cached: {compiled} compiled units, {len(entries)} different, in {len(groups)} batches",
               flush=True)
         for future in concurrent.futures.as_completed([pool.submit(checker.check, g) for g in groups]):
-            for path, status, output in future.result():
-                done += 1 if status != "failed" else path.count(", ") + 1
-                counts[status] += 1 if status != "failed" else path.count(", ") + 1
+            for files, status, output in future.result():
+                done += len(files)
+                counts[status] += len(files)
                 if status == "failed":
                     print(output, flush=True)
-                print(f"[{done}/{len(entries)}] {status}: {path}", flush=True)
+                print(f"[{done}/{len(entries)}] {status}: {', '.join(files)}", flush=True)
     print(f"clang_tidy_cached: {len(entries)} units in {len(groups)} batches: {counts['passed']} checked and passed, "
           f"{counts['unchanged']} unchanged since they passed, {counts['failed']} in a batch with findings")
     return 1 if counts["failed"] else 0
