@@ -195,9 +195,11 @@ def main():
     parser.add_argument("--stamps", default=None, help="default: BUILD_DIR/clang-tidy-passed")
     options = parser.parse_args()
     database = os.path.join(options.build_dir, "compile_commands.json")
-    if not os.path.isfile(database) or options.batch < 1:
-        print(f"clang_tidy_cached: no {database}" if options.batch >= 1 else "clang_tidy_cached: --batch must be >= 1",
-              file=sys.stderr)
+    if options.batch < 1:
+        print(f"clang_tidy_cached: --batch = {options.batch}: must be 1 or more", file=sys.stderr)
+        return 2
+    if not os.path.isfile(database):
+        print(f"clang_tidy_cached: no {database}", file=sys.stderr)
         return 2
     build_dir = os.path.abspath(options.build_dir)
     stamps = options.stamps or os.path.join(build_dir, "clang-tidy-passed")
