@@ -119,8 +119,6 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
 
   if (rows_ == Rows::All) addRow(tr("Estimates \u03b8 [\u2013]"));
   rects_.back()->axis(QCPAxis::atBottom)->setLabel(timeAxisLabel());
-  // A first guess of the rows' height; followLayout() makes it exact after each layout.
-  plot_->setMinimumSize(kMinWidth, static_cast<int>(rects_.size()) * (kMinRowHeight + 70));
   connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] {
     fitRanges();
     plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -128,6 +126,9 @@ ControlPlots::ControlPlots(Rows rows, QWidget* parent)
   connect(plot_, &QCustomPlot::beforeReplot, this, [this] { fitLegends(plot_->viewport().width()); });
   connect(plot_, &QCustomPlot::afterLayout, this, &ControlPlots::followLayout);
   relabel();
+  // Every graph is still shown, so each legend holds all its entries. A first guess of the rows'
+  // height; followLayout() makes it exact after each layout.
+  plot_->setMinimumSize(legendsMinimumWidth(), static_cast<int>(rects_.size()) * (kMinRowHeight + 70));
   clear();
 }
 
@@ -162,6 +163,10 @@ QCPAxisRect* ControlPlots::addRow(const QString& value_label) {
   strip->addElement(0, 0, legend);
   strip->addElement(0, 1, new QCPLayoutElement(plot_));
   strip->setColumnSpacing(0);
+  // The legend as narrow as its entries allow, the spacer taking the rest. A maximum width per entry
+  // would do it too, but a column holding two entries then has its maximum below its minimum, which
+  // QCPLayout::getSectionSizes cannot solve (it aborts the layout with a debug message).
+  strip->setColumnStretchFactors({0.001, 1.0});
   legend->setLayer(QStringLiteral("legend"));
   legend->setFont(QFont(font().family(), 9));
   legend->setBorderPen(Qt::NoPen);
@@ -205,18 +210,22 @@ QCPGraph* ControlPlots::addGraph(int row, QCPAxis* value_axis, const QString& ke
   return graph;
 }
 
-// The row's named, visible graphs in their order, each entry at its natural width: packed from the left
-// instead of spread over the row.
+// The row's named, visible graphs in their order.
 void ControlPlots::refreshLegend(int row) {
   QCPLegend* legend = legends_[row];
   legend->clearItems();
   for (QCPGraph* graph : std::as_const(row_graphs_[row])) {
     if (graph->name().isEmpty() || !graph->visible()) continue;
     graph->addToLegend(legend);
-    QCPAbstractLegendItem* item = legend->itemWithPlottable(graph);
-    item->setMaximumSize(item->minimumOuterSizeHint().width(), QWIDGETSIZE_MAX);
   }
   legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+}
+
+// As wide as the widest legend entry needs beside the rows' margins: no name is cut at the minimum.
+int ControlPlots::legendsMinimumWidth() const {
+  int legends = 0;
+  for (const QCPLegend* legend : legends_) legends = std::max(legends, legendWidthInOneColumn(legend));
+  return std::max(kMinWidth, legends + kMarginsGuess);
 }
 
 // The legends' strips span the axis rects (one margin group).

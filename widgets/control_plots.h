@@ -66,6 +66,7 @@ class ControlPlots : public QWidget {
   QCPAxisRect* addRow(const QString& value_label);
   QCPGraph* addGraph(int row, QCPAxis* value_axis, const QString& key, const QString& legend_name, const QPen& pen);
   void refreshLegend(int row);
+  int legendsMinimumWidth() const;
   int legendWidth(int plot_width) const;
   bool legendsFit(int plot_width) const;
   void fitLegends(int plot_width);

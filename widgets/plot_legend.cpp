@@ -44,6 +44,10 @@ int legendColumnsFitting(const QCPLegend* legend, int width, int max_columns) {
   return columns;
 }
 
+int legendWidthInOneColumn(const QCPLegend* legend) {
+  return widthInColumns(legend, entryWidths(legend), 1);
+}
+
 bool fitLegendColumns(QCPLegend* legend, int width, int max_columns) {
   const int columns = legendColumnsFitting(legend, width, max_columns);
   if (legend->wrap() == columns && legend->columnCount() <= columns) return false;

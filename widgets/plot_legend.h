@@ -12,6 +12,9 @@ void placeLegendUnderPlot(QCustomPlot* plot, int columns);
 // pixels at their full size: no name is cut.
 int legendColumnsFitting(const QCPLegend* legend, int width, int max_columns);
 
+// The legend's width with all its entries in one column: the narrowest that cuts no name.
+int legendWidthInOneColumn(const QCPLegend* legend);
+
 // Re-flows the legend into legendColumnsFitting(...) columns; true when that changed its columns.
 bool fitLegendColumns(QCPLegend* legend, int width, int max_columns);
 

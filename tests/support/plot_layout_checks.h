@@ -6,6 +6,7 @@
 #include <QFontMetrics>
 #include <QList>
 #include <QString>
+#include <QtGlobal>
 #include <cmath>
 
 namespace mx::test {
@@ -71,5 +72,28 @@ inline QString tickLabelProblem(const QCPAxis* axis, int gap = 4) {
   }
   return {};
 }
+
+// Counts, while it lives, QCustomPlot's "layouting aborted" messages: QCPLayout::getSectionSizes gives up
+// on a row or column whose maximum is below its minimum, and the elements keep a stale geometry. The
+// messages still reach the handler installed before it.
+class LayoutAbortCounter {
+ public:
+  LayoutAbortCounter() {
+    aborts_ = 0;
+    previous_ = qInstallMessageHandler(&LayoutAbortCounter::handle);
+  }
+  ~LayoutAbortCounter() { qInstallMessageHandler(previous_); }
+  LayoutAbortCounter(const LayoutAbortCounter&) = delete;
+  LayoutAbortCounter& operator=(const LayoutAbortCounter&) = delete;
+  int aborts() const { return aborts_; }
+
+ private:
+  static void handle(QtMsgType type, const QMessageLogContext& context, const QString& text) {
+    if (text.contains(QLatin1String("layouting aborted"))) ++aborts_;
+    if (previous_) previous_(type, context, text);
+  }
+  static inline int aborts_ = 0;
+  static inline QtMessageHandler previous_ = nullptr;
+};
 
 }  // namespace mx::test

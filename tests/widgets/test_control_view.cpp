@@ -508,6 +508,7 @@ class TestControlView : public QObject {
   void rowLegendsFitTheWidth() {
     QFETCH(int, width);
     QFETCH(int, force_legend_rows);
+    const mx::test::LayoutAbortCounter layout;
     QScrollArea area;  // as in the view
     area.setWidgetResizable(true);
     area.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -526,7 +527,54 @@ class TestControlView : public QObject {
     const QList<QCPLegend*> legends = mx::test::legendsOf(plot);
     QCOMPARE(legends.size(), 4);
     QCOMPARE(legends.front()->rowCount(), force_legend_rows);
+    for (const QCPLegend* legend : legends)  // packed from the left, not spread over the row
+      QCOMPARE(legend->outerRect().width(), legend->minimumOuterSizeHint().width());
     for (const QCPAxisRect* rect : plot->axisRects()) QCOMPARE_GE(rect->rect().height(), ControlPlots::kMinRowHeight);
+    QCOMPARE(layout.aborts(), 0);
+  }
+
+  // At its minimum width the widest legend entry ("Plant F_p between samples") still fits beside the
+  // rows' axes, in millimetres and in inches.
+  void minimumWidthCutsNoName_data() {
+    QTest::addColumn<bool>("inch");
+    QTest::newRow("mm") << false;
+    QTest::newRow("inch") << true;
+  }
+  void minimumWidthCutsNoName() {
+    QFETCH(bool, inch);
+    const mx::test::LayoutAbortCounter layout;
+    DisplayUnits units;
+    if (inch) units.setShop(ShopUnits::inch());
+    ControlPlots plots;
+    plots.setUnits(&units);
+    plots.setTraces(syntheticTraces(100, 4, 5));
+    plots.resize(plots.minimumSizeHint());
+    plots.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plots));
+    QTest::qWait(100);
+    QCustomPlot* plot = plotIn(&plots);
+    plot->replot();
+    QCOMPARE(plot->width(), plots.minimumSizeHint().width());
+    QCOMPARE(mx::test::legendProblem(plot), QString());
+    QCOMPARE(layout.aborts(), 0);
+  }
+
+  // Squeezed below what its legends need (a plot resized by hand), the layout still solves: the legend
+  // takes the whole strip and the rows keep their place, instead of QCustomPlot aborting the layout.
+  void squeezedBelowItsLegendsTheLayoutSolves() {
+    const mx::test::LayoutAbortCounter layout;
+    ControlPlots plots;
+    plots.setTraces(syntheticTraces(100, 4, 5));
+    QCustomPlot* plot = plotIn(&plots);
+    plot->setMinimumSize(0, 0);
+    plot->resize(260, 1200);
+    plot->setViewport(QRect(0, 0, 260, 1200));
+    plot->replot();
+    QCOMPARE(layout.aborts(), 0);
+    const QCPLegend* force_legend = mx::test::legendsOf(plot).front();
+    QCOMPARE_LT(force_legend->outerRect().width(), force_legend->minimumOuterSizeHint().width());
+    QCOMPARE_GT(force_legend->outerRect().width(), 0);
+    QCOMPARE_LE(force_legend->outerRect().right(), plot->viewport().right());
   }
 
   // The export lays its legends out for the image's width: at 1600 px every row's legend is one line.
