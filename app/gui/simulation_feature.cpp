@@ -44,9 +44,12 @@ SimulationFeature::SimulationFeature(QMainWindow* window, FeatureContext& contex
   connect(&context_, &FeatureContext::activeToolChanged, this, &SimulationFeature::onPointOrToolChanged);
 }
 
+bool SimulationFeature::runIsOfCurrentState() const {
+  return context_.activeTool() == shown_tool_ && context_.point() == shown_point_;
+}
+
 void SimulationFeature::onPointOrToolChanged() {
-  const app::PickedPoint& p = context_.point();
-  if (context_.activeTool() == shown_tool_ && p == shown_point_) return;
+  if (runIsOfCurrentState()) return;
   if (!view_->isStale() && !shown_tool_.isEmpty()) {
     view_->setStale(
         context_.activeTool() != shown_tool_
@@ -122,6 +125,12 @@ void SimulationFeature::start() {
 
 void SimulationFeature::onFinished(quint64 generation, const SimulationSummary& result) {
   if (generation != generation_) return;
+  // The point or the tool moved while it ran: the view stays stale until the re-run for the new state
+  // (rerun_timer_) shows, instead of giving this run's verdict as the current one.
+  if (!runIsOfCurrentState()) {
+    context_.clearSimulation();
+    return;
+  }
   SimulationSummary summary = result;
   if (summary.chatter) checkSuggestion(summary);
   view_->setSummary(summary);

@@ -39,6 +39,8 @@ class SimulationFeature : public WindowFeature {
 
  private:
   void onFinished(quint64 generation, const SimulationSummary& summary);
+  // The shown (or running) run is of the active tool at the current point.
+  bool runIsOfCurrentState() const;
   void onPointOrToolChanged();
   void showCannotSimulate(const QString& reason);
   // Replaces the run's raw Smith-Tlusty speed by a point checked on the shown tool's lobes.

@@ -2,9 +2,10 @@
 // set as a Pareto pick sets it, an undo, a tool edit, Add tool) greys the shown run as stale at once and
 // re-runs it for the new state; the readout shows the run beside the lobes' verdict, marginal near the
 // border; a chatter run's suggestion is checked on the lobes before it is offered, and moving there
-// gives a point the lobes call stable.
+// gives a point the lobes call stable. A run overtaken by a move is not shown as the new point's.
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QThreadPool>
 #include <QUndoStack>
 #include <cmath>
 
@@ -68,6 +69,26 @@ class TestSimulationFeature : public QObject {
     QVERIFY(shown.wait(30000));
     QVERIFY(shownRun(window));
     QCOMPARE(shownRun(window)->spindle_rpm, window.document()->point().speed_rpm);
+  }
+
+  // A run that ends after the point moved is not shown as the point's: its result waits, already
+  // computed, behind the move, and the first run shown is the one of the new point.
+  void aRunOvertakenByAMoveIsNotShown() {
+    gui::MainWindow window;
+    QVERIFY(openAndSimulate(window));
+    widgets::SimulationView* view = test::simulationOf(window)->view();
+    const double old_rpm = window.document()->point().speed_rpm;
+    emit test::contextOf(window)->simulationRequested();
+    QVERIFY(test::contextOf(window)->enginePool()->waitForDone(30000));  // its end is queued, not yet shown
+    app::PickedPoint p = window.document()->point();
+    p.speed_rpm = old_rpm + 250.0;
+    QSignalSpy shown(test::simulationOf(window), &gui::SimulationFeature::simulationShown);
+    window.document()->setPoint(p);
+    QVERIFY(shown.wait(30000));
+    QVERIFY(!view->isStale());
+    QVERIFY(shownRun(window));
+    QCOMPARE(shownRun(window)->spindle_rpm, p.speed_rpm);
+    QCOMPARE(shown.count(), 1);
   }
 
   void aToolEditReRunsWithTheNewTool() {
