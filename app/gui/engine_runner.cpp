@@ -18,6 +18,11 @@ void EngineRunner::cancelAll() {
   if (cancel_) cancel_->store(true);
 }
 
+void EngineRunner::dropPending() {
+  cancelAll();
+  ++generation_;
+}
+
 bool EngineRunner::busy() const {
   return running_ > 0;
 }

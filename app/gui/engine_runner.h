@@ -19,7 +19,10 @@ class EngineRunner : public QObject {
   ~EngineRunner() override;
 
   quint64 submitLobes(LobeJobInput input);
+  // Cancels the running job; it still reports that it was cancelled.
   void cancelAll();
+  // Cancels the running job and drops whatever it still delivers: the project it was for has changed.
+  void dropPending();
   bool busy() const;
   // The engine thread (a one-thread pool): every job of the GUI runs here, never on the GUI thread.
   QThreadPool* pool() { return &pool_; }

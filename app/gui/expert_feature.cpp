@@ -113,6 +113,7 @@ void ExpertFeature::addViewActions(QMenu* view, QToolBar* /*toolbar*/) {
 // (Rule 4) and re-runs Rules 5-6 for q**: no lobes or grids.
 void ExpertFeature::projectChanged(const app::Project& project, Features recompute) {
   if (recompute & Feature::ExpertSession) {
+    runner_->dropPending();  // a session of the project before this change would un-stale the table
     ranking_table_->setStale(tr("the project changed; the expert session is being rebuilt"));
     rebuild_timer_.start();
   } else if ((recompute & Feature::ExpertRerank) && !rebuild_timer_.isActive()) {

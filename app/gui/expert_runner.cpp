@@ -13,6 +13,12 @@ ExpertRunner::~ExpertRunner() {
   build_cancel_->store(true);
 }
 
+void ExpertRunner::dropPending() {
+  build_cancel_->store(true);
+  ++build_generation_;
+  ++refine_generation_;
+}
+
 void ExpertRunner::started() {
   if (running_++ == 0) emit busyChanged(true);
 }

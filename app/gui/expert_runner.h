@@ -50,6 +50,9 @@ class ExpertRunner : public QObject {
   // Rules 4-6 with simulations for the current session and weights, on the engine thread; Rule 6 also
   // acts on the chatter reported at the machine (tools by index in toolIds()).
   quint64 refine(const CostWeights& weights, const std::vector<ChatterReport>& reported = {});
+  // Cancels the running build and drops what the running build or refinement still delivers: the project
+  // they were for has changed. The current session stays until the next build replaces it.
+  void dropPending();
 
   const std::shared_ptr<ExpertSession>& session() const { return session_; }
   const QStringList& toolIds() const { return tool_ids_; }

@@ -185,7 +185,10 @@ void LobesFeature::projectChanged(const app::Project& project, Features recomput
     refreshToolChoices(project);
     showMethodAdvice();
   }
-  if (recompute & Feature::Lobes) recompute_timer_.start();
+  if (recompute & Feature::Lobes) {
+    engine_->dropPending();  // lobes of the project before this change would show as its lobes
+    recompute_timer_.start();
+  }
   if (snapshot_ && (recompute & (Feature::ExpertSession | Feature::Editors))) {  // a tool's or the breakage limit
     updateForceLimits();
     showPoint(context_.point());

@@ -202,6 +202,7 @@ void ParetoFeature::connectSignals() {
 // A new study waits for the edits to pause; new weights alone re-select from the current one.
 void ParetoFeature::projectChanged(const app::Project& project, Features recompute) {
   if (recompute & Feature::ParetoStudy) {
+    runner_->dropPending();  // a study of the project before this change would show as its front
     rebuild_timer_.start();
   } else if ((recompute & Feature::ParetoChoice) && runner_->study()) {
     weights_panel_->setWeights(projectParetoWeightsOf(project));

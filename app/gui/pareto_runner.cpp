@@ -30,9 +30,13 @@ quint64 ParetoRunner::build(const app::Project& project) {
 }
 
 void ParetoRunner::clear() {
-  ++generation_;
+  dropPending();
   study_.reset();
   front_weights_.clear();
+}
+
+void ParetoRunner::dropPending() {
+  ++generation_;
 }
 
 }  // namespace mx::gui

@@ -33,6 +33,9 @@ class ParetoRunner : public QObject {
   quint64 build(const app::Project& project);
   // Drops the current study (a project without a "pareto" section); pending builds become stale.
   void clear();
+  // Pending builds become stale (the project they were for has changed); the current study stays until
+  // the next build replaces it.
+  void dropPending();
 
   const std::shared_ptr<const app::ParetoStudy>& study() const { return study_; }
   const std::vector<std::optional<ParetoWeights>>& frontWeights() const { return front_weights_; }

@@ -1,7 +1,7 @@
 // The expert system in the main window: the ranking table and q* / q** markers appear,
 // a weight change re-ranks from the cached session (no lobes, grids or simulations recomputed), a
 // committed weight change (one per drag) is an undoable project edit that recomputes no lobes, and the
-// heat map covers the admissible cells.
+// heat map covers the admissible cells. A session that ends just after an edit is dropped, not shown.
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -14,6 +14,7 @@
 #include "main_window.h"
 #include "ranking_table.h"
 #include "support/cli_runner.h"
+#include "support/engine_hold.h"
 #include "support/project_files.h"
 #include "support/window_features.h"
 #include "test_registry.h"
@@ -211,6 +212,31 @@ class TestExpertFeature : public QObject {
     QCOMPARE(window.document()->applyEdit(edited, "weights"), QString());
     QVERIFY(!isAt(qStar(), first));
     QVERIFY(isAt(window.document()->point(), first));
+  }
+
+  // A session that ends just after an edit is of the project before it: dropped, so that the table
+  // stays stale until the edited project's ranking (here one tool left of two) shows.
+  void aSessionOfTheProjectBeforeAnEditIsDropped() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    QSignalSpy refined(test::expertOf(window), &gui::ExpertFeature::refinementShown);
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
+    QVERIFY(refined.wait(60000));
+    app::Project edited = *window.project();
+    {
+      test::EngineHold hold(test::contextOf(window)->enginePool());
+      QSignalSpy building(test::expertOf(window)->runner(), &gui::ExpertRunner::busyChanged);
+      edited.tools[0].teeth = 4;
+      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
+      QVERIFY(building.wait(5000));  // past the debounce: the session of 2 tools is queued
+      QVERIFY(hold.runQueuedJobs());
+    }
+    edited.tools.resize(1);
+    QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
+    QCOMPARE(window.document()->applyEdit(edited, "remove tool"), QString());
+    QVERIFY(ranked.wait(60000));
+    QCOMPARE(test::expertOf(window)->runner()->toolIds(), QStringList{"R1"});
+    QCOMPARE(test::windowPart<widgets::RankingTable>(window)->rows().size(), 1);
   }
 
   // A point the user moves before the ranking arrives stays where it was moved.

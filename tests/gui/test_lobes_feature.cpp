@@ -2,7 +2,7 @@
 // the chart (the readouts show the engine's values), one undo step per drag, inch display, the tools
 // shown on the chart, and a responsive event loop while the engine thread computes. Where a project
 // opens: its stored operating point, else a sensible first point (q* with an expert section); a save
-// stores the point and the active tool.
+// stores the point and the active tool. Lobes that end just after an edit are dropped, not shown.
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -19,6 +19,7 @@
 #include "model/cutting_force.h"
 #include "stability/stability_boundary.h"
 #include "stability/zero_order_lobes.h"
+#include "support/engine_hold.h"
 #include "support/event_loop_probe.h"
 #include "support/project_files.h"
 #include "support/window_features.h"
@@ -77,6 +78,29 @@ class TestLobesFeature : public QObject {
     QVERIFY(!test::lobesOf(window)->chart()->isToolVisible("R2"));
     test::lobesOf(window)->chart()->setToolVisible("R2", true);
     QVERIFY(test::lobesOf(window)->chart()->isToolVisible("R2"));
+  }
+
+  // Lobes that end just after an edit are of the project before it: dropped, so that the first lobes
+  // shown after the edit are its own (here one tool left of two).
+  void lobesOfTheProjectBeforeAnEditAreDropped() {
+    gui::MainWindow window;
+    window.setQuiet(true);
+    QSignalSpy opened(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
+    QVERIFY(opened.wait(20000));
+    app::Project edited = *window.project();
+    {
+      test::EngineHold hold(test::contextOf(window)->enginePool());
+      edited.tools[0].teeth = 4;
+      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
+      QTRY_VERIFY(test::engineOf(window)->busy());  // past the debounce: the lobes of 2 tools are queued
+      QVERIFY(hold.runQueuedJobs());
+    }
+    edited.tools.resize(1);
+    QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
+    QCOMPARE(window.document()->applyEdit(edited, "remove tool"), QString());
+    QVERIFY(shown.wait(20000));
+    QCOMPARE(test::lobesOf(window)->snapshot()->tools.size(), std::size_t{1});
   }
 
   // File > New after a project: no lobes and no readout of the previous project's point.

@@ -3,7 +3,8 @@
 // undoable step; Rule 11 requirements and Rule 12 automatic weights commit weights that keep the
 // simplex; the operator-rules editor edits the project, restricts the choice and shows fired rules and
 // violations; the history view lists what "Record point" stored; the monitoring dock shows the
-// simulation's signals and identified frequencies (Rule 17).
+// simulation's signals and identified frequencies (Rule 17). A study that ends just after an edit is
+// dropped, not shown.
 #include <QApplication>
 #include <QJsonArray>
 #include <QPlainTextEdit>
@@ -24,6 +25,7 @@
 #include "pareto_runner.h"
 #include "pareto_weights_panel.h"
 #include "requirements_panel.h"
+#include "support/engine_hold.h"
 #include "support/pareto_window.h"
 #include "support/project_files.h"
 #include "support/window_features.h"
@@ -75,6 +77,31 @@ class TestParetoFeature : public QObject {
     window.document()->undoStack()->undo();
     QVERIFY(!window.project()->pareto);
     QTRY_VERIFY(notice->noticeShown());  // the study is rebuilt once the edits pause
+  }
+
+  // A study that ends just after an edit is of the project before it: dropped, so that the first front
+  // shown after the edit is its own (here a 5-tooth cutter after a 4-tooth one).
+  void aStudyOfTheProjectBeforeAnEditIsDropped() {
+    gui::MainWindow window;
+    QVERIFY(test::openParetoCase(window));
+    const QString tool = test::paretoOf(window)->runner()->study()->request().tool;
+    app::Project edited = *window.project();
+    app::ToolSpec* spec = nullptr;
+    for (app::ToolSpec& t : edited.tools)
+      if (t.id == tool) spec = &t;
+    QVERIFY(spec);
+    {
+      test::EngineHold hold(test::contextOf(window)->enginePool());
+      spec->teeth = 4;
+      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
+      QTRY_VERIFY(test::paretoOf(window)->runner()->busy());  // past the debounce: the 4-tooth study is queued
+      QVERIFY(hold.runQueuedJobs());
+    }
+    spec->teeth = 5;
+    QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
+    QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
+    QVERIFY(shown.wait(120000));
+    QCOMPARE(test::paretoOf(window)->runner()->study()->tool().teeth, 5);
   }
 
   // The chart marks the choice of the study's tool once; a live weight move redraws that one marker.
