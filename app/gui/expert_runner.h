@@ -55,6 +55,7 @@ class ExpertRunner : public QObject {
   void dropPending();
 
   const std::shared_ptr<ExpertSession>& session() const { return session_; }
+  bool busy() const { return running_ > 0; }  // a build or a refinement is on the engine thread
   const QStringList& toolIds() const { return tool_ids_; }
   // Rule 4 on the GUI thread from the cached session, at effectiveWeights(c); nullopt without a session
   // or an admissible point.

@@ -223,14 +223,9 @@ class TestExpertFeature : public QObject {
     QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(refined.wait(60000));
     app::Project edited = *window.project();
-    {
-      test::EngineHold hold(test::contextOf(window)->enginePool());
-      QSignalSpy building(test::expertOf(window)->runner(), &gui::ExpertRunner::busyChanged);
-      edited.tools[0].teeth = 4;
-      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
-      QVERIFY(building.wait(5000));  // past the debounce: the session of 2 tools is queued
-      QVERIFY(hold.runQueuedJobs());
-    }
+    edited.tools[0].teeth = 4;  // a session of 2 tools
+    QCOMPARE(test::applyEditAndHoldItsResults(window, edited, [&] { return test::expertOf(window)->runner()->busy(); }),
+             QString());
     edited.tools.resize(1);
     QSignalSpy ranked(test::expertOf(window), &gui::ExpertFeature::rankingShown);
     QCOMPARE(window.document()->applyEdit(edited, "remove tool"), QString());

@@ -89,13 +89,9 @@ class TestLobesFeature : public QObject {
     QVERIFY(window.openProject(mx::test::exampleCopy("rubio2006-tool-selection.mxproj")));
     QVERIFY(opened.wait(20000));
     app::Project edited = *window.project();
-    {
-      test::EngineHold hold(test::contextOf(window)->enginePool());
-      edited.tools[0].teeth = 4;
-      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
-      QTRY_VERIFY(test::engineOf(window)->busy());  // past the debounce: the lobes of 2 tools are queued
-      QVERIFY(hold.runQueuedJobs());
-    }
+    edited.tools[0].teeth = 4;  // the lobes of 2 tools
+    QCOMPARE(test::applyEditAndHoldItsResults(window, edited, [&] { return test::engineOf(window)->busy(); }),
+             QString());
     edited.tools.resize(1);
     QSignalSpy shown(test::lobesOf(window), &gui::LobesFeature::lobesShown);
     QCOMPARE(window.document()->applyEdit(edited, "remove tool"), QString());

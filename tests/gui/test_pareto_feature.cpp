@@ -90,13 +90,9 @@ class TestParetoFeature : public QObject {
     for (app::ToolSpec& t : edited.tools)
       if (t.id == tool) spec = &t;
     QVERIFY(spec);
-    {
-      test::EngineHold hold(test::contextOf(window)->enginePool());
-      spec->teeth = 4;
-      QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());
-      QTRY_VERIFY(test::paretoOf(window)->runner()->busy());  // past the debounce: the 4-tooth study is queued
-      QVERIFY(hold.runQueuedJobs());
-    }
+    spec->teeth = 4;  // a 4-tooth study
+    QCOMPARE(test::applyEditAndHoldItsResults(window, edited, [&] { return test::paretoOf(window)->runner()->busy(); }),
+             QString());
     spec->teeth = 5;
     QSignalSpy shown(test::paretoOf(window), &gui::ParetoFeature::paretoShown);
     QCOMPARE(window.document()->applyEdit(edited, "teeth"), QString());

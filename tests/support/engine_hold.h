@@ -4,7 +4,13 @@
 // of their results: they wait in its event queue, behind whatever the test does next, as the result of
 // a job that ends just after an edit would.
 #include <QSemaphore>
+#include <QString>
+#include <QTest>
 #include <QThreadPool>
+
+#include "document/project.h"
+#include "main_window.h"
+#include "support/window_features.h"
 
 namespace mx::test {
 
@@ -37,5 +43,17 @@ class EngineHold {
   QSemaphore released_;
   bool released_once_ = false;
 };
+
+// Applies `edited` with the engine thread held until `queued()` holds (the edit's debounced jobs are
+// submitted), then runs those jobs to their end: their results wait for the test's next edit. Returns
+// what failed, or "".
+template <class Queued>
+QString applyEditAndHoldItsResults(gui::MainWindow& window, const app::Project& edited, Queued queued) {
+  EngineHold hold(contextOf(window)->enginePool());
+  if (QString error = window.document()->applyEdit(edited, "held edit"); !error.isEmpty()) return error;
+  if (!QTest::qWaitFor(queued, 5000)) return QStringLiteral("the edit's jobs were not submitted within 5 s");
+  if (!hold.runQueuedJobs()) return QStringLiteral("the edit's jobs did not end within 120 s");
+  return {};
+}
 
 }  // namespace mx::test
