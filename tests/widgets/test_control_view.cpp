@@ -116,7 +116,7 @@ int drawnEntries(const QCPLegend* legend) {
 }
 
 // Shows the view at `size` and lets the plots settle: a layout can refit the legends and resize the rows.
-bool showAt(ControlView& view, const QSize& size) {
+bool showAt(QWidget& view, const QSize& size) {
   view.resize(size);
   view.show();
   if (!QTest::qWaitForWindowExposed(&view)) return false;
@@ -548,12 +548,8 @@ class TestControlView : public QObject {
     ControlPlots plots;
     plots.setUnits(&units);
     plots.setTraces(syntheticTraces(100, 4, 5));
-    plots.resize(plots.minimumSizeHint());
-    plots.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&plots));
-    QTest::qWait(100);
+    QVERIFY(showAt(plots, plots.minimumSizeHint()));
     QCustomPlot* plot = plotIn(&plots);
-    plot->replot();
     QCOMPARE(plot->width(), plots.minimumSizeHint().width());
     QCOMPARE(mx::test::legendProblem(plot), QString());
     QCOMPARE(layout.aborts(), 0);
